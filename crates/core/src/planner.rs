@@ -1,0 +1,40 @@
+//! The object-safe planner trait.
+
+use rand_core::RngCore;
+
+use crate::{Plan, PlanError, Query, Workspace};
+
+/// What a planner is and can do, in the spirit of OMPL's `PlannerSpecs`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlannerInfo {
+    /// Short name as used on the command line and in scenario files (`rrt`, `astar`, ...).
+    pub name: &'static str,
+    /// Whether the planner improves its path with more budget (RRT*).
+    pub optimizing: bool,
+    /// Whether "no path" is a proof (complete graph searches) rather than a spent budget.
+    pub proves_no_path: bool,
+    /// Whether the planner needs a grid map rather than any [`Workspace`].
+    pub grid_only: bool,
+}
+
+/// A planner behind a pointer, as the harness and the CLI hold it (`Box<dyn Planner>`).
+///
+/// Each planner crate implements it by forwarding to the struct's own generic
+/// `plan(&self, workspace, query, rng)`. Nothing survives between calls: the planner is a
+/// parameter struct, and everything it builds comes back inside the [`Plan`].
+pub trait Planner: Send + Sync {
+    /// The planner's name and capabilities.
+    fn info(&self) -> PlannerInfo;
+
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    ///
+    /// # Errors
+    ///
+    /// Bad parameters or query, or no path (proved or within the budget).
+    fn plan(
+        &self,
+        ws: &dyn Workspace,
+        query: &Query,
+        rng: &mut dyn RngCore,
+    ) -> Result<Plan, PlanError>;
+}
