@@ -1,0 +1,341 @@
+//! The three-zone occupancy grid.
+
+use std::fmt;
+
+use hyplan_core::{Bounds, Point2, Zone};
+
+/// A grid map whose cells are [`Zone::Free`], [`Zone::Risk`] or [`Zone::Forbidden`].
+///
+/// # Frame conventions
+///
+/// - Cell `(i, j)`: `i` is the column (x), `j` the row **counted from the bottom** (y up),
+///   as in ROS `map_server`. Cell `(0, 0)` is the lower-left cell.
+/// - `origin` is the world position of the lower-left **corner** of cell `(0, 0)`;
+///   `resolution` is the side of a cell in world units (metres for ROS maps, pixels or
+///   millimetres for pictures, cells for MovingAI maps).
+/// - Cell `(i, j)` covers the closed square `origin + [i, i+1] x [j, j+1] * resolution`;
+///   its centre is [`cell_center`](GridMap::cell_center).
+/// - Pictures and MovingAI files are written top row first, so their row `r` is map row
+///   `height - 1 - r`. Loaders do this flip; [`from_ascii`](GridMap::from_ascii) too.
+///
+/// Zones take one byte per cell, stored row-major from the bottom row.
+///
+/// Which zones block motion is the map's [`blocked_from`](GridMap::blocked_from): by
+/// default only [`Zone::Forbidden`]; [`avoiding_risk`](GridMap::avoiding_risk) makes the
+/// high-risk band block too (a "safe map" in seed 000's sense).
+///
+/// ```
+/// use envmap::GridMap;
+/// use hyplan_core::{Point2, Zone};
+/// let map = GridMap::from_ascii("
+///     ..#
+///     .~#
+///     ...
+/// ")?;
+/// assert_eq!((map.width(), map.height()), (3, 3));
+/// assert_eq!(map.cell_zone(2, 2), Zone::Forbidden); // top-right in the drawing
+/// assert_eq!(map.cell_zone(1, 1), Zone::Risk);
+/// assert_eq!(map.world_to_cell(Point2::new(2.5, 0.5)), Some((2, 0)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, PartialEq)]
+pub struct GridMap {
+    width: usize,
+    height: usize,
+    resolution: f64,
+    origin: Point2,
+    zones: Vec<Zone>,
+    /// Cells whose zone is at least this one block motion (default [`Zone::Forbidden`]).
+    pub blocked_from: Zone,
+}
+
+/// Why a grid map could not be built from in-memory data.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum GridError {
+    /// Width or height is zero, or their product overflows.
+    #[error("invalid map size {width} x {height}")]
+    InvalidSize {
+        /// Columns.
+        width: usize,
+        /// Rows.
+        height: usize,
+    },
+    /// Resolution is not a finite positive number.
+    #[error("invalid resolution {0}: must be finite and > 0")]
+    InvalidResolution(f64),
+    /// Origin is not finite.
+    #[error("invalid origin ({0}, {1}): must be finite")]
+    InvalidOrigin(f64, f64),
+    /// The zone vector does not have `width * height` cells.
+    #[error("expected {expected} cells, got {got}")]
+    CellCount {
+        /// `width * height`.
+        expected: usize,
+        /// Length given.
+        got: usize,
+    },
+    /// An ASCII map row has the wrong length or an unknown character.
+    #[error("ascii map line {line}: {reason}")]
+    Ascii {
+        /// 1-based line among the non-empty lines.
+        line: usize,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+impl GridMap {
+    /// A map of `width x height` cells, all `zone`, with resolution 1 and origin (0, 0).
+    ///
+    /// # Errors
+    ///
+    /// [`GridError::InvalidSize`] when a side is zero or the cell count overflows.
+    pub fn filled(width: usize, height: usize, zone: Zone) -> Result<Self, GridError> {
+        let n = width
+            .checked_mul(height)
+            .filter(|&n| n > 0 && width <= u32::MAX as usize && height <= u32::MAX as usize)
+            .ok_or(GridError::InvalidSize { width, height })?;
+        Ok(Self {
+            width,
+            height,
+            resolution: 1.0,
+            origin: Point2::origin(),
+            zones: vec![zone; n],
+            blocked_from: Zone::Forbidden,
+        })
+    }
+
+    /// A map from its zones, row-major from the bottom row (`zones[j * width + i]`).
+    ///
+    /// # Errors
+    ///
+    /// Bad size, resolution, origin or cell count.
+    pub fn from_zones(
+        width: usize,
+        height: usize,
+        resolution: f64,
+        origin: Point2,
+        zones: Vec<Zone>,
+    ) -> Result<Self, GridError> {
+        let mut map = Self::filled(width, height, Zone::Free)?;
+        if zones.len() != map.zones.len() {
+            return Err(GridError::CellCount {
+                expected: map.zones.len(),
+                got: zones.len(),
+            });
+        }
+        map.zones = zones;
+        map.with_frame(resolution, origin)
+    }
+
+    /// The same map with another resolution and origin.
+    ///
+    /// # Errors
+    ///
+    /// [`GridError::InvalidResolution`] or [`GridError::InvalidOrigin`].
+    pub fn with_frame(mut self, resolution: f64, origin: Point2) -> Result<Self, GridError> {
+        if !(resolution.is_finite() && resolution > 0.0) {
+            return Err(GridError::InvalidResolution(resolution));
+        }
+        if !(origin.x.is_finite() && origin.y.is_finite()) {
+            return Err(GridError::InvalidOrigin(origin.x, origin.y));
+        }
+        self.resolution = resolution;
+        self.origin = origin;
+        Ok(self)
+    }
+
+    /// A map drawn in ASCII, top row first (as it looks): `.` free, `~` high-risk, `#` (or
+    /// `@`, `T`) forbidden. Blank lines and leading/trailing spaces are ignored.
+    ///
+    /// # Errors
+    ///
+    /// [`GridError::Ascii`] for ragged rows or unknown characters, or an empty drawing.
+    pub fn from_ascii(text: &str) -> Result<Self, GridError> {
+        let rows: Vec<&str> = text
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .collect();
+        let height = rows.len();
+        let width = rows.first().map_or(0, |r| r.chars().count());
+        let mut map = Self::filled(width, height, Zone::Free)?;
+        for (r, row) in rows.iter().enumerate() {
+            if row.chars().count() != width {
+                return Err(GridError::Ascii {
+                    line: r + 1,
+                    reason: format!("{} characters, expected {width}", row.chars().count()),
+                });
+            }
+            let j = height - 1 - r;
+            for (i, c) in row.chars().enumerate() {
+                let zone = match c {
+                    '.' => Zone::Free,
+                    '~' => Zone::Risk,
+                    '#' | '@' | 'T' => Zone::Forbidden,
+                    other => {
+                        return Err(GridError::Ascii {
+                            line: r + 1,
+                            reason: format!("unknown character {other:?} at column {}", i + 1),
+                        });
+                    }
+                };
+                map.zones[j * width + i] = zone;
+            }
+        }
+        Ok(map)
+    }
+
+    /// Columns.
+    #[must_use]
+    pub const fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Rows.
+    #[must_use]
+    pub const fn height(&self) -> usize {
+        self.height
+    }
+
+    /// Side of a cell, world units.
+    #[must_use]
+    pub const fn resolution(&self) -> f64 {
+        self.resolution
+    }
+
+    /// World position of the lower-left corner of cell (0, 0).
+    #[must_use]
+    pub const fn origin(&self) -> Point2 {
+        self.origin
+    }
+
+    /// The zones, row-major from the bottom row, one byte each.
+    #[must_use]
+    pub fn zones(&self) -> &[Zone] {
+        &self.zones
+    }
+
+    /// Mutable access to the zones (row-major from the bottom row).
+    pub fn zones_mut(&mut self) -> &mut [Zone] {
+        &mut self.zones
+    }
+
+    /// The flat index of cell `(i, j)`; the caller guarantees `i < width`, `j < height`.
+    #[must_use]
+    pub const fn cell_index(&self, i: usize, j: usize) -> usize {
+        j * self.width + i
+    }
+
+    /// The zone of cell `(i, j)`, or `Forbidden` outside the map.
+    #[must_use]
+    pub fn cell_zone(&self, i: usize, j: usize) -> Zone {
+        if i < self.width && j < self.height {
+            self.zones[j * self.width + i]
+        } else {
+            Zone::Forbidden
+        }
+    }
+
+    /// Sets the zone of cell `(i, j)`; ignored outside the map.
+    pub fn set_cell_zone(&mut self, i: usize, j: usize, zone: Zone) {
+        if i < self.width && j < self.height {
+            self.zones[j * self.width + i] = zone;
+        }
+    }
+
+    /// Whether cell `(i, j)` lets motion through under [`blocked_from`](GridMap::blocked_from).
+    #[must_use]
+    pub fn cell_free(&self, i: usize, j: usize) -> bool {
+        self.cell_zone(i, j) < self.blocked_from
+    }
+
+    /// The cell containing world point `p`, or `None` outside the map (or NaN).
+    #[must_use]
+    pub fn world_to_cell(&self, p: Point2) -> Option<(usize, usize)> {
+        let u = (p.x - self.origin.x) / self.resolution;
+        let v = (p.y - self.origin.y) / self.resolution;
+        if !(u >= 0.0 && v >= 0.0) {
+            return None;
+        }
+        let (i, j) = (u.floor() as usize, v.floor() as usize);
+        // A point on the upper or right border belongs to the last cell.
+        let i = if i == self.width && u == self.width as f64 {
+            i - 1
+        } else {
+            i
+        };
+        let j = if j == self.height && v == self.height as f64 {
+            j - 1
+        } else {
+            j
+        };
+        (i < self.width && j < self.height).then_some((i, j))
+    }
+
+    /// The world position of the centre of cell `(i, j)`.
+    #[must_use]
+    pub fn cell_center(&self, i: usize, j: usize) -> Point2 {
+        Point2::new(
+            self.origin.x + (i as f64 + 0.5) * self.resolution,
+            self.origin.y + (j as f64 + 0.5) * self.resolution,
+        )
+    }
+
+    /// The world box the map covers.
+    #[must_use]
+    pub fn bounds(&self) -> Bounds {
+        Bounds::new(
+            self.origin,
+            Point2::new(
+                self.origin.x + self.width as f64 * self.resolution,
+                self.origin.y + self.height as f64 * self.resolution,
+            ),
+        )
+    }
+
+    /// The same map with the high-risk band blocking motion too (`blocked_from = Risk`).
+    #[must_use]
+    pub fn avoiding_risk(mut self) -> Self {
+        self.blocked_from = Zone::Risk;
+        self
+    }
+
+    /// Number of cells in each zone: `[free, risk, forbidden]`.
+    #[must_use]
+    pub fn zone_counts(&self) -> [usize; 3] {
+        let mut counts = [0; 3];
+        for &z in &self.zones {
+            counts[z as usize] += 1;
+        }
+        counts
+    }
+}
+
+impl fmt::Debug for GridMap {
+    /// Draws the map as [`from_ascii`](GridMap::from_ascii) reads it (top row first), for
+    /// maps up to 200 x 200 cells; larger maps print their size only.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "GridMap {}x{} res {} origin ({}, {})",
+            self.width, self.height, self.resolution, self.origin.x, self.origin.y
+        )?;
+        if self.width > 200 || self.height > 200 {
+            return Ok(());
+        }
+        for j in (0..self.height).rev() {
+            for i in 0..self.width {
+                let c = match self.cell_zone(i, j) {
+                    Zone::Free => '.',
+                    Zone::Risk => '~',
+                    Zone::Forbidden => '#',
+                };
+                write!(f, "{c}")?;
+            }
+            writeln!(f)?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,51 @@
+//! `hyplan`: the command-line tool over the hyplan crates.
+//!
+//! Thin glue: each subcommand parses its flags, validates them into the libraries' types,
+//! calls the libraries and prints. Exit codes: 0 success (a path was found), 1 no path,
+//! 2 bad input or any other error.
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+mod cmd;
+
+/// Exit code for "no path".
+pub const EXIT_NO_PATH: u8 = 1;
+/// Exit code for bad input and other errors.
+pub const EXIT_ERROR: u8 = 2;
+
+#[derive(Parser)]
+#[command(name = "hyplan", version, about = "2-D path planning for mobile robots")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Turn a picture, ROS map or MovingAI map into a three-zone safe map.
+    Map(cmd::map::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // clap prints help and version to stdout with success; usage errors exit 2.
+            let code = if e.use_stderr() { EXIT_ERROR } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    let result = match cli.command {
+        Command::Map(args) => cmd::map::run(&args),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(EXIT_ERROR)
+        }
+    }
+}
