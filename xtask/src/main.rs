@@ -8,6 +8,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod reproduce;
+mod rooms;
 
 #[derive(Parser)]
 #[command(name = "xtask", about = "hyplan project tasks")]
@@ -20,12 +21,19 @@ struct Cli {
 enum Task {
     /// Replay the seed papers' experiments and write a report.
     Reproduce(reproduce::Args),
+    /// Draw the synthetic room pictures into scenarios/maps/.
+    Rooms,
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.task {
         Task::Reproduce(args) => reproduce::run(&args),
+        Task::Rooms => rooms::write_rooms(std::path::Path::new("scenarios/maps")).map(|files| {
+            for f in files {
+                println!("wrote {}", f.display());
+            }
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
