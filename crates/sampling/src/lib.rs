@@ -1,0 +1,80 @@
+//! Sampling planners for hyplan: RRT, RRT*, Bi-RRT and RRT-Connect on any
+//! [`Workspace`](hyplan_core::Workspace).
+//!
+//! Every planner is a plain parameter struct with documented defaults and one entry point,
+//! `plan(&self, workspace, query, rng)`, returning a [`Plan`](hyplan_core::Plan) (path,
+//! tree(s), statistics) or a typed [`PlanError`](hyplan_core::PlanError). Each also
+//! implements [`Planner`](hyplan_core::Planner) for use as `Box<dyn Planner>`.
+//!
+//! # Contents
+//!
+//! - [`Rrt`]: the rapidly-exploring random tree (seed `000_9b224721fe327833.txt` section 4.2).
+//! - [`RrtStar`] and [`RewireRadius`]: RRT with choose-parent and rewiring; first solution or
+//!   the whole budget.
+//! - [`BiRrt`]: two trees grown in turn, joined by one free step.
+//! - [`RrtConnect`]: two trees, greedy connect.
+//! - [`NearestIndex`]: the k-d tree (kiddo) behind one small type, plain distances.
+//!
+//! # Guarantees
+//!
+//! - Every edge is checked with [`Workspace::segment_free`](hyplan_core::Workspace::segment_free),
+//!   which is exact for the workspace's own model (a grid map checks every cell a segment
+//!   touches): a returned path never crosses a blocked cell, not even at a corner. Checks are
+//!   counted in [`PlanStats::collision_checks`](hyplan_core::PlanStats::collision_checks).
+//! - `path[0]` is the query's start bit for bit and the last point lies in the goal region
+//!   (exactly on the goal for [`Goal::Point`](hyplan_core::Goal::Point)).
+//! - The only randomness is the RNG passed in: the same seed gives the same tree, bit for bit,
+//!   with an iteration budget (a time limit depends on the machine).
+//! - Bad input (step <= 0 or NaN, goal bias outside [0, 1], zero budget, start or goal
+//!   outside the map or blocked) is a typed error, never a panic; a spent budget is
+//!   [`PlanError::BudgetExhausted`](hyplan_core::PlanError::BudgetExhausted) with the
+//!   statistics of the attempt.
+//!
+//! # Conventions
+//!
+//! World coordinates, x right and y up, in the workspace's units; `step` and goal radii in
+//! the same units.
+//!
+//! # Example
+//!
+//! ```
+//! use envmap::GridMap;
+//! use hyplan_core::{Budget, Goal, Point2, Query, Workspace};
+//! use rand::SeedableRng;
+//! use sampling::{RrtConnect, Rrt};
+//!
+//! let map = GridMap::from_ascii("
+//!     ............
+//!     .....##.....
+//!     .....##.....
+//!     .....##.....
+//!     ............
+//! ")?;
+//! let query = Query::new(Point2::new(0.5, 2.5), Goal::Point(Point2::new(11.5, 2.5)));
+//! let rrt = Rrt { step: 1.5, budget: Budget::iterations(5_000), ..Rrt::default() };
+//! let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(42);
+//! let plan = rrt.plan(&map, &query, &mut rng)?;
+//! assert!(plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
+//! let again = rrt.plan(&map, &query, &mut rand_chacha::ChaCha8Rng::seed_from_u64(42))?;
+//! assert_eq!(plan.path, again.path);
+//! let connect = RrtConnect { step: 1.5, ..RrtConnect::default() };
+//! assert!(connect.plan(&map, &query, &mut rng).is_ok());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! # Features
+//!
+//! None.
+
+mod bi_rrt;
+mod common;
+mod nearest;
+mod rrt;
+mod rrt_connect;
+mod rrt_star;
+
+pub use bi_rrt::BiRrt;
+pub use nearest::NearestIndex;
+pub use rrt::Rrt;
+pub use rrt_connect::RrtConnect;
+pub use rrt_star::{RewireRadius, RrtStar};

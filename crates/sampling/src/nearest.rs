@@ -1,0 +1,202 @@
+//! Nearest-neighbour queries over a growing point set.
+//!
+//! One small type, [`NearestIndex`], hides the k-d tree (kiddo 5's mutable `KdTree`), so
+//! swapping it for another index touches this file only.
+
+use std::collections::HashMap;
+
+use hyplan_core::Point2;
+use kiddo::SquaredEuclidean;
+
+/// kiddo's mutable tree: `f64` coordinates, `u64` items (our point ids), 2 axes, buckets of
+/// 32 points, `u32` node indices.
+type KdTree = kiddo::float::kdtree::KdTree<f64, u64, 2, BUCKET, u32>;
+
+/// kiddo's leaf bucket size.
+const BUCKET: usize = 32;
+
+/// A growing set of 2-D points with nearest and within-radius queries, in plain (not
+/// squared) world-unit distances.
+///
+/// Points get consecutive ids `0, 1, 2, ...` in insertion order, so callers keep their own
+/// per-node data (parents, costs) in plain vectors indexed by the id.
+///
+/// # Performance
+///
+/// A k-d tree: `O(log n)` expected per insertion and nearest query.
+///
+/// # Duplicates and degenerate inputs
+///
+/// kiddo 5's mutable tree panics when one of its 32-point buckets fills with points that are
+/// identical on every axis ("Cannot insert another item ... at exactly the same point", and in
+/// releases before 5.3 already when more than 32 points share one coordinate on one axis).
+/// Nodes snapped to integer cells (step 1) make that reachable, so the index never gives kiddo
+/// a point it already holds: an exact duplicate is kept in a side table and reported with its
+/// twin by every query. Points with a NaN or infinite coordinate get an id but are never
+/// reported by a query (kiddo cannot order them).
+///
+/// ```
+/// use hyplan_core::Point2;
+/// use sampling::NearestIndex;
+/// let mut index = NearestIndex::new();
+/// index.insert(Point2::new(0.0, 0.0));
+/// index.insert(Point2::new(3.0, 4.0));
+/// assert_eq!(index.nearest(Point2::new(2.9, 4.2)), Some((1, Point2::new(2.9, 4.2).coords.metric_distance(&Point2::new(3.0, 4.0).coords))));
+/// let mut ids: Vec<usize> = index.within(Point2::new(0.0, 0.0), 5.0).into_iter().map(|(i, _)| i).collect();
+/// ids.sort();
+/// assert_eq!(ids, [0, 1]);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct NearestIndex {
+    tree: KdTree,
+    points: Vec<Point2>,
+    /// Ids present in the k-d tree, by exact coordinates (bit patterns).
+    first_at: HashMap<[u64; 2], u64>,
+    /// Ids of exact duplicates, keyed by the id of the twin that is in the tree.
+    twins: HashMap<u64, Vec<u64>>,
+}
+
+impl NearestIndex {
+    /// An empty index.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// An empty index with room for `n` points before reallocating.
+    #[must_use]
+    pub fn with_capacity(n: usize) -> Self {
+        Self {
+            points: Vec::with_capacity(n),
+            first_at: HashMap::with_capacity(n),
+            ..Self::default()
+        }
+    }
+
+    /// Number of points inserted (duplicates and non-finite points included).
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Whether no point was inserted.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+
+    /// The point with id `id`.
+    ///
+    /// # Panics
+    ///
+    /// If `id >= self.len()`.
+    #[must_use]
+    pub fn point(&self, id: usize) -> Point2 {
+        self.points[id]
+    }
+
+    /// Adds `p` and returns its id (the number of points inserted before it).
+    pub fn insert(&mut self, p: Point2) -> usize {
+        let id = self.points.len();
+        self.points.push(p);
+        if p.x.is_finite() && p.y.is_finite() {
+            // -0.0 and 0.0 are the same position: normalise before taking the bits.
+            let key = [(p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()];
+            match self.first_at.get(&key) {
+                Some(&twin) => self.twins.entry(twin).or_default().push(id as u64),
+                None => {
+                    self.first_at.insert(key, id as u64);
+                    self.tree.add(&[p.x, p.y], id as u64);
+                }
+            }
+        }
+        id
+    }
+
+    /// The id of a point nearest to `p` and its distance (world units); `None` when the
+    /// index holds no finite point or `p` is not finite. Ties go to any of the nearest.
+    #[must_use]
+    pub fn nearest(&self, p: Point2) -> Option<(usize, f64)> {
+        if self.first_at.is_empty() || !(p.x.is_finite() && p.y.is_finite()) {
+            return None;
+        }
+        let n = self.tree.nearest_one::<SquaredEuclidean>(&[p.x, p.y]);
+        Some((n.item as usize, n.distance.sqrt()))
+    }
+
+    /// Every point within distance `radius` of `p` (closed ball), as `(id, distance)`, in no
+    /// particular order. Empty for a negative or NaN radius or a non-finite `p`.
+    #[must_use]
+    pub fn within(&self, p: Point2, radius: f64) -> Vec<(usize, f64)> {
+        let mut out = Vec::new();
+        self.within_into(p, radius, &mut out);
+        out
+    }
+
+    /// [`within`](Self::within) into a caller's buffer (cleared first), to reuse its memory.
+    pub fn within_into(&self, p: Point2, radius: f64, out: &mut Vec<(usize, f64)>) {
+        out.clear();
+        if self.first_at.is_empty() || !(p.x.is_finite() && p.y.is_finite() && radius >= 0.0) {
+            return;
+        }
+        let found = self
+            .tree
+            .within_unsorted::<SquaredEuclidean>(&[p.x, p.y], radius * radius);
+        for n in found {
+            // kiddo compares squared distances: keep exactly the closed ball in plain units.
+            let d = n.distance.sqrt();
+            if d <= radius {
+                self.push_with_twins(n.item, d, out);
+            }
+        }
+    }
+
+    /// The `k` points nearest to `p` as `(id, distance)`, nearest first (fewer when the index
+    /// holds fewer points).
+    #[must_use]
+    pub fn nearest_k(&self, p: Point2, k: usize) -> Vec<(usize, f64)> {
+        let mut out = Vec::new();
+        if k == 0 || self.first_at.is_empty() || !(p.x.is_finite() && p.y.is_finite()) {
+            return out;
+        }
+        for n in self.tree.nearest_n::<SquaredEuclidean>(&[p.x, p.y], k) {
+            self.push_with_twins(n.item, n.distance.sqrt(), &mut out);
+            if out.len() >= k {
+                break;
+            }
+        }
+        out.truncate(k);
+        out
+    }
+
+    fn push_with_twins(&self, item: u64, d: f64, out: &mut Vec<(usize, f64)>) {
+        out.push((item as usize, d));
+        if !self.twins.is_empty()
+            && let Some(twins) = self.twins.get(&item)
+        {
+            out.extend(twins.iter().map(|&t| (t as usize, d)));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn empty_index_answers_none() {
+        let index = NearestIndex::new();
+        assert_eq!(index.nearest(Point2::new(1.0, 1.0)), None);
+        assert!(index.within(Point2::new(1.0, 1.0), 10.0).is_empty());
+    }
+
+    #[test]
+    fn non_finite_points_are_never_reported() {
+        let mut index = NearestIndex::new();
+        assert_eq!(index.insert(Point2::new(f64::NAN, 0.0)), 0);
+        assert_eq!(index.nearest(Point2::new(0.0, 0.0)), None);
+        assert_eq!(index.insert(Point2::new(1.0, 0.0)), 1);
+        assert_eq!(index.nearest(Point2::new(0.0, 0.0)), Some((1, 1.0)));
+        assert_eq!(index.nearest(Point2::new(f64::NAN, 0.0)), None);
+    }
+}

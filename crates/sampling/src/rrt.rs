@@ -1,0 +1,199 @@
+//! RRT: the rapidly-exploring random tree (LaValle 1998), as seed
+//! `000_9b224721fe327833.txt` section 4.2 describes it: grow a tree from the start by
+//! extending the nearest node one step towards a random sample, until a node reaches the
+//! goal region.
+
+use std::ops::ControlFlow;
+use std::time::Instant;
+
+use hyplan_core::{
+    Budget, Plan, PlanError, Planner, PlannerInfo, Progress, Query, Tree, Workspace,
+};
+use rand::Rng;
+use rand::RngCore;
+
+use crate::common::{self, Checker};
+use crate::NearestIndex;
+
+/// The RRT planner's parameters.
+///
+/// The goal region comes from the [`Query`]: with [`Goal::Disc`](hyplan_core::Goal::Disc)
+/// of radius `r > 0` the search stops at the first node within `r` of the goal centre; with
+/// [`Goal::Point`](hyplan_core::Goal::Point) (or radius 0) a node within `step` of the goal
+/// is joined to it by an exact edge check, so the path ends exactly at the goal.
+///
+/// Every edge is checked with [`Workspace::segment_free`], so the returned path is
+/// collision-free in the workspace's own (exact) model. The only randomness is the `rng`
+/// passed to [`plan`](Rrt::plan): same seed, same tree, bit for bit (with an iteration
+/// budget; a time limit can stop two runs at different iterations).
+///
+/// ```
+/// use envmap::GridMap;
+/// use hyplan_core::{Goal, Point2, Query};
+/// use rand::SeedableRng;
+/// use sampling::Rrt;
+///
+/// let map = GridMap::from_ascii("
+///     ..........
+///     ..........
+///     ....##....
+///     ....##....
+///     ..........
+/// ")?;
+/// let query = Query::new(Point2::new(0.5, 0.5), Goal::disc(Point2::new(9.5, 4.5), 0.5));
+/// let rrt = Rrt { step: 1.0, ..Rrt::default() };
+/// let plan = rrt.plan(&map, &query, &mut rand_chacha::ChaCha8Rng::seed_from_u64(7))?;
+/// assert_eq!(plan.path[0], query.start);
+/// assert!(query.goal.contains(*plan.path.last().unwrap()));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rrt {
+    /// Maximum length of a new edge, world units, finite and > 0. Default 1.0.
+    pub step: f64,
+    /// Probability in [0, 1] of sampling the goal centre instead of a uniform point.
+    /// Default 0.05 (OMPL's).
+    pub goal_bias: f64,
+    /// Iteration (samples drawn) and optional time limits. Default 10 000 iterations.
+    pub budget: Budget,
+}
+
+impl Default for Rrt {
+    fn default() -> Self {
+        Self {
+            step: 1.0,
+            goal_bias: 0.05,
+            budget: Budget::default(),
+        }
+    }
+}
+
+impl Rrt {
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    ///
+    /// # Errors
+    ///
+    /// [`PlanError::InvalidParameter`] for a bad step, goal bias or budget;
+    /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
+    /// workspace or blocked; [`PlanError::BudgetExhausted`] (with the statistics) when the
+    /// budget runs out before the goal region is reached.
+    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+    ) -> Result<Plan, PlanError> {
+        self.plan_with(ws, query, rng, &mut common::keep_going)
+    }
+
+    /// [`plan`](Self::plan) with an observer, called every 64 iterations with the progress
+    /// so far; returning `ControlFlow::Break(())` stops the run (reported as
+    /// [`PlanError::BudgetExhausted`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`plan`](Self::plan).
+    pub fn plan_with<W, R, F>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+        observer: &mut F,
+    ) -> Result<Plan, PlanError>
+    where
+        W: Workspace + ?Sized,
+        R: Rng + ?Sized,
+        F: FnMut(&Progress) -> ControlFlow<()>,
+    {
+        let started = Instant::now();
+        common::validate(self.step, &self.budget, ws, query)?;
+        common::check_goal_bias(self.goal_bias)?;
+        let goal = query.goal;
+        let mut checker = Checker::new(ws);
+        let mut index = NearestIndex::with_capacity(1024);
+        let mut parent: Vec<Option<u32>> = Vec::with_capacity(1024);
+        index.insert(query.start);
+        parent.push(None);
+        let mut iterations = 0_u64;
+        let mut reached = goal.contains(query.start).then_some(0_usize);
+
+        while reached.is_none() && !self.budget.exhausted(iterations, started) {
+            iterations += 1;
+            if iterations % common::OBSERVE_EVERY == 0 {
+                let progress = Progress {
+                    iterations,
+                    nodes: parent.len() as u64,
+                    best_cost: None,
+                };
+                if observer(&progress).is_break() {
+                    break;
+                }
+            }
+            // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
+            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
+                goal.center()
+            } else {
+                common::sample_uniform(ws, rng)
+            };
+            // Nearest: the tree node closest to the sample.
+            let Some((near, _)) = index.nearest(sample) else {
+                break;
+            };
+            let near_point = index.point(near);
+            // Steer: at most one step from the nearest node towards the sample.
+            let new_point = common::steer(near_point, sample, self.step);
+            if new_point == near_point {
+                continue;
+            }
+            // Segment free: the whole edge, exactly.
+            if !checker.segment_free(near_point, new_point) {
+                continue;
+            }
+            // Add the new node with its parent.
+            let new = index.insert(new_point);
+            parent.push(Some(near as u32));
+            // Goal test: inside the goal region, or an exact goal point one free step away.
+            if goal.contains(new_point) {
+                reached = Some(new);
+            } else if let Some(g) = common::exact_goal_within(&goal, new_point, self.step)
+                && checker.segment_free(new_point, g)
+            {
+                reached = Some(index.insert(g));
+                parent.push(Some(new as u32));
+            }
+        }
+
+        let points: Vec<_> = (0..index.len()).map(|i| index.point(i)).collect();
+        let stats = common::stats(iterations, points.len(), checker.checks, started);
+        let Some(leaf) = reached else {
+            return Err(PlanError::BudgetExhausted { stats });
+        };
+        let path = common::branch(&points, &parent, leaf);
+        Ok(Plan {
+            cost: hyplan_core::path_length(&path),
+            path,
+            trees: vec![Tree { points, parent }],
+            stats,
+        })
+    }
+}
+
+impl Planner for Rrt {
+    fn info(&self) -> PlannerInfo {
+        PlannerInfo {
+            name: "rrt",
+            optimizing: false,
+            proves_no_path: false,
+            grid_only: false,
+        }
+    }
+
+    fn plan(
+        &self,
+        ws: &dyn Workspace,
+        query: &Query,
+        rng: &mut dyn RngCore,
+    ) -> Result<Plan, PlanError> {
+        Rrt::plan(self, ws, query, rng)
+    }
+}

@@ -1,0 +1,241 @@
+//! RRT-Connect (Kuffner and LaValle 2000): two trees; one extends a step towards a random
+//! sample, the other then greedily connects towards the new node, step after step, until it
+//! reaches it or is blocked. The trees swap roles every iteration.
+
+use std::ops::ControlFlow;
+use std::time::Instant;
+
+use hyplan_core::{
+    Budget, Plan, PlanError, Planner, PlannerInfo, Point2, Progress, Query, Workspace,
+};
+use rand::{Rng, RngCore};
+
+use crate::common::{self, Checker, GrowTree};
+
+/// The outcome of one extension step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum ExtendStatus {
+    /// The target itself was added (node id).
+    Reached(usize),
+    /// A node one step towards the target was added (node id).
+    Advanced(usize),
+    /// The edge was blocked; nothing was added.
+    Trapped,
+}
+
+/// The RRT-Connect planner's parameters.
+///
+/// Edges are checked exactly with [`Workspace::segment_free`]. The goal tree is rooted at the
+/// goal centre, so with an exact goal the path ends on it; with a goal disc a start-tree node
+/// inside the disc also ends the search. There is no goal bias (OMPL's RRTConnect has none
+/// either): the other tree is the target.
+///
+/// ```
+/// use envmap::GridMap;
+/// use hyplan_core::{Goal, Point2, Query};
+/// use rand::SeedableRng;
+/// use sampling::RrtConnect;
+///
+/// let map = GridMap::from_ascii("
+///     ..........
+///     ....##....
+///     ....##....
+///     ..........
+/// ")?;
+/// let query = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(9.5, 3.5)));
+/// let planner = RrtConnect { step: 2.0, ..RrtConnect::default() };
+/// let plan = planner.plan(&map, &query, &mut rand_chacha::ChaCha8Rng::seed_from_u64(3))?;
+/// assert_eq!(plan.path[0], query.start);
+/// assert_eq!(*plan.path.last().unwrap(), Point2::new(9.5, 3.5));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RrtConnect {
+    /// Maximum length of one edge, world units, finite and > 0. Default 1.0.
+    pub step: f64,
+    /// Iteration (samples drawn) and optional time limits. Default 10 000 iterations.
+    pub budget: Budget,
+}
+
+impl Default for RrtConnect {
+    fn default() -> Self {
+        Self {
+            step: 1.0,
+            budget: Budget::default(),
+        }
+    }
+}
+
+/// One step of `tree` from its node nearest to `target` towards it.
+fn extend<W: Workspace + ?Sized>(
+    tree: &mut GrowTree,
+    target: Point2,
+    step: f64,
+    checker: &mut Checker<'_, W>,
+) -> ExtendStatus {
+    // Nearest: the tree node closest to the target.
+    let Some((near, _)) = tree.index.nearest(target) else {
+        return ExtendStatus::Trapped;
+    };
+    let near_point = tree.index.point(near);
+    if near_point == target {
+        return ExtendStatus::Reached(near);
+    }
+    // Steer: at most one step towards the target.
+    let new_point = common::steer(near_point, target, step);
+    // Segment free: exactly.
+    if !checker.segment_free(near_point, new_point) {
+        return ExtendStatus::Trapped;
+    }
+    // Add.
+    let new = tree.add(new_point, near);
+    if new_point == target {
+        ExtendStatus::Reached(new)
+    } else {
+        ExtendStatus::Advanced(new)
+    }
+}
+
+impl RrtConnect {
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    ///
+    /// # Errors
+    ///
+    /// [`PlanError::InvalidParameter`] for a bad step or budget; [`PlanError::InvalidStart`] /
+    /// [`PlanError::InvalidGoal`] for a query outside the workspace or blocked;
+    /// [`PlanError::BudgetExhausted`] (with the statistics) when the trees did not meet.
+    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+    ) -> Result<Plan, PlanError> {
+        self.plan_with(ws, query, rng, &mut common::keep_going)
+    }
+
+    /// [`plan`](Self::plan) with an observer, called every 64 iterations;
+    /// `ControlFlow::Break(())` stops the run ([`PlanError::BudgetExhausted`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`plan`](Self::plan).
+    pub fn plan_with<W, R, F>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+        observer: &mut F,
+    ) -> Result<Plan, PlanError>
+    where
+        W: Workspace + ?Sized,
+        R: Rng + ?Sized,
+        F: FnMut(&Progress) -> ControlFlow<()>,
+    {
+        let started = Instant::now();
+        common::validate(self.step, &self.budget, ws, query)?;
+        let goal = query.goal;
+        let mut checker = Checker::new(ws);
+        // trees[0] grows from the start, trees[1] from the goal centre.
+        let mut trees = [
+            GrowTree::rooted_at(query.start),
+            GrowTree::rooted_at(goal.center()),
+        ];
+        let mut iterations = 0_u64;
+        // (start-tree node, goal-tree node) where the trees met (None: the start tree reached
+        // the goal disc by itself).
+        let mut joined: Option<(usize, Option<usize>)> =
+            goal.contains(query.start).then_some((0, None));
+        let mut active = 0_usize;
+
+        while joined.is_none() && !self.budget.exhausted(iterations, started) {
+            iterations += 1;
+            if iterations % common::OBSERVE_EVERY == 0 {
+                let progress = Progress {
+                    iterations,
+                    nodes: (trees[0].len() + trees[1].len()) as u64,
+                    best_cost: None,
+                };
+                if observer(&progress).is_break() {
+                    break;
+                }
+            }
+            let other = 1 - active;
+            // Sample: uniform in the bounds.
+            let sample = common::sample_uniform(ws, rng);
+            // Extend: the active tree one step towards the sample.
+            let new = match extend(&mut trees[active], sample, self.step, &mut checker) {
+                ExtendStatus::Trapped => {
+                    active = other;
+                    continue;
+                }
+                ExtendStatus::Reached(n) | ExtendStatus::Advanced(n) => n,
+            };
+            let target = trees[active].index.point(new);
+            // Goal test: the start tree inside a goal disc ends the search by itself.
+            if active == 0 && goal.radius() > 0.0 && goal.contains(target) {
+                joined = Some((new, None));
+                break;
+            }
+            // Connect: the other tree steps towards the new node until it reaches it or is
+            // blocked.
+            loop {
+                match extend(&mut trees[other], target, self.step, &mut checker) {
+                    ExtendStatus::Advanced(m) => {
+                        let p = trees[other].index.point(m);
+                        if other == 0 && goal.radius() > 0.0 && goal.contains(p) {
+                            joined = Some((m, None));
+                            break;
+                        }
+                    }
+                    ExtendStatus::Reached(m) => {
+                        joined = Some(if active == 0 {
+                            (new, Some(m))
+                        } else {
+                            (m, Some(new))
+                        });
+                        break;
+                    }
+                    ExtendStatus::Trapped => break,
+                }
+            }
+            // Swap: the other tree extends next.
+            active = other;
+        }
+
+        let nodes = trees[0].len() + trees[1].len();
+        let stats = common::stats(iterations, nodes, checker.checks, started);
+        let Some((a, b)) = joined else {
+            return Err(PlanError::BudgetExhausted { stats });
+        };
+        let path = match b {
+            Some(b) => common::joined_path(&trees[0], a, &trees[1], b),
+            None => common::branch(&trees[0].points(), &trees[0].parent, a),
+        };
+        Ok(Plan {
+            cost: hyplan_core::path_length(&path),
+            path,
+            trees: vec![trees[0].to_tree(), trees[1].to_tree()],
+            stats,
+        })
+    }
+}
+
+impl Planner for RrtConnect {
+    fn info(&self) -> PlannerInfo {
+        PlannerInfo {
+            name: "rrt-connect",
+            optimizing: false,
+            proves_no_path: false,
+            grid_only: false,
+        }
+    }
+
+    fn plan(
+        &self,
+        ws: &dyn Workspace,
+        query: &Query,
+        rng: &mut dyn RngCore,
+    ) -> Result<Plan, PlanError> {
+        RrtConnect::plan(self, ws, query, rng)
+    }
+}
