@@ -104,12 +104,13 @@ impl BiRrt {
         let mut iterations = 0_u64;
         // (start-tree node, goal-tree node) where the trees met; goal node None = start tree
         // reached the goal region by itself.
-        let mut joined: Option<(usize, Option<usize>)> = goal.contains(query.start).then_some((0, None));
+        let mut joined: Option<(usize, Option<usize>)> =
+            goal.contains(query.start).then_some((0, None));
         let mut active = 0_usize;
 
         while joined.is_none() && !self.budget.exhausted(iterations, started) {
             iterations += 1;
-            if iterations % common::OBSERVE_EVERY == 0 {
+            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
                 let progress = Progress {
                     iterations,
                     nodes: (trees[0].len() + trees[1].len()) as u64,

@@ -12,8 +12,8 @@ use hyplan_core::{
 use rand::Rng;
 use rand::RngCore;
 
-use crate::common::{self, Checker};
 use crate::NearestIndex;
+use crate::common::{self, Checker};
 
 /// The RRT planner's parameters.
 ///
@@ -119,7 +119,7 @@ impl Rrt {
 
         while reached.is_none() && !self.budget.exhausted(iterations, started) {
             iterations += 1;
-            if iterations % common::OBSERVE_EVERY == 0 {
+            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
                 let progress = Progress {
                     iterations,
                     nodes: parent.len() as u64,

@@ -149,7 +149,7 @@ impl RrtConnect {
 
         while joined.is_none() && !self.budget.exhausted(iterations, started) {
             iterations += 1;
-            if iterations % common::OBSERVE_EVERY == 0 {
+            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
                 let progress = Progress {
                     iterations,
                     nodes: (trees[0].len() + trees[1].len()) as u64,

@@ -216,11 +216,11 @@ impl RrtStar {
         let mut near: Vec<(usize, f64)> = Vec::new();
         let mut candidates: Vec<(f64, usize, f64)> = Vec::new();
 
-        while !(self.stop_at_first_solution && !goal_nodes.is_empty())
+        while (!self.stop_at_first_solution || goal_nodes.is_empty())
             && !self.budget.exhausted(iterations, started)
         {
             iterations += 1;
-            if iterations % common::OBSERVE_EVERY == 0 {
+            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
                 let progress = Progress {
                     iterations,
                     nodes: tree.parent.len() as u64,

@@ -1,0 +1,5 @@
+//! Public-API tests of `sampling`, one binary.
+
+mod fixtures;
+mod nearest;
+mod planners;
