@@ -1,4 +1,5 @@
-//! The world model of hyplan: three-zone grid maps.
+//! The world model of hyplan: three-zone grid maps, the seed-000 image pipeline, and
+//! loaders for pictures, ROS maps and MovingAI maps.
 //!
 //! A [`GridMap`] holds one [`Zone`](hyplan_core::Zone) per cell (safe, high-risk,
 //! forbidden, seed `000_9b224721fe327833.txt` section 4.1) and implements
@@ -6,22 +7,51 @@
 //!
 //! # Contents
 //!
-//! - [`GridMap`]: the grid, its frame (origin at the lower-left corner, y up) and zones.
-//! - [`GridMap::segment_cells`], [`GridMap::segment_free_cells`]: every cell a segment
+//! Maps and frames:
+//! - [`GridMap`]: the grid, its frame (origin at the lower-left corner, y up) and zones;
+//!   [`GridMap::segment_cells`], [`GridMap::segment_free_cells`]: every cell a segment
 //!   touches, corners included.
+//! - [`Mask`]: a binary grid in map cells; [`Picture`]: an 8-bit raster, top row first.
+//! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
+//!   pictures and `.map` files, metres y up for ROS maps).
+//!
+//! The seed-000 pipeline, one function per stage, and all of it in [`Pipeline`]:
+//! 1. [`binarize`]: picture to obstacle mask (luminance below a threshold).
+//! 2. [`label_components`]: 8-connected obstacles ([`Component`], [`Labels`]).
+//! 3. [`bounding_rectangles`], [`fill_rectangles`]: the approximating rectangles
+//!    ([`CellRect`]).
+//! 4. [`distance_transform`]: exact Euclidean distance transform in linear time
+//!    ([`DistanceField`]).
+//! 5. [`zones`]: safe / high-risk / forbidden within a safety radius.
+//! - [`Inflation`]: Nav2's inflation costs, the graded alternative to zones.
+//!
+//! Files:
+//! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension.
+//! - [`read_movingai`], [`parse_movingai`]: MovingAI `.map`.
+//! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`], [`write_ros`]: ROS map_server.
+//! - [`read_picture`], [`decode_picture`], [`write_picture`], [`render_zones`],
+//!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
+//! - [`MapError`]: every failure, naming the file, line or field and the value.
+//!
+//! # Conventions
+//!
+//! World coordinates have x to the right and y up; cell `(i, j)` has `j` counted from the
+//! bottom, and the map origin is the lower-left corner of cell (0, 0), as in ROS. Pictures
+//! and `.map` files are stored top row first; loaders flip them. Distances inside the
+//! pipeline are in cells; ROS safety radii are in metres and converted.
 //!
 //! # Example
 //!
 //! ```
-//! use envmap::GridMap;
+//! use envmap::{Picture, Pipeline};
 //! use hyplan_core::{Point2, Workspace};
-//! let map = GridMap::from_ascii("
-//!     ....
-//!     .##.
-//!     ....
-//! ")?;
-//! assert!(map.segment_free(Point2::new(0.5, 0.5), Point2::new(3.5, 0.5)));
-//! assert!(!map.segment_free(Point2::new(0.5, 1.5), Point2::new(3.5, 1.5)));
+//! // A 60 x 40 white room with a black table in the middle.
+//! let mut room = Picture::filled_rgb(60, 40, [255, 255, 255]);
+//! for y in 15..25 { for x in 25..35 { room.set_rgb(x, y, [20, 20, 20]); } }
+//! let out = Pipeline { safety_radius: 5.0, ..Pipeline::default() }.run(&room)?;
+//! let map = out.map.avoiding_risk(); // plan in the safe zone only
+//! assert!(map.segment_free(Point2::new(2.5, 2.5), Point2::new(57.5, 2.5)));
+//! assert!(!map.segment_free(Point2::new(2.5, 20.0), Point2::new(57.5, 20.0)));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
@@ -30,7 +60,40 @@
 //! - `image` (default): PNG / PGM / PPM decoding and encoding.
 //! - `serde`: derives for the plain data types.
 
+mod binarize;
+mod components;
+mod edt;
+mod error;
+mod frame;
 mod grid_map;
+mod inflation;
+mod io;
+mod mask;
+mod picture;
+mod pipeline;
+mod rectangles;
 mod workspace;
+mod zones;
 
+pub use binarize::binarize;
+pub use components::{Component, Labels, label_components};
+pub use edt::{DistanceField, distance_transform};
+pub use error::MapError;
+pub use frame::InputFrame;
 pub use grid_map::{GridError, GridMap};
+pub use inflation::{INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE};
+pub use io::image::{
+    FORBIDDEN_COLOUR, RECTANGLE_COLOUR, RISK_COLOUR, SAFE_COLOUR, decode_picture, read_picture,
+    render_mask, render_zones, write_picture,
+};
+pub use io::movingai::{parse_movingai, read_movingai};
+pub use io::ros::{
+    ROS_FREE, ROS_OCCUPIED, ROS_RISK, RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml,
+    ros_cell_counts, write_ros,
+};
+pub use io::{LoadOptions, LoadedMap, MapKind, load_map};
+pub use mask::Mask;
+pub use picture::Picture;
+pub use pipeline::{Pipeline, PipelineOutput};
+pub use rectangles::{CellRect, bounding_rectangles, fill_rectangles};
+pub use zones::zones;

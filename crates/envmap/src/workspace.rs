@@ -24,7 +24,7 @@ impl GridMap {
         let (ub, vb) = ((b.x - o.x) * inv, (b.y - o.y) * inv);
         let (w, h) = (self.width(), self.height());
         if (ub - ua).abs() >= (vb - va).abs() {
-            sweep(ua, va, ub, vb, w, h, |c, r| visit(c, r))
+            sweep(ua, va, ub, vb, w, h, &mut visit)
         } else {
             sweep(va, ua, vb, ub, h, w, |r, c| visit(c, r))
         }

@@ -1,0 +1,262 @@
+//! Stage 4: the exact Euclidean distance transform in linear time.
+//!
+//! P. F. Felzenszwalb and D. P. Huttenlocher, "Distance Transforms of Sampled Functions",
+//! Theory of Computing 8 (2012): the squared distance is separable, so a 1-D transform per
+//! column then per row gives the exact 2-D result; each 1-D transform is the lower envelope
+//! of the parabolas `(x - q)^2 + f(q)`, built in one left-to-right pass.
+
+use crate::Mask;
+
+/// Squared distances, in cells, from every cell centre to the nearest obstacle cell centre.
+///
+/// Distances are exact integers (`dx^2 + dy^2`). Maps with no obstacle hold
+/// [`DistanceField::NONE`] everywhere.
+#[derive(Clone, PartialEq, Eq, Debug)]
+pub struct DistanceField {
+    width: usize,
+    height: usize,
+    dist_sq: Vec<u32>,
+}
+
+impl DistanceField {
+    /// The value of cells with no obstacle anywhere in the map.
+    pub const NONE: u32 = u32::MAX;
+
+    /// Columns.
+    #[must_use]
+    pub const fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Rows.
+    #[must_use]
+    pub const fn height(&self) -> usize {
+        self.height
+    }
+
+    /// Squared distances in cells^2, row-major from the bottom row ([`NONE`](Self::NONE)
+    /// when there is no obstacle).
+    #[must_use]
+    pub fn dist_sq(&self) -> &[u32] {
+        &self.dist_sq
+    }
+
+    /// Squared distance of cell `(i, j)` in cells^2 ([`NONE`](Self::NONE) outside or with
+    /// no obstacle).
+    #[must_use]
+    pub fn cell_dist_sq(&self, i: usize, j: usize) -> u32 {
+        if i < self.width && j < self.height {
+            self.dist_sq[j * self.width + i]
+        } else {
+            Self::NONE
+        }
+    }
+
+    /// Distance of cell `(i, j)` in cells (`f64::INFINITY` with no obstacle or outside).
+    #[must_use]
+    pub fn cell_dist(&self, i: usize, j: usize) -> f64 {
+        match self.cell_dist_sq(i, j) {
+            Self::NONE => f64::INFINITY,
+            d => f64::from(d).sqrt(),
+        }
+    }
+}
+
+/// The exact Euclidean distance transform of `mask`: for each cell, the squared distance
+/// from its centre to the centre of the nearest `true` cell, in cells^2.
+///
+/// Linear in the number of cells (Felzenszwalb-Huttenlocher): a vertical pass gives each
+/// cell's distance to the nearest obstacle in its column, then a lower envelope of
+/// parabolas per row combines them exactly.
+///
+/// # Panics
+///
+/// Never for maps up to 46 340 cells per side; beyond, squared distances above `u32::MAX - 1`
+/// saturate to `u32::MAX - 1`.
+///
+/// ```
+/// use envmap::{distance_transform, Mask};
+/// let mut mask = Mask::new(5, 4);
+/// mask.set(0, 0, true);
+/// let d = distance_transform(&mask);
+/// assert_eq!(d.cell_dist_sq(0, 0), 0);
+/// assert_eq!(d.cell_dist_sq(4, 3), 16 + 9);
+/// assert_eq!(d.cell_dist(3, 4), f64::INFINITY); // outside
+/// ```
+#[must_use]
+pub fn distance_transform(mask: &Mask) -> DistanceField {
+    let (w, h) = (mask.width(), mask.height());
+    let cells = mask.cells();
+    const INF: u32 = u32::MAX;
+    // Vertical pass: distance (in cells) to the nearest obstacle in the same column.
+    // Row by row, so memory is read in order.
+    let mut col = vec![INF; w * h];
+    for j in 0..h {
+        let (done, rest) = col.split_at_mut(j * w);
+        let row = &mut rest[..w];
+        let m = &cells[j * w..(j + 1) * w];
+        if j == 0 {
+            for (c, &o) in row.iter_mut().zip(m) {
+                *c = if o { 0 } else { INF };
+            }
+        } else {
+            let below = &done[(j - 1) * w..j * w];
+            for ((c, &o), &b) in row.iter_mut().zip(m).zip(below) {
+                *c = if o { 0 } else { b.saturating_add(1) };
+            }
+        }
+    }
+    for j in (0..h.saturating_sub(1)).rev() {
+        let (lo, hi) = col.split_at_mut((j + 1) * w);
+        let row = &mut lo[j * w..];
+        let above = &hi[..w];
+        for (c, &a) in row.iter_mut().zip(above) {
+            *c = (*c).min(a.saturating_add(1));
+        }
+    }
+    // Horizontal pass: lower envelope of parabolas (x - q)^2 + col(q)^2 per row.
+    let mut out = vec![DistanceField::NONE; w * h];
+    let mut env = Envelope::with_capacity(w);
+    for j in 0..h {
+        let g = &col[j * w..(j + 1) * w];
+        env.transform(g, &mut out[j * w..(j + 1) * w]);
+    }
+    DistanceField {
+        width: w,
+        height: h,
+        dist_sq: out,
+    }
+}
+
+/// Buffers of the 1-D lower envelope, reused across rows.
+struct Envelope {
+    /// Positions of the parabolas of the envelope.
+    v: Vec<usize>,
+    /// Boundaries: parabola `v[k]` is lowest on `[z[k], z[k + 1]]`.
+    z: Vec<f64>,
+    /// Squared heights `f(q)` of the parabolas, as `i64`.
+    f: Vec<i64>,
+}
+
+impl Envelope {
+    fn with_capacity(n: usize) -> Self {
+        Self {
+            v: Vec::with_capacity(n),
+            z: Vec::with_capacity(n + 1),
+            f: Vec::with_capacity(n),
+        }
+    }
+
+    /// `out[x] = min_q (x - q)^2 + g[q]^2` over the finite `g[q]`; `NONE` if there is none.
+    fn transform(&mut self, g: &[u32], out: &mut [u32]) {
+        let (v, z, f) = (&mut self.v, &mut self.z, &mut self.f);
+        v.clear();
+        z.clear();
+        f.clear();
+        f.extend(g.iter().map(|&d| {
+            if d == u32::MAX {
+                i64::MAX
+            } else {
+                i64::from(d) * i64::from(d)
+            }
+        }));
+        // Parabola q's intersection with parabola p (< q): the x where they are equal.
+        // Values are integers below 2^63; the quotient is exact enough (see tests) because a
+        // non-integer boundary is at least 1 / (2n) from any integer x.
+        let meet = |f: &[i64], p: usize, q: usize| -> f64 {
+            let (pf, qf) = (p as i64, q as i64);
+            ((f[q] + qf * qf) - (f[p] + pf * pf)) as f64 / (2 * (qf - pf)) as f64
+        };
+        for q in 0..g.len() {
+            if f[q] == i64::MAX {
+                continue;
+            }
+            if v.is_empty() {
+                v.push(q);
+                z.push(f64::NEG_INFINITY);
+                continue;
+            }
+            let mut s = meet(f, *v.last().expect("non-empty"), q);
+            while s <= *z.last().expect("one boundary per parabola") {
+                v.pop();
+                z.pop();
+                match v.last() {
+                    Some(&p) => s = meet(f, p, q),
+                    None => {
+                        s = f64::NEG_INFINITY;
+                        break;
+                    }
+                }
+            }
+            v.push(q);
+            z.push(s);
+        }
+        if v.is_empty() {
+            out.fill(DistanceField::NONE);
+            return;
+        }
+        let mut k = 0;
+        for (x, o) in out.iter_mut().enumerate() {
+            while k + 1 < v.len() && z[k + 1] < x as f64 {
+                k += 1;
+            }
+            let dx = x as i64 - v[k] as i64;
+            let d = dx * dx + f[v[k]];
+            *o = u32::try_from(d).unwrap_or(u32::MAX - 1).min(u32::MAX - 1);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn brute(mask: &Mask) -> Vec<u32> {
+        let (w, h) = (mask.width(), mask.height());
+        let obstacles: Vec<(i64, i64)> = (0..h)
+            .flat_map(|j| (0..w).map(move |i| (i, j)))
+            .filter(|&(i, j)| mask.get(i, j))
+            .map(|(i, j)| (i as i64, j as i64))
+            .collect();
+        (0..h)
+            .flat_map(|j| (0..w).map(move |i| (i as i64, j as i64)))
+            .map(|(i, j)| {
+                obstacles
+                    .iter()
+                    .map(|&(a, b)| ((a - i).pow(2) + (b - j).pow(2)) as u32)
+                    .min()
+                    .unwrap_or(u32::MAX)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn tiny_maps_match_brute_force() {
+        let patterns: [&[(usize, usize)]; 4] = [
+            &[],
+            &[(0, 0)],
+            &[(3, 1), (0, 4)],
+            &[(1, 1), (2, 1), (5, 3), (5, 4), (0, 0)],
+        ];
+        for cells in patterns {
+            let mut mask = Mask::new(6, 5);
+            for &(i, j) in cells {
+                mask.set(i, j, true);
+            }
+            assert_eq!(distance_transform(&mask).dist_sq, brute(&mask), "{cells:?}");
+        }
+    }
+
+    #[test]
+    fn single_row_and_column() {
+        let mut mask = Mask::new(7, 1);
+        mask.set(2, 0, true);
+        assert_eq!(
+            distance_transform(&mask).dist_sq,
+            vec![4, 1, 0, 1, 4, 9, 16]
+        );
+        let mut mask = Mask::new(1, 4);
+        mask.set(0, 3, true);
+        assert_eq!(distance_transform(&mask).dist_sq, vec![9, 4, 1, 0]);
+    }
+}

@@ -1,0 +1,80 @@
+//! `InputFrame`: how users give coordinates for a map they loaded.
+
+use hyplan_core::Point2;
+
+/// The coordinates a user gives for a loaded map, and their conversion to world
+/// coordinates (x right, y up, [`GridMap`](crate::GridMap) convention).
+///
+/// - [`InputFrame::Cells`] for pictures and MovingAI `.map` files: cell units with
+///   `x` = column and `y` = row counted from the **top**, cell `(x, y)` covering
+///   `[x, x+1) x [y, y+1)`. This is the frame of image viewers, of MovingAI `.scen` files
+///   and of the OMPL peer.
+/// - [`InputFrame::World`] for ROS map_server YAML maps: metres in the map frame, y up.
+///
+/// ```
+/// use envmap::InputFrame;
+/// use hyplan_core::Point2;
+/// // A picture 10 rows high, resolution 1, origin (0, 0).
+/// let frame = InputFrame::Cells { height: 10, resolution: 1.0, origin: Point2::origin() };
+/// assert_eq!(frame.to_world(2.5, 0.5), Point2::new(2.5, 9.5)); // top row
+/// assert_eq!(frame.from_world(Point2::new(2.5, 9.5)), (2.5, 0.5));
+/// assert_eq!(InputFrame::World.to_world(-1.0, 2.0), Point2::new(-1.0, 2.0));
+/// ```
+#[derive(Clone, Copy, PartialEq, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum InputFrame {
+    /// Cell units, y counted down from the top row (pictures, MovingAI).
+    Cells {
+        /// Map rows.
+        height: usize,
+        /// World units per cell of the map (1 for loaded pictures and `.map` files).
+        resolution: f64,
+        /// World position of the map's lower-left corner ((0, 0) for loaded files).
+        origin: Point2,
+    },
+    /// World units of the map (metres for ROS maps), y up.
+    World,
+}
+
+impl InputFrame {
+    /// The world point of input coordinates `(x, y)`.
+    #[must_use]
+    pub fn to_world(&self, x: f64, y: f64) -> Point2 {
+        match *self {
+            Self::Cells {
+                height,
+                resolution,
+                origin,
+            } => Point2::new(
+                origin.x + x * resolution,
+                origin.y + (height as f64 - y) * resolution,
+            ),
+            Self::World => Point2::new(x, y),
+        }
+    }
+
+    /// The input coordinates `(x, y)` of world point `p`.
+    #[must_use]
+    pub fn from_world(&self, p: Point2) -> (f64, f64) {
+        match *self {
+            Self::Cells {
+                height,
+                resolution,
+                origin,
+            } => (
+                (p.x - origin.x) / resolution,
+                height as f64 - (p.y - origin.y) / resolution,
+            ),
+            Self::World => (p.x, p.y),
+        }
+    }
+
+    /// A short name of the frame's unit for messages: `"cells, y down"` or `"world units, y up"`.
+    #[must_use]
+    pub const fn describe(&self) -> &'static str {
+        match self {
+            Self::Cells { .. } => "cells, y down from the top row",
+            Self::World => "world units (metres for ROS maps), y up",
+        }
+    }
+}

@@ -1,0 +1,174 @@
+//! Pictures on disk (PNG, PGM, PPM via the `image` crate) and renderings of maps.
+
+use std::path::Path;
+
+use hyplan_core::Zone;
+
+use crate::{CellRect, GridMap, MapError, Mask, Picture};
+
+/// Reads a PNG, PGM or PPM file as a grey picture (one channel) when it has no colour, else
+/// RGB; 16-bit samples are scaled to 8 bits and alpha is dropped.
+///
+/// # Errors
+///
+/// [`MapError::Read`] (missing or unreadable file), [`MapError::Decode`] (not an image the
+/// decoder knows), [`MapError::EmptyImage`] (zero width or height),
+/// [`MapError::NoImageSupport`] without the `image` feature.
+pub fn read_picture(path: &Path) -> Result<Picture, MapError> {
+    #[cfg(feature = "image")]
+    {
+        let bytes = std::fs::read(path).map_err(|source| MapError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        decode_picture(&bytes, path)
+    }
+    #[cfg(not(feature = "image"))]
+    {
+        Err(MapError::NoImageSupport {
+            path: path.to_path_buf(),
+        })
+    }
+}
+
+/// Decodes the bytes of a PNG, PGM or PPM file (format guessed from the content); `path`
+/// only names the file in errors.
+///
+/// # Errors
+///
+/// As [`read_picture`], minus the io error.
+pub fn decode_picture(bytes: &[u8], path: &Path) -> Result<Picture, MapError> {
+    #[cfg(feature = "image")]
+    {
+        let decode = |source| MapError::Decode {
+            path: path.to_path_buf(),
+            source,
+        };
+        let reader = image::ImageReader::new(std::io::Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|e| decode(image::ImageError::IoError(e)))?;
+        // The reader's default limits (512 MiB) refuse absurd headers before allocating.
+        let img = reader.decode().map_err(decode)?;
+        let (w, h) = (img.width() as usize, img.height() as usize);
+        if w == 0 || h == 0 {
+            return Err(MapError::EmptyImage {
+                path: path.to_path_buf(),
+                width: w,
+                height: h,
+            });
+        }
+        let pic = if img.color().has_color() {
+            Picture::rgb(w, h, img.into_rgb8().into_raw())
+        } else {
+            Picture::grey(w, h, img.into_luma8().into_raw())
+        };
+        Ok(pic.expect("the image crate returns w * h * channels bytes"))
+    }
+    #[cfg(not(feature = "image"))]
+    {
+        let _ = bytes;
+        Err(MapError::NoImageSupport {
+            path: path.to_path_buf(),
+        })
+    }
+}
+
+/// Writes a picture; the format follows the extension (`.png`, `.pgm`, `.ppm`; PNM files
+/// are written binary).
+///
+/// # Errors
+///
+/// [`MapError::Encode`] (unknown extension, io failure), [`MapError::NoImageSupport`]
+/// without the `image` feature.
+pub fn write_picture(picture: &Picture, path: &Path) -> Result<(), MapError> {
+    #[cfg(feature = "image")]
+    {
+        let (w, h) = (picture.width() as u32, picture.height() as u32);
+        let colour = if picture.channels() == 1 {
+            image::ExtendedColorType::L8
+        } else {
+            image::ExtendedColorType::Rgb8
+        };
+        image::save_buffer(path, picture.data(), w, h, colour).map_err(|source| MapError::Encode {
+            path: path.to_path_buf(),
+            source,
+        })
+    }
+    #[cfg(not(feature = "image"))]
+    {
+        let _ = picture;
+        Err(MapError::NoImageSupport {
+            path: path.to_path_buf(),
+        })
+    }
+}
+
+/// Colour of safe cells in [`render_zones`]: white.
+pub const SAFE_COLOUR: [u8; 3] = [255, 255, 255];
+/// Colour of high-risk cells in [`render_zones`]: grey.
+pub const RISK_COLOUR: [u8; 3] = [160, 160, 160];
+/// Colour of forbidden cells in [`render_zones`]: black.
+pub const FORBIDDEN_COLOUR: [u8; 3] = [0, 0, 0];
+/// Colour of rectangle outlines in [`render_zones`]: blue.
+pub const RECTANGLE_COLOUR: [u8; 3] = [0, 0, 255];
+
+/// The zones of `map` drawn in seed 000's colours (Fig. 6(d)): white safe, grey high-risk,
+/// black forbidden, with `rectangles` outlined in blue; one pixel per cell, top row first.
+///
+/// ```
+/// use envmap::{render_zones, GridMap, FORBIDDEN_COLOUR, RISK_COLOUR};
+/// let map = GridMap::from_ascii("
+///     #~.
+/// ")?;
+/// let pic = render_zones(&map, &[]);
+/// assert_eq!(pic.pixel(0, 0), &FORBIDDEN_COLOUR);
+/// assert_eq!(pic.pixel(1, 0), &RISK_COLOUR);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[must_use]
+pub fn render_zones(map: &GridMap, rectangles: &[CellRect]) -> Picture {
+    let (w, h) = (map.width(), map.height());
+    let mut pic = Picture::filled_rgb(w, h, SAFE_COLOUR);
+    for j in 0..h {
+        for i in 0..w {
+            let c = match map.cell_zone(i, j) {
+                Zone::Free => continue,
+                Zone::Risk => RISK_COLOUR,
+                Zone::Forbidden => FORBIDDEN_COLOUR,
+            };
+            pic.set_rgb(i, h - 1 - j, c);
+        }
+    }
+    for r in rectangles {
+        outline(&mut pic, h, r, RECTANGLE_COLOUR);
+    }
+    pic
+}
+
+/// A mask drawn black (`true`) on white, one pixel per cell, top row first.
+#[must_use]
+pub fn render_mask(mask: &Mask) -> Picture {
+    let (w, h) = (mask.width(), mask.height());
+    let mut data = vec![255u8; w * h];
+    for j in 0..h {
+        for i in 0..w {
+            if mask.get(i, j) {
+                data[(h - 1 - j) * w + i] = 0;
+            }
+        }
+    }
+    Picture::grey(w, h, data).expect("w * h bytes")
+}
+
+/// Outlines a cell rectangle on a picture of map height `h` (rows flipped).
+pub(crate) fn outline(pic: &mut Picture, h: usize, r: &CellRect, colour: [u8; 3]) {
+    let (y0, y1) = (h - 1 - r.j_max.min(h - 1), h - 1 - r.j_min.min(h - 1));
+    for x in r.i_min..=r.i_max {
+        pic.set_rgb(x, y0, colour);
+        pic.set_rgb(x, y1, colour);
+    }
+    for y in y0..=y1 {
+        pic.set_rgb(r.i_min, y, colour);
+        pic.set_rgb(r.i_max, y, colour);
+    }
+}

@@ -1,0 +1,184 @@
+//! Loading maps from files: pictures, ROS map_server YAML, MovingAI `.map`.
+
+pub(crate) mod image;
+pub(crate) mod movingai;
+pub(crate) mod ros;
+
+use std::path::Path;
+
+use hyplan_core::Zone;
+
+use crate::{Component, GridMap, InputFrame, MapError, Mask, Pipeline, PipelineOutput};
+
+/// Options of [`load_map`].
+#[derive(Clone, Copy, PartialEq, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct LoadOptions {
+    /// Pictures: luminance threshold, darker is an obstacle (see
+    /// [`binarize`](crate::binarize)). Default 100. Ignored for ROS and MovingAI maps.
+    pub threshold: u8,
+    /// Pictures: brighter pixels are obstacles instead. Default `false`.
+    pub invert: bool,
+    /// Replace every obstacle by its bounding rectangle before adding the high-risk band.
+    /// Default `false`.
+    pub rectangles: bool,
+    /// Radius of the high-risk band, in the input's units: cells for pictures and
+    /// MovingAI maps, metres (world units) for ROS maps. `None` (default) means 20 cells
+    /// for pictures (seed 000) and no band for ROS and MovingAI maps, whose obstacles are
+    /// already given.
+    pub safety_radius: Option<f64>,
+    /// ROS maps: unknown cells become `Free` instead of `Forbidden` (the default).
+    pub unknown_free: bool,
+}
+
+impl Default for LoadOptions {
+    fn default() -> Self {
+        Self {
+            threshold: 100,
+            invert: false,
+            rectangles: false,
+            safety_radius: None,
+            unknown_free: false,
+        }
+    }
+}
+
+/// What kind of file a path holds, by extension.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum MapKind {
+    /// `.map`: MovingAI.
+    MovingAi,
+    /// `.yaml` / `.yml`: ROS map_server.
+    Ros,
+    /// Anything else: a picture.
+    Picture,
+}
+
+impl MapKind {
+    /// The kind of `path` by its extension (case-insensitive).
+    #[must_use]
+    pub fn of(path: &Path) -> Self {
+        match path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase())
+            .as_deref()
+        {
+            Some("map") => Self::MovingAi,
+            Some("yaml" | "yml") => Self::Ros,
+            _ => Self::Picture,
+        }
+    }
+}
+
+/// A map loaded by [`load_map`], with what the pipeline found on the way.
+#[derive(Clone, Debug)]
+pub struct LoadedMap {
+    /// The three-zone map.
+    pub map: GridMap,
+    /// How users give coordinates for this input.
+    pub frame: InputFrame,
+    /// What kind of file it came from.
+    pub kind: MapKind,
+    /// Obstacle cells before rectangles and band: dark pixels, `.map` blocked cells, ROS
+    /// forbidden cells (occupied, and unknown unless `unknown_free`).
+    pub mask: Mask,
+    /// The 8-connected components of `mask`, with their bounding rectangles.
+    pub components: Vec<Component>,
+}
+
+/// Loads a map, choosing the reader by extension: `.map` MovingAI
+/// ([`read_movingai`](crate::read_movingai)), `.yaml` / `.yml` ROS map_server
+/// ([`read_ros_yaml`](crate::read_ros_yaml) plus its image), anything else a picture
+/// ([`read_picture`](crate::read_picture)) run through the seed-000
+/// [`Pipeline`](crate::Pipeline).
+///
+/// Frames: pictures and `.map` files give a map with resolution 1 and origin (0, 0), and
+/// [`InputFrame::Cells`] (y down); ROS maps keep their resolution and origin and use
+/// [`InputFrame::World`] (metres, y up).
+///
+/// # Errors
+///
+/// Any [`MapError`] of the readers, and [`MapError::InvalidParameter`] for a negative or
+/// non-finite safety radius.
+///
+/// ```no_run
+/// use envmap::{load_map, LoadOptions};
+/// let loaded = load_map("arena.map".as_ref(), &LoadOptions::default())?;
+/// let start = loaded.frame.to_world(1.5, 2.5); // column 1, row 2 from the top
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn load_map(path: &Path, opts: &LoadOptions) -> Result<LoadedMap, MapError> {
+    let kind = MapKind::of(path);
+    if let Some(r) = opts.safety_radius
+        && !(r.is_finite() && r >= 0.0)
+    {
+        return Err(MapError::InvalidParameter {
+            name: "safety_radius",
+            value: r.to_string(),
+            reason: "must be finite and >= 0".into(),
+        });
+    }
+    let mut pipeline = Pipeline {
+        threshold: opts.threshold,
+        invert: opts.invert,
+        rectangles: opts.rectangles,
+        safety_radius: opts.safety_radius.unwrap_or(0.0),
+    };
+    let (out, frame_res, origin, frame_kind_world) = match kind {
+        MapKind::Picture => {
+            let picture = self::image::read_picture(path)?;
+            pipeline.safety_radius = opts
+                .safety_radius
+                .unwrap_or(Pipeline::default().safety_radius);
+            (pipeline.run(&picture)?, 1.0, None, false)
+        }
+        MapKind::MovingAi => {
+            let map = movingai::read_movingai(path)?;
+            let mask = Mask::from_zones_at_least(&map, Zone::Forbidden);
+            (pipeline.run_mask(mask, &[])?, 1.0, None, false)
+        }
+        MapKind::Ros => {
+            let meta = ros::read_ros_yaml(path)?;
+            let picture = self::image::read_picture(&meta.image)?;
+            let unknown = if opts.unknown_free {
+                Zone::Free
+            } else {
+                Zone::Forbidden
+            };
+            let map = meta.to_map(&picture, unknown)?;
+            let mask = Mask::from_zones_at_least(&map, Zone::Forbidden);
+            pipeline.safety_radius = opts.safety_radius.unwrap_or(0.0) / meta.resolution;
+            let out = pipeline.run_mask(mask, map.zones())?;
+            (out, meta.resolution, Some(meta.origin), true)
+        }
+    };
+    let PipelineOutput {
+        mask,
+        components,
+        map,
+        ..
+    } = out;
+    let origin = origin.unwrap_or_else(hyplan_core::Point2::origin);
+    let map = map
+        .with_frame(frame_res, origin)
+        .map_err(|source| MapError::Grid {
+            path: path.to_path_buf(),
+            source,
+        })?;
+    let frame = if frame_kind_world {
+        InputFrame::World
+    } else {
+        InputFrame::Cells {
+            height: map.height(),
+            resolution: map.resolution(),
+            origin: map.origin(),
+        }
+    };
+    Ok(LoadedMap {
+        map,
+        frame,
+        kind,
+        mask,
+        components,
+    })
+}

@@ -1,0 +1,118 @@
+//! The shared data maps load with the sizes and counts `/work/shared/data/README.md` gives.
+
+use std::path::{Path, PathBuf};
+
+use envmap::{
+    InputFrame, LoadOptions, MapKind, load_map, read_movingai, read_picture, read_ros_yaml,
+    ros_cell_counts,
+};
+use hyplan_core::{Point2, Zone};
+
+/// The shared data directory (`HYPLAN_DATA` overrides it).
+fn data_dir() -> PathBuf {
+    std::env::var_os("HYPLAN_DATA")
+        .map_or_else(|| PathBuf::from("/work/shared/data"), PathBuf::from)
+}
+
+fn data(rel: &str) -> Option<PathBuf> {
+    let p = data_dir().join(rel);
+    if p.exists() {
+        Some(p)
+    } else {
+        eprintln!("skipping: {} not found", p.display());
+        None
+    }
+}
+
+#[test]
+fn arena_has_2054_passable_cells() {
+    let Some(path) = data("movingai/arena.map") else {
+        return;
+    };
+    let map = read_movingai(&path).unwrap();
+    assert_eq!((map.width(), map.height()), (49, 49));
+    assert_eq!(map.zone_counts(), [2054, 0, 49 * 49 - 2054]);
+    // Row 0 of the file is the top row of the map.
+    let text = std::fs::read_to_string(&path).unwrap();
+    let first_row = text.lines().skip_while(|l| *l != "map").nth(1).unwrap();
+    for (i, c) in first_row.chars().enumerate() {
+        assert_eq!(map.cell_zone(i, 48) == Zone::Free, c == '.', "column {i}");
+    }
+}
+
+#[test]
+fn arena_through_load_map_uses_the_cell_frame() {
+    let Some(path) = data("movingai/arena.map") else {
+        return;
+    };
+    let loaded = load_map(&path, &LoadOptions::default()).unwrap();
+    assert_eq!(loaded.kind, MapKind::MovingAi);
+    assert_eq!(loaded.map.zone_counts(), [2054, 0, 49 * 49 - 2054]);
+    assert_eq!(
+        loaded.frame,
+        InputFrame::Cells {
+            height: 49,
+            resolution: 1.0,
+            origin: Point2::origin()
+        }
+    );
+    // Input cell (x, y) = (3, 0) is the top row: map cell (3, 48).
+    let p = loaded.frame.to_world(3.5, 0.5);
+    assert_eq!(loaded.map.world_to_cell(p), Some((3, 48)));
+}
+
+#[test]
+fn turtlebot3_world_counts_match_map_server() {
+    let Some(path) = data("ros_maps/turtlebot3_world/map.yaml") else {
+        return;
+    };
+    let meta = read_ros_yaml(&path).unwrap();
+    assert_eq!(meta.resolution, 0.05);
+    assert_eq!(meta.origin, Point2::new(-10.0, -10.0));
+    let pic = read_picture(&meta.image).unwrap();
+    assert_eq!((pic.width(), pic.height()), (384, 384));
+    // [free, graded, occupied, unknown]
+    assert_eq!(ros_cell_counts(&meta, &pic), [7939, 0, 795, 138722]);
+
+    let loaded = load_map(&path, &LoadOptions::default()).unwrap();
+    assert_eq!(loaded.frame, InputFrame::World);
+    assert_eq!(loaded.map.zone_counts(), [7939, 0, 795 + 138722]);
+    assert_eq!(loaded.map.origin(), Point2::new(-10.0, -10.0));
+    assert_eq!(loaded.map.resolution(), 0.05);
+    let free = load_map(
+        &path,
+        &LoadOptions {
+            unknown_free: true,
+            ..LoadOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(free.map.zone_counts(), [7939 + 138722, 0, 795]);
+}
+
+#[test]
+fn turtlebot3_pixel_rows_are_flipped() {
+    let Some(path) = data("ros_maps/turtlebot3_world/map.yaml") else {
+        return;
+    };
+    let meta = read_ros_yaml(&path).unwrap();
+    let pic = read_picture(&meta.image).unwrap();
+    let loaded = load_map(
+        &path,
+        &LoadOptions {
+            unknown_free: false,
+            ..LoadOptions::default()
+        },
+    )
+    .unwrap();
+    // Map cell (i, j) is image pixel (i, 383 - j).
+    for (x, y) in [(0, 0), (200, 150), (383, 383), (190, 200)] {
+        let occupied = pic.pixel(x, y)[0] == 0;
+        assert_eq!(
+            loaded.map.cell_zone(x, 383 - y) == Zone::Forbidden && pic.pixel(x, y)[0] != 205,
+            occupied,
+            "pixel ({x}, {y})"
+        );
+    }
+    assert!(Path::new(&meta.image).ends_with("map.pgm"));
+}

@@ -1,0 +1,3 @@
+//! Public-API tests of envmap, one binary.
+
+mod data;
