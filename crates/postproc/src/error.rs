@@ -61,6 +61,15 @@ pub enum PostprocError {
         /// Its second end, world units.
         to: hyplan_core::Point2,
     },
+    /// A smoothing method name that is none of `none`, `prune`, `pchip`, `bspline`,
+    /// `bspline-interp`.
+    #[error(
+        "unknown smoothing method {name:?} (expected none, prune, pchip, bspline or bspline-interp)"
+    )]
+    UnknownMethod {
+        /// The name given.
+        name: String,
+    },
     /// The smoothed curve still collides after every repair was tried.
     #[error("smoothed curve could not be repaired near ({}, {})", at.x, at.y)]
     CannotRepair {

@@ -100,7 +100,7 @@ pub fn prune_pairwise(
 ///     Point2::new(0.0, 0.0),
 ///     Point2::new(1.0, 1.5),
 ///     Point2::new(1.5, 3.0),
-///     Point2::new(2.5, 3.0),
+///     Point2::new(3.5, 3.0),
 ///     Point2::new(4.0, 0.0),
 /// ];
 /// let pruned = shortcut_greedy(&path, free);
@@ -141,16 +141,16 @@ mod tests {
     fn pairwise_keeps_blocked_corner() {
         let path = [p(0.0, 0.0), p(0.0, 1.0), p(1.0, 1.0)];
         assert_eq!(prune_pairwise(&path, |_, _| false), path.to_vec());
-        assert_eq!(
-            prune_pairwise(&path, |_, _| true),
-            vec![path[0], path[2]]
-        );
+        assert_eq!(prune_pairwise(&path, |_, _| true), vec![path[0], path[2]]);
     }
 
     #[test]
     fn short_paths_unchanged() {
         assert!(prune_pairwise(&[], |_, _| true).is_empty());
-        assert_eq!(shortcut_greedy(&[p(1.0, 2.0)], |_, _| true), vec![p(1.0, 2.0)]);
+        assert_eq!(
+            shortcut_greedy(&[p(1.0, 2.0)], |_, _| true),
+            vec![p(1.0, 2.0)]
+        );
     }
 
     #[test]

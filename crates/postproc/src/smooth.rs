@@ -1,0 +1,563 @@
+//! Collision-checked smoothing: prune, fit a curve, sample it, check every sample pair
+//! with the caller's oracle and repair locally where it collides.
+
+use std::fmt;
+use std::str::FromStr;
+
+use hyplan_core::Point2;
+
+use crate::error::validate_path;
+use crate::resample::{check_spacing, densify_curve, densify_line};
+use crate::{
+    BSpline, Curve, Limits, PathMetrics, Pchip, PostprocError, Timing, prune_pairwise,
+    shortcut_greedy, time_curve, time_polyline,
+};
+
+/// How [`smooth_checked`] turns a path into the curve the robot follows.
+///
+/// Each method first prunes the path the way its paper does, then fits its curve:
+///
+/// | method | name | pruning | curve |
+/// |---|---|---|---|
+/// | `None` | `none` | none | the input polyline |
+/// | `Prune` | `prune` | [`shortcut_greedy`] (seeds 001/003) | polyline |
+/// | `Pchip` | `pchip` | [`prune_pairwise`] (seed 000, 4.5) | [`Pchip`] through the nodes (seed 000, 4.6) |
+/// | `BSpline` | `bspline` | [`shortcut_greedy`] | [`BSpline::from_control_points`] (seed 003, 2.3) |
+/// | `BSplineInterpolating` | `bspline-interp` | [`shortcut_greedy`] | [`BSpline::interpolating`] |
+///
+/// `FromStr` and `Display` use the names, so a command line can select a method by name.
+///
+/// ```
+/// use postproc::Smoothing;
+/// let m: Smoothing = "pchip".parse()?;
+/// assert_eq!(m, Smoothing::Pchip);
+/// assert_eq!(m.to_string(), "pchip");
+/// assert!("spline".parse::<Smoothing>().is_err());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Smoothing {
+    /// Keep the path as it is (it is only resampled).
+    #[default]
+    None,
+    /// Greedy shortcut pruning, straight segments.
+    Prune,
+    /// Pairwise pruning, then PCHIP through the remaining nodes.
+    Pchip,
+    /// Greedy pruning, then a clamped cubic B-spline with the nodes as control points.
+    BSpline,
+    /// Greedy pruning, then a clamped cubic B-spline through the nodes.
+    BSplineInterpolating,
+}
+
+impl Smoothing {
+    /// Every method, in the order of the table above.
+    pub const ALL: [Self; 5] = [
+        Self::None,
+        Self::Prune,
+        Self::Pchip,
+        Self::BSpline,
+        Self::BSplineInterpolating,
+    ];
+
+    /// The method's name on the command line.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::None => "none",
+            Self::Prune => "prune",
+            Self::Pchip => "pchip",
+            Self::BSpline => "bspline",
+            Self::BSplineInterpolating => "bspline-interp",
+        }
+    }
+
+    /// Whether the method's result is a polyline (`none`, `prune`), which a robot follows
+    /// by stopping and turning in place at each node.
+    #[must_use]
+    pub const fn is_polyline(self) -> bool {
+        matches!(self, Self::None | Self::Prune)
+    }
+}
+
+impl fmt::Display for Smoothing {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Smoothing {
+    type Err = PostprocError;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.name() == s)
+            .ok_or_else(|| PostprocError::UnknownMethod { name: s.to_owned() })
+    }
+}
+
+/// One local repair [`smooth_checked`] made where the curve collided.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Repair {
+    /// A node was added at the midpoint of a segment of the (pruned) polyline, so that the
+    /// curve through the nodes hugs that segment more closely.
+    InsertedNode {
+        /// The new node, world units.
+        at: Point2,
+    },
+    /// The curve between two consecutive nodes was replaced by the straight segment.
+    Straightened {
+        /// First node of the segment, world units.
+        from: Point2,
+        /// Second node, world units.
+        to: Point2,
+    },
+    /// A control point of a control-point B-spline was repeated once more, pulling the
+    /// curve towards it (three copies make the curve pass through it along the polyline).
+    RaisedMultiplicity {
+        /// The control point, world units.
+        node: Point2,
+        /// How many copies it has now (2 or 3).
+        multiplicity: usize,
+    },
+}
+
+/// The result of [`smooth_checked`]: a checked polyline of samples and how it was made.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Smoothed {
+    /// The method used.
+    pub method: Smoothing,
+    /// The curve's defining points after pruning and repairs: the polyline's nodes
+    /// (`none`, `prune`), the nodes the curve passes through (`pchip`, `bspline-interp`) or
+    /// the control points with their repeats (`bspline`).
+    pub nodes: Vec<Point2>,
+    /// The final curve as samples at most `spacing` apart, world units. The first and last
+    /// samples are the input's end points bit for bit, and the oracle accepted the segment
+    /// between every two consecutive samples: this polyline is the checked result.
+    pub points: Vec<Point2>,
+    /// The fitted curve. Pieces listed as [`Repair::Straightened`] were replaced by
+    /// straight segments in [`points`](Smoothed::points) and differ from it there.
+    pub curve: Curve,
+    /// What was repaired, in order; empty when the first curve was free.
+    pub repairs: Vec<Repair>,
+    /// Number of oracle calls made (input check, pruning, sample checks).
+    pub oracle_calls: usize,
+}
+
+impl Smoothed {
+    /// Length of the sampled curve, world units.
+    #[must_use]
+    pub fn length(&self) -> f64 {
+        hyplan_core::path_length(&self.points)
+    }
+
+    /// The paper metrics of the result: length and maximum curvature of the samples, nodes,
+    /// segments and turns (> 10 degrees) of [`nodes`](Smoothed::nodes), where a turn is
+    /// meaningful (repeated control points are counted once).
+    #[must_use]
+    pub fn metrics(&self) -> PathMetrics {
+        let mut nodes = self.nodes.clone();
+        nodes.dedup();
+        let on_nodes = PathMetrics::of(&nodes);
+        let on_samples = PathMetrics::of(&self.points);
+        PathMetrics {
+            length: on_samples.length,
+            max_curvature: if self.method.is_polyline() {
+                on_nodes.max_curvature
+            } else {
+                on_samples.max_curvature
+            },
+            ..on_nodes
+        }
+    }
+
+    /// Times the result for a robot with `limits`, from rest to rest: a polyline with
+    /// [`time_polyline`] (stop and turn in place at each node), a curve with [`time_curve`]
+    /// along its samples.
+    ///
+    /// # Errors
+    ///
+    /// [`PostprocError::InvalidLimit`] for a limit that is not finite and positive.
+    pub fn time(&self, limits: &Limits) -> Result<Timing, PostprocError> {
+        if self.method.is_polyline() {
+            time_polyline(&self.nodes, limits)
+        } else {
+            time_curve(&self.points, limits)
+        }
+    }
+}
+
+/// Rounds of node insertion before colliding pieces are straightened.
+const INSERT_ROUNDS: usize = 4;
+
+/// Smooths `path` with `method` and returns the curve sampled at most `spacing` apart,
+/// with every sample pair accepted by `segment_free`.
+///
+/// The steps:
+///
+/// 1. The input is validated and each of its segments checked with the oracle (the
+///    repairs fall back on them).
+/// 2. The path is pruned and the curve fitted (see [`Smoothing`]).
+/// 3. The curve is sampled piece by piece (node to node, or knot span to knot span), at
+///    most `spacing` apart, and every consecutive pair of samples is checked.
+/// 4. Where a piece collides, it is repaired locally and the curve refitted:
+///    - curves through the nodes (`pchip`, `bspline-interp`): first the segment under the
+///      piece gets a midpoint node (up to four rounds), then the piece is replaced by the
+///      straight segment, which is free;
+///    - `bspline`: the middle control points of the colliding span are repeated, up to three
+///      copies, which pulls the span onto the polyline.
+///
+/// Each repair is listed in [`Smoothed::repairs`]. Pass the grid's exact segment check as
+/// the oracle and a quarter of a cell as `spacing`: the returned polyline is then free
+/// exactly, not only at its samples.
+///
+/// # Errors
+///
+/// - bad path ([`PostprocError::TooFewNodes`], [`PostprocError::NonFinite`],
+///   [`PostprocError::RepeatedNode`]) or spacing ([`PostprocError::InvalidSpacing`]);
+/// - [`PostprocError::SegmentNotFree`] when the input path itself collides;
+/// - [`PostprocError::CannotRepair`] when even the straight fallback is refused by the
+///   oracle (an oracle that rejects pieces of a segment it accepted whole).
+///
+/// # Example
+///
+/// ```
+/// use hyplan_core::Point2;
+/// use postproc::{smooth_checked, Smoothing};
+/// // A 10 x 10 room with a square pillar [4, 6] x [0, 6]; the oracle samples finely.
+/// let free = |a: Point2, b: Point2| {
+///     (0..=200).all(|i| {
+///         let p = a + (b - a) * (f64::from(i) / 200.0);
+///         !((4.0..=6.0).contains(&p.x) && p.y <= 6.0)
+///     })
+/// };
+/// let path = [
+///     Point2::new(1.0, 1.0),
+///     Point2::new(3.0, 7.0),
+///     Point2::new(7.0, 7.0),
+///     Point2::new(9.0, 1.0),
+/// ];
+/// let s = smooth_checked(&path, Smoothing::Pchip, 0.25, free)?;
+/// assert_eq!(s.points[0], path[0]);
+/// assert_eq!(*s.points.last().unwrap(), path[3]);
+/// assert!(s.points.windows(2).all(|w| free(w[0], w[1])));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn smooth_checked(
+    path: &[Point2],
+    method: Smoothing,
+    spacing: f64,
+    mut segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Result<Smoothed, PostprocError> {
+    validate_path(path)?;
+    check_spacing(spacing, hyplan_core::path_length(path))?;
+    let mut calls = 0usize;
+    let mut oracle = |a: Point2, b: Point2| {
+        calls += 1;
+        segment_free(a, b)
+    };
+    for (index, w) in path.windows(2).enumerate() {
+        if !oracle(w[0], w[1]) {
+            return Err(PostprocError::SegmentNotFree {
+                index,
+                from: w[0],
+                to: w[1],
+            });
+        }
+    }
+    let mut repairs = Vec::new();
+    let (nodes, points, curve) = match method {
+        Smoothing::None | Smoothing::Prune => {
+            let nodes = if method == Smoothing::Prune {
+                shortcut_greedy(path, &mut oracle)
+            } else {
+                path.to_vec()
+            };
+            let points = sample_polyline(&nodes, spacing, &mut oracle)?;
+            let curve = Curve::Polyline(nodes.clone());
+            (nodes, points, curve)
+        }
+        Smoothing::Pchip => {
+            let nodes = prune_pairwise(path, &mut oracle);
+            through_nodes(
+                nodes,
+                |n| Pchip::new(n).map(Curve::Pchip),
+                spacing,
+                &mut oracle,
+                &mut repairs,
+            )?
+        }
+        Smoothing::BSplineInterpolating => {
+            let nodes = shortcut_greedy(path, &mut oracle);
+            through_nodes(
+                nodes,
+                |n| BSpline::interpolating(n).map(Curve::BSpline),
+                spacing,
+                &mut oracle,
+                &mut repairs,
+            )?
+        }
+        Smoothing::BSpline => {
+            let nodes = shortcut_greedy(path, &mut oracle);
+            control_points(nodes, spacing, &mut oracle, &mut repairs)?
+        }
+    };
+    Ok(Smoothed {
+        method,
+        nodes,
+        points,
+        curve,
+        repairs,
+        oracle_calls: calls,
+    })
+}
+
+/// Checks the pairs `points[start..]` (in order) and then `(last, end)`; returns the first
+/// sample of a colliding pair.
+fn first_collision(
+    points: &[Point2],
+    end: Point2,
+    oracle: &mut impl FnMut(Point2, Point2) -> bool,
+) -> Option<Point2> {
+    let mut prev = *points.first()?;
+    for &q in points[1..].iter().chain(std::iter::once(&end)) {
+        if !oracle(prev, q) {
+            return Some(prev);
+        }
+        prev = q;
+    }
+    None
+}
+
+/// Samples a polyline and checks every sample pair.
+fn sample_polyline(
+    nodes: &[Point2],
+    spacing: f64,
+    oracle: &mut impl FnMut(Point2, Point2) -> bool,
+) -> Result<Vec<Point2>, PostprocError> {
+    let mut points = Vec::new();
+    for w in nodes.windows(2) {
+        let start = points.len();
+        points.push(w[0]);
+        densify_line(w[0], w[1], spacing, &mut points);
+        if let Some(at) = first_collision(&points[start..], w[1], oracle) {
+            return Err(PostprocError::CannotRepair { at });
+        }
+    }
+    points.extend(nodes.last());
+    Ok(points)
+}
+
+type Fitted = (Vec<Point2>, Vec<Point2>, Curve);
+
+/// Smoothing for curves through the nodes (PCHIP, interpolating B-spline): piece `k` runs
+/// from node `k` to node `k + 1`.
+fn through_nodes(
+    mut nodes: Vec<Point2>,
+    build: impl Fn(&[Point2]) -> Result<Curve, PostprocError>,
+    spacing: f64,
+    oracle: &mut impl FnMut(Point2, Point2) -> bool,
+    repairs: &mut Vec<Repair>,
+) -> Result<Fitted, PostprocError> {
+    let mut straight = vec![false; nodes.len() - 1];
+    for round in 0.. {
+        let curve = build(&nodes)?;
+        let params = curve.breakpoints();
+        let mut points = Vec::new();
+        let mut bad: Vec<(usize, Point2)> = Vec::new();
+        for k in 0..nodes.len() - 1 {
+            let start = points.len();
+            points.push(nodes[k]);
+            if straight[k] {
+                densify_line(nodes[k], nodes[k + 1], spacing, &mut points);
+            } else {
+                let f = |t: f64| curve.eval(t);
+                densify_curve(
+                    &f,
+                    params[k],
+                    params[k + 1],
+                    nodes[k],
+                    nodes[k + 1],
+                    spacing,
+                    &mut points,
+                );
+            }
+            if let Some(at) = first_collision(&points[start..], nodes[k + 1], oracle) {
+                bad.push((k, at));
+            }
+        }
+        points.extend(nodes.last());
+        let Some(&(_, first_at)) = bad.first() else {
+            return Ok((nodes, points, curve));
+        };
+        if let Some(&(_, at)) = bad.iter().find(|(k, _)| straight[*k]) {
+            // A straight piece lies on a segment the oracle accepted: nothing is left to try.
+            return Err(PostprocError::CannotRepair { at });
+        }
+        if round > INSERT_ROUNDS + 1 {
+            return Err(PostprocError::CannotRepair { at: first_at });
+        }
+        // Repair from the back so that earlier indices stay valid while inserting.
+        for &(k, _) in bad.iter().rev() {
+            let (a, b) = (nodes[k], nodes[k + 1]);
+            if round < INSERT_ROUNDS && nalgebra::distance(&a, &b) > 2.0 * spacing {
+                let mid = nalgebra::center(&a, &b);
+                nodes.insert(k + 1, mid);
+                straight.insert(k + 1, false);
+                repairs.push(Repair::InsertedNode { at: mid });
+            } else {
+                straight[k] = true;
+                repairs.push(Repair::Straightened { from: a, to: b });
+            }
+        }
+    }
+    unreachable!("the repair loop returns within INSERT_ROUNDS + 2 rounds")
+}
+
+/// Smoothing with a control-point B-spline (seed 003): span `j` depends on control points
+/// `j..=j + 3`; colliding spans get their middle control points repeated.
+fn control_points(
+    nodes: Vec<Point2>,
+    spacing: f64,
+    oracle: &mut impl FnMut(Point2, Point2) -> bool,
+    repairs: &mut Vec<Repair>,
+) -> Result<Fitted, PostprocError> {
+    let mut mult = vec![1usize; nodes.len()];
+    loop {
+        // Control points with their repeats, and the node each one comes from.
+        let owner: Vec<usize> = mult
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &m)| std::iter::repeat_n(i, m))
+            .collect();
+        let ctrl: Vec<Point2> = owner.iter().map(|&i| nodes[i]).collect();
+        let spline = BSpline::from_control_points(&ctrl)?;
+        let degree = spline.degree();
+        let breaks = spline.breakpoints();
+        let ends: Vec<Point2> = breaks.iter().map(|&u| spline.eval(u)).collect();
+        let mut points = Vec::new();
+        let mut bad: Vec<(usize, Point2)> = Vec::new();
+        for j in 0..breaks.len() - 1 {
+            let start = points.len();
+            points.push(ends[j]);
+            let f = |u: f64| spline.eval(u);
+            densify_curve(
+                &f,
+                breaks[j],
+                breaks[j + 1],
+                ends[j],
+                ends[j + 1],
+                spacing,
+                &mut points,
+            );
+            if let Some(at) = first_collision(&points[start..], ends[j + 1], oracle) {
+                bad.push((j, at));
+            }
+        }
+        points.extend(ends.last());
+        if bad.is_empty() {
+            return Ok((ctrl, points, Curve::BSpline(spline)));
+        }
+        let mut progress = false;
+        for &(j, _) in &bad {
+            let mut involved: Vec<usize> = owner[j..=j + degree].to_vec();
+            involved.dedup();
+            // The first and last distinct nodes of the window stay; the middle ones get
+            // one more copy each (at most three).
+            if involved.len() > 2 {
+                for &i in &involved[1..involved.len() - 1] {
+                    if mult[i] < 3 {
+                        mult[i] += 1;
+                        progress = true;
+                        repairs.push(Repair::RaisedMultiplicity {
+                            node: nodes[i],
+                            multiplicity: mult[i],
+                        });
+                    }
+                }
+            }
+        }
+        if !progress {
+            return Err(PostprocError::CannotRepair { at: bad[0].1 });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for m in Smoothing::ALL {
+            assert_eq!(m.name().parse::<Smoothing>().unwrap(), m);
+        }
+    }
+
+    #[test]
+    fn free_world_needs_no_repair() {
+        let path = [
+            Point2::new(0.0, 0.0),
+            Point2::new(2.0, 3.0),
+            Point2::new(5.0, 3.0),
+            Point2::new(6.0, 0.0),
+        ];
+        for m in Smoothing::ALL {
+            // An empty world: pruning leaves the straight line, nothing collides.
+            let s = smooth_checked(&path, m, 0.1, |_, _| true).unwrap();
+            assert!(s.repairs.is_empty());
+            assert_eq!(s.points[0], path[0]);
+            assert_eq!(*s.points.last().unwrap(), path[3]);
+        }
+    }
+
+    /// Distance from `p` to segment `a`-`b`.
+    fn dist_to_segment(p: Point2, a: Point2, b: Point2) -> f64 {
+        let d = b - a;
+        let t = ((p - a).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+        (p - (a + d * t)).norm()
+    }
+
+    #[test]
+    fn blocked_everywhere_but_the_path_straightens() {
+        // The oracle accepts only pieces of the input polyline: every curve piece off the
+        // polyline collides, so the repairs must bring everything back onto it.
+        let path = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(4.0, 1.0),
+            Point2::new(5.0, 5.0),
+            Point2::new(1.0, 6.0),
+        ];
+        let oracle = |a: Point2, b: Point2| {
+            path.windows(2).any(|w| {
+                dist_to_segment(a, w[0], w[1]) < 1e-9 && dist_to_segment(b, w[0], w[1]) < 1e-9
+            })
+        };
+        for m in [
+            Smoothing::Pchip,
+            Smoothing::BSpline,
+            Smoothing::BSplineInterpolating,
+        ] {
+            let s = smooth_checked(&path, m, 0.25, oracle).unwrap();
+            assert!(!s.repairs.is_empty(), "{m}");
+            assert!(s.points.windows(2).all(|w| oracle(w[0], w[1])), "{m}");
+        }
+    }
+
+    #[test]
+    fn pchip_keeps_axis_aligned_corners() {
+        // Shape preservation: x and y are flat on each leg, so PCHIP follows the L exactly.
+        let path = [
+            Point2::new(0.0, 0.0),
+            Point2::new(4.0, 0.0),
+            Point2::new(4.0, 4.0),
+        ];
+        let c = Pchip::new(&path).unwrap();
+        for i in 0..=40 {
+            let q = c.eval(8.0 * f64::from(i) / 40.0);
+            assert!(q.y == 0.0 || q.x == 4.0, "{q}");
+        }
+    }
+}
