@@ -1,0 +1,37 @@
+//! Scenarios, Monte-Carlo runs, metrics and statistics for hyplan's planners.
+//!
+//! A [`Scenario`] (one RON file under `scenarios/`) names a map, a query, robot limits,
+//! the planners to run with their parameters, the number of runs and a base seed, and the
+//! published numbers of the paper it replays. [`run_planner`] runs one planner of it the
+//! given number of times, each run seeded by [`run_seed`] from the run index alone, so a
+//! parallel run gives the serial run's numbers bit for bit (timings aside). Each run is
+//! measured into [`RunMetrics`] and summarised by [`Summary`].
+//!
+//! # Contents
+//!
+//! - [`Scenario`], [`MapSpec`], [`PlannerSpec`], [`Published`], [`Claim`]: the scenario
+//!   format; [`Scenario::load`] reads and validates a file, [`ScenarioError`] names the
+//!   file, line and field of a problem.
+//! - [`World`]: a scenario's map built and its query placed; [`Scenario::build_world`].
+//! - [`build_planner`]: a planner by name with its parameters, as `Box<dyn Planner>`.
+//! - [`RunMetrics`], [`measure`]: what one run is scored on.
+//! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
+//! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate.
+//!
+//! # Features
+//!
+//! - `parallel` (default): runs spread over threads with rayon; results equal the serial run's.
+
+mod metrics;
+mod planners;
+mod runner;
+mod scenario;
+mod stats;
+
+pub use metrics::{RunMetrics, measure};
+pub use planners::{PLANNER_NAMES, build_planner};
+pub use runner::{run_planner, run_seed};
+pub use scenario::{
+    Claim, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape, Source, World,
+};
+pub use stats::{Stat, Summary};

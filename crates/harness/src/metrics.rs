@@ -1,0 +1,161 @@
+//! What one run is scored on.
+
+use hyplan_core::{Plan, PlanError, Point2, Workspace};
+use postproc::{Limits, PathMetrics, Smoothing};
+use serde::Serialize;
+
+/// The measures of one run, in the scenario's units.
+///
+/// Failed runs keep `success = false`, their time and explored nodes; path measures are
+/// NaN for them so that statistics skip them.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunMetrics {
+    /// Run index.
+    pub run: u32,
+    /// Seed of the run's RNG.
+    pub seed: u64,
+    /// Whether a path was found.
+    pub success: bool,
+    /// Computation time, seconds (planning plus post-processing).
+    pub time_s: f64,
+    /// Path length, scenario units.
+    pub length: f64,
+    /// Path nodes (waypoints, start and goal included) before any dense resampling.
+    pub nodes: f64,
+    /// Path segments (nodes - 1).
+    pub segments: f64,
+    /// Heading changes over 10 degrees between consecutive segments.
+    pub turns: f64,
+    /// Nodes explored: tree size for sampling planners, expansions for graph searches
+    /// (the papers' "cost (node)").
+    pub explored: f64,
+    /// Transfer time under the scenario's limits, seconds (NaN without limits).
+    pub transfer_time_s: f64,
+    /// Smallest distance from the path to an obstacle cell centre, scenario units
+    /// (NaN when the workspace does not know clearances).
+    pub min_clearance: f64,
+    /// The final path (world coordinates), kept for figures.
+    #[serde(skip)]
+    pub path: Vec<Point2>,
+}
+
+impl RunMetrics {
+    /// The value of a metric by its name (`time_s`, `length`, `nodes`, `segments`, `turns`,
+    /// `explored`, `transfer_time_s`, `min_clearance`, `success`).
+    #[must_use]
+    pub fn get(&self, metric: &str) -> Option<f64> {
+        Some(match metric {
+            "time_s" => self.time_s,
+            "length" => self.length,
+            "nodes" => self.nodes,
+            "segments" => self.segments,
+            "turns" => self.turns,
+            "explored" => self.explored,
+            "transfer_time_s" => self.transfer_time_s,
+            "min_clearance" => self.min_clearance,
+            "success" => f64::from(u8::from(self.success)),
+            _ => return None,
+        })
+    }
+
+    /// Names accepted by [`get`](RunMetrics::get).
+    pub const METRICS: &'static [&'static str] = &[
+        "time_s",
+        "length",
+        "nodes",
+        "segments",
+        "turns",
+        "explored",
+        "transfer_time_s",
+        "min_clearance",
+        "success",
+    ];
+}
+
+/// Scores one planning outcome: the plan (or the failure), post-processed by `smoothing`
+/// against `ws`, timed under `limits`.
+///
+/// `elapsed_s` is the planning time; smoothing time is added to it.
+#[must_use]
+pub fn measure(
+    ws: &dyn Workspace,
+    outcome: &Result<Plan, PlanError>,
+    smoothing: Smoothing,
+    limits: Option<&Limits>,
+    spacing: f64,
+    run: u32,
+    seed: u64,
+) -> RunMetrics {
+    let nan = f64::NAN;
+    let mut m = RunMetrics {
+        run,
+        seed,
+        success: false,
+        time_s: nan,
+        length: nan,
+        nodes: nan,
+        segments: nan,
+        turns: nan,
+        explored: nan,
+        transfer_time_s: nan,
+        min_clearance: nan,
+        path: Vec::new(),
+    };
+    let plan = match outcome {
+        Ok(plan) => plan,
+        Err(e) => {
+            if let Some(stats) = e.stats() {
+                m.time_s = stats.elapsed.as_secs_f64();
+                m.explored = explored(stats);
+            }
+            return m;
+        }
+    };
+    m.explored = explored(&plan.stats);
+    let started = std::time::Instant::now();
+    let smoothed =
+        postproc::smooth_checked(&plan.path, smoothing, spacing, |a, b| ws.segment_free(a, b));
+    let smooth_s = started.elapsed().as_secs_f64();
+    m.time_s = plan.stats.elapsed.as_secs_f64() + smooth_s;
+    let Ok(smoothed) = smoothed else {
+        // A curve that cannot be repaired is a failed run: we never report a colliding path.
+        return m;
+    };
+    m.success = true;
+    let metrics: PathMetrics = smoothed.metrics();
+    m.length = metrics.length;
+    m.nodes = metrics.nodes as f64;
+    m.segments = metrics.segments as f64;
+    m.turns = metrics.turns as f64;
+    if let Some(limits) = limits {
+        m.transfer_time_s = smoothed.time(limits).map_or(nan, |t| t.transfer_time);
+    }
+    m.min_clearance = min_clearance(ws, &smoothed.points, spacing);
+    m.path = smoothed.points;
+    m
+}
+
+fn explored(stats: &hyplan_core::PlanStats) -> f64 {
+    if stats.expansions > 0 {
+        stats.expansions as f64
+    } else {
+        stats.nodes as f64
+    }
+}
+
+/// Smallest clearance along a polyline sampled at most `spacing` apart.
+fn min_clearance(ws: &dyn Workspace, path: &[Point2], spacing: f64) -> f64 {
+    let mut best = f64::INFINITY;
+    for w in path.windows(2) {
+        let d = nalgebra::distance(&w[0], &w[1]);
+        let steps = (d / spacing).ceil().max(1.0) as usize;
+        for k in 0..=steps {
+            let p = w[0] + (w[1] - w[0]) * (k as f64 / steps as f64);
+            match ws.clearance(p) {
+                Some(c) => best = best.min(c),
+                None => return f64::NAN,
+            }
+        }
+    }
+    if best.is_finite() { best } else { f64::NAN }
+}

@@ -1,0 +1,142 @@
+//! Planners by name, as the scenario files and the CLI name them.
+
+// `..d` keeps each planner's defaults for fields added later, even where every field is
+// named today.
+#![allow(clippy::needless_update)]
+
+use std::collections::BTreeMap;
+use std::time::Duration;
+
+use hyplan_core::{Budget, Planner};
+use sampling::{BiRrt, RewireRadius, Rrt, RrtConnect, RrtStar};
+use search::{GridAstar, GridDijkstra, ThetaStar};
+
+use crate::PlannerSpec;
+
+/// The planner names [`build_planner`] knows.
+pub const PLANNER_NAMES: &[&str] = &[
+    "rrt",
+    "rrt-star",
+    "bi-rrt",
+    "rrt-connect",
+    "astar",
+    "dijkstra",
+    "theta-star",
+];
+
+/// Reads numeric parameters, remembering which were used so unknown ones are reported.
+struct Params<'a> {
+    given: &'a BTreeMap<String, f64>,
+    used: Vec<&'static str>,
+}
+
+impl Params<'_> {
+    fn get(&mut self, name: &'static str) -> Option<f64> {
+        self.used.push(name);
+        self.given.get(name).copied()
+    }
+
+    fn budget(&mut self, default: Budget) -> Result<Budget, String> {
+        let mut b = default;
+        if let Some(n) = self.get("max_iterations") {
+            if !(n.is_finite() && n >= 1.0 && n.fract() == 0.0) {
+                return Err(format!("max_iterations = {n}: must be a whole number >= 1"));
+            }
+            b.max_iterations = n as u64;
+        }
+        if let Some(t) = self.get("time_limit_s") {
+            if !(t.is_finite() && t > 0.0) {
+                return Err(format!("time_limit_s = {t}: must be finite and > 0"));
+            }
+            b = b.with_time(Duration::from_secs_f64(t));
+        }
+        Ok(b)
+    }
+
+    fn finish(self) -> Result<(), String> {
+        match self.given.keys().find(|k| !self.used.contains(&k.as_str())) {
+            Some(k) => Err(format!(
+                "unknown parameter `{k}` (known: {})",
+                self.used.join(", ")
+            )),
+            None => Ok(()),
+        }
+    }
+}
+
+/// Builds the planner a spec names, with its parameters over the planner's defaults.
+///
+/// Parameters (scenario units): `step`, `goal_bias`, `max_iterations`, `time_limit_s`
+/// for the sampling planners; `gamma` or `k_nearest` and `full_budget` (1 = use the whole
+/// budget) for `rrt-star`; none for the grid searches. Values are checked by the planner
+/// when it runs; here only names and integer fields are checked.
+///
+/// # Errors
+///
+/// A message naming an unknown planner or parameter.
+pub fn build_planner(spec: &PlannerSpec) -> Result<Box<dyn Planner>, String> {
+    let mut p = Params {
+        given: &spec.params,
+        used: Vec::new(),
+    };
+    let planner: Box<dyn Planner> = match spec.name.as_str() {
+        "rrt" => {
+            let d = Rrt::default();
+            Box::new(Rrt {
+                step: p.get("step").unwrap_or(d.step),
+                goal_bias: p.get("goal_bias").unwrap_or(d.goal_bias),
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "rrt-star" => {
+            let d = RrtStar::default();
+            let rewire = match (p.get("gamma"), p.get("k_nearest")) {
+                (Some(g), None) => RewireRadius::Gamma(g),
+                (None, Some(k)) if k >= 1.0 && k.fract() == 0.0 => {
+                    RewireRadius::KNearest(k as usize)
+                }
+                (None, Some(k)) => {
+                    return Err(format!("k_nearest = {k}: must be a whole number >= 1"));
+                }
+                (Some(_), Some(_)) => return Err("give gamma or k_nearest, not both".into()),
+                (None, None) => d.rewire,
+            };
+            Box::new(RrtStar {
+                step: p.get("step").unwrap_or(d.step),
+                goal_bias: p.get("goal_bias").unwrap_or(d.goal_bias),
+                budget: p.budget(d.budget)?,
+                rewire,
+                stop_at_first_solution: p.get("full_budget").is_none_or(|v| v == 0.0),
+                ..d
+            })
+        }
+        "bi-rrt" => {
+            let d = BiRrt::default();
+            Box::new(BiRrt {
+                step: p.get("step").unwrap_or(d.step),
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "rrt-connect" => {
+            let d = RrtConnect::default();
+            Box::new(RrtConnect {
+                step: p.get("step").unwrap_or(d.step),
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "astar" => Box::new(GridAstar::default()),
+        "dijkstra" => Box::new(GridDijkstra::default()),
+        "theta-star" => Box::new(ThetaStar::default()),
+        other => {
+            return Err(format!(
+                "unknown planner `{other}` (known: {})",
+                PLANNER_NAMES.join(", ")
+            ));
+        }
+    };
+    p.finish()?;
+    Ok(planner)
+}

@@ -1,0 +1,86 @@
+//! Monte-Carlo runs with per-run seeds.
+
+use postproc::{Limits, Smoothing};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::{PlannerSpec, RunMetrics, Scenario, World, build_planner, measure};
+
+/// The seed of run `run` under base seed `base`: SplitMix64 of the pair, so that runs get
+/// unrelated streams, and a run's seed depends on its index alone (never on thread order).
+///
+/// ```
+/// assert_eq!(harness::run_seed(7, 3), harness::run_seed(7, 3));
+/// assert_ne!(harness::run_seed(7, 3), harness::run_seed(7, 4));
+/// ```
+#[must_use]
+pub fn run_seed(base: u64, run: u64) -> u64 {
+    let mut z = base
+        ^ run
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            .wrapping_add(0xD1B5_4A32_D192_ED03);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// The smoothing method of a name (`none`, `prune`, `pchip`, `bspline`, `bspline-interp`).
+#[must_use]
+pub fn smoothing_by_name(name: &str) -> Option<Smoothing> {
+    Smoothing::ALL.into_iter().find(|s| s.name() == name)
+}
+
+/// Runs one planner of a scenario `runs` times and scores each run.
+///
+/// Run k uses `ChaCha8Rng::seed_from_u64(run_seed(scenario.base_seed, k))`. With the
+/// `parallel` feature and `parallel = true` the runs are spread over threads; every number
+/// but the times equals the serial run's. `progress` is called once per finished run.
+///
+/// # Errors
+///
+/// A message for a planner spec that cannot be built (scenarios are validated on load, so
+/// this only happens for specs made in code).
+pub fn run_planner(
+    scenario: &Scenario,
+    world: &World,
+    spec: &PlannerSpec,
+    runs: u32,
+    parallel: bool,
+    progress: &(dyn Fn() + Sync),
+) -> Result<Vec<RunMetrics>, String> {
+    let planner = build_planner(spec)?;
+    let smoothing = spec
+        .smoothing
+        .as_deref()
+        .map_or(Some(Smoothing::None), smoothing_by_name);
+    let smoothing = smoothing.ok_or_else(|| format!("unknown smoothing {:?}", spec.smoothing))?;
+    let limits = match scenario.limits {
+        Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max).map_err(|e| e.to_string())?),
+        None => None,
+    };
+    // Curves are checked at most a quarter cell apart.
+    let spacing = world.map.resolution() * 0.25;
+    let one = |k: u32| {
+        let seed = run_seed(scenario.base_seed, u64::from(k));
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let outcome = planner.plan(&world.map, &world.query, &mut rng);
+        let m = measure(
+            &world.map,
+            &outcome,
+            smoothing,
+            limits.as_ref(),
+            spacing,
+            k,
+            seed,
+        );
+        progress();
+        m
+    };
+    #[cfg(feature = "parallel")]
+    if parallel {
+        use rayon::prelude::*;
+        return Ok((0..runs).into_par_iter().map(one).collect());
+    }
+    let _ = parallel;
+    Ok((0..runs).map(one).collect())
+}

@@ -1,0 +1,544 @@
+//! The scenario format: one RON file per experiment.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use envmap::{GridMap, LoadOptions, Mask, Pipeline};
+use hyplan_core::{Goal, Point2, Query, Zone};
+use serde::{Deserialize, Serialize};
+
+/// One experiment: a map, a query, robot limits, planners, runs, and the paper's numbers.
+///
+/// Coordinates (`start`, `goal`) are in the scenario's `units`. For [`MapSpec::Picture`]
+/// and [`MapSpec::File`] they are measured from the picture's top-left corner with y
+/// down (the frame of the picture, as papers and image viewers give them); for
+/// [`MapSpec::Grid`] they are y-up from the lower-left corner unless the grid says
+/// `y_down: true`.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scenario {
+    /// Short unique name (`seed000-table2`), used by `--only` and for output files.
+    pub name: String,
+    /// Source of the experiment: the seed file and the table or figure.
+    pub source: Source,
+    /// One or two sentences on what the experiment shows.
+    #[serde(default)]
+    pub description: String,
+    /// The map.
+    pub map: MapSpec,
+    /// Unit of coordinates, lengths and limits (`"mm"`, `"cells"`, `"m"`).
+    pub units: String,
+    /// Start, scenario units.
+    pub start: (f64, f64),
+    /// Goal centre, scenario units.
+    pub goal: (f64, f64),
+    /// Goal region radius, scenario units (0: the exact goal point).
+    #[serde(default)]
+    pub goal_radius: f64,
+    /// Whether the high-risk band blocks motion (a safe map in seed 000's sense).
+    #[serde(default)]
+    pub avoid_risk: bool,
+    /// Robot limits for the transfer time, scenario units per second.
+    #[serde(default)]
+    pub limits: Option<Limits>,
+    /// Runs per planner (the paper's count).
+    pub runs: u32,
+    /// Runs per planner with `--quick`.
+    #[serde(default = "default_quick_runs")]
+    pub quick_runs: u32,
+    /// Base seed; run k of every planner uses [`run_seed`](crate::run_seed)`(base_seed, k)`.
+    pub base_seed: u64,
+    /// Planners to run, in report order.
+    pub planners: Vec<PlannerSpec>,
+    /// The paper's published figures.
+    #[serde(default)]
+    pub published: Vec<Published>,
+    /// The paper's claims, checked on our runs.
+    #[serde(default)]
+    pub claims: Vec<Claim>,
+    /// Which values come from the paper (field names), for the report.
+    #[serde(default)]
+    pub from_paper: Vec<String>,
+    /// Which values are our reconstruction (field names), explained in `docs/papers/`.
+    #[serde(default)]
+    pub reconstructed: Vec<String>,
+}
+
+fn default_quick_runs() -> u32 {
+    10
+}
+
+/// Where an experiment comes from.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Source {
+    /// Seed file name, e.g. `000_9b224721fe327833.txt`.
+    pub seed_file: String,
+    /// Table or figure, e.g. `Table 2`.
+    pub experiment: String,
+}
+
+/// How to build a scenario's map.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum MapSpec {
+    /// A picture run through the seed-000 pipeline (binarize, optional rectangles,
+    /// safety band). Path relative to the scenario file.
+    Picture {
+        /// Picture file (PNG, PGM, PPM).
+        path: String,
+        /// Luminance threshold (darker is an obstacle).
+        #[serde(default = "default_threshold")]
+        threshold: u8,
+        /// Obstacles approximated by rectangles.
+        #[serde(default)]
+        rectangles: bool,
+        /// Safety band radius, pixels.
+        #[serde(default)]
+        safety_radius_px: f64,
+        /// Scenario units per pixel (6.34 mm/px in seed 000).
+        #[serde(default = "one")]
+        resolution: f64,
+    },
+    /// A grid drawn from shapes in scenario units.
+    Grid {
+        /// Columns.
+        width: usize,
+        /// Rows.
+        height: usize,
+        /// Scenario units per cell.
+        #[serde(default = "one")]
+        resolution: f64,
+        /// Obstacles; a cell is forbidden when the shape overlaps its interior.
+        obstacles: Vec<Shape>,
+        /// Safety band radius, cells (0: none).
+        #[serde(default)]
+        safety_radius_cells: f64,
+        /// Shape and query coordinates have y down from the top row.
+        #[serde(default)]
+        y_down: bool,
+    },
+    /// A map file read as `hyplan map` reads it (MovingAI `.map`, ROS `.yaml`, picture).
+    File {
+        /// The file, relative to the scenario file.
+        path: String,
+        /// Safety band radius in the file's units (cells; metres for ROS).
+        #[serde(default)]
+        safety_radius: Option<f64>,
+    },
+}
+
+fn default_threshold() -> u8 {
+    100
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// An obstacle shape, scenario units.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub enum Shape {
+    /// Axis-aligned rectangle from its corner `(x, y)` with width `w` and height `h`.
+    Rect {
+        /// Corner x.
+        x: f64,
+        /// Corner y (lower-left, or top-left when the grid is `y_down`).
+        y: f64,
+        /// Width.
+        w: f64,
+        /// Height.
+        h: f64,
+    },
+    /// Disc with centre `(x, y)` and radius `r`.
+    Circle {
+        /// Centre x.
+        x: f64,
+        /// Centre y.
+        y: f64,
+        /// Radius.
+        r: f64,
+    },
+}
+
+/// Robot limits, scenario units.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Limits {
+    /// Maximum speed, units per second.
+    pub v_max: f64,
+    /// Maximum turning rate, rad/s.
+    pub omega_max: f64,
+    /// Maximum acceleration, units per second squared.
+    pub a_max: f64,
+}
+
+/// A planner to run, by name, with a display label and its parameters.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlannerSpec {
+    /// Planner name, one of [`PLANNER_NAMES`](crate::PLANNER_NAMES).
+    pub name: String,
+    /// Label in the report (defaults to the name).
+    #[serde(default)]
+    pub label: Option<String>,
+    /// Numeric parameters by name (`step`, `goal_bias`, `max_iterations`, ...), scenario
+    /// units; unknown names are an error.
+    #[serde(default)]
+    pub params: BTreeMap<String, f64>,
+    /// Post-processing by `postproc`'s method names: `none` (default), `prune`, `pchip`,
+    /// `bspline`, `bspline-interp`.
+    #[serde(default)]
+    pub smoothing: Option<String>,
+}
+
+impl PlannerSpec {
+    /// The label used in reports.
+    #[must_use]
+    pub fn label(&self) -> &str {
+        self.label.as_deref().unwrap_or(&self.name)
+    }
+}
+
+/// A number the paper publishes, kept verbatim for the report.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Published {
+    /// Label of the planner it belongs to (a planner label of this scenario, or a method
+    /// we do not run, such as `GA-PCHIP`, shown with the paper's numbers only).
+    pub planner: String,
+    /// Metric name, as in [`RunMetrics`](crate::RunMetrics) (`time_s`, `length`, ...).
+    pub metric: String,
+    /// The paper's value, in the paper's unit.
+    pub value: f64,
+    /// Unit or note as printed in the paper.
+    #[serde(default)]
+    pub note: String,
+}
+
+/// A claim of the paper: the mean of `metric` increases along `order`
+/// (the first label has the smallest value).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Claim {
+    /// The claim in words.
+    pub text: String,
+    /// Metric name.
+    pub metric: String,
+    /// Planner labels from the smallest to the largest mean.
+    pub order: Vec<String>,
+}
+
+/// A scenario's world: the map and the query in world coordinates.
+#[derive(Debug, Clone)]
+pub struct World {
+    /// The three-zone map (its `blocked_from` set by `avoid_risk`).
+    pub map: GridMap,
+    /// Start and goal in world coordinates (y up).
+    pub query: Query,
+    /// Whether scenario coordinates have y down (for converting back in figures).
+    pub y_down: bool,
+    /// Obstacle rectangles found by the pipeline (cells), for figures.
+    pub rectangles: Vec<envmap::CellRect>,
+}
+
+impl World {
+    /// World point of scenario coordinates.
+    #[must_use]
+    pub fn to_world(&self, x: f64, y: f64) -> Point2 {
+        to_world(&self.map, self.y_down, x, y)
+    }
+}
+
+fn to_world(map: &GridMap, y_down: bool, x: f64, y: f64) -> Point2 {
+    let o = map.origin();
+    if y_down {
+        Point2::new(o.x + x, o.y + map.height() as f64 * map.resolution() - y)
+    } else {
+        Point2::new(o.x + x, o.y + y)
+    }
+}
+
+/// A problem with a scenario file.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ScenarioError {
+    /// The file could not be read.
+    #[error("{path}: cannot read: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The file is not valid RON for a scenario.
+    #[error("{path}:{line}:{col}: {message}")]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        col: usize,
+        /// What the parser says.
+        message: String,
+    },
+    /// A field has a value the scenario cannot use.
+    #[error("{path}: field `{field}` = {value}: {reason}")]
+    Invalid {
+        /// The file.
+        path: PathBuf,
+        /// Field name (dotted for nested fields).
+        field: String,
+        /// The value, formatted.
+        value: String,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+impl Scenario {
+    /// Reads and validates a scenario file: RON syntax, known planners and parameters,
+    /// positive runs; the map is built and the start and goal checked by
+    /// [`build_world`](Scenario::build_world).
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError`] naming the file, and the line or field.
+    pub fn load(path: &Path) -> Result<(Self, World), ScenarioError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let scenario: Scenario = ron::from_str(&text).map_err(|e| ScenarioError::Parse {
+            path: path.to_path_buf(),
+            line: e.position.line,
+            col: e.position.col,
+            message: e.code.to_string(),
+        })?;
+        scenario.validate(path)?;
+        let world = scenario.build_world(path.parent().unwrap_or(Path::new(".")), path)?;
+        Ok((scenario, world))
+    }
+
+    fn invalid(path: &Path, field: &str, value: impl ToString, reason: &str) -> ScenarioError {
+        ScenarioError::Invalid {
+            path: path.to_path_buf(),
+            field: field.to_string(),
+            value: value.to_string(),
+            reason: reason.to_string(),
+        }
+    }
+
+    /// Checks the fields that need no map.
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError::Invalid`] for the first bad field.
+    pub fn validate(&self, path: &Path) -> Result<(), ScenarioError> {
+        let bad = |field: &str, value: &dyn ToString, reason: &str| {
+            Err(Self::invalid(path, field, value.to_string(), reason))
+        };
+        if self.runs == 0 {
+            return bad("runs", &0, "must be at least 1");
+        }
+        if self.quick_runs == 0 {
+            return bad("quick_runs", &0, "must be at least 1");
+        }
+        if self.planners.is_empty() {
+            return bad("planners", &"[]", "at least one planner is needed");
+        }
+        for (k, v) in [("start", self.start), ("goal", self.goal)] {
+            if !(v.0.is_finite() && v.1.is_finite()) {
+                return bad(k, &format!("{v:?}"), "coordinates must be finite");
+            }
+        }
+        if !(self.goal_radius.is_finite() && self.goal_radius >= 0.0) {
+            return bad("goal_radius", &self.goal_radius, "must be finite and >= 0");
+        }
+        if let Some(l) = self.limits {
+            for (k, v) in [
+                ("limits.v_max", l.v_max),
+                ("limits.omega_max", l.omega_max),
+                ("limits.a_max", l.a_max),
+            ] {
+                if !(v.is_finite() && v > 0.0) {
+                    return bad(k, &v, "must be finite and > 0");
+                }
+            }
+        }
+        for (i, p) in self.planners.iter().enumerate() {
+            crate::build_planner(p).map_err(|reason| {
+                Self::invalid(path, &format!("planners[{i}]"), &p.name, &reason)
+            })?;
+            if let Some(s) = &p.smoothing
+                && crate::runner::smoothing_by_name(s).is_none()
+            {
+                return bad(
+                    &format!("planners[{i}].smoothing"),
+                    s,
+                    "expected none, prune, pchip, bspline or bspline-interp",
+                );
+            }
+        }
+        for c in &self.claims {
+            for label in &c.order {
+                if !self.planners.iter().any(|p| p.label() == label) {
+                    return bad(
+                        "claims.order",
+                        label,
+                        "not the label of a planner of this scenario",
+                    );
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Builds the map and places the query; `dir` is the folder paths are relative to and
+    /// `path` the scenario file (for messages).
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError::Invalid`] for a map that cannot be read or built, or a start or goal
+    /// outside the map or blocked.
+    pub fn build_world(&self, dir: &Path, path: &Path) -> Result<World, ScenarioError> {
+        let map_err = |e: &dyn std::fmt::Display| Self::invalid(path, "map", "", &e.to_string());
+        let (mut map, y_down, rectangles) = match &self.map {
+            MapSpec::Picture {
+                path: file,
+                threshold,
+                rectangles,
+                safety_radius_px,
+                resolution,
+            } => {
+                let opts = LoadOptions {
+                    threshold: *threshold,
+                    rectangles: *rectangles,
+                    safety_radius: Some(*safety_radius_px),
+                    ..LoadOptions::default()
+                };
+                let loaded = envmap::load_map(&dir.join(file), &opts).map_err(|e| map_err(&e))?;
+                let rects = if *rectangles {
+                    loaded.components.iter().map(|c| c.rect).collect()
+                } else {
+                    Vec::new()
+                };
+                let map = loaded
+                    .map
+                    .with_frame(*resolution, Point2::origin())
+                    .map_err(|e| map_err(&e))?;
+                (map, true, rects)
+            }
+            MapSpec::Grid {
+                width,
+                height,
+                resolution,
+                obstacles,
+                safety_radius_cells,
+                y_down,
+            } => {
+                let map = rasterise(
+                    *width,
+                    *height,
+                    *resolution,
+                    obstacles,
+                    *safety_radius_cells,
+                    *y_down,
+                )
+                .map_err(|e| map_err(&e))?;
+                (map, *y_down, Vec::new())
+            }
+            MapSpec::File {
+                path: file,
+                safety_radius,
+            } => {
+                let opts = LoadOptions {
+                    safety_radius: *safety_radius,
+                    ..LoadOptions::default()
+                };
+                let loaded = envmap::load_map(&dir.join(file), &opts).map_err(|e| map_err(&e))?;
+                let y_down = matches!(loaded.frame, envmap::InputFrame::Cells { .. });
+                (loaded.map, y_down, Vec::new())
+            }
+        };
+        if self.avoid_risk {
+            map = map.avoiding_risk();
+        }
+        let start = to_world(&map, y_down, self.start.0, self.start.1);
+        let goal_center = to_world(&map, y_down, self.goal.0, self.goal.1);
+        let goal = if self.goal_radius > 0.0 {
+            Goal::disc(goal_center, self.goal_radius)
+        } else {
+            Goal::Point(goal_center)
+        };
+        let query = Query::new(start, goal);
+        query.validate(&map).map_err(|e| {
+            Self::invalid(
+                path,
+                "start/goal",
+                format!("{:?} / {:?}", self.start, self.goal),
+                &e.to_string(),
+            )
+        })?;
+        Ok(World {
+            map,
+            query,
+            y_down,
+            rectangles,
+        })
+    }
+}
+
+/// Draws shapes into a grid: a cell is forbidden when a shape overlaps its interior; then
+/// the safety band is added by the seed-000 pipeline's zone step.
+fn rasterise(
+    width: usize,
+    height: usize,
+    resolution: f64,
+    obstacles: &[Shape],
+    safety_radius_cells: f64,
+    y_down: bool,
+) -> Result<GridMap, envmap::MapError> {
+    let mut mask = Mask::new(width, height);
+    let h = height as f64 * resolution;
+    for shape in obstacles {
+        for j in 0..height {
+            for i in 0..width {
+                // Cell square in scenario coordinates.
+                let (x0, x1) = (i as f64 * resolution, (i + 1) as f64 * resolution);
+                let (mut y0, mut y1) = (j as f64 * resolution, (j + 1) as f64 * resolution);
+                if y_down {
+                    (y0, y1) = (h - y1, h - y0);
+                }
+                let hit = match *shape {
+                    Shape::Rect { x, y, w, h: sh } => x < x1 && x + w > x0 && y < y1 && y + sh > y0,
+                    Shape::Circle { x, y, r } => {
+                        let dx = x.clamp(x0, x1) - x;
+                        let dy = y.clamp(y0, y1) - y;
+                        dx * dx + dy * dy < r * r
+                    }
+                };
+                if hit {
+                    mask.set(i, j, true);
+                }
+            }
+        }
+    }
+    let pipeline = Pipeline {
+        safety_radius: safety_radius_cells,
+        ..Pipeline::default()
+    };
+    let out = pipeline.run_mask(mask, &[])?;
+    let map = out
+        .map
+        .with_frame(resolution, Point2::origin())
+        .map_err(|e| envmap::MapError::InvalidParameter {
+            name: "resolution",
+            value: resolution.to_string(),
+            reason: e.to_string(),
+        })?;
+    debug_assert!(map.zones().iter().all(|&z| z <= Zone::Forbidden));
+    Ok(map)
+}
