@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod cmd;
+mod planners;
 
 /// Exit code for "no path".
 pub const EXIT_NO_PATH: u8 = 1;
@@ -26,6 +27,8 @@ struct Cli {
 enum Command {
     /// Turn a picture, ROS map or MovingAI map into a three-zone safe map.
     Map(cmd::map::Args),
+    /// Plan a path with a sampling planner (RRT, RRT*, Bi-RRT, RRT-Connect).
+    Plan(cmd::plan::Args),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +43,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Map(args) => cmd::map::run(&args),
+        Command::Plan(args) => cmd::plan::run(&args),
     };
     match result {
         Ok(code) => code,

@@ -1,0 +1,458 @@
+//! `hyplan plan`: load a map, plan from a start to a goal with a sampling planner, print
+//! one record per run (human text, CSV in the OMPL peer's columns, or JSON lines) and draw
+//! an SVG.
+//!
+//! Coordinates, step and goal radius are in the input's own frame and units
+//! ([`envmap::InputFrame`]): cells with y counted down from the top row for pictures and
+//! MovingAI `.map` files (the frame of image viewers, MovingAI and the OMPL peer), metres
+//! with y up for ROS YAML maps.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use anyhow::Context as _;
+use envmap::{GridMap, InputFrame, LoadOptions, load_map};
+use hyplan_core::{Budget, Goal, Plan, PlanError, Point2, Query, Zone};
+use rand_chacha::ChaCha8Rng;
+use rand_chacha::rand_core::SeedableRng;
+use serde::Serialize;
+
+use crate::planners::{self, PlannerFlags};
+
+/// Options of `hyplan plan`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The map: a picture (PNG, PGM, PPM), a ROS map_server `.yaml` or a MovingAI `.map`.
+    #[arg(long)]
+    pub map: PathBuf,
+    /// Start `X,Y` in the input's frame (pictures and `.map`: column, row from the top).
+    #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
+    pub start: (f64, f64),
+    /// Goal `X,Y` in the input's frame.
+    #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
+    pub goal: (f64, f64),
+    /// Planner: rrt, rrt-star (to its first solution), bi-rrt or rrt-connect.
+    #[arg(long, default_value = "rrt")]
+    pub planner: String,
+    /// Maximum edge length in the input's units [default: 5% of the map's diagonal].
+    #[arg(long, allow_hyphen_values = true)]
+    pub step: Option<f64>,
+    /// Probability of sampling the goal (rrt and rrt-star), in [0, 1].
+    #[arg(long, default_value_t = 0.05, allow_hyphen_values = true)]
+    pub goal_bias: f64,
+    /// Goal tolerance in the input's units; 0 means the path must end exactly on the goal.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub goal_radius: f64,
+    /// Iterations (samples drawn) per run [default: 100000, or unlimited with --time-limit].
+    #[arg(long)]
+    pub max_iter: Option<u64>,
+    /// Wall-clock limit per run, seconds.
+    #[arg(long, allow_hyphen_values = true)]
+    pub time_limit: Option<f64>,
+    /// Number of runs; run k uses the seed SplitMix64(seed) output k + 1.
+    #[arg(long, default_value_t = 1)]
+    pub runs: u64,
+    /// Base seed of the runs.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Print CSV: planner,run,solved,exact,time_s,length,states_in_path,graph_vertices.
+    #[arg(long, conflicts_with = "json")]
+    pub csv: bool,
+    /// Print one JSON object per run, one per line (path in the input's frame).
+    #[arg(long)]
+    pub json: bool,
+    /// Draw the map zones, the tree(s) and the path of the first run to this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Pictures: luminance threshold, darker pixels are obstacles.
+    #[arg(long, default_value_t = 100)]
+    pub threshold: u8,
+    /// Radius of the high-risk band around obstacles, in the input's units
+    /// [default: 20 cells for pictures, none for ROS and MovingAI maps].
+    #[arg(long, allow_hyphen_values = true)]
+    pub safety_radius: Option<f64>,
+    /// Treat the high-risk band as blocked too (by default only forbidden cells block).
+    #[arg(long)]
+    pub avoid_risk: bool,
+}
+
+/// What one run produced; one CSV row, one JSON line, one human line.
+#[derive(Debug, Clone, Serialize)]
+pub struct RunRecord {
+    /// Planner name as given to `--planner`.
+    pub planner: String,
+    /// Run index, from 0.
+    pub run: u64,
+    /// The run's seed (derived from `--seed` and the run index).
+    pub seed: u64,
+    /// Whether a path was found.
+    pub solved: bool,
+    /// Whether the path reaches the goal region (always equal to `solved`: no approximate
+    /// paths are returned; kept for the OMPL peer's columns).
+    pub exact: bool,
+    /// Wall time of the planner call, seconds.
+    pub time_s: f64,
+    /// Path length in the input's units.
+    pub length: Option<f64>,
+    /// Number of path points.
+    pub states_in_path: Option<usize>,
+    /// Nodes in the tree(s).
+    pub nodes: u64,
+    /// Iterations done.
+    pub iterations: u64,
+    /// Edge checks done.
+    pub collision_checks: u64,
+    /// The path in the input's frame.
+    pub path: Vec<[f64; 2]>,
+}
+
+fn parse_xy(s: &str) -> Result<(f64, f64), String> {
+    let (x, y) = s
+        .split_once(',')
+        .ok_or_else(|| format!("expected X,Y, got {s:?}"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<f64>()
+            .map_err(|e| format!("{v:?} in {s:?}: {e}"))
+    };
+    Ok((parse(x)?, parse(y)?))
+}
+
+/// World units per input unit.
+fn input_scale(frame: &InputFrame) -> f64 {
+    match *frame {
+        InputFrame::Cells { resolution, .. } => resolution,
+        InputFrame::World => 1.0,
+    }
+}
+
+/// Runs `hyplan plan`.
+///
+/// # Errors
+///
+/// Unreadable maps, bad flags, a start or goal outside the map or blocked, bad planner
+/// parameters.
+pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    let opts = LoadOptions {
+        threshold: args.threshold,
+        safety_radius: args.safety_radius,
+        ..LoadOptions::default()
+    };
+    let loaded =
+        load_map(&args.map, &opts).with_context(|| format!("loading {}", args.map.display()))?;
+    let frame = loaded.frame;
+    let map = if args.avoid_risk {
+        loaded.map.avoiding_risk()
+    } else {
+        loaded.map
+    };
+    let scale = input_scale(&frame);
+
+    if args.runs == 0 {
+        anyhow::bail!("--runs 0: must be at least 1");
+    }
+    let time_limit = args
+        .time_limit
+        .map(|t| {
+            Duration::try_from_secs_f64(t)
+                .ok()
+                .filter(|d| !d.is_zero())
+                .with_context(|| format!("--time-limit {t}: must be a positive number of seconds"))
+        })
+        .transpose()?;
+    let max_iterations = args.max_iter.unwrap_or(if time_limit.is_some() {
+        u64::MAX
+    } else {
+        100_000
+    });
+    let mut budget = Budget::iterations(max_iterations);
+    if let Some(t) = time_limit {
+        budget = budget.with_time(t);
+    }
+    let step = match args.step {
+        Some(s) => s * scale,
+        None => 0.05 * map.bounds().diagonal(),
+    };
+    let flags = PlannerFlags {
+        step,
+        goal_bias: args.goal_bias,
+        budget,
+    };
+    let planner = planners::build(&args.planner, &flags)?;
+    if !planners::uses_goal_bias(&args.planner) && args.goal_bias != 0.05 && !args.csv && !args.json
+    {
+        eprintln!(
+            "note: {} has no goal bias; --goal-bias is ignored",
+            args.planner
+        );
+    }
+
+    let start = frame.to_world(args.start.0, args.start.1);
+    let goal_center = frame.to_world(args.goal.0, args.goal.1);
+    let goal = if args.goal_radius == 0.0 {
+        Goal::Point(goal_center)
+    } else {
+        Goal::disc(goal_center, args.goal_radius * scale)
+    };
+    let query = Query::new(start, goal);
+    query.validate(&map).map_err(|e| match e {
+        PlanError::InvalidStart { reason, .. } => {
+            anyhow::anyhow!("--start {},{}: {reason}", args.start.0, args.start.1)
+        }
+        PlanError::InvalidGoal { reason, .. } => anyhow::anyhow!(
+            "--goal {},{} (radius {}): {reason}",
+            args.goal.0,
+            args.goal.1,
+            args.goal_radius
+        ),
+        other => anyhow::Error::new(other),
+    })?;
+
+    if args.csv {
+        println!("planner,run,solved,exact,time_s,length,states_in_path,graph_vertices");
+    }
+    let mut records = Vec::with_capacity(args.runs as usize);
+    let mut first_plan: Option<Plan> = None;
+    for run in 0..args.runs {
+        let seed = planners::run_seed(args.seed, run);
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let started = Instant::now();
+        let outcome = planner.plan(&map, &query, &mut rng);
+        let time_s = started.elapsed().as_secs_f64();
+        let record = match &outcome {
+            Ok(plan) => {
+                let path: Vec<[f64; 2]> = plan
+                    .path
+                    .iter()
+                    .map(|&p| {
+                        let (x, y) = frame.from_world(p);
+                        [x, y]
+                    })
+                    .collect();
+                RunRecord {
+                    planner: args.planner.clone(),
+                    run,
+                    seed,
+                    solved: true,
+                    exact: true,
+                    time_s,
+                    length: Some(plan.length() / scale),
+                    states_in_path: Some(path.len()),
+                    nodes: plan.stats.nodes,
+                    iterations: plan.stats.iterations,
+                    collision_checks: plan.stats.collision_checks,
+                    path,
+                }
+            }
+            Err(e) if e.is_no_path() => {
+                let stats = e.stats().copied().unwrap_or_default();
+                RunRecord {
+                    planner: args.planner.clone(),
+                    run,
+                    seed,
+                    solved: false,
+                    exact: false,
+                    time_s,
+                    length: None,
+                    states_in_path: None,
+                    nodes: stats.nodes,
+                    iterations: stats.iterations,
+                    collision_checks: stats.collision_checks,
+                    path: Vec::new(),
+                }
+            }
+            Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
+        };
+        print_record(args, &record, outcome.as_ref().err())?;
+        if run == 0 {
+            first_plan = outcome.ok();
+        }
+        records.push(record);
+    }
+
+    let solved = records.iter().filter(|r| r.solved).count();
+    if !args.csv && !args.json && args.runs > 1 {
+        print_summary(&records);
+    }
+    if let Some(svg_path) = &args.svg {
+        write_svg(svg_path, &map, &query, first_plan.as_ref())
+            .with_context(|| format!("writing {}", svg_path.display()))?;
+    }
+    Ok(if solved == records.len() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(crate::EXIT_NO_PATH)
+    })
+}
+
+fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::Result<()> {
+    if args.csv {
+        let opt = |v: Option<f64>| v.map(|v| format!("{v:.6}")).unwrap_or_default();
+        println!(
+            "{},{},{},{},{:.6},{},{},{}",
+            r.planner,
+            r.run,
+            u8::from(r.solved),
+            u8::from(r.exact),
+            r.time_s,
+            opt(r.length),
+            r.states_in_path.map(|n| n.to_string()).unwrap_or_default(),
+            r.nodes
+        );
+    } else if args.json {
+        println!("{}", serde_json::to_string(r)?);
+    } else if r.solved {
+        println!(
+            "run {} (seed {}): path of length {:.3} ({} points), {} nodes, {} iterations, {} edge checks, {:.3} ms",
+            r.run,
+            r.seed,
+            r.length.unwrap_or(f64::NAN),
+            r.states_in_path.unwrap_or(0),
+            r.nodes,
+            r.iterations,
+            r.collision_checks,
+            r.time_s * 1e3
+        );
+    } else {
+        println!(
+            "run {} (seed {}): {}, {} nodes, {:.3} ms",
+            r.run,
+            r.seed,
+            err.map_or_else(|| "no path".to_string(), ToString::to_string),
+            r.nodes,
+            r.time_s * 1e3
+        );
+    }
+    Ok(())
+}
+
+fn median(mut v: Vec<f64>) -> Option<f64> {
+    if v.is_empty() {
+        return None;
+    }
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    Some(if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    })
+}
+
+fn print_summary(records: &[RunRecord]) {
+    let solved: Vec<&RunRecord> = records.iter().filter(|r| r.solved).collect();
+    let time = median(records.iter().map(|r| r.time_s).collect()).unwrap_or(f64::NAN);
+    let length = median(solved.iter().filter_map(|r| r.length).collect());
+    println!(
+        "solved {} of {} runs; median time {:.3} ms; median length {}",
+        solved.len(),
+        records.len(),
+        time * 1e3,
+        length.map_or_else(|| "-".to_string(), |l| format!("{l:.3}"))
+    );
+}
+
+/// Draws zones (one rectangle per horizontal run of non-free cells), trees and path, in
+/// cell units with y down (SVG's frame), one cell = 1 user unit.
+fn write_svg(path: &Path, map: &GridMap, query: &Query, plan: Option<&Plan>) -> anyhow::Result<()> {
+    use svg::Document;
+    use svg::node::element::path::Data;
+    use svg::node::element::{Circle, Path as SvgPath, Rectangle};
+
+    let (w, h) = (map.width(), map.height());
+    let res = map.resolution();
+    let origin = map.origin();
+    // World point -> SVG point (cells, y down).
+    let to_svg = |p: Point2| ((p.x - origin.x) / res, h as f64 - (p.y - origin.y) / res);
+    let scale = 1.0_f64.max(800.0 / w.max(h) as f64);
+    let stroke = (w.max(h) as f64 / 800.0).max(0.05);
+    let mut doc = Document::new()
+        .set("viewBox", (0, 0, w, h))
+        .set("width", (w as f64 * scale).round())
+        .set("height", (h as f64 * scale).round())
+        .add(
+            Rectangle::new()
+                .set("width", w)
+                .set("height", h)
+                .set("fill", "white"),
+        );
+    for j in 0..h {
+        let row = h - 1 - j;
+        let mut i = 0;
+        while i < w {
+            let zone = map.cell_zone(i, j);
+            let mut end = i + 1;
+            while end < w && map.cell_zone(end, j) == zone {
+                end += 1;
+            }
+            if zone != Zone::Free {
+                let fill = if zone == Zone::Forbidden {
+                    "#222"
+                } else {
+                    "#f4c27a"
+                };
+                doc = doc.add(
+                    Rectangle::new()
+                        .set("x", i)
+                        .set("y", row)
+                        .set("width", end - i)
+                        .set("height", 1)
+                        .set("fill", fill),
+                );
+            }
+            i = end;
+        }
+    }
+    if let Some(plan) = plan {
+        for (k, tree) in plan.trees.iter().enumerate() {
+            let mut data = Data::new();
+            for (a, b) in tree.edges() {
+                data = data.move_to(to_svg(a)).line_to(to_svg(b));
+            }
+            let colour = if k == 0 { "#4a90d9" } else { "#5cb85c" };
+            doc = doc.add(
+                SvgPath::new()
+                    .set("d", data)
+                    .set("fill", "none")
+                    .set("stroke", colour)
+                    .set("stroke-width", stroke),
+            );
+        }
+        if plan.path.len() >= 2 {
+            let mut data = Data::new().move_to(to_svg(plan.path[0]));
+            for &p in &plan.path[1..] {
+                data = data.line_to(to_svg(p));
+            }
+            doc = doc.add(
+                SvgPath::new()
+                    .set("d", data)
+                    .set("fill", "none")
+                    .set("stroke", "#d9534f")
+                    .set("stroke-width", 3.0 * stroke),
+            );
+        }
+    }
+    let (sx, sy) = to_svg(query.start);
+    let (gx, gy) = to_svg(query.goal.center());
+    let marker = 4.0 * stroke;
+    doc = doc
+        .add(
+            Circle::new()
+                .set("cx", sx)
+                .set("cy", sy)
+                .set("r", marker)
+                .set("fill", "#d9534f"),
+        )
+        .add(
+            Circle::new()
+                .set("cx", gx)
+                .set("cy", gy)
+                .set("r", (query.goal.radius() / res).max(marker))
+                .set("fill", "none")
+                .set("stroke", "#d9534f")
+                .set("stroke-width", stroke),
+        );
+    svg::save(path, &doc)?;
+    Ok(())
+}
