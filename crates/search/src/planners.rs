@@ -1,0 +1,232 @@
+//! [`Planner`] implementations of the grid searches.
+
+use std::time::Instant;
+
+use envmap::GridMap;
+use hyplan_core::{
+    Goal, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
+};
+use rand_core::RngCore;
+
+use crate::{GridOptions, GridSearch, GridSearchError};
+
+/// Which grid search a planner runs.
+#[derive(Clone, Copy)]
+enum Algo {
+    Astar,
+    Dijkstra,
+    ThetaStar,
+}
+
+/// Grid A* as a planner: optimal 4- or 8-connected paths through cell centres.
+///
+/// The workspace must be an [`envmap::GridMap`] (found through
+/// [`Workspace::as_any`]); its [`blocked_from`](GridMap::blocked_from) says which zones
+/// block. The returned path starts at the query's start point exactly, goes through the
+/// centres of the cells of the grid path and ends at the goal point. For a goal disc the
+/// search runs to the cell of the disc's centre and the path is cut at the first cell
+/// centre inside the disc (so it is valid but, for a large disc, not necessarily the
+/// shortest path into it). `cost` is the Euclidean length of the returned polyline, world
+/// units.
+///
+/// ```
+/// use envmap::GridMap;
+/// use hyplan_core::{Goal, Point2, Query};
+/// use search::GridAstar;
+/// let map = GridMap::from_ascii("
+///     ....
+///     .##.
+///     ....
+/// ")?;
+/// let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(3.5, 1.5)));
+/// let plan = GridAstar::default().plan(&map, &query, &mut rand::rng())?;
+/// assert_eq!(plan.path.first(), Some(&query.start));
+/// assert_eq!(plan.path.last(), Some(&Point2::new(3.5, 1.5)));
+/// assert_eq!(plan.cost, 5.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct GridAstar {
+    /// Move rules (8-connected, no corner cutting by default).
+    pub options: GridOptions,
+}
+
+/// Grid Dijkstra as a planner: the same paths as [`GridAstar`] (equal costs), without a
+/// heuristic. Same conventions as [`GridAstar`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct GridDijkstra {
+    /// Move rules (8-connected, no corner cutting by default).
+    pub options: GridOptions,
+}
+
+/// Theta* as a planner: any-angle paths between cell centres, each segment free under the
+/// map's exact `segment_free`. Same conventions as [`GridAstar`];
+/// see [`GridSearch::theta_star`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ThetaStar {
+    /// Connectivity of the underlying grid moves (corner cutting is never used).
+    pub options: GridOptions,
+}
+
+macro_rules! grid_planner {
+    ($ty:ident, $algo:expr, $name:literal) => {
+        impl $ty {
+            /// Plans on `ws`, which must be an [`envmap::GridMap`]. The RNG is not used
+            /// (the search is deterministic); it is there for the common planner shape.
+            ///
+            /// # Errors
+            ///
+            /// [`PlanError::InvalidParameter`] named `workspace` when `ws` is not a grid
+            /// map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for points
+            /// outside the map, not finite or blocked; [`PlanError::NoPath`] (with the
+            /// expansion count) when every reachable cell was expanded.
+            pub fn plan<W: Workspace + ?Sized, R: RngCore + ?Sized>(
+                &self,
+                ws: &W,
+                query: &Query,
+                rng: &mut R,
+            ) -> Result<Plan, PlanError> {
+                let _ = rng;
+                plan_on_grid(ws, query, self.options, $algo)
+            }
+        }
+
+        impl Planner for $ty {
+            fn info(&self) -> PlannerInfo {
+                PlannerInfo {
+                    name: $name,
+                    optimizing: false,
+                    proves_no_path: true,
+                    grid_only: true,
+                }
+            }
+
+            fn plan(
+                &self,
+                ws: &dyn Workspace,
+                query: &Query,
+                rng: &mut dyn RngCore,
+            ) -> Result<Plan, PlanError> {
+                $ty::plan(self, ws, query, rng)
+            }
+        }
+    };
+}
+
+grid_planner!(GridAstar, Algo::Astar, "astar");
+grid_planner!(GridDijkstra, Algo::Dijkstra, "dijkstra");
+grid_planner!(ThetaStar, Algo::ThetaStar, "theta-star");
+
+/// The grid map behind a workspace, or a typed error.
+fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanError> {
+    ws.as_any()
+        .and_then(|a| a.downcast_ref::<GridMap>())
+        .ok_or(PlanError::InvalidParameter {
+            name: "workspace",
+            value: "not an envmap::GridMap".into(),
+            reason: "grid searches need a grid map",
+        })
+}
+
+fn plan_on_grid<W: Workspace + ?Sized>(
+    ws: &W,
+    query: &Query,
+    options: GridOptions,
+    algo: Algo,
+) -> Result<Plan, PlanError> {
+    let started = Instant::now();
+    let map = as_grid(ws)?;
+    query.validate(map)?;
+    let cell_of = |p: Point2| map.world_to_cell(p);
+    let start_cell = cell_of(query.start).ok_or(PlanError::InvalidStart {
+        point: query.start,
+        reason: "outside the map",
+    })?;
+    let goal_point = query.goal.center();
+    let goal_cell = cell_of(goal_point).ok_or(PlanError::InvalidGoal {
+        point: goal_point,
+        reason: "outside the map",
+    })?;
+    let options = match algo {
+        Algo::ThetaStar => GridOptions {
+            corner_cutting: false,
+            ..options
+        },
+        _ => options,
+    };
+    let mut search = GridSearch::new(map, options).map_err(|e| PlanError::InvalidParameter {
+        name: "workspace",
+        value: e.to_string(),
+        reason: "map too large for the grid search",
+    })?;
+    let found = match algo {
+        Algo::Astar => search.astar(start_cell, goal_cell),
+        Algo::Dijkstra => search.dijkstra(start_cell, goal_cell),
+        Algo::ThetaStar => search.theta_star(map, start_cell, goal_cell),
+    };
+    let mut stats = PlanStats::default();
+    let found = match found {
+        Ok(found) => found,
+        Err(GridSearchError::NoPath { stats: s }) => {
+            stats.expansions = s.expansions;
+            stats.pushes = s.pushes;
+            stats.elapsed = started.elapsed();
+            return Err(PlanError::NoPath { stats });
+        }
+        // validate() accepted the points, so the cells are inside and free; anything else
+        // is reported as what it is.
+        Err(GridSearchError::StartBlocked { .. } | GridSearchError::StartOutside { .. }) => {
+            return Err(PlanError::InvalidStart {
+                point: query.start,
+                reason: "its cell is blocked",
+            });
+        }
+        Err(_) => {
+            return Err(PlanError::InvalidGoal {
+                point: goal_point,
+                reason: "its cell is blocked",
+            });
+        }
+    };
+    stats.expansions = found.stats.expansions;
+    stats.pushes = found.stats.pushes;
+    stats.nodes = found.cells.len() as u64;
+
+    // Start point, the centres of the cells, then the goal.
+    let mut path = Vec::with_capacity(found.cells.len() + 2);
+    path.push(query.start);
+    for &(i, j) in &found.cells {
+        let c = map.cell_center(i, j);
+        if path.last() != Some(&c) {
+            path.push(c);
+        }
+        if let Goal::Disc { .. } = query.goal
+            && query.goal.contains(c)
+        {
+            break;
+        }
+    }
+    let last = *path.last().unwrap_or(&query.start);
+    if !query.goal.contains(last) {
+        path.push(goal_point);
+    }
+    stats.elapsed = started.elapsed();
+    Ok(Plan {
+        cost: hyplan_core::path_length(&path),
+        path,
+        trees: Vec::new(),
+        stats,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Connectivity;
+
+    #[test]
+    fn connectivity_default_is_eight() {
+        assert_eq!(GridOptions::default().connectivity, Connectivity::Eight);
+        assert!(!GridOptions::default().corner_cutting);
+    }
+}

@@ -1,0 +1,78 @@
+//! Shared fixtures.
+
+use std::path::PathBuf;
+
+use envmap::GridMap;
+
+/// Seed of the random-grid tests.
+pub const SEED: u64 = 0x5eed_0003;
+
+/// `shared/data` beside the repository.
+pub fn data_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data")
+}
+
+/// `shared/peers/maps` beside the repository.
+pub fn peer_maps_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/peers/maps")
+}
+
+/// Reads a MovingAI `.map` for the tests: header lines, then rows top first; `.`, `G`, `S`
+/// free, everything else blocked.
+pub fn load_movingai(path: &std::path::Path) -> GridMap {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e} (is shared/ beside the repository?)",
+            path.display()
+        )
+    });
+    let body: String = text
+        .lines()
+        .skip_while(|l| l.trim() != "map")
+        .skip(1)
+        .map(|l| {
+            l.trim_end()
+                .chars()
+                .map(|c| {
+                    if matches!(c, '.' | 'G' | 'S') {
+                        '.'
+                    } else {
+                        '#'
+                    }
+                })
+                .collect::<String>()
+                + "\n"
+        })
+        .collect();
+    GridMap::from_ascii(&body).unwrap()
+}
+
+/// Whether every consecutive pair of cells is one legal 8-connected move without corner
+/// cutting on `map`, and every cell is free.
+pub fn legal_moves(map: &GridMap, cells: &[(usize, usize)]) -> bool {
+    cells.iter().all(|&(i, j)| map.cell_free(i, j))
+        && cells.windows(2).all(|w| {
+            let ((a, b), (c, d)) = (w[0], w[1]);
+            let (di, dj) = (a.abs_diff(c), b.abs_diff(d));
+            match (di, dj) {
+                (1, 0) | (0, 1) => true,
+                (1, 1) => map.cell_free(a, d) && map.cell_free(c, b),
+                _ => false,
+            }
+        })
+}
+
+/// Octile length of a cell path.
+pub fn octile_length(cells: &[(usize, usize)]) -> f64 {
+    cells
+        .windows(2)
+        .map(|w| {
+            let (di, dj) = (w[0].0.abs_diff(w[1].0), w[0].1.abs_diff(w[1].1));
+            if di + dj == 2 {
+                std::f64::consts::SQRT_2
+            } else {
+                1.0
+            }
+        })
+        .sum()
+}

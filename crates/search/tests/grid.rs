@@ -1,0 +1,220 @@
+//! Grid searches on small hand-made maps.
+
+use envmap::GridMap;
+use hyplan_core::Zone;
+use search::{Connectivity, GridOptions, GridSearch, GridSearchError};
+
+use crate::common::{legal_moves, octile_length};
+
+const SQRT2: f64 = std::f64::consts::SQRT_2;
+
+#[test]
+fn no_corner_cutting_by_default() {
+    // The tiny.map case of the peers: (0,0)->(1,1) in file coordinates costs 2, because the
+    // diagonal would cut the blocked cell beside it.
+    let map = GridMap::from_ascii(
+        "
+        #.
+        ..
+    ",
+    )
+    .unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    let p = s.astar((0, 0), (1, 1)).unwrap();
+    assert_eq!(p.cost, 2.0);
+    assert_eq!(p.cells, vec![(0, 0), (1, 0), (1, 1)]);
+    let mut cut = GridSearch::new(
+        &map,
+        GridOptions {
+            corner_cutting: true,
+            ..GridOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(cut.astar((0, 0), (1, 1)).unwrap().cost, SQRT2);
+}
+
+#[test]
+fn corner_cutting_never_squeezes_between_two_blocks() {
+    let map = GridMap::from_ascii(
+        "
+        #.
+        .#
+    ",
+    )
+    .unwrap();
+    let mut cut = GridSearch::new(
+        &map,
+        GridOptions {
+            corner_cutting: true,
+            ..GridOptions::default()
+        },
+    )
+    .unwrap();
+    assert!(matches!(
+        cut.astar((0, 0), (1, 1)),
+        Err(GridSearchError::NoPath { .. })
+    ));
+}
+
+#[test]
+fn four_connected_costs_manhattan() {
+    let map = GridMap::filled(6, 4, Zone::Free).unwrap();
+    let mut s = GridSearch::new(
+        &map,
+        GridOptions {
+            connectivity: Connectivity::Four,
+            corner_cutting: false,
+        },
+    )
+    .unwrap();
+    let p = s.astar((0, 0), (5, 3)).unwrap();
+    assert_eq!(p.cost, 8.0);
+    assert!(
+        p.cells
+            .windows(2)
+            .all(|w| w[0].0.abs_diff(w[1].0) + w[0].1.abs_diff(w[1].1) == 1)
+    );
+    assert_eq!(s.dijkstra((0, 0), (5, 3)).unwrap().cost, 8.0);
+}
+
+#[test]
+fn octile_on_open_map_and_scratch_reuse() {
+    let map = GridMap::filled(20, 10, Zone::Free).unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    for _ in 0..3 {
+        let p = s.astar((0, 0), (19, 9)).unwrap();
+        assert!((p.cost - (10.0 + 9.0 * SQRT2)).abs() < 1e-12);
+        assert!(legal_moves(&map, &p.cells));
+        assert!((octile_length(&p.cells) - p.cost).abs() < 1e-12);
+        // A* with the octile heuristic on an open map expands little more than the path
+        // (rounding in f = g + h can break a few ties the other way).
+        assert!((p.stats.expansions as usize) < 2 * p.cells.len());
+        let q = s.astar((19, 9), (0, 9)).unwrap();
+        assert_eq!(q.cost, 19.0);
+    }
+}
+
+#[test]
+fn unreachable_goal_exhausts_the_reachable_cells() {
+    // The left region has 6 free cells; the goal is walled off on the right.
+    let map = GridMap::from_ascii(
+        "
+        ..#..
+        ..#..
+        ..#..
+    ",
+    )
+    .unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    for r in [s.astar((0, 0), (4, 2)), s.dijkstra((0, 0), (4, 2))] {
+        match r {
+            Err(GridSearchError::NoPath { stats }) => assert_eq!(stats.expansions, 6),
+            other => panic!("{other:?}"),
+        }
+    }
+    match s.theta_star(&map, (0, 0), (4, 2)) {
+        Err(GridSearchError::NoPath { stats }) => assert!(stats.expansions >= 6),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn bad_cells_are_typed_errors() {
+    let map = GridMap::from_ascii(
+        "
+        .#
+        ..
+    ",
+    )
+    .unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    assert!(matches!(
+        s.astar((2, 0), (0, 0)),
+        Err(GridSearchError::StartOutside { i: 2, .. })
+    ));
+    assert!(matches!(
+        s.astar((0, 0), (0, 5)),
+        Err(GridSearchError::GoalOutside { j: 5, .. })
+    ));
+    assert!(matches!(
+        s.astar((1, 1), (0, 0)),
+        Err(GridSearchError::StartBlocked { i: 1, j: 1 })
+    ));
+    assert!(matches!(
+        s.dijkstra((0, 0), (1, 1)),
+        Err(GridSearchError::GoalBlocked { .. })
+    ));
+    assert!(s.cost_to_go((1, 1)).is_err());
+    let p = s.astar((0, 0), (0, 0)).unwrap();
+    assert_eq!((p.cells.clone(), p.cost), (vec![(0, 0)], 0.0));
+}
+
+#[test]
+fn risk_zone_blocks_only_when_asked() {
+    let map = GridMap::from_ascii(
+        "
+        ...
+        .~.
+        ...
+    ",
+    )
+    .unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    assert_eq!(s.astar((0, 1), (2, 1)).unwrap().cost, 2.0);
+    let safe = map.avoiding_risk();
+    let mut s = GridSearch::new(&safe, GridOptions::default()).unwrap();
+    let p = s.astar((0, 1), (2, 1)).unwrap();
+    assert!(!p.cells.contains(&(1, 1)));
+    assert!(p.cost > 2.0);
+}
+
+#[test]
+fn cost_to_go_matches_point_to_point_dijkstra() {
+    let map = GridMap::from_ascii(
+        "
+        ........
+        .######.
+        .#....#.
+        .#.##.#.
+        ...#....
+    ",
+    )
+    .unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    let goal = (4, 2);
+    let field = s.cost_to_go(goal).unwrap();
+    assert_eq!(field.goal(), goal);
+    assert_eq!(field.cost(goal.0, goal.1), Some(0.0));
+    assert_eq!(field.next(goal.0, goal.1), None);
+    for j in 0..map.height() {
+        for i in 0..map.width() {
+            let direct = s.dijkstra((i, j), goal);
+            match (field.cost(i, j), direct) {
+                (Some(c), Ok(p)) => {
+                    assert!((c - p.cost).abs() < 1e-9, "({i},{j}): {c} vs {}", p.cost);
+                    let cells = field.path_from(i, j).unwrap();
+                    assert_eq!(cells.last(), Some(&goal));
+                    assert!(legal_moves(&map, &cells));
+                    assert!((octile_length(&cells) - c).abs() < 1e-9);
+                }
+                (None, Err(_)) => {}
+                (a, b) => panic!("({i},{j}): field {a:?}, search {b:?}"),
+            }
+        }
+    }
+}
+
+#[test]
+fn theta_star_goes_straight_where_it_can() {
+    let map = GridMap::filled(10, 5, Zone::Free).unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    let p = s.theta_star(&map, (0, 0), (9, 4)).unwrap();
+    assert_eq!(p.cells, vec![(0, 0), (9, 4)]);
+    assert!((p.cost - 97f64.sqrt()).abs() < 1e-12);
+}
+
+#[test]
+fn memory_per_cell_is_as_documented() {
+    assert_eq!(GridSearch::BYTES_PER_CELL, 17);
+}

@@ -1,0 +1,158 @@
+//! The `Planner` implementations on world points.
+
+use envmap::GridMap;
+use hyplan_core::{Bounds, Goal, PlanError, Planner, Point2, Query, Workspace};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use search::{GridAstar, GridDijkstra, ThetaStar};
+
+use crate::common::SEED;
+
+fn room() -> GridMap {
+    GridMap::from_ascii(
+        "
+        ..........
+        ..........
+        ....##....
+        ....##....
+        ....##....
+        ..........
+    ",
+    )
+    .unwrap()
+    .with_frame(0.5, Point2::new(-1.0, 2.0))
+    .unwrap()
+}
+
+fn planners() -> Vec<Box<dyn Planner>> {
+    vec![
+        Box::new(GridAstar::default()),
+        Box::new(GridDijkstra::default()),
+        Box::new(ThetaStar::default()),
+    ]
+}
+
+#[test]
+fn paths_start_and_end_exactly_and_every_segment_is_free() {
+    let map = room();
+    let mut rng = ChaCha8Rng::seed_from_u64(SEED);
+    let query = Query::new(Point2::new(-0.9, 2.1), Goal::Point(Point2::new(3.77, 4.8)));
+    let mut costs = Vec::new();
+    for p in planners() {
+        let plan = p.plan(&map, &query, &mut rng).unwrap();
+        assert_eq!(plan.path.first(), Some(&query.start), "{}", p.info().name);
+        assert_eq!(
+            plan.path.last(),
+            Some(&query.goal.center()),
+            "{}",
+            p.info().name
+        );
+        for w in plan.path.windows(2) {
+            assert!(map.segment_free(w[0], w[1]), "{}: {w:?}", p.info().name);
+        }
+        assert!((plan.cost - plan.length()).abs() < 1e-12);
+        assert!(plan.stats.expansions > 0);
+        costs.push(plan.cost);
+    }
+    assert!(
+        (costs[0] - costs[1]).abs() < 1e-9,
+        "A* {} vs Dijkstra {}",
+        costs[0],
+        costs[1]
+    );
+    assert!(
+        costs[2] <= costs[0] + 1e-9,
+        "Theta* {} vs A* {}",
+        costs[2],
+        costs[0]
+    );
+}
+
+#[test]
+fn goal_disc_ends_inside_the_disc() {
+    let map = room();
+    let goal = Goal::disc(Point2::new(3.5, 4.75), 1.2);
+    let query = Query::new(Point2::new(-0.75, 2.25), goal);
+    let plan = GridAstar::default()
+        .plan(&map, &query, &mut rand::rng())
+        .unwrap();
+    assert!(goal.contains(*plan.path.last().unwrap()));
+    assert!(
+        plan.path[..plan.path.len() - 1]
+            .iter()
+            .all(|&p| !goal.contains(p))
+    );
+}
+
+#[test]
+fn bad_queries_are_typed_errors() {
+    let map = room();
+    let mut rng = ChaCha8Rng::seed_from_u64(SEED);
+    let inside_block = Point2::new(1.25, 3.75);
+    for p in planners() {
+        let q = Query::new(Point2::new(-5.0, 2.5), Goal::Point(Point2::new(0.0, 3.0)));
+        assert!(matches!(
+            p.plan(&map, &q, &mut rng),
+            Err(PlanError::InvalidStart { .. })
+        ));
+        let q = Query::new(Point2::new(0.0, 3.0), Goal::Point(inside_block));
+        assert!(matches!(
+            p.plan(&map, &q, &mut rng),
+            Err(PlanError::InvalidGoal { .. })
+        ));
+        let q = Query::new(
+            Point2::new(f64::NAN, 3.0),
+            Goal::Point(Point2::new(0.0, 3.0)),
+        );
+        assert!(matches!(
+            p.plan(&map, &q, &mut rng),
+            Err(PlanError::InvalidStart { .. })
+        ));
+    }
+}
+
+#[test]
+fn unreachable_goal_is_no_path_with_stats() {
+    let map = GridMap::from_ascii(
+        "
+        ..#..
+        ..#..
+    ",
+    )
+    .unwrap();
+    let q = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(4.5, 1.5)));
+    for p in planners() {
+        match p.plan(&map, &q, &mut rand::rng()) {
+            Err(PlanError::NoPath { stats }) => assert!(stats.expansions >= 4),
+            other => panic!("{}: {other:?}", p.info().name),
+        }
+    }
+}
+
+/// Not a grid: a free square.
+struct Square;
+impl Workspace for Square {
+    fn bounds(&self) -> Bounds {
+        Bounds::new(Point2::new(0.0, 0.0), Point2::new(1.0, 1.0))
+    }
+    fn is_free(&self, p: Point2) -> bool {
+        self.bounds().contains(p)
+    }
+    fn segment_free(&self, a: Point2, b: Point2) -> bool {
+        self.is_free(a) && self.is_free(b)
+    }
+}
+
+#[test]
+fn non_grid_workspace_is_refused() {
+    let q = Query::new(Point2::new(0.1, 0.1), Goal::Point(Point2::new(0.9, 0.9)));
+    for p in planners() {
+        match p.plan(&Square, &q, &mut rand::rng()) {
+            Err(PlanError::InvalidParameter {
+                name: "workspace", ..
+            }) => {}
+            other => panic!("{other:?}"),
+        }
+        assert!(p.info().grid_only && p.info().proves_no_path);
+    }
+}

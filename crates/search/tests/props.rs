@@ -1,0 +1,122 @@
+//! Invariants on random grids (proptest).
+
+use envmap::GridMap;
+use hyplan_core::{Goal, Point2, Query, Workspace, Zone};
+use proptest::prelude::*;
+use search::{Connectivity, GridAstar, GridOptions, GridSearch, ThetaStar, astar};
+
+use crate::common::{legal_moves, octile_length};
+
+/// A random map (up to 24 x 24, about a third blocked) and two cells.
+fn scenario() -> impl Strategy<Value = (GridMap, (usize, usize), (usize, usize))> {
+    (2usize..24, 2usize..24).prop_flat_map(|(w, h)| {
+        (
+            proptest::collection::vec(prop::bool::weighted(0.3), w * h),
+            0..w,
+            0..h,
+            0..w,
+            0..h,
+        )
+            .prop_map(move |(blocked, si, sj, gi, gj)| {
+                let zones = blocked
+                    .iter()
+                    .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
+                    .collect();
+                let mut map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+                map.set_cell_zone(si, sj, Zone::Free);
+                map.set_cell_zone(gi, gj, Zone::Free);
+                (map, (si, sj), (gi, gj))
+            })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn astar_equals_dijkstra_and_moves_are_legal((map, s, g) in scenario(), four in any::<bool>()) {
+        let options = GridOptions {
+            connectivity: if four { Connectivity::Four } else { Connectivity::Eight },
+            corner_cutting: false,
+        };
+        let mut search = GridSearch::new(&map, options).unwrap();
+        let a = search.astar(s, g);
+        let d = search.dijkstra(s, g);
+        match (&a, &d) {
+            (Ok(a), Ok(d)) => {
+                prop_assert!((a.cost - d.cost).abs() < 1e-9, "A* {} Dijkstra {}", a.cost, d.cost);
+                if !four {
+                    prop_assert!(legal_moves(&map, &a.cells));
+                    prop_assert!((octile_length(&a.cells) - a.cost).abs() < 1e-9);
+                }
+                prop_assert_eq!(a.cells.first(), Some(&s));
+                prop_assert_eq!(a.cells.last(), Some(&g));
+            }
+            (Err(_), Err(_)) => {}
+            _ => prop_assert!(false, "A* {:?} vs Dijkstra {:?}", a, d),
+        }
+    }
+
+    #[test]
+    fn grid_astar_matches_generic_astar((map, s, g) in scenario()) {
+        let mut search = GridSearch::new(&map, GridOptions::default()).unwrap();
+        let grid = search.astar(s, g).ok().map(|p| p.cost);
+        let (w, h) = (map.width() as i64, map.height() as i64);
+        let free = |i: i64, j: i64| i >= 0 && j >= 0 && i < w && j < h && map.cell_free(i as usize, j as usize);
+        let generic = astar(
+            &(s.0 as i64, s.1 as i64),
+            |&(i, j)| {
+                let mut v = Vec::new();
+                for (di, dj) in [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)] {
+                    let ok = free(i + di, j + dj) && (di == 0 || dj == 0 || (free(i + di, j) && free(i, j + dj)));
+                    if ok {
+                        v.push(((i + di, j + dj), if di != 0 && dj != 0 { std::f64::consts::SQRT_2 } else { 1.0 }));
+                    }
+                }
+                v
+            },
+            |_| 0.0,
+            |&(i, j)| (i as usize, j as usize) == g,
+        ).ok().map(|r| r.cost);
+        match (grid, generic) {
+            (Some(a), Some(b)) => prop_assert!((a - b).abs() < 1e-9),
+            (None, None) => {}
+            other => prop_assert!(false, "{:?}", other),
+        }
+    }
+
+    #[test]
+    fn theta_star_is_free_and_no_longer_than_astar((map, s, g) in scenario()) {
+        let mut search = GridSearch::new(&map, GridOptions::default()).unwrap();
+        let a = search.astar(s, g);
+        let t = search.theta_star(&map, s, g);
+        match (a, t) {
+            (Ok(a), Ok(t)) => {
+                prop_assert!(t.cost <= a.cost + 1e-9, "Theta* {} > A* {}", t.cost, a.cost);
+                for w in t.cells.windows(2) {
+                    let (p, q) = (map.cell_center(w[0].0, w[0].1), map.cell_center(w[1].0, w[1].1));
+                    prop_assert!(map.segment_free(p, q), "{:?}", w);
+                }
+            }
+            (Err(_), Err(_)) => {}
+            other => prop_assert!(false, "{:?}", other),
+        }
+    }
+
+    #[test]
+    fn planner_paths_pass_segment_free((map, s, g) in scenario(), dx in 0.05f64..0.95, dy in 0.05f64..0.95) {
+        let start = Point2::new(s.0 as f64 + dx, s.1 as f64 + dy);
+        let goal = Point2::new(g.0 as f64 + 1.0 - dx, g.1 as f64 + 1.0 - dy);
+        let query = Query::new(start, Goal::Point(goal));
+        for plan in [
+            GridAstar::default().plan(&map, &query, &mut rand::rng()),
+            ThetaStar::default().plan(&map, &query, &mut rand::rng()),
+        ].into_iter().flatten() {
+            prop_assert_eq!(plan.path.first(), Some(&start));
+            prop_assert_eq!(plan.path.last(), Some(&goal));
+            for w in plan.path.windows(2) {
+                prop_assert!(map.segment_free(w[0], w[1]), "{:?}", w);
+            }
+        }
+    }
+}
