@@ -1,0 +1,195 @@
+//! Property tests: EDT vs brute force, segment_free vs an independent exact cell test,
+//! rectangles hold their obstacles, zones respect the safety radius.
+
+use envmap::{GridMap, Mask, Picture, Pipeline, distance_transform, label_components, zones};
+use hyplan_core::{Point2, Workspace, Zone};
+use proptest::prelude::*;
+
+fn mask_strategy(max: usize) -> impl Strategy<Value = Mask> {
+    (1..=max, 1..=max, 0.0..0.6f64).prop_flat_map(|(w, h, density)| {
+        proptest::collection::vec(proptest::bool::weighted(density.max(0.01)), w * h)
+            .prop_map(move |cells| Mask::from_cells(w, h, cells).unwrap())
+    })
+}
+
+fn brute_dist_sq(mask: &Mask, i: usize, j: usize) -> Option<u64> {
+    let mut best = None;
+    for b in 0..mask.height() {
+        for a in 0..mask.width() {
+            if mask.get(a, b) {
+                let d = (a as i64 - i as i64).pow(2) as u64 + (b as i64 - j as i64).pow(2) as u64;
+                best = Some(best.map_or(d, |x: u64| x.min(d)));
+            }
+        }
+    }
+    best
+}
+
+/// Whether the closed segment a-b meets the closed square [i, i+1] x [j, j+1] (world =
+/// cell units). Separating axis test: the axes x and y, and the segment's normal. Exact
+/// for the dyadic coordinates the strategies produce.
+fn segment_meets_cell(a: (f64, f64), b: (f64, f64), i: usize, j: usize) -> bool {
+    let (x0, x1, y0, y1) = (i as f64, i as f64 + 1.0, j as f64, j as f64 + 1.0);
+    if a.0.max(b.0) < x0 || a.0.min(b.0) > x1 || a.1.max(b.1) < y0 || a.1.min(b.1) > y1 {
+        return false;
+    }
+    let side = |px: f64, py: f64| (b.0 - a.0) * (py - a.1) - (b.1 - a.1) * (px - a.0);
+    let s = [side(x0, y0), side(x1, y0), side(x0, y1), side(x1, y1)];
+    !(s.iter().all(|&v| v > 0.0) || s.iter().all(|&v| v < 0.0))
+}
+
+/// Coordinates on a 1/8 grid, slightly beyond the map on each side.
+fn coord(n: usize) -> impl Strategy<Value = f64> {
+    (-4i64..=(n as i64 * 8 + 4)).prop_map(|k| k as f64 / 8.0)
+}
+
+fn zone_map(mask: &Mask, risk: &[bool]) -> GridMap {
+    let zones = mask
+        .cells()
+        .iter()
+        .zip(risk.iter().cycle())
+        .map(|(&f, &r)| {
+            if f {
+                Zone::Forbidden
+            } else if r {
+                Zone::Risk
+            } else {
+                Zone::Free
+            }
+        })
+        .collect();
+    GridMap::from_zones(mask.width(), mask.height(), 1.0, Point2::origin(), zones).unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn edt_equals_brute_force(mask in mask_strategy(14)) {
+        let d = distance_transform(&mask);
+        for j in 0..mask.height() {
+            for i in 0..mask.width() {
+                let want = brute_dist_sq(&mask, i, j).map_or(u32::MAX, |d| d as u32);
+                prop_assert_eq!(d.cell_dist_sq(i, j), want, "cell ({}, {})", i, j);
+            }
+        }
+    }
+
+    #[test]
+    fn segment_free_matches_exact_cell_test(
+        (mask, risk, a, b, avoid) in mask_strategy(8).prop_flat_map(|m| {
+            let (w, h) = (m.width(), m.height());
+            (Just(m), proptest::collection::vec(any::<bool>(), 8),
+             (coord(w), coord(h)), (coord(w), coord(h)), any::<bool>())
+        })
+    ) {
+        let mut map = zone_map(&mask, &risk);
+        if avoid {
+            map = map.avoiding_risk();
+        }
+        let (w, h) = (map.width() as f64, map.height() as f64);
+        let inside = |p: (f64, f64)| (0.0..=w).contains(&p.0) && (0.0..=h).contains(&p.1);
+        let mut touched = Vec::new();
+        for j in 0..map.height() {
+            for i in 0..map.width() {
+                if segment_meets_cell(a, b, i, j) {
+                    touched.push((i, j));
+                }
+            }
+        }
+        touched.sort_unstable();
+        let mut visited = Vec::new();
+        map.segment_cells(Point2::new(a.0, a.1), Point2::new(b.0, b.1), |i, j| {
+            visited.push((i, j));
+            true
+        });
+        visited.sort_unstable();
+        visited.dedup();
+        if inside(a) && inside(b) {
+            prop_assert_eq!(&visited, &touched);
+        }
+        let want = inside(a) && inside(b) && touched.iter().all(|&(i, j)| map.cell_free(i, j));
+        prop_assert_eq!(
+            map.segment_free(Point2::new(a.0, a.1), Point2::new(b.0, b.1)), want,
+            "{:?} -> {:?} touched {:?}", a, b, touched
+        );
+    }
+
+    #[test]
+    fn segment_free_never_crosses_a_blocked_cell(
+        (mask, a, b) in mask_strategy(10).prop_flat_map(|m| {
+            let (w, h) = (m.width() as f64, m.height() as f64);
+            (Just(m), (0.0..=w, 0.0..=h), (0.0..=w, 0.0..=h))
+        })
+    ) {
+        let map = zone_map(&mask, &[false]);
+        let (pa, pb) = (Point2::new(a.0, a.1), Point2::new(b.0, b.1));
+        if map.segment_free(pa, pb) {
+            for k in 0..=2000 {
+                let t = f64::from(k) / 2000.0;
+                let p = pa + (pb - pa) * t;
+                let (i, j) = (p.x.floor() as usize, p.y.floor() as usize);
+                // Points on a cell border belong to both cells; check the open interior.
+                if p.x.fract() != 0.0 && p.y.fract() != 0.0 && i < map.width() && j < map.height() {
+                    prop_assert!(map.cell_free(i, j), "t = {} at ({}, {}) in blocked cell", t, p.x, p.y);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_obstacle_cell_lies_in_its_rectangle(mask in mask_strategy(16)) {
+        let labels = label_components(&mask);
+        prop_assert_eq!(labels.components.iter().map(|c| c.cells).sum::<usize>(), mask.count());
+        for j in 0..mask.height() {
+            for i in 0..mask.width() {
+                let l = labels.labels[j * mask.width() + i];
+                prop_assert_eq!(l != 0, mask.get(i, j));
+                if l != 0 {
+                    prop_assert!(labels.components[l as usize - 1].rect.contains(i, j));
+                    // 8-neighbours that are obstacles share the label.
+                    for (di, dj) in [(1i64, 0i64), (0, 1), (1, 1), (-1, 1)] {
+                        let (ni, nj) = (i as i64 + di, j as i64 + dj);
+                        if ni >= 0 && nj >= 0 && mask.get(ni as usize, nj as usize) {
+                            prop_assert_eq!(labels.labels[nj as usize * mask.width() + ni as usize], l);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn zones_respect_the_safety_radius(mask in mask_strategy(14), r in 0.0..6.0f64) {
+        let z = zones(&mask, &distance_transform(&mask), r);
+        for j in 0..mask.height() {
+            for i in 0..mask.width() {
+                let zone = z[j * mask.width() + i];
+                let d = brute_dist_sq(&mask, i, j).map(|d| (d as f64).sqrt());
+                match zone {
+                    Zone::Forbidden => prop_assert!(mask.get(i, j)),
+                    Zone::Risk => prop_assert!(!mask.get(i, j) && d.is_some_and(|d| d <= r)),
+                    Zone::Free => prop_assert!(d.is_none_or(|d| d > r)),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn pipeline_rectangles_cover_the_mask(
+        (w, h, px) in (4usize..40, 4usize..40).prop_flat_map(|(w, h)|
+            (Just(w), Just(h), proptest::collection::vec(any::<u8>(), w * h)))
+    ) {
+        let pic = Picture::grey(w, h, px).unwrap();
+        let out = Pipeline { rectangles: true, safety_radius: 1.5, ..Pipeline::default() }.run(&pic).unwrap();
+        for j in 0..h {
+            for i in 0..w {
+                if out.mask.get(i, j) {
+                    prop_assert!(out.rectangles.iter().any(|r| r.contains(i, j)));
+                    prop_assert_eq!(out.map.cell_zone(i, j), Zone::Forbidden);
+                }
+                prop_assert_eq!(out.obstacles.get(i, j), out.rectangles.iter().any(|r| r.contains(i, j)));
+            }
+        }
+    }
+}
