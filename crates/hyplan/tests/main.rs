@@ -1,0 +1,3 @@
+//! Integration tests of the `hyplan` binary, one module per subcommand.
+
+mod map;

@@ -1,0 +1,265 @@
+//! `hyplan map`: runs the built binary and checks exit codes, stdout and stderr.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use envmap::{GridMap, Picture};
+use hyplan_core::Point2;
+
+fn hyplan(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hyplan"))
+        .args(args)
+        .output()
+        .expect("the hyplan binary runs")
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_map");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn tmp_file(name: &str, bytes: &[u8]) -> String {
+    let p = tmp(name);
+    std::fs::write(&p, bytes).unwrap();
+    p.display().to_string()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout).expect("stdout is one JSON object")
+}
+
+/// A 50 x 40 white picture with two dark boxes, as PNG.
+fn picture() -> String {
+    let mut pic = Picture::filled_rgb(50, 40, [240, 240, 240]);
+    for y in 5..10 {
+        for x in 5..15 {
+            pic.set_rgb(x, y, [10, 10, 10]);
+        }
+    }
+    for y in 20..30 {
+        for x in 30..33 {
+            pic.set_rgb(x, y, [50, 60, 70]);
+        }
+    }
+    let p = tmp("two_boxes.png");
+    envmap::write_picture(&pic, &p).unwrap();
+    p.display().to_string()
+}
+
+/// Asserts exit code 2, one `error:` line naming `needle`, no panic.
+fn assert_error(o: &Output, needles: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
+    assert!(err.starts_with("error: "), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    for n in needles {
+        assert!(err.contains(n), "stderr should mention {n:?}: {err}");
+    }
+}
+
+#[test]
+fn picture_json_counts_zones_and_obstacles() {
+    let pic = picture();
+    let o = hyplan(&["map", &pic, "--safety-radius", "2", "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v = json(&o);
+    assert_eq!(v["width"], 50);
+    assert_eq!(v["height"], 40);
+    assert_eq!(v["forbidden"], 50 + 30);
+    let total = v["free"].as_u64().unwrap() + v["risk"].as_u64().unwrap() + 80;
+    assert_eq!(total, 2000);
+    assert!(v["risk"].as_u64().unwrap() > 0);
+    assert_eq!(v["obstacles"].as_array().unwrap().len(), 2);
+    // The first box in the input frame (y down): x in [5, 15), y in [5, 10).
+    let boxes: Vec<_> = v["obstacles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|o| (&o["min"], &o["max"]))
+        .collect();
+    assert!(
+        boxes
+            .iter()
+            .any(|(a, b)| **a == serde_json::json!([5.0, 5.0])
+                && **b == serde_json::json!([15.0, 10.0])),
+        "{boxes:?}"
+    );
+    assert_eq!(v["resolution"], 1.0);
+    assert_eq!(v["origin"], serde_json::json!([0.0, 0.0]));
+}
+
+#[test]
+fn picture_defaults_follow_the_seed_and_summary_is_human() {
+    let pic = picture();
+    let o = hyplan(&["map", &pic]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("50 x 40 cells"), "{out}");
+    assert!(out.contains("obstacles: 2"), "{out}");
+    // Default radius 20 cells: the 50 x 40 picture is mostly high-risk.
+    let v = json(&hyplan(&["map", &pic, "--json"]));
+    let with_default = v["risk"].as_u64().unwrap();
+    let v20 = json(&hyplan(&["map", &pic, "--json", "--safety-radius", "20"]));
+    assert_eq!(with_default, v20["risk"].as_u64().unwrap());
+    // --invert makes the background the obstacle.
+    let inv = json(&hyplan(&[
+        "map",
+        &pic,
+        "--json",
+        "--invert",
+        "--safety-radius",
+        "0",
+    ]));
+    assert_eq!(inv["forbidden"], 2000 - 80);
+}
+
+#[test]
+fn rectangles_and_writers() {
+    let pic = picture();
+    let out = tmp("zones.png");
+    let yaml = tmp("zones.yaml");
+    let o = hyplan(&[
+        "map",
+        &pic,
+        "--rectangles",
+        "--safety-radius",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+        "--yaml",
+        yaml.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v = json(&o);
+    assert_eq!(v["obstacle_shape"], "rectangles");
+    let zones = envmap::read_picture(&out).unwrap();
+    assert_eq!((zones.width(), zones.height()), (50, 40));
+    assert_eq!(zones.pixel(5, 5), &envmap::RECTANGLE_COLOUR);
+    // The ROS pair loads back to the same counts.
+    let back = json(&hyplan(&["map", yaml.to_str().unwrap(), "--json"]));
+    for key in ["free", "risk", "forbidden", "width", "height"] {
+        assert_eq!(back[key], v[key], "{key}");
+    }
+    assert_eq!(back["frame"], "world_y_up");
+}
+
+#[test]
+fn shared_data_maps() {
+    let arena = "/work/shared/data/movingai/arena.map";
+    let ros = "/work/shared/data/ros_maps/turtlebot3_world/map.yaml";
+    if !Path::new(arena).exists() || !Path::new(ros).exists() {
+        eprintln!("skipping: shared data not found");
+        return;
+    }
+    let v = json(&hyplan(&["map", arena, "--json"]));
+    assert_eq!(
+        (v["width"].as_u64(), v["height"].as_u64()),
+        (Some(49), Some(49))
+    );
+    assert_eq!(v["free"], 2054);
+    assert_eq!(v["risk"], 0);
+    assert_eq!(v["frame"], "cells_y_down");
+    let v = json(&hyplan(&["map", ros, "--json"]));
+    assert_eq!(v["free"], 7939);
+    assert_eq!(v["forbidden"], 795 + 138722);
+    assert_eq!(v["resolution"], 0.05);
+    assert_eq!(v["origin"], serde_json::json!([-10.0, -10.0]));
+    let v = json(&hyplan(&["map", ros, "--json", "--unknown-free"]));
+    assert_eq!(v["forbidden"], 795);
+    // 0.1 m = 2 cells of band around the 795 occupied cells.
+    let v = json(&hyplan(&[
+        "map",
+        ros,
+        "--json",
+        "--unknown-free",
+        "--safety-radius",
+        "0.1",
+    ]));
+    assert!(v["risk"].as_u64().unwrap() > 795);
+}
+
+#[test]
+fn errors_name_the_file_and_exit_2() {
+    assert_error(&hyplan(&["map", "/no/such/map.png"]), &["/no/such/map.png"]);
+    assert_error(
+        &hyplan(&["map", "/no/such/map.yaml"]),
+        &["/no/such/map.yaml"],
+    );
+    let text = tmp_file("not_an_image.png", b"hello");
+    assert_error(
+        &hyplan(&["map", &text]),
+        &["not_an_image.png", "not a readable image"],
+    );
+    let empty = tmp_file("empty.pgm", b"P5\n0 0\n255\n");
+    assert_error(&hyplan(&["map", &empty]), &["empty.pgm"]);
+    let map = tmp_file(
+        "short.map",
+        b"type octile\nheight 3\nwidth 2\nmap\n..\n..\n",
+    );
+    assert_error(
+        &hyplan(&["map", &map]),
+        &["short.map", "2 rows", "height 3"],
+    );
+    let map = tmp_file(
+        "ragged.map",
+        b"type octile\nheight 2\nwidth 2\nmap\n..\n...\n",
+    );
+    assert_error(&hyplan(&["map", &map]), &["ragged.map:6", "width 2"]);
+    let map = tmp_file("nomap.map", b"type octile\nheight 2\nwidth 2\n");
+    assert_error(&hyplan(&["map", &map]), &["nomap.map", "no `map` line"]);
+    let good = "image: x.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n\
+                occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+    let y = tmp_file(
+        "nores.yaml",
+        good.replace("resolution: 0.05\n", "").as_bytes(),
+    );
+    assert_error(
+        &hyplan(&["map", &y]),
+        &["nores.yaml", "`resolution`", "missing"],
+    );
+    let y = tmp_file("negres.yaml", good.replace("0.05", "-0.05").as_bytes());
+    assert_error(
+        &hyplan(&["map", &y]),
+        &["negres.yaml", "`resolution`", "-0.05"],
+    );
+    let y = tmp_file("thresh.yaml", good.replace("0.65", "1.65").as_bytes());
+    assert_error(
+        &hyplan(&["map", &y]),
+        &["thresh.yaml", "`occupied_thresh`", "1.65"],
+    );
+    let y = tmp_file("noimg.yaml", good.as_bytes());
+    assert_error(&hyplan(&["map", &y]), &["x.pgm"]);
+    let pic = picture();
+    assert_error(
+        &hyplan(&["map", &pic, "--safety-radius", "-1"]),
+        &["safety_radius", "-1"],
+    );
+    let bad_out = "/no/such/dir/zones.png";
+    assert_error(&hyplan(&["map", &pic, "--out", bad_out]), &[bad_out]);
+}
+
+#[test]
+fn yaml_out_round_trips_through_the_library() {
+    let map = GridMap::from_ascii("#~..\n....")
+        .unwrap()
+        .with_frame(0.5, Point2::new(1.0, -2.0))
+        .unwrap();
+    let yaml = tmp("lib.yaml");
+    envmap::write_ros(&map, &yaml).unwrap();
+    let v = json(&hyplan(&["map", yaml.to_str().unwrap(), "--json"]));
+    assert_eq!(
+        (
+            v["free"].as_u64(),
+            v["risk"].as_u64(),
+            v["forbidden"].as_u64()
+        ),
+        (Some(6), Some(1), Some(1))
+    );
+    assert_eq!(v["origin"], serde_json::json!([1.0, -2.0]));
+}
