@@ -2,11 +2,14 @@
 //!
 //! - `cargo xtask reproduce [--quick] [--only NAME] [--runs N] [--out DIR]`: replays the
 //!   seed papers' experiments and writes a report.
+//! - `cargo xtask bench-peers [--runs N] [--only CASE] [--planners LIST]`: our sampling
+//!   planners against OMPL 1.5, table of median-time ratios.
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod bench_peers;
 mod reproduce;
 mod rooms;
 
@@ -21,6 +24,8 @@ struct Cli {
 enum Task {
     /// Replay the seed papers' experiments and write a report.
     Reproduce(reproduce::Args),
+    /// Compare our sampling planners with OMPL 1.5 (builds the OMPL peer).
+    BenchPeers(bench_peers::Args),
     /// Draw the synthetic room pictures into scenarios/maps/.
     Rooms,
 }
@@ -29,6 +34,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.task {
         Task::Reproduce(args) => reproduce::run(&args),
+        Task::BenchPeers(args) => bench_peers::run(&args),
         Task::Rooms => rooms::write_rooms(std::path::Path::new("scenarios/maps")).map(|files| {
             for f in files {
                 println!("wrote {}", f.display());

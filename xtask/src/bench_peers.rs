@@ -1,0 +1,429 @@
+//! `cargo xtask bench-peers`: our sampling planners side by side with OMPL 1.5.
+//!
+//! Builds the OMPL peer (`../shared/peers/ompl`, copied to `target/peers/ompl`, whose
+//! `build.sh` apt-installs `libompl-dev` when missing), then for every case (map, start,
+//! goal, step = OMPL's `--range`, goal bias, goal radius) runs the peer with `--runs N` and
+//! ours in-process for the same number of seeded runs, timing only the `plan` call (the
+//! peer's `time_s` is `SimpleSetup::solve`). Prints a Markdown table of medians, ratios,
+//! success rates and lengths.
+//!
+//! Caveat printed with the table: OMPL's motion check is sampled (a state every 0.25 cells,
+//! the peer's default); ours is exact (every cell a segment touches), which costs us time
+//! and never cuts a corner. The `OMPL cut` column counts OMPL paths that cross a blocked
+//! cell (the peer's own `--check-exact`).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use anyhow::{Context as _, bail};
+use envmap::{GridMap, LoadOptions, load_map};
+use hyplan_core::{Budget, Goal, Plan, PlanError, Query, Workspace};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use sampling::{BiRrt, Rrt, RrtConnect, RrtStar};
+
+/// Options of `cargo xtask bench-peers`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Runs (seeds) per planner and case, for us and for OMPL.
+    #[arg(long, default_value_t = 30)]
+    pub runs: u32,
+    /// Time limit per run, seconds (both sides).
+    #[arg(long, default_value_t = 20.0)]
+    pub time_limit: f64,
+    /// Only the cases whose name contains this text.
+    #[arg(long)]
+    pub only: Option<String>,
+    /// Only these planners (comma separated: rrt, rrt-connect, rrt-star, bi-rrt).
+    #[arg(long, value_delimiter = ',')]
+    pub planners: Option<Vec<String>>,
+    /// Rebuild the OMPL peer even if it is already built.
+    #[arg(long)]
+    pub rebuild: bool,
+}
+
+/// One comparison setting.
+struct Case {
+    name: &'static str,
+    /// Path relative to the workspace root.
+    map: &'static str,
+    start: (f64, f64),
+    goal: (f64, f64),
+    step: f64,
+    goal_bias: f64,
+    goal_radius: f64,
+}
+
+const CASES: &[Case] = &[
+    Case {
+        name: "rects100",
+        map: "../shared/peers/maps/rects100.pgm",
+        start: (5.5, 5.5),
+        goal: (94.5, 94.5),
+        step: 5.0,
+        goal_bias: 0.05,
+        goal_radius: 0.0,
+    },
+    Case {
+        name: "maze101",
+        map: "../shared/peers/maps/maze.pgm",
+        start: (2.5, 2.5),
+        goal: (98.5, 98.5),
+        step: 3.0,
+        goal_bias: 0.05,
+        goal_radius: 0.0,
+    },
+    Case {
+        name: "room960x640",
+        // Converted to binary P5 under target/peers/maps (the peer reads P2/P3/P5/P6 only).
+        map: "scenarios/maps/room_960x640.pgm",
+        start: (20.0, 320.0),
+        goal: (900.0, 520.0),
+        step: 40.0,
+        goal_bias: 0.05,
+        goal_radius: 20.0,
+    },
+    Case {
+        name: "arena.map",
+        map: "../shared/data/movingai/arena.map",
+        start: (1.5, 45.5),
+        goal: (47.5, 9.5),
+        step: 3.0,
+        goal_bias: 0.05,
+        goal_radius: 0.0,
+    },
+];
+
+/// (our name, OMPL's name or None when OMPL has no such planner).
+const PLANNERS: &[(&str, Option<&str>)] = &[
+    ("rrt", Some("rrt")),
+    ("rrt-connect", Some("rrtconnect")),
+    ("rrt-star", Some("rrtstar")),
+    ("bi-rrt", None),
+];
+
+/// Medians and counts of one side of one row.
+#[derive(Default, Clone, Copy)]
+struct Summary {
+    runs: usize,
+    solved: usize,
+    median_time_s: f64,
+    median_length: Option<f64>,
+    /// Solved paths that cross a blocked cell (OMPL's `--check-exact`; ours are checked
+    /// here with `segment_free` and must be 0).
+    cut: usize,
+}
+
+fn median(mut v: Vec<f64>) -> Option<f64> {
+    if v.is_empty() {
+        return None;
+    }
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    Some(if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    })
+}
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("xtask lives one level below the workspace root")
+        .to_path_buf()
+}
+
+/// Copies the peer's sources to `target/peers/ompl` and builds it there.
+fn build_peer(root: &Path, rebuild: bool) -> anyhow::Result<PathBuf> {
+    let dir = root.join("target/peers/ompl");
+    let bin = dir.join("build/ompl_peer");
+    if bin.exists() && !rebuild {
+        return Ok(bin);
+    }
+    let src = root.join("../shared/peers/ompl");
+    std::fs::create_dir_all(&dir)?;
+    for entry in std::fs::read_dir(&src).with_context(|| format!("reading {}", src.display()))? {
+        let entry = entry?;
+        if entry.file_type()?.is_file() {
+            std::fs::copy(entry.path(), dir.join(entry.file_name()))?;
+        }
+    }
+    eprintln!("building the OMPL peer in {} ...", dir.display());
+    let status = Command::new("bash")
+        .arg("build.sh")
+        .current_dir(&dir)
+        .status()
+        .context("running build.sh")?;
+    if !status.success() || !bin.exists() {
+        bail!("building the OMPL peer failed ({status})");
+    }
+    Ok(bin)
+}
+
+/// The map file both sides read: the case's file, or for pictures that are not plain
+/// P5/P2/P6/P3 a binary P5 copy under `target/peers/maps`.
+fn peer_map(root: &Path, case: &Case) -> anyhow::Result<PathBuf> {
+    let path = root.join(case.map);
+    if !path.exists() {
+        bail!("{} is missing", path.display());
+    }
+    let header = std::fs::read(&path)?;
+    let plain = header.starts_with(b"P5")
+        || header.starts_with(b"P2")
+        || header.starts_with(b"P6")
+        || header.starts_with(b"P3");
+    if path.extension().is_some_and(|e| e == "map") || plain {
+        return Ok(path);
+    }
+    let gray = image::open(&path)
+        .with_context(|| format!("decoding {}", path.display()))?
+        .to_luma8();
+    let out_dir = root.join("target/peers/maps");
+    std::fs::create_dir_all(&out_dir)?;
+    let out = out_dir.join(path.file_name().unwrap_or_default());
+    let mut bytes = format!("P5\n{} {}\n255\n", gray.width(), gray.height()).into_bytes();
+    bytes.extend_from_slice(gray.as_raw());
+    std::fs::write(&out, bytes)?;
+    Ok(out)
+}
+
+/// Runs the peer once with `--runs N` and summarises its CSV.
+fn run_ompl(
+    bin: &Path,
+    map: &Path,
+    case: &Case,
+    planner: &str,
+    args: &Args,
+) -> anyhow::Result<Summary> {
+    let mut cmd = Command::new(bin);
+    cmd.arg("--map")
+        .arg(map)
+        .args([
+            "--start",
+            &case.start.0.to_string(),
+            &case.start.1.to_string(),
+        ])
+        .args(["--goal", &case.goal.0.to_string(), &case.goal.1.to_string()])
+        .args(["--planner", planner])
+        .args(["--range", &case.step.to_string()])
+        .args(["--time-limit", &args.time_limit.to_string()])
+        .args(["--runs", &args.runs.to_string()])
+        .args(["--seed", "1", "--check-exact"]);
+    if planner != "rrtconnect" {
+        cmd.args(["--goal-bias", &case.goal_bias.to_string()]);
+    }
+    if case.goal_radius > 0.0 {
+        cmd.args(["--goal-radius", &case.goal_radius.to_string()]);
+    }
+    let out = cmd.output().context("running ompl_peer")?;
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    if !out.status.success() {
+        bail!("ompl_peer failed: {stderr}");
+    }
+    let mut times = Vec::new();
+    let mut lengths = Vec::new();
+    let mut solved = 0;
+    for line in stdout.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        if f.len() < 8 {
+            continue;
+        }
+        times.push(f[4].parse::<f64>()?);
+        if f[3] == "1" {
+            solved += 1;
+            lengths.push(f[5].parse::<f64>()?);
+        }
+    }
+    // "exact grid check: K of N solved paths cross a blocked cell"
+    let cut = stderr
+        .lines()
+        .find_map(|l| l.split("exact grid check: ").nth(1))
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|k| k.parse().ok())
+        .unwrap_or(0);
+    Ok(Summary {
+        runs: times.len(),
+        solved,
+        median_time_s: median(times).unwrap_or(f64::NAN),
+        median_length: median(lengths),
+        cut,
+    })
+}
+
+/// Runs our planner `runs` times in-process (seeds 0..runs), timing `plan` only, and checks
+/// every solved path against the map.
+fn run_ours(
+    map: &GridMap,
+    query: &Query,
+    case: &Case,
+    planner: &str,
+    args: &Args,
+) -> anyhow::Result<Summary> {
+    let limit = Duration::try_from_secs_f64(args.time_limit).context("--time-limit")?;
+    let budget = Budget::iterations(u64::MAX).with_time(limit);
+    let (step, goal_bias) = (case.step, case.goal_bias);
+    let plan = |rng: &mut ChaCha8Rng| -> Result<Plan, PlanError> {
+        match planner {
+            "rrt" => Rrt {
+                step,
+                goal_bias,
+                budget,
+            }
+            .plan(map, query, rng),
+            "rrt-connect" => RrtConnect { step, budget }.plan(map, query, rng),
+            "rrt-star" => RrtStar {
+                step,
+                goal_bias,
+                budget,
+                stop_at_first_solution: true,
+                ..RrtStar::default()
+            }
+            .plan(map, query, rng),
+            _ => BiRrt { step, budget }.plan(map, query, rng),
+        }
+    };
+    let mut times = Vec::new();
+    let mut lengths = Vec::new();
+    let mut cut = 0;
+    for seed in 0..u64::from(args.runs) {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let started = Instant::now();
+        let result = plan(&mut rng);
+        times.push(started.elapsed().as_secs_f64());
+        match result {
+            Ok(p) => {
+                let valid = p.path.first() == Some(&query.start)
+                    && p.path.last().is_some_and(|&g| query.goal.contains(g))
+                    && p.path.windows(2).all(|w| map.segment_free(w[0], w[1]));
+                if !valid {
+                    cut += 1;
+                }
+                lengths.push(p.length());
+            }
+            Err(e) if e.is_no_path() => {}
+            Err(e) => bail!("{planner} on {}: {e}", case.name),
+        }
+    }
+    Ok(Summary {
+        runs: times.len(),
+        solved: lengths.len(),
+        median_time_s: median(times).unwrap_or(f64::NAN),
+        median_length: median(lengths),
+        cut,
+    })
+}
+
+fn fmt_len(l: Option<f64>) -> String {
+    l.map_or_else(|| "-".into(), |l| format!("{l:.1}"))
+}
+
+/// Runs the comparison and prints the table.
+///
+/// # Errors
+///
+/// A missing map, a failed peer build or run.
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let root = root();
+    let bin = build_peer(&root, args.rebuild)?;
+    println!(
+        "| case | planner | step | runs | ours median ms | OMPL median ms | ours/OMPL | ours solved | OMPL exact | ours median length | OMPL median length | OMPL cut |"
+    );
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let mut worst_ratio: f64 = 0.0;
+    let mut success_ok = true;
+    for case in CASES {
+        if args.only.as_deref().is_some_and(|o| !case.name.contains(o)) {
+            continue;
+        }
+        let map_path = match peer_map(&root, case) {
+            Ok(p) => p,
+            Err(e) => {
+                eprintln!("skipping {}: {e:#}", case.name);
+                continue;
+            }
+        };
+        // The peer's reading of pictures: gray < 128 is an obstacle, no safety band.
+        let opts = LoadOptions {
+            threshold: 128,
+            safety_radius: Some(0.0),
+            ..LoadOptions::default()
+        };
+        let loaded = load_map(&map_path, &opts)
+            .with_context(|| format!("loading {}", map_path.display()))?;
+        let start = loaded.frame.to_world(case.start.0, case.start.1);
+        let center = loaded.frame.to_world(case.goal.0, case.goal.1);
+        let goal = if case.goal_radius > 0.0 {
+            Goal::disc(center, case.goal_radius)
+        } else {
+            Goal::Point(center)
+        };
+        let query = Query::new(start, goal);
+        query
+            .validate(&loaded.map)
+            .with_context(|| format!("case {}", case.name))?;
+        for &(ours, ompl) in PLANNERS {
+            if args
+                .planners
+                .as_ref()
+                .is_some_and(|ps| !ps.iter().any(|p| p == ours))
+            {
+                continue;
+            }
+            let o = run_ours(&loaded.map, &query, case, ours, args)?;
+            let p = match ompl {
+                Some(name) => Some(run_ompl(&bin, &map_path, case, name, args)?),
+                None => None,
+            };
+            let (ompl_ms, ratio, ompl_exact, ompl_len, ompl_cut) = match p {
+                Some(p) => {
+                    let ratio = o.median_time_s / p.median_time_s;
+                    worst_ratio = worst_ratio.max(ratio);
+                    success_ok &= o.solved >= p.solved;
+                    (
+                        format!("{:.3}", p.median_time_s * 1e3),
+                        format!("{ratio:.3}"),
+                        format!("{}/{}", p.solved, p.runs),
+                        fmt_len(p.median_length),
+                        p.cut.to_string(),
+                    )
+                }
+                None => ("-".into(), "-".into(), "-".into(), "-".into(), "-".into()),
+            };
+            println!(
+                "| {} | {} | {} | {} | {:.3} | {} | {} | {}/{} | {} | {} | {} | {} |",
+                case.name,
+                ours,
+                case.step,
+                o.runs,
+                o.median_time_s * 1e3,
+                ompl_ms,
+                ratio,
+                o.solved,
+                o.runs,
+                ompl_exact,
+                fmt_len(o.median_length),
+                ompl_len,
+                ompl_cut
+            );
+            if o.cut > 0 {
+                bail!(
+                    "{ours} on {}: {} paths failed the exact check",
+                    case.name,
+                    o.cut
+                );
+            }
+        }
+    }
+    println!();
+    println!(
+        "worst ours/OMPL median-time ratio: {worst_ratio:.3}; success >= OMPL's everywhere: {success_ok}"
+    );
+    println!(
+        "note: OMPL checks motions at sampled states 0.25 cells apart (`OMPL cut` = its paths that \
+         cross a blocked cell); ours checks every cell a segment touches."
+    );
+    Ok(())
+}
