@@ -32,6 +32,7 @@
 //! - [`read_picture`], [`decode_picture`], [`write_picture`], [`render_zones`],
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
+//! - [`demo_room`]: a synthetic top-view room picture for examples and benchmarks.
 //!
 //! # Conventions
 //!
@@ -62,6 +63,7 @@
 
 mod binarize;
 mod components;
+mod demo;
 mod edt;
 mod error;
 mod frame;
@@ -77,6 +79,7 @@ mod zones;
 
 pub use binarize::binarize;
 pub use components::{Component, Labels, label_components};
+pub use demo::demo_room;
 pub use edt::{DistanceField, distance_transform};
 pub use error::MapError;
 pub use frame::InputFrame;
