@@ -1,3 +1,4 @@
 //! Integration tests of the `hyplan` binary, one module per subcommand.
 
 mod map;
+mod plan;

@@ -1,0 +1,330 @@
+//! `hyplan plan`: runs the built binary on small MovingAI maps and checks exit codes and
+//! the CSV / JSON / SVG outputs.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn hyplan_plan(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hyplan"))
+        .arg("plan")
+        .args(args)
+        .output()
+        .expect("the hyplan binary runs")
+}
+
+fn tmp_path(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_plan");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+/// A MovingAI `.map` from rows drawn top row first (`.` free, `@` blocked).
+fn movingai(name: &str, rows: &[&str]) -> String {
+    let mut text = format!(
+        "type octile\nheight {}\nwidth {}\nmap\n",
+        rows.len(),
+        rows[0].len()
+    );
+    for r in rows {
+        text.push_str(r);
+        text.push('\n');
+    }
+    let p = tmp_path(name);
+    std::fs::write(&p, text).unwrap();
+    p.display().to_string()
+}
+
+/// 20 x 10 with a wall in the middle that leaves a gap at the bottom. Row 0 is the top.
+/// `tag` names the file: tests run in parallel, each writes its own.
+fn walled(tag: &str) -> String {
+    let mut rows = Vec::new();
+    for y in 0..10 {
+        let mut row = String::new();
+        for x in 0..20 {
+            row.push(if x == 10 && y < 7 { '@' } else { '.' });
+        }
+        rows.push(row);
+    }
+    let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
+    movingai(&format!("walled_{tag}.map"), &refs)
+}
+
+/// The same with the gap closed: the right half is unreachable from the left.
+fn closed(tag: &str) -> String {
+    let mut rows = Vec::new();
+    for _ in 0..10 {
+        let mut row = String::new();
+        for x in 0..20 {
+            row.push(if x == 10 { '@' } else { '.' });
+        }
+        rows.push(row);
+    }
+    let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
+    movingai(&format!("closed_{tag}.map"), &refs)
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Exit code 2, one `error:` line containing every needle, no panic.
+fn assert_error(o: &Output, needles: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(err.contains("error"), "{err}");
+    for n in needles {
+        assert!(err.contains(n), "{n:?} not in {err:?}");
+    }
+}
+
+const PLANNERS: [&str; 4] = ["rrt", "rrt-star", "bi-rrt", "rrt-connect"];
+
+#[test]
+fn every_planner_finds_a_path_and_prints_json() {
+    let map = walled("every_planner_finds_a_path_and_prints_json");
+    for planner in PLANNERS {
+        let o = hyplan_plan(&[
+            "--map",
+            &map,
+            "--start",
+            "2.5,2.5",
+            "--goal",
+            "17.5,2.5",
+            "--planner",
+            planner,
+            "--step",
+            "1.5",
+            "--seed",
+            "3",
+            "--json",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{planner}: {}", stderr(&o));
+        let out = stdout(&o);
+        let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        assert_eq!(v["planner"], planner);
+        assert_eq!(v["run"], 0);
+        assert_eq!(v["solved"], true);
+        assert!(v["seed"].is_u64() && v["time_s"].is_f64() && v["nodes"].is_u64());
+        let path = v["path"].as_array().unwrap();
+        // The input frame: y counted from the top row; the path starts and ends exactly.
+        assert_eq!(path[0], serde_json::json!([2.5, 2.5]));
+        assert_eq!(path[path.len() - 1], serde_json::json!([17.5, 2.5]));
+        // It must go through the gap (rows 7..10 from the top) to cross x = 10.
+        assert!(path.iter().any(|p| p[1].as_f64().unwrap() > 7.0));
+        let length: f64 = path
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (&w[0], &w[1]);
+                (a[0].as_f64().unwrap() - b[0].as_f64().unwrap())
+                    .hypot(a[1].as_f64().unwrap() - b[1].as_f64().unwrap())
+            })
+            .sum();
+        assert!((length - v["length"].as_f64().unwrap()).abs() < 1e-9);
+        // Same seed, same path.
+        let again = hyplan_plan(&[
+            "--map",
+            &map,
+            "--start",
+            "2.5,2.5",
+            "--goal",
+            "17.5,2.5",
+            "--planner",
+            planner,
+            "--step",
+            "1.5",
+            "--seed",
+            "3",
+            "--json",
+        ]);
+        let w: serde_json::Value = serde_json::from_str(stdout(&again).trim()).unwrap();
+        assert_eq!(v["path"], w["path"], "{planner}: same seed, same path");
+    }
+}
+
+#[test]
+fn csv_has_the_ompl_peer_columns_and_one_row_per_run() {
+    let map = walled("csv_has_the_ompl_peer_columns_and_one_row_per_run");
+    let o = hyplan_plan(&[
+        "--map",
+        &map,
+        "--start",
+        "2.5,2.5",
+        "--goal",
+        "17.5,2.5",
+        "--planner",
+        "rrt-connect",
+        "--step",
+        "2",
+        "--goal-radius",
+        "1",
+        "--runs",
+        "4",
+        "--csv",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines[0],
+        "planner,run,solved,exact,time_s,length,states_in_path,graph_vertices"
+    );
+    assert_eq!(lines.len(), 5);
+    for (k, line) in lines[1..].iter().enumerate() {
+        let f: Vec<&str> = line.split(',').collect();
+        assert_eq!(f.len(), 8, "{line}");
+        assert_eq!(f[0], "rrt-connect");
+        assert_eq!(f[1], k.to_string());
+        assert_eq!((f[2], f[3]), ("1", "1"));
+        assert!(f[5].parse::<f64>().unwrap() >= 15.0);
+        assert!(f[6].parse::<usize>().unwrap() >= 2);
+    }
+}
+
+#[test]
+fn runs_get_distinct_derived_seeds() {
+    let map = walled("runs_get_distinct_derived_seeds");
+    let o = hyplan_plan(&[
+        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--runs", "3", "--seed", "9",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let seeds: Vec<u64> = stdout(&o)
+        .lines()
+        .map(|l| {
+            serde_json::from_str::<serde_json::Value>(l).unwrap()["seed"]
+                .as_u64()
+                .unwrap()
+        })
+        .collect();
+    assert_eq!(seeds.len(), 3);
+    assert!(seeds[0] != seeds[1] && seeds[1] != seeds[2] && seeds[0] != seeds[2]);
+}
+
+#[test]
+fn svg_draws_map_tree_and_path() {
+    let map = walled("svg_draws_map_tree_and_path");
+    let svg = tmp_path("walled.svg");
+    let o = hyplan_plan(&[
+        "--map",
+        &map,
+        "--start",
+        "2.5,2.5",
+        "--goal",
+        "17.5,2.5",
+        "--planner",
+        "bi-rrt",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("<svg"));
+    assert!(text.matches("<path").count() >= 3, "two trees and the path");
+    assert!(text.contains("<rect"));
+    assert!(stdout(&o).contains("path of length"));
+}
+
+#[test]
+fn unreachable_goal_is_no_path_with_exit_1() {
+    let map = closed("unreachable_goal_is_no_path_with_exit_1");
+    let started = std::time::Instant::now();
+    let o = hyplan_plan(&[
+        "--map",
+        &map,
+        "--start",
+        "2.5,2.5",
+        "--goal",
+        "17.5,2.5",
+        "--max-iter",
+        "20000",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("no path within the budget (20000 iterations"),
+        "{}",
+        stdout(&o)
+    );
+    let csv = hyplan_plan(&[
+        "--map",
+        &map,
+        "--start",
+        "2.5,2.5",
+        "--goal",
+        "17.5,2.5",
+        "--planner",
+        "rrt-connect",
+        "--time-limit",
+        "0.2",
+        "--csv",
+    ]);
+    assert_eq!(csv.status.code(), Some(1));
+    let out = stdout(&csv);
+    let row: Vec<&str> = out.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!((row[2], row[3], row[5]), ("0", "0", ""));
+    let t: f64 = row[4].parse().unwrap();
+    assert!(
+        (0.2..1.0).contains(&t),
+        "time {t} should follow the 0.2 s limit"
+    );
+    assert!(started.elapsed().as_secs_f64() < 20.0);
+}
+
+#[test]
+fn bad_input_is_exit_2_with_a_message() {
+    let map = walled("bad_input_is_exit_2_with_a_message");
+    // Flags given later replace the defaults (clap rejects repeated flags).
+    let base = |extra: &[&str]| {
+        let mut args = vec!["--map", map.as_str()];
+        if !extra.contains(&"--start") {
+            args.extend(["--start", "2.5,2.5"]);
+        }
+        if !extra.contains(&"--goal") {
+            args.extend(["--goal", "17.5,2.5"]);
+        }
+        args.extend_from_slice(extra);
+        hyplan_plan(&args)
+    };
+    let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
+        (
+            vec!["--start", "-3,2.5"],
+            vec!["--start", "outside the map"],
+        ),
+        (vec!["--start", "25,2.5"], vec!["outside the map"]),
+        (vec!["--start", "10.5,2.5"], vec!["--start", "obstacle"]),
+        (vec!["--goal", "10.5,0.5"], vec!["--goal", "obstacle"]),
+        (vec!["--goal", "nan,1"], vec!["--goal", "finite"]),
+        (vec!["--goal-radius", "-1"], vec!["radius"]),
+        (vec!["--step", "0"], vec!["step"]),
+        (vec!["--step", "-1"], vec!["step"]),
+        (vec!["--step", "NaN"], vec!["step"]),
+        (vec!["--goal-bias", "1.5"], vec!["goal_bias"]),
+        (vec!["--goal-bias", "-0.1"], vec!["goal_bias"]),
+        (vec!["--max-iter", "0"], vec!["max_iterations"]),
+        (vec!["--time-limit", "0"], vec!["--time-limit"]),
+        (vec!["--time-limit", "-1"], vec!["--time-limit"]),
+        (vec!["--runs", "0"], vec!["--runs"]),
+        (
+            vec!["--planner", "rrt-sharp"],
+            vec!["unknown planner", "rrt-connect"],
+        ),
+        (vec!["--start", "1;2"], vec!["X,Y"]),
+    ];
+    for (extra, needles) in cases {
+        let o = base(&extra);
+        assert_error(&o, &needles);
+    }
+    let missing = hyplan_plan(&[
+        "--map",
+        "/nonexistent/room.png",
+        "--start",
+        "1,1",
+        "--goal",
+        "2,2",
+    ]);
+    assert_error(&missing, &["room.png"]);
+}
