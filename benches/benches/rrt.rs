@@ -1,0 +1,73 @@
+//! One full RRT (and RRT-Connect) run on the OMPL peer's `rects100` map, the path checked
+//! once outside the timed loop.
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use envmap::{LoadOptions, load_map};
+use hyplan_core::{Budget, Goal, Query, Workspace};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use sampling::{Rrt, RrtConnect};
+
+fn bench_rrt(c: &mut Criterion) {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../shared/peers/maps/rects100.pgm"
+    );
+    let opts = LoadOptions {
+        threshold: 128,
+        safety_radius: Some(0.0),
+        ..LoadOptions::default()
+    };
+    let loaded = load_map(path.as_ref(), &opts).expect("rects100.pgm loads (../shared)");
+    let map = loaded.map;
+    let query = Query::new(
+        loaded.frame.to_world(5.5, 5.5),
+        Goal::Point(loaded.frame.to_world(94.5, 94.5)),
+    );
+    let rrt = Rrt {
+        step: 5.0,
+        goal_bias: 0.05,
+        budget: Budget::iterations(1_000_000),
+    };
+    let connect = RrtConnect {
+        step: 5.0,
+        budget: Budget::iterations(1_000_000),
+    };
+    // Checked once, outside the timed loop: a valid path.
+    for plan in [
+        rrt.plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(1))
+            .unwrap(),
+        connect
+            .plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(1))
+            .unwrap(),
+    ] {
+        assert_eq!(plan.path[0], query.start);
+        assert!(query.goal.contains(*plan.path.last().unwrap()));
+        assert!(plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
+    }
+
+    let mut group = c.benchmark_group("rrt_rects100_step5");
+    // Each iteration plans with the next seed, so the time is an average over many trees.
+    group.bench_function("rrt", |b| {
+        let mut seed = 0;
+        b.iter(|| {
+            seed += 1;
+            let mut rng = ChaCha8Rng::seed_from_u64(seed);
+            black_box(rrt.plan(&map, &query, &mut rng).unwrap().path.len())
+        });
+    });
+    group.bench_function("rrt_connect", |b| {
+        let mut seed = 0;
+        b.iter(|| {
+            seed += 1;
+            let mut rng = ChaCha8Rng::seed_from_u64(seed);
+            black_box(connect.plan(&map, &query, &mut rng).unwrap().path.len())
+        });
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_rrt);
+criterion_main!(benches);
