@@ -1,16 +1,18 @@
 //! Flat-array A*, Dijkstra and Theta* on a [`GridMap`], with scratch memory reused across
 //! queries.
 
+use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
 use envmap::GridMap;
 
 use crate::SearchStats;
-use crate::heap::Entry;
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 /// "No parent" in the parent array.
 const NONE: u32 = u32::MAX;
+/// Stamp bit of a closed cell; the rest of the stamp is the generation.
+const CLOSED: u32 = 1 << 31;
 
 /// Which moves a grid search may make.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -206,15 +208,17 @@ enum Kind {
 /// `GridSearch::new` copies which cells are passable (under the map's
 /// [`blocked_from`](GridMap::blocked_from)) into an array padded with a blocked border, so
 /// the inner loop needs no bounds checks. Each query then runs on flat per-cell arrays (no
-/// hash map) with a binary heap whose ties go to the larger g. The arrays are reset in
+/// hash map) with a binary heap of packed `u128` keys whose ties go to the larger g, and a
+/// closed bit in the stamp (stale heap entries are skipped). The arrays are reset in
 /// O(1) between queries by a generation counter: a cell's g and parent count only when its
-/// stamp equals the current generation.
+/// stamp carries the current generation.
 ///
 /// # Memory
 ///
-/// Per cell of the padded `(width + 2) x (height + 2)` grid: 1 byte passable, 8 bytes g
-/// (`f64`), 4 bytes parent (`u32`), 4 bytes stamp (`u32`): **17 bytes**, allocated once
-/// in [`new`](GridSearch::new) and reused; plus 24 bytes per open-list entry (the heap
+/// Per cell of the padded `(width + 2) x (height + 2)` grid: 1 byte passable, 1 byte
+/// legal-move mask, 8 bytes g (`f64`), 4 bytes parent (`u32`), 4 bytes stamp (`u32`):
+/// **18 bytes**, allocated once
+/// in [`new`](GridSearch::new) and reused; plus 16 bytes per open-list entry (the heap
 /// keeps its capacity across queries too).
 ///
 /// # Costs and heuristics
@@ -251,11 +255,18 @@ pub struct GridSearch {
     pw: usize,
     options: GridOptions,
     passable: Vec<bool>,
+    /// Legal moves out of each cell, one bit per direction of [`DIRS`].
+    moves: Vec<u8>,
+    /// Padded-index offset of each direction of [`DIRS`].
+    offsets: [u32; 8],
     g: Vec<f64>,
     parent: Vec<u32>,
     stamp: Vec<u32>,
     generation: u32,
-    heap: BinaryHeap<Entry<u32>>,
+    heap: BinaryHeap<Reverse<u128>>,
+    /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
+    /// so they skip the heap (see [`GridSearch::pop`]).
+    stack: Vec<u32>,
 }
 
 impl GridSearch {
@@ -280,11 +291,14 @@ impl GridSearch {
             pw,
             options,
             passable: vec![false; n],
+            moves: vec![0; n],
+            offsets: DIRS.map(|(dx, dy, _)| (dy as isize * pw as isize + dx as isize) as u32),
             g: vec![0.0; n],
             parent: vec![NONE; n],
             stamp: vec![0; n],
             generation: 0,
             heap: BinaryHeap::new(),
+            stack: Vec::new(),
         };
         search.update(map)?;
         Ok(search)
@@ -308,6 +322,32 @@ impl GridSearch {
             let base = (j + 1) * self.pw + 1;
             for (cell, &zone) in self.passable[base..base + self.width].iter_mut().zip(row) {
                 *cell = zone < blocked;
+            }
+        }
+        let (pw, pass) = (self.pw, &self.passable);
+        let eight = self.options.connectivity == Connectivity::Eight;
+        let cut = self.options.corner_cutting;
+        for j in 1..=self.height {
+            for i in 1..=self.width {
+                let p = j * pw + i;
+                let free = |dx: i32, dy: i32| {
+                    pass[(p as isize + dy as isize * pw as isize + dx as isize) as usize]
+                };
+                let mut mask = 0u8;
+                if pass[p] {
+                    for (d, &(dx, dy, _)) in DIRS.iter().enumerate() {
+                        let legal = if dx == 0 || dy == 0 {
+                            free(dx, dy)
+                        } else if !eight {
+                            false
+                        } else {
+                            let (a, b) = (free(dx, 0), free(0, dy));
+                            free(dx, dy) && if cut { a || b } else { a && b }
+                        };
+                        mask |= u8::from(legal) << d;
+                    }
+                }
+                self.moves[p] = mask;
             }
         }
         Ok(())
@@ -338,7 +378,7 @@ impl GridSearch {
     }
 
     /// Scratch bytes held per padded cell (see the type doc).
-    pub const BYTES_PER_CELL: usize = 1 + 8 + 4 + 4;
+    pub const BYTES_PER_CELL: usize = 1 + 1 + 8 + 4 + 4;
 
     /// Optimal path from `start` to `goal` by A* with the octile (or Manhattan) heuristic.
     ///
@@ -400,24 +440,13 @@ impl GridSearch {
     /// The goal outside the map or blocked.
     pub fn cost_to_go(&mut self, goal: (usize, usize)) -> Result<CostField, GridSearchError> {
         let g0 = self.check(goal, false)?;
-        let generation = self.next_generation();
         let mut stats = SearchStats::default();
-        self.g[g0 as usize] = 0.0;
-        self.parent[g0 as usize] = NONE;
-        self.stamp[g0 as usize] = generation;
-        self.heap.clear();
-        self.heap.push(Entry {
-            f: 0.0,
-            g: 0.0,
-            item: g0,
-        });
-        stats.pushes += 1;
-        while let Some(Entry { g, item: p, .. }) = self.heap.pop() {
-            if g > self.g[p as usize] {
-                continue;
-            }
+        self.begin(g0, 0.0, &mut stats);
+        while let Some(p) = self.pop() {
             stats.expansions += 1;
-            self.relax_neighbours(p, g, generation, &mut stats, |_, _| 0.0);
+            let g = self.g[p as usize];
+            // Dijkstra: f = g, and every move costs > 0, so nothing goes on the stack.
+            self.relax_neighbours(p, g, g, &mut stats, |_, _| 0.0);
         }
         let (w, h) = (self.width, self.height);
         let mut cost = vec![f64::INFINITY; w * h];
@@ -425,7 +454,7 @@ impl GridSearch {
         for j in 0..h {
             for i in 0..w {
                 let p = self.index(i, j) as usize;
-                if self.stamp[p] == generation {
+                if self.stamp[p] & !CLOSED == self.generation {
                     cost[j * w + i] = self.g[p];
                     let q = self.parent[p];
                     if q != NONE {
@@ -489,68 +518,81 @@ impl GridSearch {
         Ok(p)
     }
 
-    /// Starts a new query: bumps the generation, clearing the stamps only on wrap-around.
-    fn next_generation(&mut self) -> u32 {
-        self.generation = self.generation.wrapping_add(1);
-        if self.generation == 0 {
+    /// Starts a query from `s` with heuristic `h0`: bumps the generation (clearing the
+    /// stamps only on wrap-around), empties the heap and pushes `s`.
+    fn begin(&mut self, s: u32, h0: f64, stats: &mut SearchStats) {
+        self.generation += 1;
+        if self.generation >= CLOSED {
             self.stamp.fill(0);
             self.generation = 1;
         }
-        self.generation
+        self.heap.clear();
+        self.stack.clear();
+        let s = s as usize;
+        self.g[s] = 0.0;
+        self.parent[s] = NONE;
+        self.stamp[s] = self.generation;
+        self.heap.push(Reverse(key(h0, 0.0, s as u32)));
+        stats.pushes += 1;
     }
 
-    /// Generates the legal moves out of `p` and relaxes each neighbour with cost
-    /// `g + move cost`, pushing it with `f = g' + h(q)`. Theta* has its own loop.
+    /// Pops the open cell with the smallest f (ties: larger g), skipping stale entries of
+    /// cells already closed, and closes it.
+    #[inline(always)]
+    fn pop(&mut self) -> Option<u32> {
+        let closed = self.generation | CLOSED;
+        while let Some(p) = self
+            .stack
+            .pop()
+            .or_else(|| self.heap.pop().map(|Reverse(k)| k as u32))
+        {
+            // A cell can sit in the heap several times (each time its g dropped). With a
+            // consistent heuristic the first pop carries its final g; the later ones are
+            // stale and skipped.
+            if self.stamp[p as usize] != closed {
+                self.stamp[p as usize] = closed;
+                return Some(p);
+            }
+        }
+        None
+    }
+
+    /// Relaxes the legal moves out of `p` (its bit mask of [`DIRS`]) with cost
+    /// `g + move cost`. A neighbour whose `f = g' + h(x, y)` (padded coordinates) is not
+    /// above `f_here` goes on the stack, the others on the heap.
     #[inline(always)]
     fn relax_neighbours(
         &mut self,
         p: u32,
         g: f64,
-        generation: u32,
+        f_here: f64,
         stats: &mut SearchStats,
-        mut h: impl FnMut(&Self, u32) -> f64,
+        h: impl Fn(u32, u32) -> f64,
     ) {
         let pw = self.pw as u32;
-        let pu = p as usize;
-        let pass = &self.passable;
-        let e = pass[pu + 1];
-        let w = pass[pu - 1];
-        let n = pass[pu + pw as usize];
-        let s = pass[pu - pw as usize];
-        let mut moves = [(0u32, 0.0f64); 8];
-        let mut k = 0;
-        for (ok, q) in [(e, p + 1), (w, p - 1), (n, p + pw), (s, p - pw)] {
-            if ok {
-                moves[k] = (q, 1.0);
-                k += 1;
-            }
-        }
-        if self.options.connectivity == Connectivity::Eight {
-            let cut = self.options.corner_cutting;
-            for (a, b, q) in [
-                (n, e, p + pw + 1),
-                (n, w, p + pw - 1),
-                (s, e, p - pw + 1),
-                (s, w, p - pw - 1),
-            ] {
-                let orth = if cut { a || b } else { a && b };
-                if orth && pass[q as usize] {
-                    moves[k] = (q, SQRT2);
-                    k += 1;
-                }
-            }
-        }
-        for &(q, c) in &moves[..k] {
+        let (x, y) = (p % pw, p / pw);
+        let open = self.generation;
+        let mut mask = self.moves[p as usize];
+        while mask != 0 {
+            let d = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            let (dx, dy, c) = DIRS[d];
+            let q = p.wrapping_add(self.offsets[d]);
             let qu = q as usize;
             let ng = g + c;
-            if self.stamp[qu] == generation && self.g[qu] <= ng {
+            let st = self.stamp[qu];
+            if st == open | CLOSED || (st == open && self.g[qu] <= ng) {
                 continue;
             }
-            self.stamp[qu] = generation;
+            self.stamp[qu] = open;
             self.g[qu] = ng;
             self.parent[qu] = p;
-            let f = ng + h(self, q);
-            self.heap.push(Entry { f, g: ng, item: q });
+            let f = ng + h(x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
+            if f <= f_here {
+                self.stack.push(q);
+            } else {
+                self.heap.push(Reverse(key(f, ng, q)));
+            }
             stats.pushes += 1;
         }
     }
@@ -565,18 +607,13 @@ impl GridSearch {
     ) -> Result<GridPath, GridSearchError> {
         let s0 = self.check(start, true)?;
         let t0 = self.check(goal, false)?;
-        let generation = self.next_generation();
         let mut stats = SearchStats::default();
-        self.g[s0 as usize] = 0.0;
-        self.parent[s0 as usize] = NONE;
-        self.stamp[s0 as usize] = generation;
-        self.heap.clear();
         let pw = self.pw as u32;
         let (gx, gy) = (t0 % pw, t0 / pw);
         let four = self.options.connectivity == Connectivity::Four;
-        let octile = move |_: &Self, q: u32| {
-            let dx = (q % pw).abs_diff(gx);
-            let dy = (q / pw).abs_diff(gy);
+        let octile = move |x: u32, y: u32| {
+            let dx = x.abs_diff(gx);
+            let dy = y.abs_diff(gy);
             let (lo, hi) = if dx < dy { (dx, dy) } else { (dy, dx) };
             if four {
                 f64::from(lo + hi)
@@ -584,40 +621,34 @@ impl GridSearch {
                 f64::from(hi - lo) + SQRT2 * f64::from(lo)
             }
         };
-        let euclid = move |q: u32| {
-            let dx = f64::from((q % pw).abs_diff(gx));
-            let dy = f64::from((q / pw).abs_diff(gy));
+        let euclid = move |x: u32, y: u32| {
+            let dx = f64::from(x.abs_diff(gx));
+            let dy = f64::from(y.abs_diff(gy));
             dx.hypot(dy)
         };
+        let (sx, sy) = (s0 % pw, s0 / pw);
         let h0 = match kind {
-            Kind::Astar => octile(self, s0),
+            Kind::Astar => octile(sx, sy),
             Kind::Dijkstra => 0.0,
-            Kind::ThetaStar => euclid(s0),
+            Kind::ThetaStar => euclid(sx, sy),
         };
-        self.heap.push(Entry {
-            f: h0,
-            g: 0.0,
-            item: s0,
-        });
-        stats.pushes += 1;
-        while let Some(Entry { g, item: p, .. }) = self.heap.pop() {
-            // Stale entry: the cell was pushed again with a lower g since.
-            if g > self.g[p as usize] {
-                continue;
-            }
+        self.begin(s0, h0, &mut stats);
+        while let Some(p) = self.pop() {
+            let g = self.g[p as usize];
             if p == t0 {
                 return Ok(self.trace(t0, g, stats));
             }
             stats.expansions += 1;
             match kind {
-                Kind::Astar => self.relax_neighbours(p, g, generation, &mut stats, octile),
-                Kind::Dijkstra => {
-                    self.relax_neighbours(p, g, generation, &mut stats, |_, _| 0.0);
+                Kind::Astar => {
+                    let (x, y) = (p % pw, p / pw);
+                    self.relax_neighbours(p, g, g + octile(x, y), &mut stats, octile);
                 }
+                Kind::Dijkstra => self.relax_neighbours(p, g, g, &mut stats, |_, _| 0.0),
                 Kind::ThetaStar => {
-                    // Map is always given for Theta* (see `theta_star`).
+                    // The map is always given for Theta* (see `theta_star`).
                     if let Some(map) = map {
-                        self.theta_expand(map, p, g, generation, &mut stats, euclid);
+                        self.theta_expand(map, p, g, &mut stats, euclid);
                     }
                 }
             }
@@ -632,11 +663,11 @@ impl GridSearch {
         map: &GridMap,
         p: u32,
         g: f64,
-        generation: u32,
         stats: &mut SearchStats,
-        h: impl Fn(u32) -> f64,
+        h: impl Fn(u32, u32) -> f64,
     ) {
-        // Collect the grid moves with the same rules as A*, without relaxing them.
+        // The grid moves, with the same rules as A* but never cutting corners: Theta*'s
+        // segments are checked exactly, so a diagonal must not touch a blocked corner.
         let pw = self.pw as u32;
         let pu = p as usize;
         let pass = &self.passable;
@@ -655,8 +686,6 @@ impl GridSearch {
             }
         }
         if self.options.connectivity == Connectivity::Eight {
-            // Theta*'s segments are checked exactly, so a diagonal move must not touch a
-            // blocked corner whatever `corner_cutting` says.
             for (a, b, q) in [
                 (n, e, p + pw + 1),
                 (n, w, p + pw - 1),
@@ -669,9 +698,14 @@ impl GridSearch {
                 }
             }
         }
+        let open = self.generation;
         let pp = self.parent[pu];
         for &(q, c) in &moves[..k] {
             let qu = q as usize;
+            let st = self.stamp[qu];
+            if st == open | CLOSED {
+                continue;
+            }
             let (mut ng, mut parent) = (g + c, p);
             if pp != NONE && self.line_of_sight(map, pp, q) {
                 let (a, b) = (self.cell(pp), self.cell(q));
@@ -682,17 +716,13 @@ impl GridSearch {
                     parent = pp;
                 }
             }
-            if self.stamp[qu] == generation && self.g[qu] <= ng {
+            if st == open && self.g[qu] <= ng {
                 continue;
             }
-            self.stamp[qu] = generation;
+            self.stamp[qu] = open;
             self.g[qu] = ng;
             self.parent[qu] = parent;
-            self.heap.push(Entry {
-                f: ng + h(q),
-                g: ng,
-                item: q,
-            });
+            self.heap.push(Reverse(key(ng + h(q % pw, q / pw), ng, q)));
             stats.pushes += 1;
         }
     }
@@ -716,4 +746,25 @@ impl GridSearch {
         cells.reverse();
         GridPath { cells, cost, stats }
     }
+}
+
+/// The eight moves `(dx, dy, cost)`: E, W, N, S, then the diagonals NE, NW, SE, SW.
+const DIRS: [(i32, i32, f64); 8] = [
+    (1, 0, 1.0),
+    (-1, 0, 1.0),
+    (0, 1, 1.0),
+    (0, -1, 1.0),
+    (1, 1, SQRT2),
+    (-1, 1, SQRT2),
+    (1, -1, SQRT2),
+    (-1, -1, SQRT2),
+];
+
+/// The open-list key of a cell: one `u128` compared as an integer, smallest first (the heap
+/// holds it in [`Reverse`]). From the top: the bits of `f` (non-negative `f64` bits sort as
+/// the numbers do), the complement of `g` as `f32` bits (ties on `f` go to the larger `g`;
+/// `f32` is only a tie-breaker, the order on `f` stays exact), and the cell index.
+#[inline(always)]
+fn key(f: f64, g: f64, p: u32) -> u128 {
+    (u128::from(f.to_bits()) << 64) | (u128::from(!(g as f32).to_bits()) << 32) | u128::from(p)
 }

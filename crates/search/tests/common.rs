@@ -17,34 +17,10 @@ pub fn peer_maps_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/peers/maps")
 }
 
-/// Reads a MovingAI `.map` for the tests: header lines, then rows top first; `.`, `G`, `S`
-/// free, everything else blocked.
+/// Reads a MovingAI `.map` with envmap's loader, saying where the data was looked for.
 pub fn load_movingai(path: &std::path::Path) -> GridMap {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| {
-        panic!(
-            "{}: {e} (is shared/ beside the repository?)",
-            path.display()
-        )
-    });
-    let body: String = text
-        .lines()
-        .skip_while(|l| l.trim() != "map")
-        .skip(1)
-        .map(|l| {
-            l.trim_end()
-                .chars()
-                .map(|c| {
-                    if matches!(c, '.' | 'G' | 'S') {
-                        '.'
-                    } else {
-                        '#'
-                    }
-                })
-                .collect::<String>()
-                + "\n"
-        })
-        .collect();
-    GridMap::from_ascii(&body).unwrap()
+    envmap::read_movingai(path)
+        .unwrap_or_else(|e| panic!("{e} (is shared/ beside the repository?)"))
 }
 
 /// Whether every consecutive pair of cells is one legal 8-connected move without corner

@@ -216,5 +216,5 @@ fn theta_star_goes_straight_where_it_can() {
 
 #[test]
 fn memory_per_cell_is_as_documented() {
-    assert_eq!(GridSearch::BYTES_PER_CELL, 17);
+    assert_eq!(GridSearch::BYTES_PER_CELL, 18);
 }
