@@ -17,17 +17,24 @@
 //! - [`RunMetrics`], [`measure`]: what one run is scored on.
 //! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
 //! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate.
+//! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
+//!   box plots of the metrics.
 //!
 //! # Features
 //!
 //! - `parallel` (default): runs spread over threads with rayon; results equal the serial run's.
+//! - `plot` (default): PNG figures (tiny-skia) and SVG charts (plotters).
 
+#[cfg(feature = "plot")]
+mod figure;
 mod metrics;
 mod planners;
 mod runner;
 mod scenario;
 mod stats;
 
+#[cfg(feature = "plot")]
+pub use figure::{chart_metrics, draw_world};
 pub use metrics::{RunMetrics, measure};
 pub use planners::{PLANNER_NAMES, build_planner};
 pub use runner::{run_planner, run_seed};

@@ -22,6 +22,9 @@ pub struct RunMetrics {
     pub length: f64,
     /// Path nodes (waypoints, start and goal included) before any dense resampling.
     pub nodes: f64,
+    /// Path nodes without the start and the goal (seed 000 counts these: 20 nodes, 21
+    /// segments).
+    pub inner_nodes: f64,
     /// Path segments (nodes - 1).
     pub segments: f64,
     /// Heading changes over 10 degrees between consecutive segments.
@@ -40,7 +43,7 @@ pub struct RunMetrics {
 }
 
 impl RunMetrics {
-    /// The value of a metric by its name (`time_s`, `length`, `nodes`, `segments`, `turns`,
+    /// The value of a metric by its name (`time_s`, `length`, `nodes`, `inner_nodes`, `segments`, `turns`,
     /// `explored`, `transfer_time_s`, `min_clearance`, `success`).
     #[must_use]
     pub fn get(&self, metric: &str) -> Option<f64> {
@@ -48,6 +51,7 @@ impl RunMetrics {
             "time_s" => self.time_s,
             "length" => self.length,
             "nodes" => self.nodes,
+            "inner_nodes" => self.inner_nodes,
             "segments" => self.segments,
             "turns" => self.turns,
             "explored" => self.explored,
@@ -63,6 +67,7 @@ impl RunMetrics {
         "time_s",
         "length",
         "nodes",
+        "inner_nodes",
         "segments",
         "turns",
         "explored",
@@ -94,6 +99,7 @@ pub fn measure(
         time_s: nan,
         length: nan,
         nodes: nan,
+        inner_nodes: nan,
         segments: nan,
         turns: nan,
         explored: nan,
@@ -125,6 +131,7 @@ pub fn measure(
     let metrics: PathMetrics = smoothed.metrics();
     m.length = metrics.length;
     m.nodes = metrics.nodes as f64;
+    m.inner_nodes = metrics.nodes.saturating_sub(2) as f64;
     m.segments = metrics.segments as f64;
     m.turns = metrics.turns as f64;
     if let Some(limits) = limits {

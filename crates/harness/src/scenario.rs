@@ -4,7 +4,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use envmap::{GridMap, LoadOptions, Mask, Pipeline};
-use hyplan_core::{Goal, Point2, Query, Zone};
+use hyplan_core::{Goal, Point2, Query};
 use serde::{Deserialize, Serialize};
 
 /// One experiment: a map, a query, robot limits, planners, runs, and the paper's numbers.
@@ -114,6 +114,10 @@ pub enum MapSpec {
         /// Safety band radius, cells (0: none).
         #[serde(default)]
         safety_radius_cells: f64,
+        /// Obstacle padding, cells: every obstacle cell dilated by a square of this radius
+        /// (seed 002's "padding 1"), before the safety band.
+        #[serde(default)]
+        padding_cells: usize,
         /// Shape and query coordinates have y down from the top row.
         #[serde(default)]
         y_down: bool,
@@ -149,6 +153,11 @@ pub enum Shape {
         w: f64,
         /// Height.
         h: f64,
+    },
+    /// Simple polygon (convex or not) through its vertices, in order.
+    Polygon {
+        /// Vertices `(x, y)`.
+        points: Vec<(f64, f64)>,
     },
     /// Disc with centre `(x, y)` and radius `r`.
     Circle {
@@ -214,6 +223,10 @@ pub struct Published {
     /// Unit or note as printed in the paper.
     #[serde(default)]
     pub note: String,
+    /// Our reading of the paper's unit: the paper's value times this is in the scenario's
+    /// units (e.g. 100 when a length in mm is printed in units of 100 mm). Default 1.
+    #[serde(default = "one")]
+    pub unit_scale: f64,
 }
 
 /// A claim of the paper: the mean of `metric` increases along `order`
@@ -437,17 +450,19 @@ impl Scenario {
                 resolution,
                 obstacles,
                 safety_radius_cells,
+                padding_cells,
                 y_down,
             } => {
-                let map = rasterise(
-                    *width,
-                    *height,
-                    *resolution,
-                    obstacles,
-                    *safety_radius_cells,
-                    *y_down,
-                )
-                .map_err(|e| map_err(&e))?;
+                let raster = Raster {
+                    width: *width,
+                    height: *height,
+                    resolution: *resolution,
+                    padding_cells: *padding_cells,
+                    y_down: *y_down,
+                };
+                let map = raster
+                    .draw(obstacles, *safety_radius_cells)
+                    .map_err(|e| map_err(&e))?;
                 (map, *y_down, Vec::new())
             }
             MapSpec::File {
@@ -491,54 +506,112 @@ impl Scenario {
     }
 }
 
-/// Draws shapes into a grid: a cell is forbidden when a shape overlaps its interior; then
-/// the safety band is added by the seed-000 pipeline's zone step.
-fn rasterise(
+/// How shapes are drawn into a grid.
+struct Raster {
     width: usize,
     height: usize,
     resolution: f64,
-    obstacles: &[Shape],
-    safety_radius_cells: f64,
+    padding_cells: usize,
     y_down: bool,
-) -> Result<GridMap, envmap::MapError> {
-    let mut mask = Mask::new(width, height);
-    let h = height as f64 * resolution;
-    for shape in obstacles {
-        for j in 0..height {
-            for i in 0..width {
-                // Cell square in scenario coordinates.
-                let (x0, x1) = (i as f64 * resolution, (i + 1) as f64 * resolution);
-                let (mut y0, mut y1) = (j as f64 * resolution, (j + 1) as f64 * resolution);
-                if y_down {
-                    (y0, y1) = (h - y1, h - y0);
-                }
-                let hit = match *shape {
-                    Shape::Rect { x, y, w, h: sh } => x < x1 && x + w > x0 && y < y1 && y + sh > y0,
-                    Shape::Circle { x, y, r } => {
-                        let dx = x.clamp(x0, x1) - x;
-                        let dy = y.clamp(y0, y1) - y;
-                        dx * dx + dy * dy < r * r
+}
+
+impl Raster {
+    /// Draws shapes into a grid: a cell is forbidden when a shape overlaps its interior
+    /// (exact tests from parry2d), then dilated by the padding, then the safety band is
+    /// added by the seed-000 pipeline's zone step.
+    fn draw(
+        &self,
+        obstacles: &[Shape],
+        safety_radius_cells: f64,
+    ) -> Result<GridMap, envmap::MapError> {
+        let (width, height, res) = (self.width, self.height, self.resolution);
+        if width == 0 || height == 0 || !(res.is_finite() && res > 0.0) {
+            return Err(envmap::MapError::InvalidParameter {
+                name: "map",
+                value: format!("{width} x {height} cells at {res}"),
+                reason: "sides must be >= 1 and the resolution finite and > 0".into(),
+            });
+        }
+        let mut mask = Mask::new(width, height);
+        let top = height as f64 * res;
+        for shape in obstacles {
+            for j in 0..height {
+                for i in 0..width {
+                    // The cell square in scenario coordinates.
+                    let (x0, x1) = (i as f64 * res, (i + 1) as f64 * res);
+                    let (mut y0, mut y1) = (j as f64 * res, (j + 1) as f64 * res);
+                    if self.y_down {
+                        (y0, y1) = (top - y1, top - y0);
                     }
-                };
-                if hit {
-                    mask.set(i, j, true);
+                    if overlaps(shape, x0, y0, x1, y1) {
+                        mask.set(i, j, true);
+                    }
+                }
+            }
+        }
+        if self.padding_cells > 0 {
+            mask = dilate(&mask, self.padding_cells);
+        }
+        let pipeline = Pipeline {
+            safety_radius: safety_radius_cells,
+            ..Pipeline::default()
+        };
+        let out = pipeline.run_mask(mask, &[])?;
+        out.map
+            .with_frame(res, Point2::origin())
+            .map_err(|e| envmap::MapError::InvalidParameter {
+                name: "resolution",
+                value: res.to_string(),
+                reason: e.to_string(),
+            })
+    }
+}
+
+/// Whether a shape overlaps the open square `(x0, x1) x (y0, y1)`.
+fn overlaps(shape: &Shape, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
+    match shape {
+        &Shape::Rect { x, y, w, h } => x < x1 && x + w > x0 && y < y1 && y + h > y0,
+        &Shape::Circle { x, y, r } => {
+            let dx = x.clamp(x0, x1) - x;
+            let dy = y.clamp(y0, y1) - y;
+            dx * dx + dy * dy < r * r
+        }
+        Shape::Polygon { points } => {
+            use parry2d::bounding_volume::Aabb;
+            use parry2d::math::Point;
+            use parry2d::shape::Segment;
+            let pt = |p: (f64, f64)| Point::new(p.0 as f32, p.1 as f32);
+            let poly: Vec<Point<f32>> = points.iter().map(|&p| pt(p)).collect();
+            let centre = pt(((x0 + x1) * 0.5, (y0 + y1) * 0.5));
+            if parry2d::utils::point_in_poly2d(&centre, &poly) {
+                return true;
+            }
+            // Shrink the square a little so that an edge lying on the cell's border does
+            // not count as overlapping its interior.
+            let e = (x1 - x0) * 1e-6;
+            let aabb = Aabb::new(pt((x0 + e, y0 + e)), pt((x1 - e, y1 - e)));
+            (0..poly.len()).any(|k| {
+                let seg = Segment::new(poly[k], poly[(k + 1) % poly.len()]);
+                parry2d::query::details::intersection_test_aabb_segment(&aabb, &seg)
+            })
+        }
+    }
+}
+
+/// Dilation by a square of radius `r` cells (the 8-neighbourhood for r = 1).
+fn dilate(mask: &Mask, r: usize) -> Mask {
+    let (w, h) = (mask.width(), mask.height());
+    let mut out = Mask::new(w, h);
+    for j in 0..h {
+        for i in 0..w {
+            if mask.get(i, j) {
+                for jj in j.saturating_sub(r)..=(j + r).min(h - 1) {
+                    for ii in i.saturating_sub(r)..=(i + r).min(w - 1) {
+                        out.set(ii, jj, true);
+                    }
                 }
             }
         }
     }
-    let pipeline = Pipeline {
-        safety_radius: safety_radius_cells,
-        ..Pipeline::default()
-    };
-    let out = pipeline.run_mask(mask, &[])?;
-    let map = out
-        .map
-        .with_frame(resolution, Point2::origin())
-        .map_err(|e| envmap::MapError::InvalidParameter {
-            name: "resolution",
-            value: resolution.to_string(),
-            reason: e.to_string(),
-        })?;
-    debug_assert!(map.zones().iter().all(|&z| z <= Zone::Forbidden));
-    Ok(map)
+    out
 }
