@@ -1,14 +1,23 @@
 //! The planner registry: a name on the command line -> `Box<dyn Planner>`.
 //!
 //! One table, [`NAMES`], lists what `--planner` accepts; [`build`] turns a name and the
-//! shared flags into a planner. Grid searches (`astar`, `dijkstra`, `theta-star`) of the
-//! `search` crate go in the same `match` once they are available.
+//! shared flags into a planner: the sampling planners of the `sampling` crate and the grid
+//! searches of the `search` crate (8-connected, no corner cutting; they ignore the step,
+//! goal bias and budget, and prove "no path").
 
 use hyplan_core::{Budget, Planner};
 use sampling::{BiRrt, Rrt, RrtConnect, RrtStar};
 
 /// Names accepted by `--planner`.
-pub const NAMES: &[&str] = &["rrt", "rrt-star", "bi-rrt", "rrt-connect"];
+pub const NAMES: &[&str] = &[
+    "rrt",
+    "rrt-star",
+    "bi-rrt",
+    "rrt-connect",
+    "astar",
+    "dijkstra",
+    "theta-star",
+];
 
 /// The planner flags shared by every planner; each planner takes what it uses.
 #[derive(Debug, Clone, Copy)]
@@ -49,7 +58,9 @@ pub fn build(name: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner
         }),
         "bi-rrt" => Box::new(BiRrt { step, budget }),
         "rrt-connect" => Box::new(RrtConnect { step, budget }),
-        // Grid searches (search::GridAstar, GridDijkstra, ThetaStar) register here.
+        "astar" => Box::new(search::GridAstar::default()),
+        "dijkstra" => Box::new(search::GridDijkstra::default()),
+        "theta-star" => Box::new(search::ThetaStar::default()),
         other => anyhow::bail!(
             "unknown planner {other:?}; known planners: {}",
             NAMES.join(", ")

@@ -82,7 +82,15 @@ fn assert_error(o: &Output, needles: &[&str]) {
     }
 }
 
-const PLANNERS: [&str; 4] = ["rrt", "rrt-star", "bi-rrt", "rrt-connect"];
+const PLANNERS: [&str; 7] = [
+    "rrt",
+    "rrt-star",
+    "bi-rrt",
+    "rrt-connect",
+    "astar",
+    "dijkstra",
+    "theta-star",
+];
 
 #[test]
 fn every_planner_finds_a_path_and_prints_json() {
@@ -304,6 +312,10 @@ fn bad_input_is_exit_2_with_a_message() {
         (vec!["--step", "NaN"], vec!["step"]),
         (vec!["--goal-bias", "1.5"], vec!["goal_bias"]),
         (vec!["--goal-bias", "-0.1"], vec!["goal_bias"]),
+        (
+            vec!["--goal-bias", "2", "--planner", "rrt-connect"],
+            vec!["goal_bias"],
+        ),
         (vec!["--max-iter", "0"], vec!["max_iterations"]),
         (vec!["--time-limit", "0"], vec!["--time-limit"]),
         (vec!["--time-limit", "-1"], vec!["--time-limit"]),

@@ -32,7 +32,8 @@ pub struct Args {
     /// Goal `X,Y` in the input's frame.
     #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
     pub goal: (f64, f64),
-    /// Planner: rrt, rrt-star (to its first solution), bi-rrt or rrt-connect.
+    /// Planner: rrt, rrt-star (to its first solution), bi-rrt, rrt-connect, or the grid
+    /// searches astar, dijkstra, theta-star.
     #[arg(long, default_value = "rrt")]
     pub planner: String,
     /// Maximum edge length in the input's units [default: 5% of the map's diagonal].
@@ -179,6 +180,12 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         goal_bias: args.goal_bias,
         budget,
     };
+    if !(0.0..=1.0).contains(&args.goal_bias) {
+        anyhow::bail!(
+            "--goal-bias {}: invalid parameter goal_bias, must be a probability in [0, 1]",
+            args.goal_bias
+        );
+    }
     let planner = planners::build(&args.planner, &flags)?;
     if !planners::uses_goal_bias(&args.planner) && args.goal_bias != 0.05 && !args.csv && !args.json
     {
