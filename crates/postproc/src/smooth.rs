@@ -268,7 +268,7 @@ pub fn smooth_checked(
         }
     }
     let mut repairs = Vec::new();
-    let (nodes, points, curve) = match method {
+    let (nodes, mut points, curve) = match method {
         Smoothing::None | Smoothing::Prune => {
             let nodes = if method == Smoothing::Prune {
                 shortcut_greedy(path, &mut oracle)
@@ -304,6 +304,9 @@ pub fn smooth_checked(
             control_points(nodes, spacing, &mut oracle, &mut repairs)?
         }
     };
+    // A curve that stalls (zero speed at a node) could repeat a sample bit for bit; a
+    // repeated point adds no segment, and dropping it keeps the result timeable.
+    points.dedup();
     Ok(Smoothed {
         method,
         nodes,

@@ -298,25 +298,29 @@ pub fn time_curve(points: &[Point2], limits: &Limits) -> Result<Timing, Postproc
             v_max.min(w / k.abs())
         }
     };
+    // The passes run on squared speeds (u = v^2): the acceleration limit is then additive,
+    // u_{i+1} <= u_i + 2 a ds, and the serial chain has no square root in it.
     // Sample caps use the largest neighbouring curvature (see the doc).
-    let mut v: Vec<f64> = (0..n)
+    let mut u: Vec<f64> = (0..n)
         .map(|i| {
             let lo = i.saturating_sub(1);
             let hi = (i + 1).min(n - 1);
             let k = kappa[lo..=hi].iter().fold(0.0_f64, |m, k| m.max(k.abs()));
-            cap_of(k)
+            let c = cap_of(k);
+            c * c
         })
         .collect();
-    v[0] = 0.0;
-    v[n - 1] = 0.0;
+    u[0] = 0.0;
+    u[n - 1] = 0.0;
     // Forward pass: no faster than accelerating from the previous sample allows.
     for i in 1..n {
-        v[i] = v[i].min((v[i - 1] * v[i - 1] + 2.0 * a * ds[i - 1]).sqrt());
+        u[i] = u[i].min(u[i - 1] + 2.0 * a * ds[i - 1]);
     }
     // Backward pass: slow enough to brake for the next sample.
     for i in (0..n - 1).rev() {
-        v[i] = v[i].min((v[i + 1] * v[i + 1] + 2.0 * a * ds[i]).sqrt());
+        u[i] = u[i].min(u[i + 1] + 2.0 * a * ds[i]);
     }
+    let v: Vec<f64> = u.iter().map(|x| x.sqrt()).collect();
     let mut profile = Vec::with_capacity(3 * n);
     profile.push(ProfilePoint {
         t: 0.0,

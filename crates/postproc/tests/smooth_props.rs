@@ -10,7 +10,7 @@ use crate::grid::grid_and_path;
 const SPACING: f64 = 0.25;
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(128))]
+    #![proptest_config(ProptestConfig::with_cases(512))]
 
     #[test]
     fn smoothed_curves_are_free((grid, path) in grid_and_path()) {
