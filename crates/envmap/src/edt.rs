@@ -69,10 +69,8 @@ impl DistanceField {
 /// cell's distance to the nearest obstacle in its column, then a lower envelope of
 /// parabolas per row combines them exactly.
 ///
-/// # Panics
-///
-/// Never for maps up to 46 340 cells per side; beyond, squared distances above `u32::MAX - 1`
-/// saturate to `u32::MAX - 1`.
+/// Exact for masks up to 65 535 cells per side (beyond, no map fits in memory anyway);
+/// squared distances above `u32::MAX - 1` (sides above 46 340) saturate to `u32::MAX - 1`.
 ///
 /// ```
 /// use envmap::{distance_transform, Mask};
@@ -88,11 +86,11 @@ pub fn distance_transform(mask: &Mask) -> DistanceField {
     let (w, h) = (mask.width(), mask.height());
     let cells = mask.cells();
     const INF: u32 = u32::MAX;
-    // Vertical pass: distance (in cells) to the nearest obstacle in the same column.
-    // Row by row, so memory is read in order.
-    let mut col = vec![INF; w * h];
+    // Vertical pass, in the output buffer: distance (in cells) to the nearest obstacle in
+    // the same column. Row by row, so memory is read in order.
+    let mut out = vec![INF; w * h];
     for j in 0..h {
-        let (done, rest) = col.split_at_mut(j * w);
+        let (done, rest) = out.split_at_mut(j * w);
         let row = &mut rest[..w];
         let m = &cells[j * w..(j + 1) * w];
         if j == 0 {
@@ -107,19 +105,17 @@ pub fn distance_transform(mask: &Mask) -> DistanceField {
         }
     }
     for j in (0..h.saturating_sub(1)).rev() {
-        let (lo, hi) = col.split_at_mut((j + 1) * w);
+        let (lo, hi) = out.split_at_mut((j + 1) * w);
         let row = &mut lo[j * w..];
         let above = &hi[..w];
         for (c, &a) in row.iter_mut().zip(above) {
             *c = (*c).min(a.saturating_add(1));
         }
     }
-    // Horizontal pass: lower envelope of parabolas (x - q)^2 + col(q)^2 per row.
-    let mut out = vec![DistanceField::NONE; w * h];
+    // Horizontal pass, in place: lower envelope of parabolas (x - q)^2 + g(q)^2 per row.
     let mut env = Envelope::with_capacity(w);
-    for j in 0..h {
-        let g = &col[j * w..(j + 1) * w];
-        env.transform(g, &mut out[j * w..(j + 1) * w]);
+    for row in out.chunks_exact_mut(w.max(1)) {
+        env.transform(row);
     }
     DistanceField {
         width: w,
@@ -132,9 +128,12 @@ pub fn distance_transform(mask: &Mask) -> DistanceField {
 struct Envelope {
     /// Positions of the parabolas of the envelope.
     v: Vec<usize>,
-    /// Boundaries: parabola `v[k]` is lowest on `[z[k], z[k + 1]]`.
-    z: Vec<f64>,
-    /// Squared heights `f(q)` of the parabolas, as `i64`.
+    /// Left boundary of parabola `v[k]`'s part of the envelope, as the fraction
+    /// `z_num[k] / z_den[k]` (`z_den > 0`); unused for `k = 0` (minus infinity).
+    z_num: Vec<i64>,
+    /// Denominators of the boundaries.
+    z_den: Vec<i64>,
+    /// Squared heights `g(q)^2` of the row.
     f: Vec<i64>,
 }
 
@@ -142,65 +141,73 @@ impl Envelope {
     fn with_capacity(n: usize) -> Self {
         Self {
             v: Vec::with_capacity(n),
-            z: Vec::with_capacity(n + 1),
+            z_num: Vec::with_capacity(n),
+            z_den: Vec::with_capacity(n),
             f: Vec::with_capacity(n),
         }
     }
 
-    /// `out[x] = min_q (x - q)^2 + g[q]^2` over the finite `g[q]`; `NONE` if there is none.
-    fn transform(&mut self, g: &[u32], out: &mut [u32]) {
-        let (v, z, f) = (&mut self.v, &mut self.z, &mut self.f);
+    /// In place: `row[x] = min_q (x - q)^2 + row[q]^2` over the finite `row[q]` (`u32::MAX`
+    /// is infinite); all `NONE` if there is none.
+    ///
+    /// Integer arithmetic only: parabolas p < q meet at
+    /// `s = ((f[q] + q^2) - (f[p] + p^2)) / (2 (q - p))`, kept as a fraction and compared by
+    /// cross-multiplication (numerators < 2^33 and denominators < 2^17 for sides below
+    /// 65 536 cells, so products stay far below 2^63).
+    fn transform(&mut self, row: &mut [u32]) {
+        let (v, z_num, z_den, f) = (&mut self.v, &mut self.z_num, &mut self.z_den, &mut self.f);
         v.clear();
-        z.clear();
+        z_num.clear();
+        z_den.clear();
         f.clear();
-        f.extend(g.iter().map(|&d| {
+        f.extend(row.iter().map(|&d| {
             if d == u32::MAX {
-                i64::MAX
+                -1
             } else {
                 i64::from(d) * i64::from(d)
             }
         }));
-        // Parabola q's intersection with parabola p (< q): the x where they are equal.
-        // Values are integers below 2^63; the quotient is exact enough (see tests) because a
-        // non-integer boundary is at least 1 / (2n) from any integer x.
-        let meet = |f: &[i64], p: usize, q: usize| -> f64 {
-            let (pf, qf) = (p as i64, q as i64);
-            ((f[q] + qf * qf) - (f[p] + pf * pf)) as f64 / (2 * (qf - pf)) as f64
-        };
-        for q in 0..g.len() {
-            if f[q] == i64::MAX {
+        for q in 0..row.len() {
+            if f[q] < 0 {
                 continue;
             }
-            if v.is_empty() {
-                v.push(q);
-                z.push(f64::NEG_INFINITY);
-                continue;
-            }
-            let mut s = meet(f, *v.last().expect("non-empty"), q);
-            while s <= *z.last().expect("one boundary per parabola") {
-                v.pop();
-                z.pop();
-                match v.last() {
-                    Some(&p) => s = meet(f, p, q),
-                    None => {
-                        s = f64::NEG_INFINITY;
-                        break;
-                    }
+            let qi = q as i64;
+            let hq = f[q] + qi * qi;
+            loop {
+                let Some(&p) = v.last() else {
+                    v.push(q);
+                    z_num.push(0);
+                    z_den.push(1);
+                    break;
+                };
+                let pi = p as i64;
+                let (num, den) = (hq - (f[p] + pi * pi), 2 * (qi - pi));
+                let k = v.len() - 1;
+                // s <= z[k] (never for k = 0, whose boundary is minus infinity): q hides p.
+                if k > 0 && num * z_den[k] <= z_num[k] * den {
+                    v.pop();
+                    z_num.pop();
+                    z_den.pop();
+                    continue;
                 }
+                v.push(q);
+                z_num.push(num);
+                z_den.push(den);
+                break;
             }
-            v.push(q);
-            z.push(s);
         }
         if v.is_empty() {
-            out.fill(DistanceField::NONE);
+            row.fill(DistanceField::NONE);
             return;
         }
         let mut k = 0;
-        for (x, o) in out.iter_mut().enumerate() {
-            while k + 1 < v.len() && z[k + 1] < x as f64 {
+        for (x, o) in row.iter_mut().enumerate() {
+            let xi = x as i64;
+            // Advance while z[k + 1] < x.
+            while k + 1 < v.len() && z_num[k + 1] < xi * z_den[k + 1] {
                 k += 1;
             }
-            let dx = x as i64 - v[k] as i64;
+            let dx = xi - v[k] as i64;
             let d = dx * dx + f[v[k]];
             *o = u32::try_from(d).unwrap_or(u32::MAX - 1).min(u32::MAX - 1);
         }

@@ -17,7 +17,8 @@
 //!
 //! The seed-000 pipeline, one function per stage, and all of it in [`Pipeline`]:
 //! 1. [`binarize`]: picture to obstacle mask (luminance below a threshold).
-//! 2. [`label_components`]: 8-connected obstacles ([`Component`], [`Labels`]).
+//! 2. [`components`], [`label_components`]: 8-connected obstacles ([`Component`],
+//!    [`Labels`]).
 //! 3. [`bounding_rectangles`], [`fill_rectangles`]: the approximating rectangles
 //!    ([`CellRect`]).
 //! 4. [`distance_transform`]: exact Euclidean distance transform in linear time
@@ -78,7 +79,7 @@ mod workspace;
 mod zones;
 
 pub use binarize::binarize;
-pub use components::{Component, Labels, label_components};
+pub use components::{Component, Labels, components, label_components};
 pub use demo::demo_room;
 pub use edt::{DistanceField, distance_transform};
 pub use error::MapError;

@@ -4,14 +4,14 @@ use hyplan_core::{Point2, Zone};
 
 use crate::{
     CellRect, Component, DistanceField, GridMap, MapError, Mask, Picture, binarize,
-    bounding_rectangles, distance_transform, fill_rectangles, label_components, zones,
+    bounding_rectangles, distance_transform, fill_rectangles, zones,
 };
 
 /// The environment modelling of seed `000_9b224721fe327833.txt`, section 4.1 (Fig. 2):
 /// binarize the picture, find the obstacles (8-connected components), optionally replace
 /// them by their bounding rectangles, then add a high-risk band within `safety_radius` of
 /// every obstacle. Every stage is also a public function ([`binarize`],
-/// [`label_components`], [`bounding_rectangles`], [`distance_transform`], [`zones`]).
+/// [`components`](crate::components), [`bounding_rectangles`], [`distance_transform`], [`zones`]).
 ///
 /// ```
 /// use envmap::{Picture, Pipeline};
@@ -90,7 +90,7 @@ impl Pipeline {
     pub fn run_mask(&self, mask: Mask, base: &[Zone]) -> Result<PipelineOutput, MapError> {
         self.validate()?;
         let (w, h) = (mask.width(), mask.height());
-        let components = label_components(&mask).components;
+        let components = crate::components(&mask);
         let rectangles = bounding_rectangles(&components);
         let obstacles = if self.rectangles {
             fill_rectangles(w, h, &rectangles)
