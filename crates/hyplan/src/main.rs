@@ -29,6 +29,8 @@ enum Command {
     Map(cmd::map::Args),
     /// Plan a path with a sampling planner (RRT, RRT*, Bi-RRT, RRT-Connect).
     Plan(cmd::plan::Args),
+    /// Run a MovingAI scenario file (.map + .scen) and compare with its optimal lengths.
+    Scen(cmd::scen::Args),
 }
 
 fn main() -> ExitCode {
@@ -44,6 +46,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Map(args) => cmd::map::run(&args),
         Command::Plan(args) => cmd::plan::run(&args),
+        Command::Scen(args) => cmd::scen::run(&args),
     };
     match result {
         Ok(code) => code,

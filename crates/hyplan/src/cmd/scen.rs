@@ -1,0 +1,153 @@
+//! `hyplan scen`: run a MovingAI scenario file and compare with its optimal lengths.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::{Context, bail};
+use search::{GridOptions, GridSearch, GridSearchError, ScenEntry};
+
+/// Which grid search runs the scenarios.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum Algo {
+    /// A* with the octile heuristic.
+    Astar,
+    /// Dijkstra (no heuristic).
+    Dijkstra,
+}
+
+/// Options of `hyplan scen`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The MovingAI `.map` file (its file name must match the `.scen`'s map column).
+    #[arg(long)]
+    pub map: PathBuf,
+    /// The MovingAI `.scen` file (version 1; x = column, y = row from the top).
+    #[arg(long)]
+    pub scen: PathBuf,
+    /// The search to run.
+    #[arg(long, value_enum, default_value_t = Algo::Astar)]
+    pub algo: Algo,
+    /// Only the first N scenarios.
+    #[arg(long)]
+    pub limit: Option<usize>,
+}
+
+/// Tolerance on the `.scen` length: the files print about 6 significant digits (old ones)
+/// or 8 decimals, so `max(1e-3, 1e-5 * length)`.
+fn tolerance(expected: f64) -> f64 {
+    f64::max(1e-3, 1e-5 * expected)
+}
+
+/// Runs `hyplan scen`: CSV `id,expected,cost,time_us,expanded` on stdout, a summary on
+/// stderr. Every scenario is checked before any search runs, so bad input prints no CSV.
+pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    let map = envmap::read_movingai(&args.map)
+        .with_context(|| format!("cannot load the map {}", args.map.display()))?;
+    let mut scen = search::read_scen(&args.scen)?;
+    if let Some(n) = args.limit {
+        scen.truncate(n);
+    }
+    let map_name = args
+        .map
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let (w, h) = (map.width(), map.height());
+    let at = |s: &ScenEntry| format!("{}:{}", args.scen.display(), s.line);
+    let mut queries = Vec::with_capacity(scen.len());
+    for s in &scen {
+        if s.map_file_name() != map_name {
+            bail!(
+                "{}: scenario map {:?} does not match --map {}",
+                at(s),
+                s.map,
+                args.map.display()
+            );
+        }
+        if (s.width, s.height) != (w, h) {
+            bail!(
+                "{}: scenario declares a {} x {} map, {} is {w} x {h}",
+                at(s),
+                s.width,
+                s.height,
+                args.map.display()
+            );
+        }
+        let cell = |(x, y): (usize, usize), what: &str| -> anyhow::Result<(usize, usize)> {
+            let Some((i, j)) = ScenEntry::to_cell((x, y), h).filter(|&(i, _)| i < w) else {
+                bail!("{}: {what} ({x}, {y}) is outside the {w} x {h} map", at(s));
+            };
+            if !map.cell_free(i, j) {
+                bail!("{}: {what} ({x}, {y}) is on a blocked cell", at(s));
+            }
+            Ok((i, j))
+        };
+        queries.push((cell(s.start, "start")?, cell(s.goal, "goal")?));
+    }
+
+    let mut search = GridSearch::new(&map, GridOptions::default())?;
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    writeln!(out, "id,expected,cost,time_us,expanded")?;
+    let (mut total_us, mut expanded, mut pushes, mut mismatches, mut no_path) =
+        (0.0, 0u64, 0u64, 0usize, 0usize);
+    for (id, (s, &(start, goal))) in scen.iter().zip(&queries).enumerate() {
+        let t = Instant::now();
+        let found = match args.algo {
+            Algo::Astar => search.astar(start, goal),
+            Algo::Dijkstra => search.dijkstra(start, goal),
+        };
+        let us = t.elapsed().as_secs_f64() * 1e6;
+        total_us += us;
+        let (cost, n) = match found {
+            Ok(p) => {
+                pushes += p.stats.pushes;
+                (Some(p.cost), p.stats.expansions)
+            }
+            Err(GridSearchError::NoPath { stats }) => {
+                pushes += stats.pushes;
+                (None, stats.expansions)
+            }
+            Err(e) => return Err(e).with_context(|| at(s)),
+        };
+        expanded += n;
+        match cost {
+            Some(c) if (c - s.optimal).abs() <= tolerance(s.optimal) => {}
+            Some(c) => {
+                mismatches += 1;
+                eprintln!(
+                    "mismatch: scenario {id} ({}): expected {} found {c:.8}",
+                    at(s),
+                    s.optimal
+                );
+            }
+            None => {
+                mismatches += 1;
+                no_path += 1;
+                eprintln!(
+                    "mismatch: scenario {id} ({}): expected {} found no path",
+                    at(s),
+                    s.optimal
+                );
+            }
+        }
+        let cost = cost.map(|c| format!("{c:.8}")).unwrap_or_default();
+        writeln!(out, "{id},{},{cost},{us:.3},{n}", s.optimal)?;
+    }
+    out.flush()?;
+    let n = scen.len();
+    eprintln!(
+        "scenarios {n}, mismatches {mismatches} (no path {no_path}; tolerance max(1e-3, 1e-5*len)), \
+         total search time {:.3} ms (mean {:.2} us), expanded {expanded}, pushed {pushes}{}",
+        total_us / 1e3,
+        if n > 0 { total_us / n as f64 } else { 0.0 },
+        if expanded > 0 {
+            format!(", {:.1} ns per expansion", total_us * 1e3 / expanded as f64)
+        } else {
+            String::new()
+        }
+    );
+    Ok(ExitCode::SUCCESS)
+}
