@@ -1,0 +1,345 @@
+//! Pieces the four planners share: parameter checks, the counted collision checker,
+//! steering, the grid downcast, zone queries and path assembly.
+
+use envmap::GridMap;
+use hyplan_core::{Budget, Goal, PlanError, Point2, Query, Workspace, Zone};
+use rand::Rng;
+
+/// Checks that `value` is finite and > 0.
+pub(crate) fn check_positive(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be finite and > 0 (world units)",
+        })
+    }
+}
+
+/// Checks that `value` is finite and >= 0.
+pub(crate) fn check_non_negative(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be finite and >= 0",
+        })
+    }
+}
+
+/// Checks a probability in [0, 1].
+pub(crate) fn check_probability(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if (0.0..=1.0).contains(&value) {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be a probability in [0, 1]",
+        })
+    }
+}
+
+/// Checks a count >= 1.
+pub(crate) fn check_count(name: &'static str, value: usize) -> Result<(), PlanError> {
+    if value >= 1 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be at least 1",
+        })
+    }
+}
+
+/// Validates the budget, the workspace bounds and the query.
+pub(crate) fn validate<W: Workspace + ?Sized>(
+    budget: &Budget,
+    ws: &W,
+    query: &Query,
+) -> Result<(), PlanError> {
+    budget.validate()?;
+    let b = ws.bounds();
+    if !(b.width() > 0.0 && b.height() > 0.0 && b.width().is_finite() && b.height().is_finite()) {
+        return Err(PlanError::InvalidParameter {
+            name: "workspace.bounds",
+            value: format!("{} x {}", b.width(), b.height()),
+            reason: "the workspace must have a finite, positive area",
+        });
+    }
+    query.validate(ws)
+}
+
+/// The grid map behind a workspace, or a typed error naming `workspace`.
+pub(crate) fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanError> {
+    ws.as_any()
+        .and_then(|a| a.downcast_ref::<GridMap>())
+        .ok_or(PlanError::InvalidParameter {
+            name: "workspace",
+            value: "not an envmap::GridMap".into(),
+            reason: "this planner runs grid A* searches and needs a grid map",
+        })
+}
+
+/// The workspace plus a count of the collision queries made through it.
+pub(crate) struct Checker<'a, W: ?Sized> {
+    pub ws: &'a W,
+    pub checks: u64,
+}
+
+impl<'a, W: Workspace + ?Sized> Checker<'a, W> {
+    pub(crate) fn new(ws: &'a W) -> Self {
+        Self { ws, checks: 0 }
+    }
+
+    /// Exact edge check, counted.
+    #[inline]
+    pub(crate) fn segment_free(&mut self, a: Point2, b: Point2) -> bool {
+        self.checks += 1;
+        self.ws.segment_free(a, b)
+    }
+
+    /// Point check, counted.
+    #[inline]
+    pub(crate) fn is_free(&mut self, p: Point2) -> bool {
+        self.checks += 1;
+        self.ws.is_free(p)
+    }
+}
+
+/// A uniform point in the workspace bounds.
+#[inline]
+pub(crate) fn sample_uniform<W: Workspace + ?Sized, R: Rng + ?Sized>(
+    ws: &W,
+    rng: &mut R,
+) -> Point2 {
+    let b = ws.bounds();
+    Point2::new(
+        b.min.x + hyplan_core::uniform01(rng) * b.width(),
+        b.min.y + hyplan_core::uniform01(rng) * b.height(),
+    )
+}
+
+/// The point at most `step` from `from` towards `to` (`to` itself within `step`).
+#[inline]
+pub(crate) fn steer(from: Point2, to: Point2, step: f64) -> Point2 {
+    let d = to - from;
+    let len = d.norm();
+    if len <= step {
+        to
+    } else {
+        from + d * (step / len)
+    }
+}
+
+/// The points from the root of a parent-linked tree down to `leaf`.
+pub(crate) fn branch(points: &[Point2], parent: &[Option<u32>], leaf: usize) -> Vec<Point2> {
+    let mut path = vec![points[leaf]];
+    let mut i = leaf;
+    while let Some(p) = parent[i] {
+        i = p as usize;
+        path.push(points[i]);
+    }
+    path.reverse();
+    path
+}
+
+/// How a node that came within the planner's goal radius finishes the path.
+///
+/// Returns the goal centre when the last segment to it is free (the path then ends exactly
+/// at the goal), `Some(None)` when the node itself already satisfies the query's goal (a
+/// disc containing it), and `None` when the node cannot finish the path.
+pub(crate) fn finish_at_goal<W: Workspace + ?Sized>(
+    checker: &mut Checker<'_, W>,
+    goal: &Goal,
+    node: Point2,
+) -> Option<Option<Point2>> {
+    let g = goal.center();
+    if node == g {
+        return Some(None);
+    }
+    if checker.segment_free(node, g) {
+        Some(Some(g))
+    } else if goal.contains(node) {
+        Some(None)
+    } else {
+        None
+    }
+}
+
+/// Drops consecutive exact duplicates.
+pub(crate) fn dedup(path: &mut Vec<Point2>) {
+    path.dedup_by(|a, b| a == b);
+}
+
+/// Zone queries used by the safety cost of seed 003: exact on a grid map, sampled on any
+/// other workspace.
+pub(crate) enum ZoneView<'a, W: ?Sized> {
+    /// Exact: cell by cell.
+    Grid(&'a GridMap),
+    /// Sampled along segments every `spacing` world units through [`Workspace::zone`].
+    Sampled(&'a W, f64),
+}
+
+impl<'a, W: Workspace + ?Sized> ZoneView<'a, W> {
+    /// The exact view for a grid map, else the sampled one with `spacing`.
+    pub(crate) fn new(ws: &'a W, spacing: f64) -> Self {
+        match ws.as_any().and_then(|a| a.downcast_ref::<GridMap>()) {
+            Some(map) => Self::Grid(map),
+            None => Self::Sampled(ws, spacing),
+        }
+    }
+
+    /// The zone of a point.
+    pub(crate) fn zone(&self, p: Point2) -> Zone {
+        match self {
+            Self::Grid(map) => map.zone_at(p),
+            Self::Sampled(ws, _) => ws.zone(p),
+        }
+    }
+
+    /// Whether the closed segment touches only `Free` cells (neither Risk nor Forbidden)
+    /// and both ends are inside the bounds.
+    pub(crate) fn safe_segment(&self, a: Point2, b: Point2) -> bool {
+        match self {
+            Self::Grid(map) => {
+                let bounds = map.bounds();
+                bounds.contains(a)
+                    && bounds.contains(b)
+                    && map.segment_cells(a, b, |i, j| map.cell_zone(i, j) == Zone::Free)
+            }
+            Self::Sampled(ws, spacing) => {
+                if !ws.segment_free(a, b) {
+                    return false;
+                }
+                let n = samples(a, b, *spacing);
+                (0..=n).all(|k| ws.zone(a + (b - a) * (k as f64 / n as f64)) == Zone::Free)
+            }
+        }
+    }
+
+    /// Length of the segment inside the Risk zone, world units.
+    pub(crate) fn risk_length(&self, a: Point2, b: Point2) -> f64 {
+        match self {
+            Self::Grid(map) => {
+                let mut len = 0.0;
+                map.segment_cells(a, b, |i, j| {
+                    if map.cell_zone(i, j) == Zone::Risk {
+                        len += clipped_length(map, i, j, a, b);
+                    }
+                    true
+                });
+                len.min((b - a).norm())
+            }
+            Self::Sampled(ws, spacing) => {
+                let n = samples(a, b, *spacing);
+                let piece = (b - a).norm() / n as f64;
+                (0..n)
+                    .filter(|&k| ws.zone(a + (b - a) * ((k as f64 + 0.5) / n as f64)) == Zone::Risk)
+                    .count() as f64
+                    * piece
+            }
+        }
+    }
+}
+
+/// Number of pieces of at most `spacing` on segment `a`-`b` (at least 1).
+fn samples(a: Point2, b: Point2, spacing: f64) -> usize {
+    ((b - a).norm() / spacing).ceil().max(1.0) as usize
+}
+
+/// Length of segment `a`-`b` inside the closed square of cell `(i, j)` (Liang-Barsky).
+fn clipped_length(map: &GridMap, i: usize, j: usize, a: Point2, b: Point2) -> f64 {
+    let r = map.resolution();
+    let o = map.origin();
+    let (x0, y0) = (o.x + i as f64 * r, o.y + j as f64 * r);
+    let (x1, y1) = (x0 + r, y0 + r);
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for (p, q) in [
+        (-d.x, a.x - x0),
+        (d.x, x1 - a.x),
+        (-d.y, a.y - y0),
+        (d.y, y1 - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return 0.0;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+        }
+    }
+    if t1 > t0 { (t1 - t0) * d.norm() } else { 0.0 }
+}
+
+/// Distance from `p` to the nearest cell of `map` that blocks motion, if one lies within
+/// `radius` (world units); `None` when none does. Exact point-to-square distances over
+/// the cells of the disc's bounding box.
+pub(crate) fn blocked_within(map: &GridMap, p: Point2, radius: f64) -> Option<f64> {
+    let r = map.resolution();
+    let o = map.origin();
+    let (u, v) = ((p.x - o.x) / r, (p.y - o.y) / r);
+    let k = radius / r;
+    let i0 = (u - k).floor().max(0.0) as usize;
+    let j0 = (v - k).floor().max(0.0) as usize;
+    let i1 = ((u + k).floor().max(0.0) as usize).min(map.width().saturating_sub(1));
+    let j1 = ((v + k).floor().max(0.0) as usize).min(map.height().saturating_sub(1));
+    let mut best: Option<f64> = None;
+    for j in j0..=j1 {
+        for i in i0..=i1 {
+            if map.cell_free(i, j) {
+                continue;
+            }
+            let dx = (i as f64 - u).max(0.0).max(u - (i as f64 + 1.0));
+            let dy = (j as f64 - v).max(0.0).max(v - (j as f64 + 1.0));
+            let d = dx.hypot(dy) * r;
+            if d < radius && best.is_none_or(|b| d < b) {
+                best = Some(d);
+            }
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clipped_length_of_a_diagonal() {
+        let map = GridMap::filled(4, 4, Zone::Free).unwrap();
+        let (a, b) = (Point2::new(0.0, 0.0), Point2::new(2.0, 2.0));
+        let l = clipped_length(&map, 0, 0, a, b);
+        assert!((l - 2f64.sqrt()).abs() < 1e-12);
+        assert_eq!(clipped_length(&map, 3, 0, a, b), 0.0);
+    }
+
+    #[test]
+    fn risk_length_counts_risk_cells_only() {
+        let map = GridMap::from_ascii("....\n.~~.\n....").unwrap();
+        let view: ZoneView<'_, GridMap> = ZoneView::new(&map, 0.1);
+        let l = view.risk_length(Point2::new(0.5, 1.5), Point2::new(3.5, 1.5));
+        assert!((l - 2.0).abs() < 1e-12, "{l}");
+        assert!(!view.safe_segment(Point2::new(0.5, 1.5), Point2::new(3.5, 1.5)));
+        assert!(view.safe_segment(Point2::new(0.5, 0.5), Point2::new(3.5, 0.5)));
+    }
+
+    #[test]
+    fn blocked_within_finds_the_nearest_cell() {
+        let map = GridMap::from_ascii(".....\n....#\n.....").unwrap();
+        let d = blocked_within(&map, Point2::new(2.5, 1.5), 5.0).unwrap();
+        assert!((d - 1.5).abs() < 1e-12);
+        assert!(blocked_within(&map, Point2::new(0.5, 1.5), 2.0).is_none());
+    }
+}

@@ -1,0 +1,385 @@
+//! Hybrid RRT-A*: a goal-biased RRT that launches bounded A* sub-searches once it reaches
+//! the goal area.
+//!
+//! Seed `002_6cddcbbe62b23f10.txt` (Al-Ansarry and Al-Darraji, 2021), section III,
+//! Algorithms 1-2 and the flowchart of Fig. 2. The reading
+//! (`docs/papers/002-hybrid-rrt-astar.md`, section 3.2): a sub-search starts from q_new
+//! when q_new lies within the goal threshold (13) of the goal **and** at least the A*
+//! threshold (7) away from every earlier sub-search start. Each sub-search is a fresh
+//! 8-connected grid A* (octile costs, Euclidean heuristic, no corner cutting) from q_new's
+//! cell to the goal's cell that gives up after 150 expanded ("visited") nodes. On success
+//! the plan is the tree branch to q_new followed by the A* cells; on giving up, RRT growth
+//! continues. The paper's "Cost (node)" is the tree size plus the nodes visited by the
+//! sub-searches, reported as `stats.nodes`.
+
+use std::time::Instant;
+
+use envmap::GridMap;
+use hyplan_core::{
+    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace,
+};
+use rand::{Rng, RngCore};
+use sampling::NearestIndex;
+
+use crate::Staged;
+use crate::common::{self, Checker};
+
+/// Which earlier sub-search starts the A* threshold is measured against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SpacingRule {
+    /// Every earlier start (default, our reading: a failed search is not relaunched from
+    /// the same place when the goal bias drives the tree back and forth).
+    #[default]
+    All,
+    /// Only the last start (the other reading of the text's "the last one").
+    Last,
+}
+
+/// Hybrid RRT-A* (seed 002): goal-biased RRT with bounded grid A* sub-searches in the goal
+/// area.
+///
+/// # Zones and workspace
+///
+/// The workspace must be an [`envmap::GridMap`] (found through [`Workspace::as_any`]),
+/// since the sub-searches run on its cells. The map's
+/// [`blocked_from`](GridMap::blocked_from) decides what blocks. Seed 002 pads its
+/// obstacles by one cell (dilate the Forbidden cells before planning, e.g. with a 1-cell
+/// safety radius) and has no risk band: pass the padded map as it is.
+///
+/// # Result
+///
+/// `path` is the tree branch to the node that launched the successful sub-search, then
+/// the centres of the A* cells, ending at the goal centre (or the branch to a tree node
+/// that reached the goal by itself). Every segment is checked with `segment_free`.
+/// `stats.nodes` is the paper's "Cost (node)": tree nodes plus the nodes expanded by all
+/// sub-searches; `stats.expansions` the sub-search part alone; `stats.iterations` the RRT
+/// iterations. [`plan_detailed`](HybridRrtAstar::plan_detailed) also counts the
+/// sub-searches launched and given up.
+///
+/// ```
+/// use envmap::GridMap;
+/// use hybrid::HybridRrtAstar;
+/// use hyplan_core::{Goal, Point2, Query, Workspace};
+/// use rand::SeedableRng;
+/// let map = GridMap::from_ascii("
+///     ....................
+///     ....................
+///     ......#######.......
+///     ....................
+///     ....................
+/// ")?;
+/// let query = Query::new(Point2::new(10.5, 4.5), Goal::Point(Point2::new(10.5, 0.5)));
+/// let staged = HybridRrtAstar::default()
+///     .plan_detailed(&map, &query, &mut rand_chacha::ChaCha8Rng::seed_from_u64(2))?;
+/// assert!(staged.astar_runs >= 1);
+/// assert_eq!(*staged.plan.path.last().unwrap(), Point2::new(10.5, 0.5));
+/// assert!(staged.plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HybridRrtAstar {
+    /// RRT step size, world units, finite and > 0. Default 1 (the paper's).
+    pub step: f64,
+    /// Probability in [0, 1] of sampling the goal. Default 0.25 (the paper's).
+    pub goal_bias: f64,
+    /// T, the goal area radius within which sub-searches may start, world units, finite
+    /// and >= 0. Default 13 (the paper's).
+    pub goal_threshold: f64,
+    /// D, the A* threshold: the least distance between two sub-search starts, world
+    /// units, finite and >= 0. Default 7 (the paper's).
+    pub astar_spacing: f64,
+    /// Which earlier starts `astar_spacing` is measured against. Default
+    /// [`SpacingRule::All`] (ours).
+    pub spacing_rule: SpacingRule,
+    /// Nodes a sub-search may expand before it gives up, >= 1. Default 150 (the paper's
+    /// "Steps-threshold", Fig. 2).
+    pub astar_max_visited: usize,
+    /// The RRT's iteration and optional time limits. Default 30 000 iterations (the
+    /// paper's).
+    pub budget: Budget,
+}
+
+impl Default for HybridRrtAstar {
+    fn default() -> Self {
+        Self {
+            step: 1.0,
+            goal_bias: 0.25,
+            goal_threshold: 13.0,
+            astar_spacing: 7.0,
+            spacing_rule: SpacingRule::All,
+            astar_max_visited: 150,
+            budget: Budget::iterations(30_000),
+        }
+    }
+}
+
+/// 8-connected moves: offset and cost.
+const MOVES: [(isize, isize, f64); 8] = [
+    (1, 0, 1.0),
+    (-1, 0, 1.0),
+    (0, 1, 1.0),
+    (0, -1, 1.0),
+    (1, 1, std::f64::consts::SQRT_2),
+    (-1, 1, std::f64::consts::SQRT_2),
+    (1, -1, std::f64::consts::SQRT_2),
+    (-1, -1, std::f64::consts::SQRT_2),
+];
+
+/// One bounded A* sub-search (Algorithm 2 with the flowchart's visited-node limit): the
+/// cells from `from` to `to`, or `None` when it gives up; and the nodes it expanded.
+fn sub_search(
+    map: &GridMap,
+    from: (usize, usize),
+    to: (usize, usize),
+    max_visited: usize,
+) -> (Option<Vec<(usize, usize)>>, u64) {
+    let passable = |i: isize, j: isize| i >= 0 && j >= 0 && map.cell_free(i as usize, j as usize);
+    let mut popped = 0_usize;
+    let found = search::astar(
+        &from,
+        |&(i, j)| {
+            let (i, j) = (i as isize, j as isize);
+            MOVES
+                .iter()
+                .filter(move |&&(di, dj, _)| {
+                    passable(i + di, j + dj)
+                        && (di == 0 || dj == 0 || (passable(i + di, j) && passable(i, j + dj)))
+                })
+                .map(move |&(di, dj, c)| (((i + di) as usize, (j + dj) as usize), c))
+                .collect::<Vec<_>>()
+        },
+        |&(i, j)| (i as f64 - to.0 as f64).hypot(j as f64 - to.1 as f64),
+        // The success test runs on every node taken from the open list, before it is
+        // expanded: stop at the goal, or once `max_visited` nodes have been expanded.
+        |&n| {
+            popped += 1;
+            n == to || popped > max_visited
+        },
+    );
+    match found {
+        Ok(r) => {
+            let visited = r.stats.expansions;
+            let ok = r.path.last() == Some(&to);
+            (ok.then_some(r.path), visited)
+        }
+        Err(e) => (None, e.stats().expansions),
+    }
+}
+
+impl HybridRrtAstar {
+    fn validate_params(&self) -> Result<(), PlanError> {
+        common::check_positive("step", self.step)?;
+        common::check_probability("goal_bias", self.goal_bias)?;
+        common::check_non_negative("goal_threshold", self.goal_threshold)?;
+        common::check_non_negative("astar_spacing", self.astar_spacing)?;
+        common::check_count("astar_max_visited", self.astar_max_visited)
+    }
+
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    ///
+    /// # Errors
+    ///
+    /// [`PlanError::InvalidParameter`] for a bad parameter or budget, or named `workspace`
+    /// when `ws` is not a grid map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
+    /// for a query outside the map or blocked; [`PlanError::BudgetExhausted`] when neither
+    /// the tree nor a sub-search reached the goal within the budget.
+    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+    ) -> Result<Plan, PlanError> {
+        self.plan_detailed(ws, query, rng).map(|s| s.plan)
+    }
+
+    /// [`plan`](Self::plan), also counting the sub-searches launched and given up.
+    ///
+    /// # Errors
+    ///
+    /// As [`plan`](Self::plan).
+    pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+    ) -> Result<Staged, PlanError> {
+        let started = Instant::now();
+        self.validate_params()?;
+        let map = common::as_grid(ws)?;
+        common::validate(&self.budget, ws, query)?;
+        let goal = query.goal;
+        let target = goal.center();
+        let goal_cell = map.world_to_cell(target).ok_or(PlanError::InvalidGoal {
+            point: target,
+            reason: "outside the map",
+        })?;
+        let mut checker = Checker::new(ws);
+        let mut index = NearestIndex::with_capacity(1024);
+        let mut parent: Vec<Option<u32>> = vec![None];
+        index.insert(query.start);
+        let mut starts: Vec<Point2> = Vec::new();
+        let (mut visited_total, mut runs, mut failures) = (0_u64, 0_u32, 0_u32);
+        let mut iterations = 0_u64;
+        // (leaf node, points after it to the goal)
+        let mut done: Option<(usize, Vec<Point2>)> = None;
+        if goal.contains(query.start) {
+            done = Some((0, Vec::new()));
+        }
+
+        while done.is_none() && !self.budget.exhausted(iterations, started) {
+            iterations += 1;
+            // Phase 1 (Algorithm 1): goal-biased sample, nearest vertex, one step.
+            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
+                target
+            } else {
+                common::sample_uniform(ws, rng)
+            };
+            let Some((near, _)) = index.nearest(sample) else {
+                break;
+            };
+            let near_point = index.point(near);
+            let new_point = common::steer(near_point, sample, self.step);
+            if new_point == near_point || !checker.segment_free(near_point, new_point) {
+                continue;
+            }
+            let new = index.insert(new_point);
+            parent.push(Some(near as u32));
+            // The tree reaches the goal by itself ("Is this node the goal?").
+            let dist = (new_point - target).norm();
+            if (dist <= self.step || goal.contains(new_point))
+                && let Some(end) = common::finish_at_goal(&mut checker, &goal, new_point)
+            {
+                done = Some((new, end.into_iter().collect()));
+                break;
+            }
+            // Condition 1: inside the goal area.
+            if dist > self.goal_threshold {
+                continue;
+            }
+            // Condition 2: far enough from earlier sub-search starts.
+            let spaced = match self.spacing_rule {
+                SpacingRule::All => starts
+                    .iter()
+                    .all(|s| (s - new_point).norm() >= self.astar_spacing),
+                SpacingRule::Last => starts
+                    .last()
+                    .is_none_or(|s| (s - new_point).norm() >= self.astar_spacing),
+            };
+            if !spaced {
+                continue;
+            }
+            starts.push(new_point);
+            // Phase 2 (Algorithm 2): a bounded A* sub-search to the goal.
+            let Some(from) = map.world_to_cell(new_point) else {
+                continue;
+            };
+            runs += 1;
+            let (cells, visited) = sub_search(map, from, goal_cell, self.astar_max_visited);
+            visited_total += visited;
+            match cells.and_then(|c| self.join(map, &mut checker, new_point, &c, target)) {
+                Some(tail) => done = Some((new, tail)),
+                None => failures += 1,
+            }
+        }
+
+        let points: Vec<Point2> = (0..index.len()).map(|i| index.point(i)).collect();
+        let tree_nodes = points.len() as u64;
+        let mut stats = PlanStats {
+            iterations,
+            nodes: tree_nodes + visited_total,
+            collision_checks: checker.checks,
+            expansions: visited_total,
+            elapsed: started.elapsed(),
+            ..PlanStats::default()
+        };
+        let Some((leaf, tail)) = done else {
+            return Err(PlanError::BudgetExhausted { stats });
+        };
+        let mut path = common::branch(&points, &parent, leaf);
+        path.extend(tail);
+        common::dedup(&mut path);
+        stats.elapsed = started.elapsed();
+        Ok(Staged {
+            plan: Plan {
+                cost: hyplan_core::path_length(&path),
+                path: path.clone(),
+                trees: vec![Tree { points, parent }],
+                stats,
+            },
+            raw: path.clone(),
+            reduced: path,
+            astar_runs: runs,
+            astar_failures: failures,
+            ..Staged::default()
+        })
+    }
+
+    /// The points after `from` along the A* cells to `target`: cell centres, the last one
+    /// replaced by the target; every segment checked, with the end cells' centres kept
+    /// where a joint to a continuous point is not free. `None` if a segment fails.
+    fn join<W: Workspace + ?Sized>(
+        &self,
+        map: &GridMap,
+        checker: &mut Checker<'_, W>,
+        from: Point2,
+        cells: &[(usize, usize)],
+        target: Point2,
+    ) -> Option<Vec<Point2>> {
+        let centre = |c: (usize, usize)| map.cell_center(c.0, c.1);
+        let mut out: Vec<Point2> = vec![from];
+        out.extend(
+            cells[1..cells.len().saturating_sub(1)]
+                .iter()
+                .map(|&c| centre(c)),
+        );
+        out.push(target);
+        if !checker.segment_free(out[0], out[1]) {
+            out.insert(1, centre(cells[0]));
+        }
+        let n = out.len();
+        if !checker.segment_free(out[n - 2], out[n - 1]) {
+            out.insert(n - 1, centre(cells[cells.len() - 1]));
+        }
+        common::dedup(&mut out);
+        out.windows(2)
+            .all(|w| checker.segment_free(w[0], w[1]))
+            .then(|| out.split_off(1))
+    }
+}
+
+impl Planner for HybridRrtAstar {
+    fn info(&self) -> PlannerInfo {
+        PlannerInfo {
+            name: "hybrid-rrt-astar",
+            optimizing: false,
+            proves_no_path: false,
+            grid_only: true,
+        }
+    }
+
+    fn plan(
+        &self,
+        ws: &dyn Workspace,
+        query: &Query,
+        rng: &mut dyn RngCore,
+    ) -> Result<Plan, PlanError> {
+        HybridRrtAstar::plan(self, ws, query, rng)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hyplan_core::Zone;
+
+    #[test]
+    fn sub_search_gives_up_at_its_limit() {
+        let map = GridMap::filled(60, 60, Zone::Free).unwrap();
+        let (cells, visited) = sub_search(&map, (0, 0), (50, 0), 10);
+        assert!(cells.is_none());
+        assert_eq!(visited, 10);
+        let (cells, visited) = sub_search(&map, (0, 0), (50, 0), 150);
+        assert_eq!(cells.unwrap().len(), 51);
+        assert_eq!(visited, 50);
+    }
+}

@@ -1,0 +1,388 @@
+//! Safety-cost RRT*: RRT* whose edge cost adds a penalty for running through the risk
+//! zone, then redundant-node removal from the start, then a clamped cubic B-spline.
+//!
+//! Seed `003_19d461d9f3ced1b0.txt` (MM Science Journal, October 2023), sections 2.1
+//! (RRT*: sample, nearest, steer, parent, rewire), 2.2 (risk zones and the safety cost)
+//! and 2.3 (redundant-node removal, third-degree B-spline); section 3: "the smoothing
+//! method permits the mobile robot to enter the risk region (gray)". The reading
+//! (`docs/papers/003-safe-rrt-star.md`, section 3.2): nodes never lie in the risk zone
+//! (samples and new nodes there are rejected), edges must avoid Forbidden and cost
+//! `|ab| + lambda * (length of ab inside Risk)`, the run stops at the first solution; the
+//! path is pruned greedily from the start with segments that avoid Risk and Forbidden,
+//! densified so that no control segment is longer than `spline_max_spacing`, and smoothed
+//! by the clamped cubic B-spline over those control points, checked against Forbidden
+//! only.
+
+use std::time::Instant;
+
+use hyplan_core::{
+    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace, Zone,
+};
+use rand::{Rng, RngCore};
+use sampling::NearestIndex;
+
+use crate::Staged;
+use crate::common::{self, Checker, ZoneView};
+use crate::smooth;
+
+/// Safety-cost RRT* with redundant-node removal and B-spline smoothing (seed 003).
+///
+/// # Zones
+///
+/// Pass the three-zone map as it is (only Forbidden blocks `segment_free`); the planner
+/// reads the risk band through [`Workspace::zone`]. On an [`envmap::GridMap`] (found
+/// through [`Workspace::as_any`]) zones are read exactly, cell by cell: the risk length of
+/// an edge is the exact length of the segment inside Risk cells. On any other workspace
+/// `zone` is sampled along each segment every `step / 16`. Nodes stay out of Risk; edges
+/// may cut it (at a cost); the pruned path avoids it except on tree edges kept as they
+/// were; the B-spline may enter it at corners but never Forbidden. The width of the risk
+/// band is the map's (2 units in our seed-003 maps; the paper gives none).
+///
+/// # Result
+///
+/// `path` is the B-spline sampled every `curve_spacing`, every sample pair checked with
+/// `segment_free` (colliding spans are pulled onto the control polygon by repeating
+/// control points; the pruned polyline is returned if that fails). It starts at the
+/// query's start and ends at the goal centre when the last segment to it is free. `cost`
+/// is the safety cost of the returned path: length + `safety_weight` x length inside
+/// Risk. `stats.nodes` is the tree size. [`plan_detailed`](SafeRrtStar::plan_detailed)
+/// also returns the raw RRT* path and the pruned path.
+///
+/// ```
+/// use envmap::GridMap;
+/// use hybrid::SafeRrtStar;
+/// use hyplan_core::{Goal, Point2, Query, Workspace, Zone};
+/// use rand::SeedableRng;
+/// let map = GridMap::from_ascii("
+///     ......................
+///     ......................
+///     .........~~~~.........
+///     .........~##~.........
+///     .........~##~.........
+///     .........~~~~.........
+///     ......................
+///     ......................
+/// ")?;
+/// let query = Query::new(Point2::new(0.5, 4.0), Goal::Point(Point2::new(21.5, 4.0)));
+/// let plan = SafeRrtStar { step: 2.0, ..SafeRrtStar::default() }
+///     .plan(&map, &query, &mut rand_chacha::ChaCha8Rng::seed_from_u64(4))?;
+/// assert!(plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
+/// assert!(plan.path.iter().all(|&p| map.zone(p) != Zone::Forbidden));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SafeRrtStar {
+    /// "A constant distance": the steering step, world units, finite and > 0. Default 2
+    /// (ours; the paper gives none).
+    pub step: f64,
+    /// A node within this distance of the goal finishes the path, world units, finite and
+    /// >= 0. Default 2 (ours).
+    pub goal_radius: f64,
+    /// Probability in [0, 1] of sampling the goal. Default 0.05 (ours).
+    pub goal_bias: f64,
+    /// gamma of the neighbour radius `min(gamma * sqrt(ln n / n), max_radius)`, world
+    /// units, finite and > 0. Default 62 (ours: Karaman-Frazzoli's gamma* for about 2000
+    /// free square units).
+    pub gamma: f64,
+    /// Cap of the neighbour radius, world units, finite and > 0. Default 5 (ours).
+    pub max_radius: f64,
+    /// lambda: the cost of one unit of length inside Risk, on top of the length itself,
+    /// finite and >= 0 (0 = plain RRT* costs). Default 10 (ours).
+    pub safety_weight: f64,
+    /// Stop at the first path (default `true`, the paper's "until a path ... is
+    /// discovered"), or run the whole budget and keep the cheapest.
+    pub stop_at_first_solution: bool,
+    /// Rejection draws allowed for one sample in the Free zone, >= 1. Default 1000 (ours).
+    pub sample_tries: usize,
+    /// d_cp: the pruned path is split into control segments no longer than this before
+    /// the B-spline, world units, finite and > 0. Default 5 (ours; the curve then stays
+    /// within d_cp / 3 of the corners).
+    pub spline_max_spacing: f64,
+    /// Spacing of the curve samples, world units, finite and > 0. Default 0.05 (ours).
+    pub curve_spacing: f64,
+    /// Smooth the pruned path (default `true`); `false` returns the pruned polyline.
+    pub smoothing: bool,
+    /// N: iteration and optional time limits. Default 3000 iterations (the paper's).
+    pub budget: Budget,
+}
+
+impl Default for SafeRrtStar {
+    fn default() -> Self {
+        Self {
+            step: 2.0,
+            goal_radius: 2.0,
+            goal_bias: 0.05,
+            gamma: 62.0,
+            max_radius: 5.0,
+            safety_weight: 10.0,
+            stop_at_first_solution: true,
+            sample_tries: 1000,
+            spline_max_spacing: 5.0,
+            curve_spacing: 0.05,
+            smoothing: true,
+            budget: Budget::iterations(3000),
+        }
+    }
+}
+
+/// The tree with costs-to-come and child lists (for cost updates after rewiring).
+struct StarTree {
+    index: NearestIndex,
+    parent: Vec<Option<u32>>,
+    cost: Vec<f64>,
+    children: Vec<Vec<u32>>,
+}
+
+impl StarTree {
+    fn add(&mut self, p: Point2, parent: usize, cost: f64) -> usize {
+        let id = self.index.insert(p);
+        self.parent.push(Some(parent as u32));
+        self.cost.push(cost);
+        self.children.push(Vec::new());
+        self.children[parent].push(id as u32);
+        id
+    }
+
+    /// Makes `new_parent` the parent of `node` at `cost`, shifting the subtree's costs.
+    fn reparent(&mut self, node: usize, new_parent: usize, cost: f64) {
+        if let Some(old) = self.parent[node] {
+            let siblings = &mut self.children[old as usize];
+            if let Some(pos) = siblings.iter().position(|&c| c as usize == node) {
+                siblings.swap_remove(pos);
+            }
+        }
+        self.parent[node] = Some(new_parent as u32);
+        self.children[new_parent].push(node as u32);
+        let delta = cost - self.cost[node];
+        self.cost[node] = cost;
+        let mut stack: Vec<u32> = self.children[node].clone();
+        while let Some(c) = stack.pop() {
+            self.cost[c as usize] += delta;
+            stack.extend_from_slice(&self.children[c as usize]);
+        }
+    }
+}
+
+impl SafeRrtStar {
+    fn validate_params(&self) -> Result<(), PlanError> {
+        common::check_positive("step", self.step)?;
+        common::check_non_negative("goal_radius", self.goal_radius)?;
+        common::check_probability("goal_bias", self.goal_bias)?;
+        common::check_positive("gamma", self.gamma)?;
+        common::check_positive("max_radius", self.max_radius)?;
+        common::check_non_negative("safety_weight", self.safety_weight)?;
+        common::check_count("sample_tries", self.sample_tries)?;
+        common::check_positive("spline_max_spacing", self.spline_max_spacing)?;
+        common::check_positive("curve_spacing", self.curve_spacing)
+    }
+
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    ///
+    /// # Errors
+    ///
+    /// [`PlanError::InvalidParameter`] for a bad parameter or budget;
+    /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
+    /// workspace or in Forbidden; [`PlanError::BudgetExhausted`] when no node reached the
+    /// goal within the budget.
+    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+    ) -> Result<Plan, PlanError> {
+        self.plan_detailed(ws, query, rng).map(|s| s.plan)
+    }
+
+    /// [`plan`](Self::plan), also returning the raw RRT* path and the pruned path.
+    ///
+    /// # Errors
+    ///
+    /// As [`plan`](Self::plan).
+    pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        rng: &mut R,
+    ) -> Result<Staged, PlanError> {
+        let started = Instant::now();
+        self.validate_params()?;
+        common::validate(&self.budget, ws, query)?;
+        let goal = query.goal;
+        let target = goal.center();
+        let view = ZoneView::new(ws, self.step / 16.0);
+        let lambda = self.safety_weight;
+        // Edge cost: length plus lambda times the length inside Risk.
+        let edge_cost = |a: Point2, b: Point2| {
+            let len = (b - a).norm();
+            if lambda == 0.0 {
+                len
+            } else {
+                len + lambda * view.risk_length(a, b)
+            }
+        };
+        let mut checker = Checker::new(ws);
+        let mut tree = StarTree {
+            index: NearestIndex::with_capacity(1024),
+            parent: vec![None],
+            cost: vec![0.0],
+            children: vec![Vec::new()],
+        };
+        tree.index.insert(query.start);
+        // Goal links: (tree node, point appended after it, if any).
+        let mut links: Vec<(usize, Option<Point2>)> = Vec::new();
+        if (query.start - target).norm() <= self.goal_radius || goal.contains(query.start) {
+            links.extend(common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e)));
+        }
+        let mut iterations = 0_u64;
+        let mut near: Vec<(usize, f64)> = Vec::new();
+        let mut candidates: Vec<(f64, usize)> = Vec::new();
+
+        while (!self.stop_at_first_solution || links.is_empty())
+            && !self.budget.exhausted(iterations, started)
+        {
+            iterations += 1;
+            // Sample: the goal, or a point in the Free zone (no samples in Risk, 2.2).
+            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
+                Some(target)
+            } else {
+                (0..self.sample_tries).find_map(|_| {
+                    let p = common::sample_uniform(ws, rng);
+                    checker.checks += 1;
+                    (view.zone(p) == Zone::Free).then_some(p)
+                })
+            };
+            let Some(sample) = sample else { continue };
+            // Nearest and steer.
+            let Some((nearest, _)) = tree.index.nearest(sample) else {
+                break;
+            };
+            let nearest_point = tree.index.point(nearest);
+            let new_point = common::steer(nearest_point, sample, self.step);
+            if new_point == nearest_point {
+                continue;
+            }
+            // New nodes stay out of Risk (the goal itself excepted) and edges out of
+            // Forbidden.
+            checker.checks += 1;
+            if (new_point != target && view.zone(new_point) != Zone::Free)
+                || !checker.segment_free(nearest_point, new_point)
+            {
+                continue;
+            }
+            // Near: the ball of radius min(gamma sqrt(ln n / n), max_radius).
+            let n = tree.parent.len() as f64 + 1.0;
+            let radius = (self.gamma * (n.ln() / n).sqrt()).min(self.max_radius);
+            tree.index.within_into(new_point, radius, &mut near);
+            // Parent: the cheapest cost-to-come through an edge free of Forbidden.
+            let nearest_cost = tree.cost[nearest] + edge_cost(nearest_point, new_point);
+            candidates.clear();
+            candidates.extend(
+                near.iter()
+                    .filter(|&&(i, _)| i != nearest)
+                    .map(|&(i, _)| (tree.cost[i] + edge_cost(tree.index.point(i), new_point), i))
+                    .filter(|&(c, _)| c < nearest_cost),
+            );
+            candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            let mut chosen = (nearest, nearest_cost);
+            for &(c, i) in &candidates {
+                if checker.segment_free(tree.index.point(i), new_point) {
+                    chosen = (i, c);
+                    break;
+                }
+            }
+            let new = tree.add(new_point, chosen.0, chosen.1);
+            // Rewire: neighbours that become cheaper through the new node.
+            for &(i, _) in &near {
+                if i == chosen.0 || i == new {
+                    continue;
+                }
+                let p = tree.index.point(i);
+                let through = chosen.1 + edge_cost(new_point, p);
+                if through < tree.cost[i] && checker.segment_free(new_point, p) {
+                    tree.reparent(i, new, through);
+                }
+            }
+            // Goal test.
+            if (new_point - target).norm() <= self.goal_radius || goal.contains(new_point) {
+                links.extend(
+                    common::finish_at_goal(&mut checker, &goal, new_point).map(|e| (new, e)),
+                );
+            }
+        }
+
+        let points: Vec<Point2> = (0..tree.index.len()).map(|i| tree.index.point(i)).collect();
+        let mut stats = PlanStats {
+            iterations,
+            nodes: points.len() as u64,
+            collision_checks: checker.checks,
+            ..PlanStats::default()
+        };
+        let link_cost = |&(i, e): &(usize, Option<Point2>)| {
+            tree.cost[i] + e.map_or(0.0, |e| edge_cost(points[i], e))
+        };
+        let best = links
+            .iter()
+            .min_by(|a, b| link_cost(a).total_cmp(&link_cost(b)).then(a.0.cmp(&b.0)));
+        let Some(&(leaf, end)) = best else {
+            stats.elapsed = started.elapsed();
+            return Err(PlanError::BudgetExhausted { stats });
+        };
+        let mut raw = common::branch(&points, &tree.parent, leaf);
+        raw.extend(end);
+        common::dedup(&mut raw);
+        // Redundant-node removal (2.3): greedy from the start, segments avoiding Risk too.
+        let reduced = postproc::shortcut_greedy(&raw, |a, b| {
+            checker.checks += 1;
+            view.safe_segment(a, b)
+        });
+        // B-spline (2.3) over the densified control polygon, checked against Forbidden.
+        let (path, repairs, refused) = if self.smoothing && reduced.len() >= 3 {
+            let control = smooth::densify(&reduced, self.spline_max_spacing);
+            let c = smooth::bspline_checked(&control, self.curve_spacing, |a, b| {
+                checker.segment_free(a, b)
+            });
+            (c.points, c.repairs, c.refused)
+        } else {
+            (reduced.clone(), 0, false)
+        };
+        let cost = path.windows(2).map(|w| edge_cost(w[0], w[1])).sum();
+        stats.collision_checks = checker.checks;
+        stats.elapsed = started.elapsed();
+        Ok(Staged {
+            plan: Plan {
+                cost,
+                path,
+                trees: vec![Tree {
+                    points,
+                    parent: tree.parent,
+                }],
+                stats,
+            },
+            raw,
+            reduced,
+            smoothing_repairs: repairs,
+            smoothing_refused: refused,
+            ..Staged::default()
+        })
+    }
+}
+
+impl Planner for SafeRrtStar {
+    fn info(&self) -> PlannerInfo {
+        PlannerInfo {
+            name: "safe-rrt-star",
+            optimizing: !self.stop_at_first_solution,
+            proves_no_path: false,
+            grid_only: false,
+        }
+    }
+
+    fn plan(
+        &self,
+        ws: &dyn Workspace,
+        query: &Query,
+        rng: &mut dyn RngCore,
+    ) -> Result<Plan, PlanError> {
+        SafeRrtStar::plan(self, ws, query, rng)
+    }
+}

@@ -1,0 +1,7 @@
+//! Public-API tests of the hybrid planners, as one binary: the conformance suite shared by
+//! the four planners, the U-shaped trap of seed 000, and the papers' qualitative claims.
+
+mod claims;
+mod conformance;
+mod fixtures;
+mod utrap;
