@@ -71,7 +71,10 @@
 //!
 //! # Features
 //!
-//! None: the crate depends on `hyplan-core`, nalgebra and thiserror only.
+//! - `serde` (off by default): `Serialize` / `Deserialize` for [`Smoothing`] (as its name),
+//!   [`Repair`], [`Limits`], [`Timing`], [`ProfilePoint`] and [`PathMetrics`].
+//!
+//! Without features the crate depends on `hyplan-core`, nalgebra and thiserror only.
 
 mod bspline;
 mod curvature;

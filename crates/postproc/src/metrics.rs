@@ -25,6 +25,7 @@ pub const DEFAULT_TURN_THRESHOLD_DEG: f64 = 10.0;
 /// assert_eq!((m.nodes, m.segments, m.turns), (4, 3, 1));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PathMetrics {
     /// Euclidean length, world units.
     pub length: f64,

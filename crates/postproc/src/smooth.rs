@@ -36,17 +36,23 @@ use crate::{
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Smoothing {
     /// Keep the path as it is (it is only resampled).
     #[default]
+    #[cfg_attr(feature = "serde", serde(rename = "none"))]
     None,
     /// Greedy shortcut pruning, straight segments.
+    #[cfg_attr(feature = "serde", serde(rename = "prune"))]
     Prune,
     /// Pairwise pruning, then PCHIP through the remaining nodes.
+    #[cfg_attr(feature = "serde", serde(rename = "pchip"))]
     Pchip,
     /// Greedy pruning, then a clamped cubic B-spline with the nodes as control points.
+    #[cfg_attr(feature = "serde", serde(rename = "bspline"))]
     BSpline,
     /// Greedy pruning, then a clamped cubic B-spline through the nodes.
+    #[cfg_attr(feature = "serde", serde(rename = "bspline-interp"))]
     BSplineInterpolating,
 }
 
@@ -99,6 +105,7 @@ impl FromStr for Smoothing {
 
 /// One local repair [`smooth_checked`] made where the curve collided.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub enum Repair {
     /// A node was added at the midpoint of a segment of the (pruned) polyline, so that the

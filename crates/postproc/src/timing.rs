@@ -18,6 +18,7 @@ use crate::{PostprocError, discrete_curvature, turning_angles};
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Limits {
     /// Maximum linear speed, world units / s.
     pub v_max: f64,
@@ -64,6 +65,7 @@ impl Limits {
 
 /// One breakpoint of a velocity profile.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ProfilePoint {
     /// Time since the start, s.
     pub t: f64,
@@ -81,6 +83,7 @@ pub struct ProfilePoint {
 /// is linear in time (constant acceleration, cruise or constant deceleration). A jump
 /// (omega switching on for a turn in place) appears as two breakpoints with the same `t`.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Timing {
     /// Total time from rest at the start to rest at the goal, s.
     pub transfer_time: f64,
