@@ -28,6 +28,8 @@ enum Task {
     BenchPeers(bench_peers::Args),
     /// Draw the synthetic room pictures into scenarios/maps/.
     Rooms,
+    /// Generate the nine Table 4 workspaces of seed 000 into scenarios/.
+    Table4,
 }
 
 fn main() -> ExitCode {
@@ -35,6 +37,11 @@ fn main() -> ExitCode {
     let result = match cli.task {
         Task::Reproduce(args) => reproduce::run(&args),
         Task::BenchPeers(args) => bench_peers::run(&args),
+        Task::Table4 => rooms::write_table4(std::path::Path::new("scenarios")).map(|files| {
+            for f in files {
+                println!("wrote {}", f.display());
+            }
+        }),
         Task::Rooms => rooms::write_rooms(std::path::Path::new("scenarios/maps")).map(|files| {
             for f in files {
                 println!("wrote {}", f.display());

@@ -13,6 +13,7 @@
 //!   format; [`Scenario::load`] reads and validates a file, [`ScenarioError`] names the
 //!   file, line and field of a problem.
 //! - [`World`]: a scenario's map built and its query placed; [`Scenario::build_world`].
+//! - [`Furniture`], [`draw_room`]: room pictures drawn in code from their furniture.
 //! - [`build_planner`]: a planner by name with its parameters, as `Box<dyn Planner>`.
 //! - [`RunMetrics`], [`measure`]: what one run is scored on.
 //! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
@@ -29,6 +30,7 @@
 mod figure;
 mod metrics;
 mod planners;
+mod room;
 mod runner;
 mod scenario;
 mod stats;
@@ -37,6 +39,7 @@ mod stats;
 pub use figure::{chart_metrics, draw_world};
 pub use metrics::{RunMetrics, measure};
 pub use planners::{PLANNER_NAMES, build_planner};
+pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
     Claim, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape, Source, World,

@@ -100,6 +100,28 @@ pub enum MapSpec {
         #[serde(default = "one")]
         resolution: f64,
     },
+    /// A room picture drawn in code from its furniture ([`draw_room`](crate::draw_room)),
+    /// then run through the seed-000 pipeline like [`MapSpec::Picture`].
+    Room {
+        /// Picture width, px.
+        width: usize,
+        /// Picture height, px.
+        height: usize,
+        /// The furniture, px, y down.
+        furniture: Vec<crate::Furniture>,
+        /// Luminance threshold (darker is an obstacle).
+        #[serde(default = "default_threshold")]
+        threshold: u8,
+        /// Obstacles approximated by rectangles.
+        #[serde(default)]
+        rectangles: bool,
+        /// Safety band radius, pixels.
+        #[serde(default)]
+        safety_radius_px: f64,
+        /// Scenario units per pixel.
+        #[serde(default = "one")]
+        resolution: f64,
+    },
     /// A grid drawn from shapes in scenario units.
     Grid {
         /// Columns.
@@ -442,6 +464,34 @@ impl Scenario {
                     .map
                     .with_frame(*resolution, Point2::origin())
                     .map_err(|e| map_err(&e))?;
+                (map, true, rects)
+            }
+            MapSpec::Room {
+                width,
+                height,
+                furniture,
+                threshold,
+                rectangles,
+                safety_radius_px,
+                resolution,
+            } => {
+                let picture = crate::draw_room(*width, *height, furniture);
+                let pipeline = Pipeline {
+                    threshold: *threshold,
+                    invert: false,
+                    rectangles: *rectangles,
+                    safety_radius: *safety_radius_px,
+                };
+                let out = pipeline.run(&picture).map_err(|e| map_err(&e))?;
+                let map = out
+                    .map
+                    .with_frame(*resolution, Point2::origin())
+                    .map_err(|e| map_err(&e))?;
+                let rects = if *rectangles {
+                    out.rectangles
+                } else {
+                    Vec::new()
+                };
                 (map, true, rects)
             }
             MapSpec::Grid {
