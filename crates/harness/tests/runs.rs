@@ -1,0 +1,45 @@
+//! Monte-Carlo runs: parallel equals serial, seeds depend on the run index only.
+
+use std::path::Path;
+
+use harness::{Scenario, Summary, run_planner};
+
+fn scenario() -> (Scenario, harness::World) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/001-grid100.ron");
+    Scenario::load(&path).unwrap()
+}
+
+#[test]
+fn parallel_runs_equal_serial_runs() {
+    let (s, w) = scenario();
+    let spec = &s.planners[0];
+    let serial = run_planner(&s, &w, spec, 12, false, &|| {}).unwrap();
+    let parallel = run_planner(&s, &w, spec, 12, true, &|| {}).unwrap();
+    assert_eq!(serial.len(), 12);
+    for (a, b) in serial.iter().zip(&parallel) {
+        assert_eq!((a.run, a.seed, a.success), (b.run, b.seed, b.success));
+        assert_eq!(a.path, b.path, "run {}", a.run);
+        assert_eq!(a.length.to_bits(), b.length.to_bits());
+        assert_eq!(a.explored.to_bits(), b.explored.to_bits());
+    }
+}
+
+#[test]
+fn runs_are_scored_and_summarised() {
+    let (s, w) = scenario();
+    let runs = run_planner(&s, &w, &s.planners[0], 8, true, &|| {}).unwrap();
+    let summary = Summary::of(&runs);
+    assert_eq!(summary.runs, 8);
+    let length = summary.get("length").unwrap();
+    // The straight line is the lower bound of any path from (5, 5) to the goal disc.
+    let straight = (90f64 * 90.0 * 2.0).sqrt() - 3.0;
+    assert!(length.min >= straight, "{length:?}");
+    for r in runs.iter().filter(|r| r.success) {
+        assert!(
+            r.path
+                .windows(2)
+                .all(|p| hyplan_core::Workspace::segment_free(&w.map, p[0], p[1]))
+        );
+        assert_eq!(r.segments + 1.0, r.nodes);
+    }
+}
