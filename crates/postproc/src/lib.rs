@@ -7,8 +7,9 @@
 //!
 //! # Contents
 //!
-//! - Pruning of redundant nodes: [`prune_pairwise`] (seed 000, section 4.5) and
-//!   [`shortcut_greedy`] (seeds 001 and 003).
+//! - Pruning of redundant nodes: [`prune_pairwise`] (seed 000, section 4.5),
+//!   [`shortcut_greedy`] (seeds 001 and 003) and [`shortcut_farthest`] (the same shortcut,
+//!   looking past hidden nodes).
 //! - Curves: [`Pchip`] (monotone cubic Hermite, Fritsch-Carlson, over chord length; seed
 //!   000, section 4.6) and [`BSpline`] (clamped cubic, de Boor; with the nodes as control
 //!   points as in seed 003, section 2.3, or through the nodes), held together by [`Curve`]
@@ -91,7 +92,7 @@ pub use curvature::{curvature, discrete_curvature, turning_angles};
 pub use error::PostprocError;
 pub use metrics::{DEFAULT_TURN_THRESHOLD_DEG, PathMetrics, count_turns};
 pub use pchip::Pchip;
-pub use prune::{prune_pairwise, shortcut_greedy};
+pub use prune::{prune_pairwise, shortcut_farthest, shortcut_greedy};
 pub use resample::{Curve, MAX_SAMPLES};
 pub use smooth::{Repair, Smoothed, Smoothing, smooth_checked};
 pub use timing::{Limits, ProfilePoint, Timing, straight_time, time_curve, time_polyline};

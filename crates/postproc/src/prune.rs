@@ -129,6 +129,57 @@ pub fn shortcut_greedy(
     out
 }
 
+/// Drops redundant nodes by connecting each anchor to the farthest node it sees, searching
+/// back from the goal (the "farthest visible node" reading of the greedy shortcut).
+///
+/// Unlike [`shortcut_greedy`], which stops at the first node hidden from the anchor, this
+/// looks past hidden nodes, so it can skip a detour that comes back into view. It costs up
+/// to `n^2 / 2` oracle calls instead of about `n`.
+///
+/// # Arguments
+///
+/// - `path`: the nodes, start first. Paths of fewer than three nodes come back unchanged.
+/// - `segment_free`: the oracle, true when the closed segment is free.
+///
+/// # Returns
+///
+/// A subsequence of `path` that keeps the first and the last node bit for bit, never
+/// longer, whose new segments were all accepted by the oracle.
+///
+/// # Example
+///
+/// ```
+/// use hyplan_core::Point2;
+/// use postproc::{shortcut_farthest, shortcut_greedy};
+/// // Node 2 is hidden from the start, node 3 is visible again.
+/// let path: Vec<Point2> = (0..5).map(|i| Point2::new(f64::from(i), 0.0)).collect();
+/// let free = |a: Point2, b: Point2| !(a.x == 0.0 && b.x == 2.0);
+/// assert_eq!(shortcut_greedy(&path, free), vec![path[0], path[1], path[4]]);
+/// assert_eq!(shortcut_farthest(&path, free), vec![path[0], path[4]]);
+/// ```
+#[must_use]
+pub fn shortcut_farthest(
+    path: &[Point2],
+    mut segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Vec<Point2> {
+    let n = path.len();
+    if n < 3 {
+        return path.to_vec();
+    }
+    let mut out = vec![path[0]];
+    let mut anchor = 0;
+    while anchor + 1 < n {
+        // The neighbour is the fallback: its segment belongs to the input.
+        let reach = (anchor + 2..n)
+            .rev()
+            .find(|&j| segment_free(path[anchor], path[j]))
+            .unwrap_or(anchor + 1);
+        out.push(path[reach]);
+        anchor = reach;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

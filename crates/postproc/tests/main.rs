@@ -16,7 +16,10 @@ fn serde_uses_the_names() {
     for m in postproc::Smoothing::ALL {
         let json = serde_json::to_string(&m).unwrap();
         assert_eq!(json, format!("\"{}\"", m.name()));
-        assert_eq!(serde_json::from_str::<postproc::Smoothing>(&json).unwrap(), m);
+        assert_eq!(
+            serde_json::from_str::<postproc::Smoothing>(&json).unwrap(),
+            m
+        );
     }
     let l = postproc::Limits::new(0.15, 1.0, 0.2).unwrap();
     let back: postproc::Limits = serde_json::from_str(&serde_json::to_string(&l).unwrap()).unwrap();

@@ -1,7 +1,7 @@
 //! Pruning keeps the ends, never lengthens and keeps every segment free.
 
 use hyplan_core::{Point2, path_length};
-use postproc::{prune_pairwise, shortcut_greedy};
+use postproc::{prune_pairwise, shortcut_farthest, shortcut_greedy};
 use proptest::prelude::*;
 
 use crate::grid::grid_and_path;
@@ -18,6 +18,7 @@ proptest! {
         for (name, pruned) in [
             ("pairwise", prune_pairwise(&path, free)),
             ("greedy", shortcut_greedy(&path, free)),
+            ("farthest", shortcut_farthest(&path, free)),
         ] {
             prop_assert_eq!(pruned[0], path[0], "{} start", name);
             prop_assert_eq!(pruned.last(), path.last(), "{} goal", name);
@@ -32,6 +33,7 @@ proptest! {
         let path: Vec<Point2> = pts.iter().map(|&(x, y)| Point2::new(x, y)).collect();
         prop_assert_eq!(shortcut_greedy(&path, |_, _| true), vec![path[0], path[path.len() - 1]]);
         prop_assert_eq!(prune_pairwise(&path, |_, _| true), vec![path[0], path[path.len() - 1]]);
+        prop_assert_eq!(shortcut_farthest(&path, |_, _| true), vec![path[0], path[path.len() - 1]]);
     }
 }
 
