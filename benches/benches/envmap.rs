@@ -87,6 +87,12 @@ fn segment_free(c: &mut Criterion) {
     let map = GridMap::filled(4096, 4096, Zone::Free).unwrap();
     let (a, b) = (Point2::new(40.5, 100.25), Point2::new(4040.5, 1300.75));
     assert!(map.segment_free(a, b));
+    let mut crossed = 0u64;
+    map.segment_cells(a, b, |_, _| {
+        crossed += 1;
+        true
+    });
+    g.throughput(Throughput::Elements(crossed));
     g.bench_function(BenchmarkId::new("4096x4096", "len4000"), |bench| {
         bench.iter(|| map.segment_free(black_box(a), black_box(b)))
     });

@@ -1,8 +1,11 @@
 //! The three-zone occupancy grid.
 
 use std::fmt;
+use std::sync::OnceLock;
 
 use hyplan_core::{Bounds, Point2, Zone};
+
+use crate::{DistanceField, Mask, distance_transform};
 
 /// A grid map whose cells are [`Zone::Free`], [`Zone::Risk`] or [`Zone::Forbidden`].
 ///
@@ -38,7 +41,7 @@ use hyplan_core::{Bounds, Point2, Zone};
 /// assert_eq!(map.world_to_cell(Point2::new(2.5, 0.5)), Some((2, 0)));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Clone, PartialEq)]
+#[derive(Clone)]
 pub struct GridMap {
     width: usize,
     height: usize,
@@ -47,6 +50,21 @@ pub struct GridMap {
     zones: Vec<Zone>,
     /// Cells whose zone is at least this one block motion (default [`Zone::Forbidden`]).
     pub blocked_from: Zone,
+    /// Distance fields of the blocked cells for `blocked_from` = Risk and = Forbidden,
+    /// computed on the first `clearance` query; reset when zones change.
+    clearance_fields: [OnceLock<DistanceField>; 2],
+}
+
+impl PartialEq for GridMap {
+    /// Same size, frame, zones and `blocked_from` (cached distance fields are ignored).
+    fn eq(&self, other: &Self) -> bool {
+        self.width == other.width
+            && self.height == other.height
+            && self.resolution == other.resolution
+            && self.origin == other.origin
+            && self.blocked_from == other.blocked_from
+            && self.zones == other.zones
+    }
 }
 
 /// Why a grid map could not be built from in-memory data.
@@ -103,6 +121,7 @@ impl GridMap {
             origin: Point2::origin(),
             zones: vec![zone; n],
             blocked_from: Zone::Forbidden,
+            clearance_fields: Default::default(),
         })
     }
 
@@ -126,6 +145,7 @@ impl GridMap {
             });
         }
         map.zones = zones;
+        map.clearance_fields = Default::default();
         map.with_frame(resolution, origin)
     }
 
@@ -219,6 +239,7 @@ impl GridMap {
 
     /// Mutable access to the zones (row-major from the bottom row).
     pub fn zones_mut(&mut self) -> &mut [Zone] {
+        self.clearance_fields = Default::default();
         &mut self.zones
     }
 
@@ -241,6 +262,7 @@ impl GridMap {
     /// Sets the zone of cell `(i, j)`; ignored outside the map.
     pub fn set_cell_zone(&mut self, i: usize, j: usize, zone: Zone) {
         if i < self.width && j < self.height {
+            self.clearance_fields = Default::default();
             self.zones[j * self.width + i] = zone;
         }
     }
@@ -300,6 +322,71 @@ impl GridMap {
     pub fn avoiding_risk(mut self) -> Self {
         self.blocked_from = Zone::Risk;
         self
+    }
+
+    /// The exact distance transform of the cells that block motion under the current
+    /// [`blocked_from`](GridMap::blocked_from), computed once and cached (`None` when every
+    /// cell blocks, i.e. `blocked_from == Zone::Free`).
+    #[must_use]
+    pub fn blocked_distance(&self) -> Option<&DistanceField> {
+        let k = match self.blocked_from {
+            Zone::Free => return None,
+            Zone::Risk => 0,
+            Zone::Forbidden => 1,
+        };
+        Some(self.clearance_fields[k].get_or_init(|| {
+            distance_transform(&Mask::from_zones_at_least(self, self.blocked_from))
+        }))
+    }
+
+    /// A lower bound on the distance, world units, from `p` to the nearest cell that
+    /// blocks motion or to the map border; 0 where `p` is not free (or outside, or NaN).
+    ///
+    /// From the exact distance transform between cell centres (computed on the first call
+    /// and cached): with `d` the distance from the centre `c` of `p`'s cell to the nearest
+    /// blocked centre, the bound is `d - |p - c| - resolution * sqrt(2) / 2`, so it is never
+    /// above the true distance and at most about 2.1 cells below it. The distance to the
+    /// map border is exact.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::{Point2, Workspace};
+    /// let map = GridMap::from_ascii("
+    ///     .......
+    ///     .......
+    ///     ...#...
+    ///     .......
+    ///     .......
+    /// ")?;
+    /// assert_eq!(map.clearance(Point2::new(3.5, 2.5)), Some(0.0));
+    /// let c = map.clearance(Point2::new(0.5, 2.5)).unwrap(); // true distance 2.5
+    /// assert!(c <= 0.5 && c > 0.0); // the map border is 0.5 away
+    /// let c = map.clearance(Point2::new(3.5, 4.5)).unwrap(); // block 1.5, border 0.5
+    /// assert!(c <= 0.5);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn clearance_at(&self, p: Point2) -> f64 {
+        if !hyplan_core::Workspace::is_free(self, p) {
+            return 0.0;
+        }
+        let b = self.bounds();
+        let border = (p.x - b.min.x)
+            .min(b.max.x - p.x)
+            .min(p.y - b.min.y)
+            .min(b.max.y - p.y)
+            .max(0.0);
+        let (Some((i, j)), Some(field)) = (self.world_to_cell(p), self.blocked_distance()) else {
+            return 0.0;
+        };
+        let d = field.cell_dist(i, j);
+        if d.is_infinite() {
+            return border;
+        }
+        let c = self.cell_center(i, j);
+        let r = self.resolution;
+        let bound = d * r - (p - c).norm() - r * std::f64::consts::FRAC_1_SQRT_2;
+        bound.max(0.0).min(border)
     }
 
     /// Number of cells in each zone: `[free, risk, forbidden]`.

@@ -145,6 +145,10 @@ impl Workspace for GridMap {
         self.zone_at(p)
     }
 
+    fn clearance(&self, p: Point2) -> Option<f64> {
+        Some(self.clearance_at(p))
+    }
+
     fn as_any(&self) -> Option<&dyn std::any::Any> {
         Some(self)
     }

@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use envmap::{LoadOptions, MapError, load_map, parse_movingai, parse_ros_yaml, read_picture};
+use envmap::{LoadOptions, MapError, load_map, parse_movingai, parse_ros_yaml};
 
 fn tmp_file(name: &str, bytes: &[u8]) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("envmap_errors");
@@ -27,6 +27,7 @@ fn field_of(e: &MapError) -> &'static str {
 }
 
 #[test]
+#[cfg(feature = "image")]
 fn missing_file_names_the_file() {
     let e = load_map(Path::new("/no/such/file.png"), &LoadOptions::default()).unwrap_err();
     assert!(matches!(e, MapError::Read { .. }), "{e:?}");
@@ -38,17 +39,19 @@ fn missing_file_names_the_file() {
 }
 
 #[test]
+#[cfg(feature = "image")]
 fn not_an_image() {
     let p = tmp_file("text.png", b"this is not a picture");
-    let e = read_picture(&p).unwrap_err();
+    let e = envmap::read_picture(&p).unwrap_err();
     assert!(matches!(e, MapError::Decode { .. }), "{e:?}");
     assert!(e.to_string().contains("text.png"));
 }
 
 #[test]
+#[cfg(feature = "image")]
 fn zero_size_image() {
     let p = tmp_file("empty.pgm", b"P5\n0 0\n255\n");
-    let e = read_picture(&p).unwrap_err();
+    let e = envmap::read_picture(&p).unwrap_err();
     assert!(
         matches!(e, MapError::EmptyImage { .. } | MapError::Decode { .. }),
         "{e:?}"
@@ -99,6 +102,7 @@ fn yaml_missing_and_out_of_range_fields() {
 }
 
 #[test]
+#[cfg(feature = "image")]
 fn yaml_with_a_missing_image_names_the_image() {
     let p = tmp_file(
         "noimage.yaml",

@@ -1,7 +1,9 @@
 //! Public-API tests of envmap, one binary.
 
+#[cfg(feature = "image")]
 mod data;
 mod errors;
 mod pipeline;
 mod properties;
+#[cfg(feature = "image")]
 mod ros_round_trip;

@@ -193,3 +193,52 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    /// `clearance` is a lower bound on the exact distance to the nearest blocked closed
+    /// cell or the border, at most 2.2 cells below it.
+    #[test]
+    fn clearance_is_a_tight_lower_bound(
+        (mask, p) in mask_strategy(10).prop_flat_map(|m| {
+            let (w, h) = (m.width() as f64, m.height() as f64);
+            (Just(m), (0.0..=w, 0.0..=h))
+        })
+    ) {
+        let map = zone_map(&mask, &[false]);
+        let p = Point2::new(p.0, p.1);
+        let c = map.clearance(p).unwrap();
+        let (w, h) = (map.width() as f64, map.height() as f64);
+        let mut exact = p.x.min(w - p.x).min(p.y).min(h - p.y);
+        for j in 0..map.height() {
+            for i in 0..map.width() {
+                if !map.cell_free(i, j) {
+                    let dx = (i as f64 - p.x).max(p.x - (i as f64 + 1.0)).max(0.0);
+                    let dy = (j as f64 - p.y).max(p.y - (j as f64 + 1.0)).max(0.0);
+                    exact = exact.min(dx.hypot(dy));
+                }
+            }
+        }
+        if !map.is_free(p) {
+            prop_assert_eq!(c, 0.0);
+        } else {
+            prop_assert!(c <= exact + 1e-12, "clearance {} > exact {}", c, exact);
+            prop_assert!(c >= exact - 2.2, "clearance {} << exact {}", c, exact);
+        }
+    }
+}
+
+#[test]
+fn clearance_cache_follows_zone_edits() {
+    let mut map = GridMap::filled(9, 9, Zone::Free).unwrap();
+    let p = Point2::new(4.5, 4.5);
+    assert_eq!(map.clearance(p), Some(4.5)); // border only
+    map.set_cell_zone(5, 4, Zone::Forbidden);
+    let c = map.clearance(p).unwrap();
+    assert!((0.0..=0.5).contains(&c), "{c}");
+    map.set_cell_zone(5, 4, Zone::Risk);
+    assert_eq!(map.clearance(p), Some(4.5));
+    let risky = map.clone().avoiding_risk();
+    assert!(risky.clearance(p).unwrap() <= 0.5);
+}
