@@ -10,7 +10,8 @@
 //! Maps and frames:
 //! - [`GridMap`]: the grid, its frame (origin at the lower-left corner, y up) and zones;
 //!   [`GridMap::segment_cells`], [`GridMap::segment_free_cells`]: every cell a segment
-//!   touches, corners included.
+//!   touches, corners included; [`GridMap::clearance_at`] (also `Workspace::clearance`):
+//!   a lower bound on the distance to the nearest blocked cell, from a cached exact EDT.
 //! - [`Mask`]: a binary grid in map cells; [`Picture`]: an 8-bit raster, top row first.
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
 //!   pictures and `.map` files, metres y up for ROS maps).
