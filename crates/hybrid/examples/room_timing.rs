@@ -2,7 +2,7 @@
 //! over 30 seeds per method, in a release build.
 //!
 //! ```text
-//! cargo run --release -p hybrid --example room_timing [-- SEEDS]
+//! cargo run --release -p hybrid --example room_timing [-- SEEDS [NAME]]
 //! ```
 //!
 //! The picture goes through `envmap::load_map` with `rectangles: true` and a 20-cell
@@ -26,6 +26,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .map(|s| s.parse())
         .transpose()?
         .unwrap_or(30);
+    // Only the planners whose name contains this, if given.
+    let only = std::env::args().nth(2).unwrap_or_default();
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/maps/room_960x640.png");
     let loaded = load_map(
         &root,
@@ -91,12 +93,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             false,
         ),
     ];
-    println!("| planner | median ms | min ms | max ms | solved | mean length px | mean nodes |");
-    println!("|---|---|---|---|---|---|---|");
+    println!("| planner | median ms | min ms | max ms | solved | mean length px | mean nodes | mean expansions |");
+    println!("|---|---|---|---|---|---|---|---|");
     for (name, planner, on_safe) in &planners {
+        if !name.contains(only.as_str()) {
+            continue;
+        }
         let ws: &dyn Workspace = if *on_safe { &safe } else { &map };
         let mut times: Vec<Duration> = Vec::new();
-        let (mut solved, mut length, mut nodes) = (0, 0.0, 0.0);
+        let (mut solved, mut length, mut nodes, mut expansions) = (0, 0.0, 0.0, 0.0);
         for seed in 0..seeds {
             let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
             let t = std::time::Instant::now();
@@ -109,6 +114,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 solved += 1;
                 length += plan.length();
                 nodes += plan.stats.nodes as f64;
+                expansions += plan.stats.expansions as f64;
             }
         }
         times.sort();
@@ -119,11 +125,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             0.5 * (ms(times[times.len() / 2 - 1]) + ms(times[times.len() / 2]))
         };
         println!(
-            "| {name} | {median:.2} | {:.2} | {:.2} | {solved}/{seeds} | {:.1} | {:.0} |",
+            "| {name} | {median:.2} | {:.2} | {:.2} | {solved}/{seeds} | {:.1} | {:.0} | {:.0} |",
             ms(times[0]),
             ms(times[times.len() - 1]),
             length / f64::from(solved.max(1)),
             nodes / f64::from(solved.max(1)),
+            expansions / f64::from(solved.max(1)),
         );
     }
     Ok(())

@@ -4,6 +4,7 @@
 use envmap::GridMap;
 use hyplan_core::{Budget, Goal, PlanError, Point2, Query, Workspace, Zone};
 use rand::Rng;
+use search::{Connectivity, GridOptions};
 
 /// Checks that `value` is finite and > 0.
 pub(crate) fn check_positive(name: &'static str, value: f64) -> Result<(), PlanError> {
@@ -312,6 +313,94 @@ pub(crate) fn blocked_within(map: &GridMap, p: Point2, radius: f64) -> Option<f6
     best
 }
 
+/// Moves of an 8-connected grid: offset and cost; the first four are the straight ones.
+const MOVES: [(isize, isize, f64); 8] = [
+    (1, 0, 1.0),
+    (-1, 0, 1.0),
+    (0, 1, 1.0),
+    (0, -1, 1.0),
+    (1, 1, std::f64::consts::SQRT_2),
+    (-1, 1, std::f64::consts::SQRT_2),
+    (1, -1, std::f64::consts::SQRT_2),
+    (-1, -1, std::f64::consts::SQRT_2),
+];
+
+/// The heuristic of [`grid_astar`], in cells.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Heuristic {
+    /// Straight-line distance (seeds 001 and 002 name it).
+    Euclidean,
+    /// The exact cost on an empty 8-connected grid (Manhattan on a 4-connected one): the
+    /// tightest admissible choice, same optimal cost, fewer expansions.
+    Octile,
+}
+
+/// Grid A* from cell `from` to cell `to` on the map's passable cells (its
+/// `blocked_from`), with octile costs and heuristic `h`, that gives up after
+/// `max_visited` expanded nodes: the cells from `from` to `to`, or `None`; and the number
+/// of nodes expanded.
+///
+/// Runs the generic [`search::astar`], whose memory grows with the nodes it touches, not
+/// with the map (a flat-array `GridSearch` would clear 17 bytes per cell of the whole map
+/// for every plan). The success test runs on every node taken from the open list before
+/// it is expanded: it stops at the goal, or once `max_visited` nodes have been expanded.
+pub(crate) fn grid_astar(
+    map: &GridMap,
+    from: (usize, usize),
+    to: (usize, usize),
+    options: GridOptions,
+    h: Heuristic,
+    max_visited: usize,
+) -> (Option<Vec<(usize, usize)>>, u64) {
+    let four = options.connectivity == Connectivity::Four;
+    let passable = |i: isize, j: isize| i >= 0 && j >= 0 && map.cell_free(i as usize, j as usize);
+    let moves = match options.connectivity {
+        Connectivity::Four => &MOVES[..4],
+        Connectivity::Eight => &MOVES[..],
+    };
+    let cut = options.corner_cutting;
+    let mut popped = 0_usize;
+    let found = search::astar(
+        &from,
+        |&(i, j)| {
+            let (i, j) = (i as isize, j as isize);
+            moves
+                .iter()
+                .filter(move |&&(di, dj, _)| {
+                    if !passable(i + di, j + dj) {
+                        return false;
+                    }
+                    if di == 0 || dj == 0 {
+                        return true;
+                    }
+                    let (a, b) = (passable(i + di, j), passable(i, j + dj));
+                    if cut { a || b } else { a && b }
+                })
+                .map(move |&(di, dj, c)| (((i + di) as usize, (j + dj) as usize), c))
+                .collect::<Vec<_>>()
+        },
+        |&(i, j)| {
+            let (dx, dy) = (i.abs_diff(to.0) as f64, j.abs_diff(to.1) as f64);
+            match h {
+                Heuristic::Euclidean => dx.hypot(dy),
+                Heuristic::Octile if four => dx + dy,
+                Heuristic::Octile => dx.max(dy) + (std::f64::consts::SQRT_2 - 1.0) * dx.min(dy),
+            }
+        },
+        |&n| {
+            popped += 1;
+            n == to || popped > max_visited
+        },
+    );
+    match found {
+        Ok(r) => {
+            let ok = r.path.last() == Some(&to);
+            (ok.then_some(r.path), r.stats.expansions)
+        }
+        Err(e) => (None, e.stats().expansions),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -341,5 +430,32 @@ mod tests {
         let d = blocked_within(&map, Point2::new(2.5, 1.5), 5.0).unwrap();
         assert!((d - 1.5).abs() < 1e-12);
         assert!(blocked_within(&map, Point2::new(0.5, 1.5), 2.0).is_none());
+    }
+
+    #[test]
+    fn grid_astar_gives_up_at_its_limit() {
+        let map = GridMap::filled(60, 60, Zone::Free).unwrap();
+        let opts = GridOptions::default();
+        let (cells, visited) = grid_astar(&map, (0, 0), (50, 0), opts, Heuristic::Euclidean, 10);
+        assert!(cells.is_none());
+        assert_eq!(visited, 10);
+        let (cells, visited) = grid_astar(&map, (0, 0), (50, 0), opts, Heuristic::Euclidean, 150);
+        assert_eq!(cells.unwrap().len(), 51);
+        assert_eq!(visited, 50);
+    }
+
+    #[test]
+    fn grid_astar_does_not_cut_corners() {
+        let map = GridMap::from_ascii("..\n#.").unwrap();
+        // From (0, 1) to (1, 0): the diagonal would cut the corner of (0, 0).
+        let (cells, _) = grid_astar(
+            &map,
+            (0, 1),
+            (1, 0),
+            GridOptions::default(),
+            Heuristic::Octile,
+            usize::MAX,
+        );
+        assert_eq!(cells.unwrap(), vec![(0, 1), (1, 1), (1, 0)]);
     }
 }

@@ -20,9 +20,10 @@ use hyplan_core::{
 };
 use rand::{Rng, RngCore};
 use sampling::NearestIndex;
+use search::GridOptions;
 
 use crate::Staged;
-use crate::common::{self, Checker};
+use crate::common::{self, Checker, Heuristic};
 
 /// Which earlier sub-search starts the A* threshold is measured against.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -110,59 +111,6 @@ impl Default for HybridRrtAstar {
             astar_max_visited: 150,
             budget: Budget::iterations(30_000),
         }
-    }
-}
-
-/// 8-connected moves: offset and cost.
-const MOVES: [(isize, isize, f64); 8] = [
-    (1, 0, 1.0),
-    (-1, 0, 1.0),
-    (0, 1, 1.0),
-    (0, -1, 1.0),
-    (1, 1, std::f64::consts::SQRT_2),
-    (-1, 1, std::f64::consts::SQRT_2),
-    (1, -1, std::f64::consts::SQRT_2),
-    (-1, -1, std::f64::consts::SQRT_2),
-];
-
-/// One bounded A* sub-search (Algorithm 2 with the flowchart's visited-node limit): the
-/// cells from `from` to `to`, or `None` when it gives up; and the nodes it expanded.
-fn sub_search(
-    map: &GridMap,
-    from: (usize, usize),
-    to: (usize, usize),
-    max_visited: usize,
-) -> (Option<Vec<(usize, usize)>>, u64) {
-    let passable = |i: isize, j: isize| i >= 0 && j >= 0 && map.cell_free(i as usize, j as usize);
-    let mut popped = 0_usize;
-    let found = search::astar(
-        &from,
-        |&(i, j)| {
-            let (i, j) = (i as isize, j as isize);
-            MOVES
-                .iter()
-                .filter(move |&&(di, dj, _)| {
-                    passable(i + di, j + dj)
-                        && (di == 0 || dj == 0 || (passable(i + di, j) && passable(i, j + dj)))
-                })
-                .map(move |&(di, dj, c)| (((i + di) as usize, (j + dj) as usize), c))
-                .collect::<Vec<_>>()
-        },
-        |&(i, j)| (i as f64 - to.0 as f64).hypot(j as f64 - to.1 as f64),
-        // The success test runs on every node taken from the open list, before it is
-        // expanded: stop at the goal, or once `max_visited` nodes have been expanded.
-        |&n| {
-            popped += 1;
-            n == to || popped > max_visited
-        },
-    );
-    match found {
-        Ok(r) => {
-            let visited = r.stats.expansions;
-            let ok = r.path.last() == Some(&to);
-            (ok.then_some(r.path), visited)
-        }
-        Err(e) => (None, e.stats().expansions),
     }
 }
 
@@ -274,7 +222,14 @@ impl HybridRrtAstar {
                 continue;
             };
             runs += 1;
-            let (cells, visited) = sub_search(map, from, goal_cell, self.astar_max_visited);
+            let (cells, visited) = common::grid_astar(
+                map,
+                from,
+                goal_cell,
+                GridOptions::default(),
+                Heuristic::Euclidean,
+                self.astar_max_visited,
+            );
             visited_total += visited;
             match cells.and_then(|c| self.join(map, &mut checker, new_point, &c, target)) {
                 Some(tail) => done = Some((new, tail)),
@@ -364,22 +319,5 @@ impl Planner for HybridRrtAstar {
         rng: &mut dyn RngCore,
     ) -> Result<Plan, PlanError> {
         HybridRrtAstar::plan(self, ws, query, rng)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use hyplan_core::Zone;
-
-    #[test]
-    fn sub_search_gives_up_at_its_limit() {
-        let map = GridMap::filled(60, 60, Zone::Free).unwrap();
-        let (cells, visited) = sub_search(&map, (0, 0), (50, 0), 10);
-        assert!(cells.is_none());
-        assert_eq!(visited, 10);
-        let (cells, visited) = sub_search(&map, (0, 0), (50, 0), 150);
-        assert_eq!(cells.unwrap().len(), 51);
-        assert_eq!(visited, 50);
     }
 }

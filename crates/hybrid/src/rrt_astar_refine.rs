@@ -8,7 +8,7 @@
 //! these nodes using the A-Star algorithm", and finally connects nodes directly where the
 //! line is free. The reading (`docs/papers/001-rrt-astar-refine.md`, section 3.1): every
 //! maximal run of path nodes whose clearance is below `near_radius` is re-planned by
-//! 8-connected grid A* (octile costs, no corner cutting, whole map) between the last node
+//! 8-connected grid A* (octile costs and heuristic, no corner cutting, whole map) between the last node
 //! before the run and the first node after it; the result is shortcut greedily from the
 //! start. The paper gives no parameter values: every default is ours.
 
@@ -20,10 +20,10 @@ use hyplan_core::{
 };
 use rand::{Rng, RngCore};
 use sampling::Rrt;
-use search::{GridOptions, GridSearch};
+use search::GridOptions;
 
 use crate::Staged;
-use crate::common::{self, Checker};
+use crate::common::{self, Checker, Heuristic};
 
 /// RRT + A* near-obstacle refinement (seed 001).
 ///
@@ -40,7 +40,7 @@ use crate::common::{self, Checker};
 /// `path` is the shortcut polyline: it starts at the query's start and ends at the goal
 /// (the RRT joins an exact goal point from within one step, or stops inside a goal disc).
 /// `trees` holds the RRT tree; `stats.nodes` its size, `stats.iterations` the RRT's,
-/// `stats.expansions` and `stats.pushes` the sums over the A* searches, and
+/// `stats.expansions` the sum over the A* searches, and
 /// `stats.collision_checks` all checks made. [`plan_detailed`](RrtAstarRefine::plan_detailed)
 /// also returns the raw RRT path and the refined path before the shortcut.
 ///
@@ -160,7 +160,6 @@ impl RrtAstarRefine {
             })
             .collect();
         // 3. Each run of near nodes re-planned by grid A* between its anchors.
-        let mut search: Option<GridSearch> = None;
         let (mut runs, mut failures) = (0_u32, 0_u32);
         let mut refined = vec![raw[0]];
         let mut i = 0;
@@ -175,8 +174,7 @@ impl RrtAstarRefine {
                 j += 1;
             }
             runs += 1;
-            let stretch =
-                self.astar_stretch(map, &mut search, &mut checker, &mut stats, raw[i], raw[j]);
+            let stretch = self.astar_stretch(map, &mut checker, &mut stats, raw[i], raw[j]);
             match stretch {
                 Some(s) => refined.extend(s),
                 None => {
@@ -215,36 +213,31 @@ impl RrtAstarRefine {
     fn astar_stretch<W: Workspace + ?Sized>(
         &self,
         map: &GridMap,
-        search: &mut Option<GridSearch>,
         checker: &mut Checker<'_, W>,
         stats: &mut PlanStats,
         a: Point2,
         b: Point2,
     ) -> Option<Vec<Point2>> {
         let (ca, cb) = (map.world_to_cell(a)?, map.world_to_cell(b)?);
-        if search.is_none() {
-            *search = GridSearch::new(map, self.grid).ok();
-        }
-        let found = match search.as_mut()?.astar(ca, cb) {
-            Ok(found) => found,
-            Err(e) => {
-                if let search::GridSearchError::NoPath { stats: s } = e {
-                    stats.expansions += s.expansions;
-                    stats.pushes += s.pushes;
-                }
-                return None;
-            }
-        };
-        stats.expansions += found.stats.expansions;
-        stats.pushes += found.stats.pushes;
+        let (cells, visited) =
+            common::grid_astar(map, ca, cb, self.grid, Heuristic::Octile, usize::MAX);
+        stats.expansions += visited;
+        let cells = cells?;
         let centre = |c: (usize, usize)| map.cell_center(c.0, c.1);
-        let cells = &found.cells;
+        let cells = &cells;
         let mut out: Vec<Point2> = vec![a];
-        out.extend(
-            cells[1..cells.len().saturating_sub(1)]
-                .iter()
-                .map(|&c| centre(c)),
-        );
+        // Interior cells, keeping only those where the move direction changes (the same
+        // polyline with its collinear points dropped).
+        let n = cells.len();
+        let step = |p: (usize, usize), q: (usize, usize)| {
+            (q.0 as isize - p.0 as isize, q.1 as isize - p.1 as isize)
+        };
+        for k in 1..n.saturating_sub(1) {
+            let turns = step(cells[k - 1], cells[k]) != step(cells[k], cells[k + 1]);
+            if k == 1 || k == n - 2 || turns {
+                out.push(centre(cells[k]));
+            }
+        }
         out.push(b);
         // Joints to the continuous anchors: fall back on the anchors' own cell centres.
         if !checker.segment_free(out[0], out[1]) {
