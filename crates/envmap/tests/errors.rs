@@ -186,3 +186,20 @@ fn negative_safety_radius_is_rejected() {
         "{e:?}"
     );
 }
+
+#[test]
+fn yaml_accepts_integers_booleans_and_modes() {
+    let yaml = "image: /abs/map.png\nresolution: 1\norigin: [0, -3, 0]\nnegate: true\n\
+                occupied_thresh: 1\nfree_thresh: 0\nmode: raw\n";
+    let meta = parse_ros_yaml(yaml.as_bytes(), Path::new("dir/int.yaml")).unwrap();
+    assert_eq!(meta.resolution, 1.0);
+    assert_eq!(meta.origin, hyplan_core::Point2::new(0.0, -3.0));
+    assert!(meta.negate);
+    assert_eq!(meta.mode, envmap::RosMode::Raw);
+    assert_eq!(meta.image, Path::new("/abs/map.png"));
+    // Raw mode: the value is a percentage.
+    assert_eq!(meta.classify(0.0), envmap::RosCell::Free);
+    assert_eq!(meta.classify(100.0), envmap::RosCell::Occupied);
+    assert_eq!(meta.classify(50.0), envmap::RosCell::Graded);
+    assert_eq!(meta.classify(255.0), envmap::RosCell::Unknown);
+}
