@@ -588,7 +588,9 @@ impl GridSearch {
             self.g[qu] = ng;
             self.parent[qu] = p;
             let f = ng + h(x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
-            if f <= f_here {
+            // `f_here` plus a rounding allowance: moves that keep f constant in exact
+            // arithmetic (straight or diagonal toward the goal) can come out one ulp above.
+            if f <= f_here * (1.0 + 4.0 * f64::EPSILON) {
                 self.stack.push(q);
             } else {
                 self.heap.push(Reverse(key(f, ng, q)));
