@@ -93,7 +93,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             false,
         ),
     ];
-    println!("| planner | median ms | min ms | max ms | solved | mean length px | mean nodes | mean expansions |");
+    println!(
+        "| planner | median ms | min ms | max ms | solved | mean length px | mean nodes | mean expansions |"
+    );
     println!("|---|---|---|---|---|---|---|---|");
     for (name, planner, on_safe) in &planners {
         if !name.contains(only.as_str()) {

@@ -46,12 +46,15 @@ fn seed000_rrt_astar_bt_shorter_with_fewer_nodes_than_rrt() {
         budget: Budget::iterations(10_000),
     };
     let (mut bt_len, mut bt_path_nodes, mut bt_tree) = (vec![], vec![], vec![]);
+    let (mut repairs, mut refused) = (0, 0);
     let (mut rrt_len, mut rrt_path_nodes, mut rrt_tree) = (vec![], vec![], vec![]);
     for seed in 0..RUNS {
         let s = bt.plan_detailed(&safe, &query, &mut rng(seed)).unwrap();
         bt_len.push(s.plan.length());
         bt_path_nodes.push((s.reduced.len() - 2) as f64);
         bt_tree.push(s.plan.stats.nodes as f64);
+        repairs += s.smoothing_repairs;
+        refused += usize::from(s.smoothing_refused);
         let p = rrt.plan(&safe, &query, &mut rng(seed)).unwrap();
         rrt_len.push(p.length());
         rrt_path_nodes.push((p.path.len() - 2) as f64);
@@ -59,7 +62,8 @@ fn seed000_rrt_astar_bt_shorter_with_fewer_nodes_than_rrt() {
     }
     eprintln!(
         "seed 000 room, {RUNS} runs: RRT-A*-BT length {:.1} px, path nodes {:.1}, tree {:.1}; \
-         RRT length {:.1} px, path nodes {:.1}, tree {:.1}; straight {:.1}",
+         {repairs} PCHIP repairs, {refused} refused; RRT length {:.1} px, path nodes {:.1}, \
+         tree {:.1}; straight {:.1}",
         mean(&bt_len),
         mean(&bt_path_nodes),
         mean(&bt_tree),
@@ -322,9 +326,10 @@ fn seed003_safe_rrt_star_keeps_more_clearance_than_rrt_star() {
     };
     let (mut s_clear, mut s_len, mut p_clear, mut p_len, mut p_pruned) =
         (vec![], vec![], vec![], vec![], vec![]);
-    let mut forbidden_hits = 0;
+    let (mut forbidden_hits, mut repairs, mut refused) = (0, 0, 0);
     for seed in 0..RUNS {
-        if let Ok(s) = safe.plan(&map, &query, &mut rng(seed)) {
+        if let Ok(staged) = safe.plan_detailed(&map, &query, &mut rng(seed)) {
+            let s = &staged.plan;
             s_clear.push(min_clearance(&s.path, &rects));
             s_len.push(s.length());
             forbidden_hits += s
@@ -332,6 +337,8 @@ fn seed003_safe_rrt_star_keeps_more_clearance_than_rrt_star() {
                 .iter()
                 .filter(|&&p| map.zone_at(p) == Zone::Forbidden)
                 .count();
+            repairs += staged.smoothing_repairs;
+            refused += usize::from(staged.smoothing_refused);
         }
         if let Ok(p) = plain.plan(&map, &query, &mut rng(seed)) {
             p_clear.push(min_clearance(&p.path, &rects));
@@ -344,7 +351,8 @@ fn seed003_safe_rrt_star_keeps_more_clearance_than_rrt_star() {
     }
     eprintln!(
         "seed 003 scenario 1, {RUNS} runs: safe-rrt-star min clearance {:.3}, length {:.2} \
-         (solved {}); RRT* min clearance {:.3}, raw length {:.2}, pruned length {:.2} (solved {})",
+         (solved {}, {repairs} spline repairs, {refused} refused); RRT* min clearance {:.3}, \
+         raw length {:.2}, pruned length {:.2} (solved {})",
         mean(&s_clear),
         mean(&s_len),
         s_len.len(),
