@@ -26,7 +26,7 @@ pub struct Staged {
     pub astar_runs: u32,
     /// Of those, how many gave up (hit their expansion limit or found no path).
     pub astar_failures: u32,
-    /// Back-tracking steps taken (`rrt-astar-bt`): heads found blocked and left for an
-    /// ancestor.
+    /// Back-tracking steps taken (`rrt-astar-bt`): nodes added under an earlier node than
+    /// the one added just before (the search resumed from an older option).
     pub backtracks: u32,
 }

@@ -215,12 +215,7 @@ impl RrtAstarBt {
                 });
                 let Some(sample) = sample else { continue };
                 let c = common::steer(hp, sample, self.step);
-                // Already on the closed list: it can only stay there as the tree grows.
-                if c == hp
-                    || index
-                        .nearest(c)
-                        .is_some_and(|(_, d)| d < self.closed_radius)
-                {
+                if c == hp {
                     continue;
                 }
                 let g_c = g[head] + (c - hp).norm();
