@@ -106,6 +106,7 @@ where
             continue;
         }
         if success(&slots[i].node) {
+            stats.reached = slots.len() as u64;
             return Ok(build(&slots, i, |s| (&s.node, s.parent), g, stats));
         }
         slots[i].closed = true;
@@ -144,6 +145,7 @@ where
             stats.pushes += 1;
         }
     }
+    stats.reached = slots.len() as u64;
     Err(NotFound::Exhausted { stats })
 }
 

@@ -105,7 +105,10 @@ where
         g: f64,
         untried: Vec<(N, f64)>,
     }
-    let mut stats = SearchStats::default();
+    let mut stats = SearchStats {
+        reached: 1,
+        ..SearchStats::default()
+    };
     if success(start) {
         return Ok(SearchResult {
             path: vec![start.clone()],
@@ -155,6 +158,7 @@ where
         }
         let g = top_g + cost;
         if success(&child) {
+            stats.reached = entered.len() as u64 + 1;
             let mut nodes: Vec<N> = path.iter().map(|f| f.node.clone()).collect();
             nodes.push(child);
             return Ok(SearchResult {
@@ -164,6 +168,7 @@ where
             });
         }
         if stats.expansions >= limits.max_expansions {
+            stats.reached = entered.len() as u64;
             return Err(NotFound::BudgetExhausted { stats });
         }
         entered.insert(child.clone());
@@ -174,6 +179,7 @@ where
             untried,
         });
     }
+    stats.reached = entered.len() as u64;
     if depth_cut {
         Err(NotFound::BudgetExhausted { stats })
     } else {

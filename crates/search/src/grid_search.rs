@@ -539,6 +539,7 @@ impl GridSearch {
         self.stamp[s] = self.generation;
         self.heap.push(Reverse(key(h0, 0.0, s as u32)));
         stats.pushes += 1;
+        stats.reached = 1;
     }
 
     /// Pops the open cell with the smallest f (ties: larger g), skipping stale entries of
@@ -589,6 +590,7 @@ impl GridSearch {
             if st == open | CLOSED || (st == open && self.g[qu] <= ng) {
                 continue;
             }
+            stats.reached += u64::from(st != open);
             self.stamp[qu] = open;
             self.g[qu] = ng;
             self.parent[qu] = p;
@@ -726,6 +728,7 @@ impl GridSearch {
             if st == open && self.g[qu] <= ng {
                 continue;
             }
+            stats.reached += u64::from(st != open);
             self.stamp[qu] = open;
             self.g[qu] = ng;
             self.parent[qu] = parent;

@@ -27,7 +27,8 @@ enum Algo {
 /// search runs to the cell of the disc's centre and the path is cut at the first cell
 /// centre inside the disc (so it is valid but, for a large disc, not necessarily the
 /// shortest path into it). `cost` is the Euclidean length of the returned polyline, world
-/// units.
+/// units. `stats.expansions`, `stats.pushes` and `stats.nodes` (distinct cells reached)
+/// come from the search.
 ///
 /// ```
 /// use envmap::GridMap;
@@ -170,6 +171,7 @@ fn plan_on_grid<W: Workspace + ?Sized>(
         Err(GridSearchError::NoPath { stats: s }) => {
             stats.expansions = s.expansions;
             stats.pushes = s.pushes;
+            stats.nodes = s.reached;
             stats.elapsed = started.elapsed();
             return Err(PlanError::NoPath { stats });
         }
@@ -190,7 +192,7 @@ fn plan_on_grid<W: Workspace + ?Sized>(
     };
     stats.expansions = found.stats.expansions;
     stats.pushes = found.stats.pushes;
-    stats.nodes = found.cells.len() as u64;
+    stats.nodes = found.stats.reached;
 
     // Start point, the centres of the cells, then the goal.
     let mut path = Vec::with_capacity(found.cells.len() + 2);

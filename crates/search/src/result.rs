@@ -6,8 +6,11 @@ pub struct SearchStats {
     /// Nodes expanded: taken from the open list (not stale) and their successors generated.
     /// The goal node itself is not counted, as in the `pathfinding` crate's A*.
     pub expansions: u64,
-    /// Entries pushed on the open list (the start included).
+    /// Entries pushed on the open list (the start included); a node whose cost improved
+    /// counts again.
     pub pushes: u64,
+    /// Distinct nodes reached (pushed at least once), the start included.
+    pub reached: u64,
 }
 
 /// A path found by a search: the nodes from start to goal (both included) and its cost.

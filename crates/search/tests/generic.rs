@@ -71,7 +71,8 @@ fn exhausted_counts_every_reachable_node() {
         |&n| if n < 2 { vec![(n + 1, 1.0)] } else { vec![] },
         |_| false,
     );
-    assert_eq!(r.unwrap_err().stats().expansions, 3);
+    let stats = r.unwrap_err().stats();
+    assert_eq!((stats.expansions, stats.reached, stats.pushes), (3, 3, 3));
 }
 
 #[test]

@@ -109,7 +109,10 @@ fn unreachable_goal_exhausts_the_reachable_cells() {
     let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
     for r in [s.astar((0, 0), (4, 2)), s.dijkstra((0, 0), (4, 2))] {
         match r {
-            Err(GridSearchError::NoPath { stats }) => assert_eq!(stats.expansions, 6),
+            Err(GridSearchError::NoPath { stats }) => {
+                assert_eq!(stats.expansions, 6);
+                assert_eq!(stats.reached, 6);
+            }
             other => panic!("{other:?}"),
         }
     }
