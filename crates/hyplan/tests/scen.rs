@@ -19,9 +19,11 @@ fn shared(rel: &str) -> String {
 }
 
 fn tmp_file(name: &str, text: &str) -> String {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_scen");
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
+    // Each test writes under its own names: tests run in parallel.
+    let p = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("hyplan_scen")
+        .join(name);
+    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
     std::fs::write(&p, text).unwrap();
     p.display().to_string()
 }
@@ -133,9 +135,9 @@ fn bad_input_names_file_and_line_and_exits_2() {
 
 #[test]
 fn dir_prefix_in_map_column_is_ignored_and_missing_files_are_errors() {
-    let map = tmp_file("tiny.map", TINY_MAP);
+    let map = tmp_file("dir/tiny.map", TINY_MAP);
     let scen = tmp_file(
-        "dir.scen",
+        "dir/dir.scen",
         "version 1\n0\tmaps/dao/tiny.map\t4\t4\t0\t0\t1\t1\t2\n",
     );
     let o = hyplan(&["scen", "--map", &map, "--scen", &scen]);
