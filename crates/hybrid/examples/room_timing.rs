@@ -5,6 +5,10 @@
 //! cargo run --release -p hybrid --example room_timing [-- SEEDS [NAME]]
 //! ```
 //!
+//! Two times per plan: wall clock, and the thread's CPU time from
+//! `/proc/thread-self/schedstat` (Linux; the machine is often shared, and CPU time is what
+//! a quiet machine would show as wall time).
+//!
 //! The picture goes through `envmap::load_map` with `rectangles: true` and a 20-cell
 //! safety radius (world units = pixels). Start and goal are the paper's (74, 1953) and
 //! (5501, 1308) mm at 6.34 mm/px, in the picture frame (x = column, y = row from the top).
@@ -19,6 +23,26 @@ use envmap::{LoadOptions, load_map};
 use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
 use hyplan_core::{Budget, Goal, Planner, Query, Workspace, Zone};
 use rand::SeedableRng;
+
+/// CPU time of this thread so far, if the kernel reports it.
+fn cpu_time() -> Option<Duration> {
+    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    let ns: u64 = text.split_whitespace().next()?.parse().ok()?;
+    Some(Duration::from_nanos(ns))
+}
+
+/// The median of sorted durations, in milliseconds.
+fn median_ms(sorted: &[Duration]) -> f64 {
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let n = sorted.len();
+    if n == 0 {
+        f64::NAN
+    } else if n % 2 == 1 {
+        ms(sorted[n / 2])
+    } else {
+        0.5 * (ms(sorted[n / 2 - 1]) + ms(sorted[n / 2]))
+    }
+}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let seeds: u64 = std::env::args()
@@ -103,12 +127,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         let ws: &dyn Workspace = if *on_safe { &safe } else { &map };
         let mut times: Vec<Duration> = Vec::new();
+        let mut cpu: Vec<Duration> = Vec::new();
         let (mut solved, mut length, mut nodes, mut expansions) = (0, 0.0, 0.0, 0.0);
         for seed in 0..seeds {
             let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+            let c0 = cpu_time();
             let t = std::time::Instant::now();
             let result = planner.plan(ws, &query, &mut rng);
             times.push(t.elapsed());
+            if let (Some(c0), Some(c1)) = (c0, cpu_time()) {
+                cpu.push(c1.saturating_sub(c0));
+            }
             if let Ok(plan) = result {
                 // Checked once, outside the timing.
                 assert!(plan.path.windows(2).all(|w| ws.segment_free(w[0], w[1])));
@@ -120,14 +149,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             }
         }
         times.sort();
+        cpu.sort();
         let ms = |d: Duration| d.as_secs_f64() * 1e3;
-        let median = if times.len() % 2 == 1 {
-            ms(times[times.len() / 2])
-        } else {
-            0.5 * (ms(times[times.len() / 2 - 1]) + ms(times[times.len() / 2]))
-        };
+        let median = median_ms(&times);
+        let median_cpu = median_ms(&cpu);
         println!(
-            "| {name} | {median:.2} | {:.2} | {:.2} | {solved}/{seeds} | {:.1} | {:.0} | {:.0} |",
+            "| {name} | {median:.2} | {:.2} | {:.2} | {median_cpu:.2} | {solved}/{seeds} | {:.1} | {:.0} | {:.0} |",
             ms(times[0]),
             ms(times[times.len() - 1]),
             length / f64::from(solved.max(1)),
