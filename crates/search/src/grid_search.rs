@@ -105,6 +105,18 @@ pub enum GridSearchError {
         /// Counters of the search.
         stats: SearchStats,
     },
+    /// [`GridSearch::update`] was given a map of another size than the search was built for.
+    #[error("map is {got_width} x {got_height} cells, the search was built for {width} x {height}")]
+    SizeMismatch {
+        /// Columns the search was built for.
+        width: usize,
+        /// Rows the search was built for.
+        height: usize,
+        /// Columns of the map given.
+        got_width: usize,
+        /// Rows of the map given.
+        got_height: usize,
+    },
     /// The map is too large for 32-bit cell indices.
     #[error(
         "map of {width} x {height} cells is too large for the grid search (max 2^32 - 1 cells with the border)"
@@ -313,13 +325,15 @@ impl GridSearch {
     ///
     /// # Errors
     ///
-    /// [`GridSearchError::MapTooLarge`] if `map` has another size than the one this
-    /// search was built for (the error names the new size).
+    /// [`GridSearchError::SizeMismatch`] if `map` has another size than the one this
+    /// search was built for.
     pub fn update(&mut self, map: &GridMap) -> Result<(), GridSearchError> {
         if map.width() != self.width || map.height() != self.height {
-            return Err(GridSearchError::MapTooLarge {
-                width: map.width(),
-                height: map.height(),
+            return Err(GridSearchError::SizeMismatch {
+                width: self.width,
+                height: self.height,
+                got_width: map.width(),
+                got_height: map.height(),
             });
         }
         let blocked = map.blocked_from;

@@ -221,3 +221,27 @@ fn theta_star_goes_straight_where_it_can() {
 fn memory_per_cell_is_as_documented() {
     assert_eq!(GridSearch::BYTES_PER_CELL, 18);
 }
+
+#[test]
+fn update_rereads_the_map_and_refuses_another_size() {
+    let mut map = GridMap::filled(5, 3, Zone::Free).unwrap();
+    let mut s = GridSearch::new(&map, GridOptions::default()).unwrap();
+    assert_eq!(s.astar((0, 1), (4, 1)).unwrap().cost, 4.0);
+    for j in 0..3 {
+        map.set_cell_zone(2, j, Zone::Forbidden);
+    }
+    s.update(&map).unwrap();
+    assert!(matches!(
+        s.astar((0, 1), (4, 1)),
+        Err(GridSearchError::NoPath { .. })
+    ));
+    let other = GridMap::filled(4, 3, Zone::Free).unwrap();
+    assert!(matches!(
+        s.update(&other),
+        Err(GridSearchError::SizeMismatch {
+            width: 5,
+            got_width: 4,
+            ..
+        })
+    ));
+}
