@@ -325,34 +325,23 @@ const MOVES: [(isize, isize, f64); 8] = [
     (-1, -1, std::f64::consts::SQRT_2),
 ];
 
-/// The heuristic of [`grid_astar`], in cells.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-pub(crate) enum Heuristic {
-    /// Straight-line distance (seeds 001 and 002 name it).
-    Euclidean,
-    /// The exact cost on an empty 8-connected grid (Manhattan on a 4-connected one): the
-    /// tightest admissible choice, same optimal cost, fewer expansions.
-    Octile,
-}
-
 /// Grid A* from cell `from` to cell `to` on the map's passable cells (its
-/// `blocked_from`), with octile costs and heuristic `h`, that gives up after
+/// `blocked_from`), with octile costs and the Euclidean heuristic (seed 002), that gives
+/// up after
 /// `max_visited` expanded nodes: the cells from `from` to `to`, or `None`; and the number
 /// of nodes expanded.
 ///
 /// Runs the generic [`search::astar`], whose memory grows with the nodes it touches, not
-/// with the map (a flat-array `GridSearch` would clear 17 bytes per cell of the whole map
-/// for every plan). The success test runs on every node taken from the open list before
+/// with the map: a bounded sub-search touches a few hundred cells, where a flat-array
+/// `GridSearch` would first clear 17 bytes per cell of the whole map. The success test runs on every node taken from the open list before
 /// it is expanded: it stops at the goal, or once `max_visited` nodes have been expanded.
 pub(crate) fn grid_astar(
     map: &GridMap,
     from: (usize, usize),
     to: (usize, usize),
     options: GridOptions,
-    h: Heuristic,
     max_visited: usize,
 ) -> (Option<Vec<(usize, usize)>>, u64) {
-    let four = options.connectivity == Connectivity::Four;
     let passable = |i: isize, j: isize| i >= 0 && j >= 0 && map.cell_free(i as usize, j as usize);
     let moves = match options.connectivity {
         Connectivity::Four => &MOVES[..4],
@@ -379,14 +368,7 @@ pub(crate) fn grid_astar(
                 .map(move |&(di, dj, c)| (((i + di) as usize, (j + dj) as usize), c))
                 .collect::<Vec<_>>()
         },
-        |&(i, j)| {
-            let (dx, dy) = (i.abs_diff(to.0) as f64, j.abs_diff(to.1) as f64);
-            match h {
-                Heuristic::Euclidean => dx.hypot(dy),
-                Heuristic::Octile if four => dx + dy,
-                Heuristic::Octile => dx.max(dy) + (std::f64::consts::SQRT_2 - 1.0) * dx.min(dy),
-            }
-        },
+        |&(i, j)| (i.abs_diff(to.0) as f64).hypot(j.abs_diff(to.1) as f64),
         |&n| {
             popped += 1;
             n == to || popped > max_visited
@@ -436,10 +418,10 @@ mod tests {
     fn grid_astar_gives_up_at_its_limit() {
         let map = GridMap::filled(60, 60, Zone::Free).unwrap();
         let opts = GridOptions::default();
-        let (cells, visited) = grid_astar(&map, (0, 0), (50, 0), opts, Heuristic::Euclidean, 10);
+        let (cells, visited) = grid_astar(&map, (0, 0), (50, 0), opts, 10);
         assert!(cells.is_none());
         assert_eq!(visited, 10);
-        let (cells, visited) = grid_astar(&map, (0, 0), (50, 0), opts, Heuristic::Euclidean, 150);
+        let (cells, visited) = grid_astar(&map, (0, 0), (50, 0), opts, 150);
         assert_eq!(cells.unwrap().len(), 51);
         assert_eq!(visited, 50);
     }
@@ -448,14 +430,7 @@ mod tests {
     fn grid_astar_does_not_cut_corners() {
         let map = GridMap::from_ascii("..\n#.").unwrap();
         // From (0, 1) to (1, 0): the diagonal would cut the corner of (0, 0).
-        let (cells, _) = grid_astar(
-            &map,
-            (0, 1),
-            (1, 0),
-            GridOptions::default(),
-            Heuristic::Octile,
-            usize::MAX,
-        );
+        let (cells, _) = grid_astar(&map, (0, 1), (1, 0), GridOptions::default(), usize::MAX);
         assert_eq!(cells.unwrap(), vec![(0, 1), (1, 1), (1, 0)]);
     }
 }

@@ -23,7 +23,7 @@ use sampling::NearestIndex;
 use search::GridOptions;
 
 use crate::Staged;
-use crate::common::{self, Checker, Heuristic};
+use crate::common::{self, Checker};
 
 /// Which earlier sub-search starts the A* threshold is measured against.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -227,7 +227,6 @@ impl HybridRrtAstar {
                 from,
                 goal_cell,
                 GridOptions::default(),
-                Heuristic::Euclidean,
                 self.astar_max_visited,
             );
             visited_total += visited;

@@ -8,7 +8,8 @@
 //! these nodes using the A-Star algorithm", and finally connects nodes directly where the
 //! line is free. The reading (`docs/papers/001-rrt-astar-refine.md`, section 3.1): every
 //! maximal run of path nodes whose clearance is below `near_radius` is re-planned by
-//! 8-connected grid A* (octile costs and heuristic, no corner cutting, whole map) between the last node
+//! 8-connected grid A* (`search::GridSearch`: octile costs and heuristic, no corner
+//! cutting, whole map) between the last node
 //! before the run and the first node after it; the result is shortcut greedily from the
 //! start. The paper gives no parameter values: every default is ours.
 
@@ -20,10 +21,10 @@ use hyplan_core::{
 };
 use rand::{Rng, RngCore};
 use sampling::Rrt;
-use search::GridOptions;
+use search::{GridOptions, GridSearch};
 
 use crate::Staged;
-use crate::common::{self, Checker, Heuristic};
+use crate::common::{self, Checker};
 
 /// RRT + A* near-obstacle refinement (seed 001).
 ///
@@ -161,6 +162,7 @@ impl RrtAstarRefine {
             .collect();
         // 3. Each run of near nodes re-planned by grid A* between its anchors.
         let (mut runs, mut failures) = (0_u32, 0_u32);
+        let mut search: Option<GridSearch> = None;
         let mut refined = vec![raw[0]];
         let mut i = 0;
         while i < m {
@@ -174,7 +176,8 @@ impl RrtAstarRefine {
                 j += 1;
             }
             runs += 1;
-            let stretch = self.astar_stretch(map, &mut checker, &mut stats, raw[i], raw[j]);
+            let stretch =
+                self.astar_stretch(map, &mut search, &mut checker, &mut stats, raw[i], raw[j]);
             match stretch {
                 Some(s) => refined.extend(s),
                 None => {
@@ -213,16 +216,28 @@ impl RrtAstarRefine {
     fn astar_stretch<W: Workspace + ?Sized>(
         &self,
         map: &GridMap,
+        search: &mut Option<GridSearch>,
         checker: &mut Checker<'_, W>,
         stats: &mut PlanStats,
         a: Point2,
         b: Point2,
     ) -> Option<Vec<Point2>> {
         let (ca, cb) = (map.world_to_cell(a)?, map.world_to_cell(b)?);
-        let (cells, visited) =
-            common::grid_astar(map, ca, cb, self.grid, Heuristic::Octile, usize::MAX);
-        stats.expansions += visited;
-        let cells = cells?;
+        if search.is_none() {
+            *search = GridSearch::new(map, self.grid).ok();
+        }
+        let cells = match search.as_mut()?.astar(ca, cb) {
+            Ok(found) => {
+                stats.expansions += found.stats.expansions;
+                found.cells
+            }
+            Err(e) => {
+                if let search::GridSearchError::NoPath { stats: s } = e {
+                    stats.expansions += s.expansions;
+                }
+                return None;
+            }
+        };
         let centre = |c: (usize, usize)| map.cell_center(c.0, c.1);
         let cells = &cells;
         let mut out: Vec<Point2> = vec![a];
