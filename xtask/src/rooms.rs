@@ -249,18 +249,34 @@ fn table4_scenario(
         runs: 100,
         quick_runs: 5,
         base_seed: seed,
-        planners: vec![PlannerSpec {
-            name: "rrt".into(),
-            label: Some("RRT".into()),
-            params: [
-                ("step".to_string(), 253.6),
-                ("goal_bias".to_string(), 0.05),
-                ("max_iterations".to_string(), 10000.0),
-            ]
-            .into_iter()
-            .collect(),
-            smoothing: None,
-        }],
+        planners: vec![
+            PlannerSpec {
+                name: "rrt-astar-bt".into(),
+                label: Some("RRT-A*-BT".into()),
+                params: [
+                    ("step".to_string(), 253.6),
+                    ("goal_radius".to_string(), 126.8),
+                    ("closed_radius".to_string(), 63.4),
+                    ("curve_spacing".to_string(), 6.34),
+                    ("max_iterations".to_string(), 10000.0),
+                ]
+                .into_iter()
+                .collect(),
+                smoothing: None,
+            },
+            PlannerSpec {
+                name: "rrt".into(),
+                label: Some("RRT".into()),
+                params: [
+                    ("step".to_string(), 253.6),
+                    ("goal_bias".to_string(), 0.05),
+                    ("max_iterations".to_string(), 10000.0),
+                ]
+                .into_iter()
+                .collect(),
+                smoothing: None,
+            },
+        ],
         published: vec![
             published("RRT-A*-BT", ours_paper),
             published("GA-PCHIP", ga_paper),

@@ -198,7 +198,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
 
     /// `clearance` is a lower bound on the exact distance to the nearest blocked closed
-    /// cell or the border, at most 2.2 cells below it.
+    /// cell (the border is not an obstacle), at most 2.2 cells below it.
     #[test]
     fn clearance_is_a_tight_lower_bound(
         (mask, p) in mask_strategy(10).prop_flat_map(|m| {
@@ -209,8 +209,7 @@ proptest! {
         let map = zone_map(&mask, &[false]);
         let p = Point2::new(p.0, p.1);
         let c = map.clearance(p).unwrap();
-        let (w, h) = (map.width() as f64, map.height() as f64);
-        let mut exact = p.x.min(w - p.x).min(p.y).min(h - p.y);
+        let mut exact = f64::INFINITY;
         for j in 0..map.height() {
             for i in 0..map.width() {
                 if !map.cell_free(i, j) {
@@ -222,6 +221,8 @@ proptest! {
         }
         if !map.is_free(p) {
             prop_assert_eq!(c, 0.0);
+        } else if exact.is_infinite() {
+            prop_assert!(c.is_infinite());
         } else {
             prop_assert!(c <= exact + 1e-12, "clearance {} > exact {}", c, exact);
             prop_assert!(c >= exact - 2.2, "clearance {} << exact {}", c, exact);
@@ -233,12 +234,12 @@ proptest! {
 fn clearance_cache_follows_zone_edits() {
     let mut map = GridMap::filled(9, 9, Zone::Free).unwrap();
     let p = Point2::new(4.5, 4.5);
-    assert_eq!(map.clearance(p), Some(4.5)); // border only
+    assert_eq!(map.clearance(p), Some(f64::INFINITY)); // no obstacle: the border does not count
     map.set_cell_zone(5, 4, Zone::Forbidden);
     let c = map.clearance(p).unwrap();
     assert!((0.0..=0.5).contains(&c), "{c}");
     map.set_cell_zone(5, 4, Zone::Risk);
-    assert_eq!(map.clearance(p), Some(4.5));
+    assert_eq!(map.clearance(p), Some(f64::INFINITY));
     let risky = map.clone().avoiding_risk();
     assert!(risky.clearance(p).unwrap() <= 0.5);
 }

@@ -80,10 +80,14 @@ impl RunMetrics {
 /// Scores one planning outcome: the plan (or the failure), post-processed by `smoothing`
 /// against `ws`, timed under `limits`.
 ///
-/// `elapsed_s` is the planning time; smoothing time is added to it.
+/// The planning time comes from the plan's stats; smoothing time is added to it.
+/// `explored_by_expansions` says whether the planner's explored nodes are its expansions
+/// (graph searches) rather than its `stats.nodes` (trees, and the hybrids' own counts).
 #[must_use]
+#[allow(clippy::too_many_arguments)]
 pub fn measure(
     ws: &dyn Workspace,
+    explored_by_expansions: bool,
     outcome: &Result<Plan, PlanError>,
     smoothing: Smoothing,
     limits: Option<&Limits>,
@@ -112,12 +116,12 @@ pub fn measure(
         Err(e) => {
             if let Some(stats) = e.stats() {
                 m.time_s = stats.elapsed.as_secs_f64();
-                m.explored = explored(stats);
+                m.explored = explored(stats, explored_by_expansions);
             }
             return m;
         }
     };
-    m.explored = explored(&plan.stats);
+    m.explored = explored(&plan.stats, explored_by_expansions);
     let started = std::time::Instant::now();
     let smoothed =
         postproc::smooth_checked(&plan.path, smoothing, spacing, |a, b| ws.segment_free(a, b));
@@ -142,8 +146,8 @@ pub fn measure(
     m
 }
 
-fn explored(stats: &hyplan_core::PlanStats) -> f64 {
-    if stats.expansions > 0 {
+fn explored(stats: &hyplan_core::PlanStats, by_expansions: bool) -> f64 {
+    if by_expansions {
         stats.expansions as f64
     } else {
         stats.nodes as f64

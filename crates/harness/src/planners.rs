@@ -7,6 +7,7 @@
 use std::collections::BTreeMap;
 use std::time::Duration;
 
+use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
 use hyplan_core::{Budget, Planner};
 use sampling::{BiRrt, RewireRadius, Rrt, RrtConnect, RrtStar};
 use search::{GridAstar, GridDijkstra, ThetaStar};
@@ -34,6 +35,24 @@ impl Params<'_> {
     fn get(&mut self, name: &'static str) -> Option<f64> {
         self.used.push(name);
         self.given.get(name).copied()
+    }
+
+    /// A whole number >= `min`, or the default.
+    fn count(&mut self, name: &'static str, default: usize, min: usize) -> Result<usize, String> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) if v.is_finite() && v.fract() == 0.0 && v >= min as f64 => Ok(v as usize),
+            Some(v) => Err(format!("{name} = {v}: must be a whole number >= {min}")),
+        }
+    }
+
+    /// A switch given as 0 or 1, or the default.
+    fn flag(&mut self, name: &'static str, default: bool) -> Result<bool, String> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) if v == 0.0 || v == 1.0 => Ok(v == 1.0),
+            Some(v) => Err(format!("{name} = {v}: must be 0 or 1")),
+        }
     }
 
     fn budget(&mut self, default: Budget) -> Result<Budget, String> {
@@ -68,7 +87,10 @@ impl Params<'_> {
 ///
 /// Parameters (scenario units): `step`, `goal_bias`, `max_iterations`, `time_limit_s`
 /// for the sampling planners; `gamma` or `k_nearest` and `full_budget` (1 = use the whole
-/// budget) for `rrt-star`; none for the grid searches. Values are checked by the planner
+/// budget) for `rrt-star`; none for the grid searches; for the hybrids, their struct
+/// fields by name (`candidates`, `closed_radius`, `near_radius`, `goal_threshold`,
+/// `astar_spacing`, `astar_max_visited`, `safety_weight`, ...; switches as 0 or 1), see
+/// the `hybrid` crate. Values are checked by the planner
 /// when it runs; here only names and integer fields are checked.
 ///
 /// # Errors
@@ -123,6 +145,60 @@ pub fn build_planner(spec: &PlannerSpec) -> Result<Box<dyn Planner>, String> {
             let d = RrtConnect::default();
             Box::new(RrtConnect {
                 step: p.get("step").unwrap_or(d.step),
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "rrt-astar-bt" => {
+            let d = RrtAstarBt::default();
+            Box::new(RrtAstarBt {
+                step: p.get("step").unwrap_or(d.step),
+                goal_radius: p.get("goal_radius").unwrap_or(d.goal_radius),
+                candidates: p.count("candidates", d.candidates, 1)?,
+                closed_radius: p.get("closed_radius").unwrap_or(d.closed_radius),
+                reduction_passes: p.count("reduction_passes", d.reduction_passes, 0)?,
+                backtracking: p.flag("backtracking", d.backtracking)?,
+                smoothing: p.flag("smoothing", d.smoothing)?,
+                curve_spacing: p.get("curve_spacing").unwrap_or(d.curve_spacing),
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "rrt-astar-refine" => {
+            let d = RrtAstarRefine::default();
+            Box::new(RrtAstarRefine {
+                step: p.get("step").unwrap_or(d.step),
+                goal_bias: p.get("goal_bias").unwrap_or(d.goal_bias),
+                near_radius: p.get("near_radius").unwrap_or(d.near_radius),
+                shortcut: p.flag("shortcut", d.shortcut)?,
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "hybrid-rrt-astar" => {
+            let d = HybridRrtAstar::default();
+            Box::new(HybridRrtAstar {
+                step: p.get("step").unwrap_or(d.step),
+                goal_bias: p.get("goal_bias").unwrap_or(d.goal_bias),
+                goal_threshold: p.get("goal_threshold").unwrap_or(d.goal_threshold),
+                astar_spacing: p.get("astar_spacing").unwrap_or(d.astar_spacing),
+                astar_max_visited: p.count("astar_max_visited", d.astar_max_visited, 1)?,
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "safe-rrt-star" => {
+            let d = SafeRrtStar::default();
+            Box::new(SafeRrtStar {
+                step: p.get("step").unwrap_or(d.step),
+                goal_radius: p.get("goal_radius").unwrap_or(d.goal_radius),
+                goal_bias: p.get("goal_bias").unwrap_or(d.goal_bias),
+                gamma: p.get("gamma").unwrap_or(d.gamma),
+                max_radius: p.get("max_radius").unwrap_or(d.max_radius),
+                safety_weight: p.get("safety_weight").unwrap_or(d.safety_weight),
+                spline_max_spacing: p.get("spline_max_spacing").unwrap_or(d.spline_max_spacing),
+                curve_spacing: p.get("curve_spacing").unwrap_or(d.curve_spacing),
+                smoothing: p.flag("smoothing", d.smoothing)?,
                 budget: p.budget(d.budget)?,
                 ..d
             })

@@ -58,6 +58,8 @@ pub fn run_planner(
         Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max).map_err(|e| e.to_string())?),
         None => None,
     };
+    // Graph searches report expansions, the others their own node counts.
+    let by_expansions = matches!(planner.info().name, "astar" | "dijkstra" | "theta-star");
     // Curves are checked at most a quarter cell apart.
     let spacing = world.map.resolution() * 0.25;
     let one = |k: u32| {
@@ -66,6 +68,7 @@ pub fn run_planner(
         let outcome = planner.plan(&world.map, &world.query, &mut rng);
         let m = measure(
             &world.map,
+            by_expansions,
             &outcome,
             smoothing,
             limits.as_ref(),
