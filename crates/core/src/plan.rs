@@ -70,11 +70,22 @@ pub struct Plan {
     pub cost: f64,
     /// The search tree(s), for plots and hybrids; empty for graph searches.
     pub trees: Vec<Tree>,
+    /// When `path` is a dense sampling of a smooth curve, the nodes the curve is built on
+    /// (after node reduction): what papers count as the path's nodes, segments and turns.
+    /// Empty when `path` is itself the planner's polyline.
+    pub waypoints: Vec<Point2>,
     /// Counters of the call.
     pub stats: PlanStats,
 }
 
 impl Plan {
+    /// The polyline of the plan's nodes: [`waypoints`](Plan::waypoints) when the planner
+    /// returned a dense curve, else [`path`](Plan::path).
+    #[must_use]
+    pub fn nodes(&self) -> &[Point2] {
+        if self.waypoints.is_empty() { &self.path } else { &self.waypoints }
+    }
+
     /// Euclidean length of the path, world units.
     #[must_use]
     pub fn length(&self) -> f64 {

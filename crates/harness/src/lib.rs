@@ -37,7 +37,7 @@ mod stats;
 
 #[cfg(feature = "plot")]
 pub use figure::{chart_metrics, draw_world};
-pub use metrics::{RunMetrics, measure};
+pub use metrics::{RunMetrics, Scoring, measure};
 pub use planners::{PLANNER_NAMES, build_planner};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};

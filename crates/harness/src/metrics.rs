@@ -77,24 +77,45 @@ impl RunMetrics {
     ];
 }
 
-/// Scores one planning outcome: the plan (or the failure), post-processed by `smoothing`
-/// against `ws`, timed under `limits`.
+/// How runs are scored: the workspace the path must be valid in, the one clearances are
+/// measured in, and the post-processing.
+pub struct Scoring<'a> {
+    /// The planning workspace: smoothing is checked against it.
+    pub ws: &'a (dyn Workspace + Sync),
+    /// The workspace whose blocked cells are the obstacles for `min_clearance` (the map
+    /// with only `Forbidden` blocking, even when the planner avoided the risk band).
+    pub obstacles: &'a (dyn Workspace + Sync),
+    /// Whether explored nodes are the planner's expansions (graph searches) rather than
+    /// its `stats.nodes` (trees, and the hybrids' own counts).
+    pub explored_by_expansions: bool,
+    /// Post-processing applied to the planner's path.
+    pub smoothing: Smoothing,
+    /// Robot limits for the transfer time.
+    pub limits: Option<Limits>,
+    /// Curve sampling spacing, world units (a quarter cell).
+    pub spacing: f64,
+}
+
+/// Scores one planning outcome: the plan (or the failure), post-processed and checked
+/// as `scoring` says, timed under its limits.
 ///
 /// The planning time comes from the plan's stats; smoothing time is added to it.
-/// `explored_by_expansions` says whether the planner's explored nodes are its expansions
-/// (graph searches) rather than its `stats.nodes` (trees, and the hybrids' own counts).
 #[must_use]
-#[allow(clippy::too_many_arguments)]
 pub fn measure(
-    ws: &dyn Workspace,
-    explored_by_expansions: bool,
+    scoring: &Scoring<'_>,
     outcome: &Result<Plan, PlanError>,
-    smoothing: Smoothing,
-    limits: Option<&Limits>,
-    spacing: f64,
     run: u32,
     seed: u64,
 ) -> RunMetrics {
+    let Scoring {
+        ws,
+        obstacles,
+        explored_by_expansions,
+        smoothing,
+        limits,
+        spacing,
+    } = *scoring;
+    let limits = limits.as_ref();
     let nan = f64::NAN;
     let mut m = RunMetrics {
         run,
@@ -132,16 +153,28 @@ pub fn measure(
         return m;
     };
     m.success = true;
-    let metrics: PathMetrics = smoothed.metrics();
-    m.length = metrics.length;
+    // A planner that returns a dense curve names the nodes it is built on: count nodes,
+    // segments and turns on those, as the papers do, and time the curve as a curve.
+    let dense = !plan.waypoints.is_empty();
+    let metrics = if dense {
+        PathMetrics::of(&plan.waypoints)
+    } else {
+        smoothed.metrics()
+    };
+    m.length = smoothed.length();
     m.nodes = metrics.nodes as f64;
     m.inner_nodes = metrics.nodes.saturating_sub(2) as f64;
     m.segments = metrics.segments as f64;
     m.turns = metrics.turns as f64;
     if let Some(limits) = limits {
-        m.transfer_time_s = smoothed.time(limits).map_or(nan, |t| t.transfer_time);
+        let timing = if dense {
+            postproc::time_curve(&smoothed.points, limits)
+        } else {
+            smoothed.time(limits)
+        };
+        m.transfer_time_s = timing.map_or(nan, |t| t.transfer_time);
     }
-    m.min_clearance = min_clearance(ws, &smoothed.points, spacing);
+    m.min_clearance = min_clearance(obstacles, &smoothed.points, spacing);
     m.path = smoothed.points;
     m
 }

@@ -4,7 +4,7 @@ use postproc::{Limits, Smoothing};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::{PlannerSpec, RunMetrics, Scenario, World, build_planner, measure};
+use crate::{PlannerSpec, RunMetrics, Scenario, Scoring, World, build_planner, measure};
 
 /// The seed of run `run` under base seed `base`: SplitMix64 of the pair, so that runs get
 /// unrelated streams, and a run's seed depends on its index alone (never on thread order).
@@ -58,24 +58,23 @@ pub fn run_planner(
         Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max).map_err(|e| e.to_string())?),
         None => None,
     };
-    // Graph searches report expansions, the others their own node counts.
-    let by_expansions = matches!(planner.info().name, "astar" | "dijkstra" | "theta-star");
-    // Curves are checked at most a quarter cell apart.
-    let spacing = world.map.resolution() * 0.25;
+    // Clearance is measured to obstacles, whatever zone the planner avoided.
+    let mut obstacles = world.map.clone();
+    obstacles.blocked_from = hyplan_core::Zone::Forbidden;
+    let scoring = Scoring {
+        ws: &world.map,
+        obstacles: &obstacles,
+        explored_by_expansions: matches!(planner.info().name, "astar" | "dijkstra" | "theta-star"),
+        smoothing,
+        limits,
+        // Curves are checked at most a quarter cell apart.
+        spacing: world.map.resolution() * 0.25,
+    };
     let one = |k: u32| {
         let seed = run_seed(scenario.base_seed, u64::from(k));
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let outcome = planner.plan(&world.map, &world.query, &mut rng);
-        let m = measure(
-            &world.map,
-            by_expansions,
-            &outcome,
-            smoothing,
-            limits.as_ref(),
-            spacing,
-            k,
-            seed,
-        );
+        let m = measure(&scoring, &outcome, k, seed);
         progress();
         m
     };

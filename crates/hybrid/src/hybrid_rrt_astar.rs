@@ -258,6 +258,7 @@ impl HybridRrtAstar {
                 cost: hyplan_core::path_length(&path),
                 path: path.clone(),
                 trees: vec![Tree { points, parent }],
+                waypoints: Vec::new(),
                 stats,
             },
             raw: path.clone(),

@@ -313,6 +313,8 @@ impl RrtAstarBt {
                 cost: hyplan_core::path_length(&path),
                 path,
                 trees: vec![Tree { points, parent }],
+                // PCHIP passes through the reduced path's nodes.
+                waypoints: if self.smoothing { reduced.clone() } else { Vec::new() },
                 stats,
             },
             raw,

@@ -201,6 +201,7 @@ impl RrtAstarRefine {
                 cost: hyplan_core::path_length(&path),
                 path,
                 trees: rrt_plan.trees,
+                waypoints: Vec::new(),
                 stats,
             },
             raw,

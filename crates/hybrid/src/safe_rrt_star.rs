@@ -356,6 +356,8 @@ impl SafeRrtStar {
                     points,
                     parent: tree.parent,
                 }],
+                // The B-spline's control points are the reduced path's nodes.
+                waypoints: if self.smoothing { reduced.clone() } else { Vec::new() },
                 stats,
             },
             raw,

@@ -173,6 +173,7 @@ impl Rrt {
             cost: hyplan_core::path_length(&path),
             path,
             trees: vec![Tree { points, parent }],
+            waypoints: Vec::new(),
             stats,
         })
     }

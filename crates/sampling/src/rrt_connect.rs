@@ -215,6 +215,7 @@ impl RrtConnect {
             cost: hyplan_core::path_length(&path),
             path,
             trees: vec![trees[0].to_tree(), trees[1].to_tree()],
+            waypoints: Vec::new(),
             stats,
         })
     }

@@ -324,6 +324,7 @@ impl RrtStar {
                 points,
                 parent: tree.parent,
             }],
+            waypoints: Vec::new(),
             stats,
         })
     }

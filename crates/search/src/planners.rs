@@ -217,6 +217,7 @@ fn plan_on_grid<W: Workspace + ?Sized>(
         cost: hyplan_core::path_length(&path),
         path,
         trees: Vec::new(),
+        waypoints: Vec::new(),
         stats,
     })
 }
