@@ -17,7 +17,11 @@ pub const EXIT_NO_PATH: u8 = 1;
 pub const EXIT_ERROR: u8 = 2;
 
 #[derive(Parser)]
-#[command(name = "hyplan", version, about = "2-D path planning for mobile robots")]
+#[command(
+    name = "hyplan",
+    version,
+    about = "2-D path planning for mobile robots"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

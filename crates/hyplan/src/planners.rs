@@ -1,110 +1,105 @@
-//! The planner registry: a name on the command line -> `Box<dyn Planner>`.
+//! `--planner NAME` and the shared flags -> a planner from `harness`'s registry.
 //!
-//! One table, [`NAMES`], lists what `--planner` accepts; [`build`] turns a name and the
-//! shared flags into a planner: the sampling planners of the `sampling` crate and the grid
-//! searches of the `search` crate (8-connected, no corner cutting; they ignore the step,
-//! goal bias and budget, and prove "no path").
+//! The command line and the scenario files share one registry,
+//! [`harness::build_planner`]: here the flags become a [`harness::PlannerSpec`], passing
+//! each planner only the parameters it has (the grid searches take none; the papers'
+//! hybrids keep their papers' defaults unless `--step` is given).
 
 use hyplan_core::{Budget, Planner};
-use sampling::{BiRrt, Rrt, RrtConnect, RrtStar};
-
-/// Names accepted by `--planner`.
-pub const NAMES: &[&str] = &[
-    "rrt",
-    "rrt-star",
-    "bi-rrt",
-    "rrt-connect",
-    "astar",
-    "dijkstra",
-    "theta-star",
-];
 
 /// The planner flags shared by every planner; each planner takes what it uses.
 #[derive(Debug, Clone, Copy)]
 pub struct PlannerFlags {
-    /// Maximum edge length, world units.
-    pub step: f64,
-    /// Goal bias, a probability (RRT and RRT* only).
+    /// Maximum edge length, world units, when given (or the CLI's default for the plain
+    /// sampling planners).
+    pub step: Option<f64>,
+    /// Goal bias, a probability.
     pub goal_bias: f64,
+    /// Goal radius, world units (0: the exact goal point).
+    pub goal_radius: f64,
     /// Iteration and time budget.
     pub budget: Budget,
 }
 
-/// The planner called `name`, configured from `flags`.
-///
-/// RRT* runs to its first solution (OMPL's default without `--optimize`). Parameters are
-/// validated by the planner itself on its first `plan` call (typed errors).
-///
-/// # Errors
-///
-/// An unknown name, listing the known ones.
-pub fn build(name: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner>> {
-    let PlannerFlags {
-        step,
-        goal_bias,
-        budget,
-    } = *flags;
-    Ok(match name {
-        "rrt" => Box::new(Rrt {
-            step,
-            goal_bias,
-            budget,
-        }),
-        "rrt-star" => Box::new(RrtStar {
-            step,
-            goal_bias,
-            budget,
-            ..RrtStar::default()
-        }),
-        "bi-rrt" => Box::new(BiRrt { step, budget }),
-        "rrt-connect" => Box::new(RrtConnect { step, budget }),
-        "astar" => Box::new(search::GridAstar::default()),
-        "dijkstra" => Box::new(search::GridDijkstra::default()),
-        "theta-star" => Box::new(search::ThetaStar::default()),
-        other => anyhow::bail!(
-            "unknown planner {other:?}; known planners: {}",
-            NAMES.join(", ")
-        ),
-    })
+/// Whether `name` is a grid search (no step, bias or budget).
+fn is_grid_search(name: &str) -> bool {
+    matches!(name, "astar" | "dijkstra" | "theta-star")
 }
 
 /// Whether the planner called `name` uses `--goal-bias`.
 #[must_use]
 pub fn uses_goal_bias(name: &str) -> bool {
-    matches!(name, "rrt" | "rrt-star")
+    matches!(
+        name,
+        "rrt" | "rrt-star" | "rrt-astar-refine" | "hybrid-rrt-astar" | "safe-rrt-star"
+    )
 }
 
-/// The seed of run `run` for base seed `seed`: output number `run + 1` of a SplitMix64
-/// generator started at `seed`, i.e. `mix(seed + (run + 1) * 0x9E3779B97F4A7C15)` with
-/// SplitMix64's finaliser. Runs get well-spread, independent seeds, and run k's seed does
-/// not depend on how many runs there are.
+/// The planner called `name`, configured from `flags`.
+///
+/// RRT* runs to its first solution (OMPL's default without `--optimize`). Parameter values
+/// are validated by the planner itself on its first `plan` call (typed errors).
+///
+/// # Errors
+///
+/// An unknown name, listing the known ones.
+pub fn build(name: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner>> {
+    let mut params = std::collections::BTreeMap::new();
+    if !is_grid_search(name) {
+        if let Some(step) = flags.step {
+            params.insert("step".to_string(), step);
+            // RRT-A*-BT's closed list is a radius around grown nodes, a quarter step by
+            // default (10 px for 40 px steps): keep that ratio for another step.
+            if name == "rrt-astar-bt" {
+                params.insert("closed_radius".to_string(), step / 4.0);
+            }
+        }
+        if uses_goal_bias(name) {
+            params.insert("goal_bias".to_string(), flags.goal_bias);
+        }
+        // The planners whose own goal region is a parameter get the query's radius.
+        if matches!(name, "rrt-astar-bt" | "safe-rrt-star") && flags.goal_radius > 0.0 {
+            params.insert("goal_radius".to_string(), flags.goal_radius);
+        }
+        // u64::MAX stands for "no iteration cap" (a time limit ends the run); as f64 it
+        // rounds up, and the conversion back saturates to u64::MAX.
+        params.insert(
+            "max_iterations".to_string(),
+            flags.budget.max_iterations as f64,
+        );
+        if let Some(t) = flags.budget.max_time {
+            params.insert("time_limit_s".to_string(), t.as_secs_f64());
+        }
+    }
+    let spec = harness::PlannerSpec {
+        name: name.to_string(),
+        label: None,
+        params,
+        smoothing: None,
+    };
+    harness::build_planner(&spec).map_err(|e| anyhow::anyhow!("--planner {name}: {e}"))
+}
+
+/// Whether the plain sampling planners (whose library default step is 1 world unit) should
+/// get the CLI's map-sized default step.
 #[must_use]
-pub fn run_seed(seed: u64, run: u64) -> u64 {
-    let mut z = seed.wrapping_add(run.wrapping_add(1).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
+pub fn wants_default_step(name: &str) -> bool {
+    matches!(name, "rrt" | "rrt-star" | "bi-rrt" | "rrt-connect")
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// SplitMix64's published first outputs for seed 0 (Vigna's reference implementation).
-    #[test]
-    fn run_seed_is_splitmix64() {
-        assert_eq!(run_seed(0, 0), 0xE220_A839_7B1D_CDAF);
-        assert_eq!(run_seed(0, 1), 0x6E78_9E6A_A1B9_65F4);
-    }
-
     #[test]
     fn every_name_builds() {
         let flags = PlannerFlags {
-            step: 1.0,
+            step: Some(1.0),
             goal_bias: 0.05,
+            goal_radius: 1.0,
             budget: Budget::default(),
         };
-        for name in NAMES {
+        for name in harness::PLANNER_NAMES {
             assert_eq!(build(name, &flags).unwrap().info().name, *name);
         }
         assert!(build("nope", &flags).is_err());

@@ -340,3 +340,111 @@ fn bad_input_is_exit_2_with_a_message() {
     ]);
     assert_error(&missing, &["room.png"]);
 }
+
+#[test]
+fn the_papers_hybrids_plan_from_the_command_line() {
+    let map = walled("the_papers_hybrids_plan_from_the_command_line");
+    for planner in [
+        "rrt-astar-bt",
+        "rrt-astar-refine",
+        "hybrid-rrt-astar",
+        "safe-rrt-star",
+    ] {
+        let o = hyplan_plan(&[
+            "--map",
+            &map,
+            "--start",
+            "2.5,2.5",
+            "--goal",
+            "17.5,2.5",
+            "--goal-radius",
+            "1",
+            "--planner",
+            planner,
+            "--step",
+            "1.5",
+            "--json",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{planner}: {}", stderr(&o));
+        let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        assert_eq!(v["planner"], planner);
+        let path = v["path"].as_array().unwrap();
+        assert_eq!(path[0], serde_json::json!([2.5, 2.5]), "{planner}");
+        let last = &path[path.len() - 1];
+        let (x, y) = (last[0].as_f64().unwrap(), last[1].as_f64().unwrap());
+        assert!(
+            (x - 17.5).hypot(y - 2.5) <= 1.0 + 1e-9,
+            "{planner} ends at {x},{y}"
+        );
+    }
+}
+
+#[test]
+fn smoothing_adds_the_checked_curve_turns_and_transfer_time() {
+    let map = walled("smoothing_adds_the_checked_curve_turns_and_transfer_time");
+    let run = |smooth: &str| {
+        let o = hyplan_plan(&[
+            "--map",
+            &map,
+            "--start",
+            "2.5,2.5",
+            "--goal",
+            "17.5,2.5",
+            "--planner",
+            "astar",
+            "--smooth",
+            smooth,
+            "--vmax",
+            "1",
+            "--wmax",
+            "1",
+            "--amax",
+            "0.5",
+            "--json",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{smooth}: {}", stderr(&o));
+        serde_json::from_str::<serde_json::Value>(stdout(&o).trim()).unwrap()
+    };
+    let raw = run("none");
+    assert!(raw.get("smoothed").is_none());
+    let raw_time = raw["transfer_time_s"].as_f64().unwrap();
+    // Never faster than the length at full speed.
+    assert!(raw_time >= raw["length"].as_f64().unwrap());
+    for smooth in ["prune", "pchip", "bspline"] {
+        let v = run(smooth);
+        let curve = v["smoothed"].as_array().unwrap();
+        assert_eq!(curve[0], serde_json::json!([2.5, 2.5]), "{smooth}");
+        assert_eq!(
+            curve[curve.len() - 1],
+            serde_json::json!([17.5, 2.5]),
+            "{smooth}"
+        );
+        // At most a quarter cell apart, and never inside the wall (x = 10, rows 0..7).
+        for w in curve.windows(2) {
+            let (ax, ay) = (w[0][0].as_f64().unwrap(), w[0][1].as_f64().unwrap());
+            let (bx, by) = (w[1][0].as_f64().unwrap(), w[1][1].as_f64().unwrap());
+            assert!((ax - bx).hypot(ay - by) <= 0.25 + 1e-9, "{smooth}");
+            assert!(
+                !((10.0..11.0).contains(&ax) && ay < 7.0),
+                "{smooth}: ({ax}, {ay}) in the wall"
+            );
+        }
+        assert!(
+            v["turns"].as_u64().unwrap() <= raw["turns"].as_u64().unwrap(),
+            "{smooth}"
+        );
+        assert!(
+            v["transfer_time_s"].as_f64().unwrap() < raw_time,
+            "{smooth}: shortcuts save time"
+        );
+    }
+    // Limits come as a set of three.
+    let o = hyplan_plan(&[
+        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--vmax", "1",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = hyplan_plan(&[
+        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--smooth", "wiggly",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}

@@ -32,8 +32,9 @@ pub struct Args {
     /// Goal `X,Y` in the input's frame.
     #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
     pub goal: (f64, f64),
-    /// Planner: rrt, rrt-star (to its first solution), bi-rrt, rrt-connect, or the grid
-    /// searches astar, dijkstra, theta-star.
+    /// Planner: rrt, rrt-star (to its first solution), bi-rrt, rrt-connect; the grid
+    /// searches astar, dijkstra, theta-star; the papers' hybrids rrt-astar-bt (seed 000),
+    /// rrt-astar-refine (001), hybrid-rrt-astar (002), safe-rrt-star (003).
     #[arg(long, default_value = "rrt")]
     pub planner: String,
     /// Maximum edge length in the input's units [default: 5% of the map's diagonal].
@@ -76,6 +77,21 @@ pub struct Args {
     /// Treat the high-risk band as blocked too (by default only forbidden cells block).
     #[arg(long)]
     pub avoid_risk: bool,
+    /// Post-processing of each path: none, prune (greedy shortcut), pchip (pairwise node
+    /// reduction then PCHIP), bspline (shortcut then a clamped cubic B-spline on the nodes),
+    /// bspline-interp (through the nodes). Curves are checked a quarter cell apart against
+    /// the zones the planner avoided, repaired where they collide, never returned colliding.
+    #[arg(long, default_value = "none")]
+    pub smooth: postproc::Smoothing,
+    /// Robot speed limit, input units per second (with --wmax and --amax: transfer time).
+    #[arg(long, allow_hyphen_values = true, requires_all = ["wmax", "amax"])]
+    pub vmax: Option<f64>,
+    /// Robot turn-rate limit, rad/s.
+    #[arg(long, allow_hyphen_values = true, requires_all = ["vmax", "amax"])]
+    pub wmax: Option<f64>,
+    /// Robot acceleration limit, input units per second squared.
+    #[arg(long, allow_hyphen_values = true, requires_all = ["vmax", "wmax"])]
+    pub amax: Option<f64>,
 }
 
 /// What one run produced; one CSV row, one JSON line, one human line.
@@ -106,6 +122,17 @@ pub struct RunRecord {
     pub collision_checks: u64,
     /// The path in the input's frame.
     pub path: Vec<[f64; 2]>,
+    /// With `--smooth` other than `none`: the final curve, points at most a quarter cell
+    /// apart, in the input's frame.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smoothed: Option<Vec<[f64; 2]>>,
+    /// Heading changes over 10 degrees between consecutive segments of the final path's
+    /// nodes.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub turns: Option<usize>,
+    /// Time to follow the final path from rest to rest under --vmax/--wmax/--amax, s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub transfer_time_s: Option<f64>,
 }
 
 fn parse_xy(s: &str) -> Result<(f64, f64), String> {
@@ -172,13 +199,22 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         budget = budget.with_time(t);
     }
     let step = match args.step {
-        Some(s) => s * scale,
-        None => 0.05 * map.bounds().diagonal(),
+        Some(s) => Some(s * scale),
+        None if planners::wants_default_step(&args.planner) => Some(0.05 * map.bounds().diagonal()),
+        None => None,
     };
     let flags = PlannerFlags {
         step,
         goal_bias: args.goal_bias,
+        goal_radius: args.goal_radius * scale,
         budget,
+    };
+    let limits = match (args.vmax, args.wmax, args.amax) {
+        (Some(v), Some(w), Some(a)) => Some(
+            postproc::Limits::new(v * scale, w, a * scale)
+                .map_err(|e| anyhow::anyhow!("--vmax/--wmax/--amax: {e}"))?,
+        ),
+        _ => None,
     };
     if !(0.0..=1.0).contains(&args.goal_bias) {
         anyhow::bail!(
@@ -222,21 +258,23 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let mut records = Vec::with_capacity(args.runs as usize);
     let mut first_plan: Option<Plan> = None;
     for run in 0..args.runs {
-        let seed = planners::run_seed(args.seed, run);
+        let seed = harness::run_seed(args.seed, run);
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let started = Instant::now();
         let outcome = planner.plan(&map, &query, &mut rng);
         let time_s = started.elapsed().as_secs_f64();
         let record = match &outcome {
             Ok(plan) => {
-                let path: Vec<[f64; 2]> = plan
-                    .path
-                    .iter()
-                    .map(|&p| {
-                        let (x, y) = frame.from_world(p);
-                        [x, y]
-                    })
-                    .collect();
+                let to_input = |pts: &[hyplan_core::Point2]| -> Vec<[f64; 2]> {
+                    pts.iter()
+                        .map(|&p| {
+                            let (x, y) = frame.from_world(p);
+                            [x, y]
+                        })
+                        .collect()
+                };
+                let path = to_input(&plan.path);
+                let post = post_process(plan, &map, args.smooth, limits.as_ref())?;
                 RunRecord {
                     planner: args.planner.clone(),
                     run,
@@ -250,6 +288,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                     iterations: plan.stats.iterations,
                     collision_checks: plan.stats.collision_checks,
                     path,
+                    smoothed: post.smoothed.as_deref().map(to_input),
+                    turns: Some(post.turns),
+                    transfer_time_s: post.transfer_time_s,
                 }
             }
             Err(e) if e.is_no_path() => {
@@ -267,6 +308,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                     iterations: stats.iterations,
                     collision_checks: stats.collision_checks,
                     path: Vec::new(),
+                    smoothed: None,
+                    turns: None,
+                    transfer_time_s: None,
                 }
             }
             Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
@@ -290,6 +334,55 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(crate::EXIT_NO_PATH)
+    })
+}
+
+/// What post-processing made of one plan.
+struct PostProcessed {
+    /// The smoothed curve (world), when smoothing was asked for.
+    smoothed: Option<Vec<hyplan_core::Point2>>,
+    /// Turns over 10 degrees between the final path's node segments.
+    turns: usize,
+    /// Transfer time under the limits, s.
+    transfer_time_s: Option<f64>,
+}
+
+/// Smooths (checked against the map's blocking zones, a quarter cell apart), counts turns
+/// on the final path's nodes and times it.
+fn post_process(
+    plan: &Plan,
+    map: &envmap::GridMap,
+    method: postproc::Smoothing,
+    limits: Option<&postproc::Limits>,
+) -> anyhow::Result<PostProcessed> {
+    use hyplan_core::Workspace as _;
+    let spacing = 0.25 * map.resolution();
+    let s = postproc::smooth_checked(&plan.path, method, spacing, |a, b| map.segment_free(a, b))
+        .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", method.name()))?;
+    // A planner that already returned a dense curve names its nodes in `waypoints`.
+    let dense = !plan.waypoints.is_empty();
+    let turns = if dense && method == postproc::Smoothing::None {
+        postproc::PathMetrics::of(plan.nodes()).turns
+    } else {
+        s.metrics().turns
+    };
+    let transfer_time_s = match limits {
+        None => None,
+        Some(l) if dense && method.is_polyline() => Some(
+            postproc::time_curve(&s.points, l)
+                .map_err(|e| anyhow::anyhow!("timing: {e}"))?
+                .transfer_time,
+        ),
+        Some(l) => Some(
+            s.time(l)
+                .map_err(|e| anyhow::anyhow!("timing: {e}"))?
+                .transfer_time,
+        ),
+    };
+    Ok(PostProcessed {
+        smoothed: (method != postproc::Smoothing::None).then_some(s.points),
+        turns,
+        transfer_time_s,
     })
 }
 
