@@ -448,3 +448,27 @@ fn smoothing_adds_the_checked_curve_turns_and_transfer_time() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    use std::process::Stdio;
+    let map = walled("a_closed_pipe_ends_quietly");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_hyplan"))
+        .args([
+            "plan", "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5",
+        ])
+        .args(["--runs", "2000", "--csv"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Read one line, then hang up, like `| head -1`.
+    let mut stdout = child.stdout.take().unwrap();
+    let mut first = [0u8; 16];
+    std::io::Read::read_exact(&mut stdout, &mut first).unwrap();
+    drop(stdout);
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(0), "{err}");
+}

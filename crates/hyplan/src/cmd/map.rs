@@ -60,12 +60,12 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             .with_context(|| format!("writing --yaml {}", yaml.display()))?;
     }
     if args.json {
-        println!(
+        outln!(
             "{}",
             serde_json::to_string(&summary_json(args, &loaded, &rects))?
-        );
+        )?;
     } else {
-        print_summary(args, &loaded);
+        print_summary(args, &loaded)?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -123,7 +123,7 @@ fn summary_json(args: &Args, loaded: &LoadedMap, rects: &[CellRect]) -> serde_js
     })
 }
 
-fn print_summary(args: &Args, loaded: &LoadedMap) {
+fn print_summary(args: &Args, loaded: &LoadedMap) -> std::io::Result<()> {
     let map = &loaded.map;
     let [free, risk, forbidden] = map.zone_counts();
     let o: Point2 = map.origin();
@@ -132,7 +132,7 @@ fn print_summary(args: &Args, loaded: &LoadedMap) {
         MapKind::Ros => "ROS map",
         MapKind::Picture => "picture",
     };
-    println!(
+    outln!(
         "{}: {kind}, {} x {} cells, resolution {}, origin ({}, {})",
         args.input.display(),
         map.width(),
@@ -140,20 +140,21 @@ fn print_summary(args: &Args, loaded: &LoadedMap) {
         map.resolution(),
         o.x,
         o.y
-    );
-    println!("zones: {free} safe, {risk} high-risk, {forbidden} forbidden");
+    )?;
+    outln!("zones: {free} safe, {risk} high-risk, {forbidden} forbidden")?;
     let shape = if args.rectangles {
         "bounding rectangles"
     } else {
         "8-connected components"
     };
-    println!("obstacles: {} ({shape})", loaded.components.len());
-    println!("coordinates: {}", loaded.frame.describe());
+    outln!("obstacles: {} ({shape})", loaded.components.len())?;
+    outln!("coordinates: {}", loaded.frame.describe())?;
     for (flag, path) in [("zones", &args.out), ("ROS map", &args.yaml)] {
         if let Some(p) = path {
-            println!("wrote {flag}: {}", show(p));
+            outln!("wrote {flag}: {}", show(p))?;
         }
     }
+    Ok(())
 }
 
 fn show(p: &Path) -> String {

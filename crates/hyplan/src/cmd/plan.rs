@@ -253,7 +253,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     })?;
 
     if args.csv {
-        println!("planner,run,solved,exact,time_s,length,states_in_path,graph_vertices");
+        outln!("planner,run,solved,exact,time_s,length,states_in_path,graph_vertices")?;
     }
     let mut records = Vec::with_capacity(args.runs as usize);
     let mut first_plan: Option<Plan> = None;
@@ -324,7 +324,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
 
     let solved = records.iter().filter(|r| r.solved).count();
     if !args.csv && !args.json && args.runs > 1 {
-        print_summary(&records);
+        print_summary(&records)?;
     }
     if let Some(svg_path) = &args.svg {
         write_svg(svg_path, &map, &query, first_plan.as_ref())
@@ -389,7 +389,7 @@ fn post_process(
 fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::Result<()> {
     if args.csv {
         let opt = |v: Option<f64>| v.map(|v| format!("{v:.6}")).unwrap_or_default();
-        println!(
+        outln!(
             "{},{},{},{},{:.6},{},{},{}",
             r.planner,
             r.run,
@@ -399,11 +399,11 @@ fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::
             opt(r.length),
             r.states_in_path.map(|n| n.to_string()).unwrap_or_default(),
             r.nodes
-        );
+        )?;
     } else if args.json {
-        println!("{}", serde_json::to_string(r)?);
+        outln!("{}", serde_json::to_string(r)?)?;
     } else if r.solved {
-        println!(
+        outln!(
             "run {} (seed {}): path of length {:.3} ({} points), {} nodes, {} iterations, {} edge checks, {:.3} ms",
             r.run,
             r.seed,
@@ -413,16 +413,16 @@ fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::
             r.iterations,
             r.collision_checks,
             r.time_s * 1e3
-        );
+        )?;
     } else {
-        println!(
+        outln!(
             "run {} (seed {}): {}, {} nodes, {:.3} ms",
             r.run,
             r.seed,
             err.map_or_else(|| "no path".to_string(), ToString::to_string),
             r.nodes,
             r.time_s * 1e3
-        );
+        )?;
     }
     Ok(())
 }
@@ -440,17 +440,18 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
     })
 }
 
-fn print_summary(records: &[RunRecord]) {
+fn print_summary(records: &[RunRecord]) -> std::io::Result<()> {
     let solved: Vec<&RunRecord> = records.iter().filter(|r| r.solved).collect();
     let time = median(records.iter().map(|r| r.time_s).collect()).unwrap_or(f64::NAN);
     let length = median(solved.iter().filter_map(|r| r.length).collect());
-    println!(
+    outln!(
         "solved {} of {} runs; median time {:.3} ms; median length {}",
         solved.len(),
         records.len(),
         time * 1e3,
         length.map_or_else(|| "-".to_string(), |l| format!("{l:.3}"))
-    );
+    )?;
+    Ok(())
 }
 
 /// Draws zones (one rectangle per horizontal run of non-free cells), trees and path, in
