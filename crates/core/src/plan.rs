@@ -83,7 +83,11 @@ impl Plan {
     /// returned a dense curve, else [`path`](Plan::path).
     #[must_use]
     pub fn nodes(&self) -> &[Point2] {
-        if self.waypoints.is_empty() { &self.path } else { &self.waypoints }
+        if self.waypoints.is_empty() {
+            &self.path
+        } else {
+            &self.waypoints
+        }
     }
 
     /// Euclidean length of the path, world units.
