@@ -1,12 +1,10 @@
 //! Flat-array A*, Dijkstra and Theta* on a [`GridMap`], with scratch memory reused across
 //! queries.
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
 use envmap::GridMap;
 
 use crate::SearchStats;
+use crate::heap::MinHeap;
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 /// "No parent" in the parent array.
@@ -219,20 +217,21 @@ enum Kind {
 ///
 /// `GridSearch::new` copies which cells are passable (under the map's
 /// [`blocked_from`](GridMap::blocked_from)) into an array padded with a blocked border, so
-/// the inner loop needs no bounds checks. Each query then runs on flat per-cell arrays (no
-/// hash map) with a binary heap of packed `u128` keys whose ties go to the larger g, and a
-/// closed bit in the stamp (stale heap entries are skipped). A successor whose f is not
-/// above the f of the cell being expanded (up to a rounding allowance of 4 ulps) skips the
-/// heap and goes on a stack that is popped first: it would come out next anyway, and this
-/// runs straight and diagonal stretches toward the goal depth-first. The arrays are reset in
-/// O(1) between queries by a generation counter: a cell's g and parent count only when its
-/// stamp carries the current generation.
+/// the inner loop needs no bounds tests for the map's edges, and one byte per cell with its
+/// legal moves (corner rule applied). Each query then runs on a flat per-cell array of
+/// nodes (g, parent, stamp; no hash map) with fixed-point integer costs (see "Costs"
+/// below), a binary heap of packed `u128` keys whose ties go to the larger g, and a closed
+/// bit in the stamp (stale heap entries are skipped). A successor whose f equals the f of
+/// the cell being expanded skips the heap and goes on a stack that is popped first: it
+/// would come out next anyway, and this runs straight and diagonal stretches toward the
+/// goal depth-first. The arrays are reset in O(1) between queries by a generation counter:
+/// a cell's g and parent count only when its stamp carries the current generation.
 ///
 /// # Memory
 ///
 /// Per cell of the padded `(width + 2) x (height + 2)` grid: 1 byte passable, 1 byte
-/// legal-move mask, 8 bytes g (`f64`), 4 bytes parent (`u32`), 4 bytes stamp (`u32`):
-/// **18 bytes**, allocated once
+/// legal-move mask, 8 bytes g (`u64` fixed point, or `f64` bits for Theta*), 4 bytes parent
+/// (`u32`), 4 bytes stamp (`u32`): **18 bytes**, allocated once
 /// in [`new`](GridSearch::new) and reused; plus 16 bytes per open-list entry (the heap
 /// keeps its capacity across queries too).
 ///
@@ -240,9 +239,14 @@ enum Kind {
 ///
 /// Straight moves cost 1, diagonals sqrt 2 (cell units). A* uses the octile distance
 /// (Manhattan when 4-connected), which is admissible and consistent, so its costs are
-/// optimal; Dijkstra uses none. Costs are summed in `f64` along the path. The stack's
-/// rounding allowance can reorder cells whose f differ by a few ulps, so "optimal" means
-/// exact up to about 1e-12 relative (tests compare with Dijkstra to 1e-9).
+/// optimal; Dijkstra uses none. A* and Dijkstra add costs as `u64` fixed-point integers:
+/// 2^32 per straight move and the odd integer nearest to sqrt(2) 2^32 per diagonal (fewer
+/// fraction bits on grids above 2^29 cells), so sums are exact, the heuristic in the same
+/// units is exactly consistent and f is compared exactly. The cost returned is `a + b *
+/// sqrt 2` in `f64` for the path's a straight moves and b diagonals, recovered exactly from
+/// the integer. The integer order is the real order of path lengths except between lengths
+/// closer than `b * 2^-33` cells, which needs paths of tens of thousands of diagonals; even
+/// then the result is within that of the optimum. Theta* sums `f64` Euclidean lengths.
 ///
 /// # Example
 ///
@@ -274,13 +278,17 @@ pub struct GridSearch {
     passable: Vec<bool>,
     /// Legal moves out of each cell, one bit per direction of [`DIRS`].
     moves: Vec<u8>,
-    /// Padded-index offset of each direction of [`DIRS`].
-    offsets: [u32; 8],
-    g: Vec<f64>,
-    parent: Vec<u32>,
-    stamp: Vec<u32>,
+    /// Per-cell search state.
+    nodes: Vec<Node>,
     generation: u32,
-    heap: BinaryHeap<Reverse<u128>>,
+    /// The fixed-point cost scale of this grid's size.
+    fixed: Fixed,
+    /// `u64::MAX / pw + 1`: divides a padded index by `pw` with one multiplication.
+    magic: u64,
+    /// Open list of A* and Dijkstra (ordered by the upper half of [`Fixed::key`]).
+    heap: MinHeap<false>,
+    /// Open list of Theta* (ordered by the whole [`float_key`]).
+    theta_heap: MinHeap<true>,
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
     /// so they skip the heap (see [`GridSearch::pop`]).
     stack: Vec<u32>,
@@ -309,12 +317,19 @@ impl GridSearch {
             options,
             passable: vec![false; n],
             moves: vec![0; n],
-            offsets: DIRS.map(|(dx, dy, _)| (dy as isize * pw as isize + dx as isize) as u32),
-            g: vec![0.0; n],
-            parent: vec![NONE; n],
-            stamp: vec![0; n],
+            nodes: vec![
+                Node {
+                    g: 0,
+                    parent: NONE,
+                    stamp: 0
+                };
+                n
+            ],
             generation: 0,
-            heap: BinaryHeap::new(),
+            fixed: Fixed::new(pw, height + 2),
+            magic: u64::MAX / pw as u64 + 1,
+            heap: MinHeap::default(),
+            theta_heap: MinHeap::default(),
             stack: Vec::new(),
         };
         search.update(map)?;
@@ -459,23 +474,20 @@ impl GridSearch {
     /// The goal outside the map or blocked.
     pub fn cost_to_go(&mut self, goal: (usize, usize)) -> Result<CostField, GridSearchError> {
         let g0 = self.check(goal, false)?;
-        let mut stats = SearchStats::default();
-        self.begin(g0, 0.0, &mut stats);
-        while let Some(p) = self.pop() {
-            stats.expansions += 1;
-            let g = self.g[p as usize];
-            // Dijkstra: f = g, and every move costs > 0, so nothing goes on the stack.
-            self.relax_neighbours(p, g, g, &mut stats, |_, _| 0.0);
-        }
+        // Dijkstra without a target: runs until the reachable cells are exhausted.
+        let stats = match self.grid_search(g0, NONE, false) {
+            Err(GridSearchError::NoPath { stats }) => stats,
+            _ => SearchStats::default(),
+        };
         let (w, h) = (self.width, self.height);
         let mut cost = vec![f64::INFINITY; w * h];
         let mut next = vec![NONE; w * h];
         for j in 0..h {
             for i in 0..w {
                 let p = self.index(i, j) as usize;
-                if self.stamp[p] & !CLOSED == self.generation {
-                    cost[j * w + i] = self.g[p];
-                    let q = self.parent[p];
+                if self.nodes[p].stamp & !CLOSED == self.generation {
+                    cost[j * w + i] = self.fixed.to_cells(self.nodes[p].g);
+                    let q = self.nodes[p].parent;
                     if q != NONE {
                         let (qi, qj) = self.cell(q);
                         next[j * w + i] = (qj * w + qi) as u32;
@@ -537,90 +549,170 @@ impl GridSearch {
         Ok(p)
     }
 
-    /// Starts a query from `s` with heuristic `h0`: bumps the generation (clearing the
-    /// stamps only on wrap-around), empties the heap and pushes `s`.
-    fn begin(&mut self, s: u32, h0: f64, stats: &mut SearchStats) {
+    /// Starts a query from `s`: bumps the generation (clearing the stamps only on
+    /// wrap-around), empties the open list and opens `s` with g = `g0` (in the units of the
+    /// search) and heap key `key`.
+    fn begin(&mut self, s: u32, g0: u64, stats: &mut SearchStats) {
         self.generation += 1;
         if self.generation >= CLOSED {
-            self.stamp.fill(0);
+            for node in &mut self.nodes {
+                node.stamp = 0;
+            }
             self.generation = 1;
         }
         self.heap.clear();
+        self.theta_heap.clear();
         self.stack.clear();
         let s = s as usize;
-        self.g[s] = 0.0;
-        self.parent[s] = NONE;
-        self.stamp[s] = self.generation;
-        self.heap.push(Reverse(key(h0, 0.0, s as u32)));
+        self.nodes[s].g = g0;
+        self.nodes[s].parent = NONE;
+        self.nodes[s].stamp = self.generation;
         stats.pushes += 1;
         stats.reached = 1;
     }
 
-    /// Pops the open cell with the smallest f (ties: larger g), skipping stale entries of
-    /// cells already closed, and closes it.
+    /// Padded coordinates `(x, y)` of a padded index (division by `pw` as a multiplication,
+    /// exact for every `u32` index: Lemire, Kaser and Kurz 2019).
     #[inline(always)]
-    fn pop(&mut self) -> Option<u32> {
-        let closed = self.generation | CLOSED;
-        while let Some(p) = self
-            .stack
-            .pop()
-            .or_else(|| self.heap.pop().map(|Reverse(k)| k as u32))
-        {
-            // A cell can sit in the heap several times (each time its g dropped). With a
-            // consistent heuristic the first pop carries its final g; the later ones are
-            // stale and skipped.
-            if self.stamp[p as usize] != closed {
-                self.stamp[p as usize] = closed;
-                return Some(p);
-            }
-        }
-        None
+    fn xy(&self, p: u32) -> (u32, u32) {
+        let y = ((u128::from(p) * u128::from(self.magic)) >> 64) as u32;
+        (p - y * self.pw as u32, y)
     }
 
-    /// Relaxes the legal moves out of `p` (its bit mask of [`DIRS`]) with cost
-    /// `g + move cost`. A neighbour whose `f = g' + h(x, y)` (padded coordinates) is not
-    /// above `f_here` goes on the stack, the others on the heap.
-    #[inline(always)]
-    fn relax_neighbours(
+    /// A* (`heuristic`) or Dijkstra from `s0` to `t0` (`NONE`: no target, run until the
+    /// reachable cells are exhausted) on fixed-point integer costs.
+    ///
+    /// Open list: the [`MinHeap`] of [`Fixed::key`]s (smallest f first, ties toward larger
+    /// g, i.e. smaller h), plus a stack of cells whose f equals the f being expanded: they
+    /// would come out of the heap next anyway (their g is final, the heuristic being
+    /// consistent), so they skip it, and runs toward the goal go depth-first. Stale heap
+    /// entries (a cell pushed again after its g dropped) are skipped by the closed bit.
+    fn grid_search(
         &mut self,
-        p: u32,
-        g: f64,
-        f_here: f64,
-        stats: &mut SearchStats,
-        h: impl Fn(u32, u32) -> f64,
-    ) {
-        let pw = self.pw as u32;
-        let (x, y) = (p % pw, p / pw);
+        s0: u32,
+        t0: u32,
+        heuristic: bool,
+    ) -> Result<GridPath, GridSearchError> {
+        let mut stats = SearchStats::default();
+        let fx = self.fixed;
+        let (unit, diag) = (fx.unit, fx.diag);
+        let four = self.options.connectivity == Connectivity::Four;
+        // h = hi * c_hi + lo * c_lo over the coordinate differences; zero for Dijkstra.
+        let (c_hi, c_lo) = match (heuristic, four) {
+            (false, _) => (0, 0),
+            (true, true) => (unit, unit),
+            (true, false) => (unit, diag - unit),
+        };
+        let (gx, gy) = if t0 == NONE { (0, 0) } else { self.xy(t0) };
+        let h = move |x: u32, y: u32| {
+            let dx = (i64::from(x) - i64::from(gx)).unsigned_abs();
+            let dy = (i64::from(y) - i64::from(gy)).unsigned_abs();
+            let (lo, hi) = if dx < dy { (dx, dy) } else { (dy, dx) };
+            hi * c_hi + lo * c_lo
+        };
+        let (sx, sy) = self.xy(s0);
+        let h0 = h(sx, sy);
+        self.begin(s0, 0, &mut stats);
+        self.heap.push(fx.key(h0, h0, s0));
         let open = self.generation;
-        let mut mask = self.moves[p as usize];
-        while mask != 0 {
-            let d = mask.trailing_zeros() as usize;
-            mask &= mask - 1;
-            let (dx, dy, c) = DIRS[d];
-            let q = p.wrapping_add(self.offsets[d]);
-            let qu = q as usize;
-            let ng = g + c;
-            let st = self.stamp[qu];
-            if st == open | CLOSED || (st == open && self.g[qu] <= ng) {
+        let closed = open | CLOSED;
+        // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
+        // on the stack has it.
+        let mut f_cur = h0 >> fx.f_shift;
+        let pw = self.pw;
+        let magic = self.magic;
+        let Self {
+            nodes,
+            moves,
+            heap,
+            stack,
+            ..
+        } = self;
+        loop {
+            let p = if let Some(p) = stack.pop() {
+                p
+            } else if let Some(k) = heap.pop() {
+                f_cur = (k >> 64) as u64 >> TIE_BITS;
+                k as u32
+            } else {
+                break;
+            };
+            let pu = p as usize;
+            let here = &mut nodes[pu];
+            // A cell can sit in the heap several times (each time its g dropped); with a
+            // consistent heuristic the first pop carries its final g, the later ones are
+            // stale.
+            if here.stamp == closed {
                 continue;
             }
-            stats.reached += u64::from(st != open);
-            self.stamp[qu] = open;
-            self.g[qu] = ng;
-            self.parent[qu] = p;
-            let f = ng + h(x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
-            // `f_here` plus a rounding allowance: moves that keep f constant in exact
-            // arithmetic (straight or diagonal toward the goal) can come out one ulp above.
-            if f <= f_here * (1.0 + 4.0 * f64::EPSILON) {
-                self.stack.push(q);
-            } else {
-                self.heap.push(Reverse(key(f, ng, q)));
+            here.stamp = closed;
+            let g = here.g;
+            if p == t0 {
+                let cost = fx.to_cells(g);
+                return Ok(self.trace(t0, cost, stats));
             }
-            stats.pushes += 1;
+            stats.expansions += 1;
+            let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
+            let x = p - y * pw as u32;
+            let mask = moves[pu];
+            // The 3 x 3 block around p as three rows of three nodes (south, middle, north),
+            // so that the moves below index them with constants.
+            let (below, rest) = nodes.split_at_mut(pu - 1);
+            let (mid, above) = rest.split_at_mut(3);
+            let (Some(south), Some(mid), Some(north)) = (
+                below[pu - pw - 1..].first_chunk_mut::<3>(),
+                mid.first_chunk_mut::<3>(),
+                above[pw - 3..].first_chunk_mut::<3>(),
+            ) else {
+                // p is an inner cell of the padded grid: its 3 x 3 block exists.
+                continue;
+            };
+            // One move: bit of `mask`, node, padded index, cost, (dx, dy).
+            macro_rules! relax {
+                ($bit:expr, $node:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
+                    let node = &mut $node;
+                    let ng = g + $cost;
+                    let st = node.stamp;
+                    // Relax a legal move unless q is open or closed with a g at least
+                    // as good (a closed cell's g is final, so never worse). The node
+                    // is read even for an illegal move (it exists: the padded border),
+                    // so that one branch decides.
+                    let legal = (mask >> $bit) & 1 != 0;
+                    if legal & !((st | CLOSED == closed) & (node.g <= ng)) {
+                        stats.reached += u64::from(st != open);
+                        *node = Node {
+                            g: ng,
+                            parent: p,
+                            stamp: open,
+                        };
+                        let q: u32 = $q;
+                        let hq = h(x.wrapping_add_signed($dx), y.wrapping_add_signed($dy));
+                        // The heuristic is consistent and the arithmetic exact, so
+                        // f >= f_cur.
+                        if (ng + hq) >> fx.f_shift <= f_cur {
+                            stack.push(q);
+                        } else {
+                            heap.push(fx.key(ng + hq, hq, q));
+                        }
+                        stats.pushes += 1;
+                    }
+                }};
+            }
+            let pw32 = pw as u32;
+            // The order of `DIRS`: E, W, N, S, NE, NW, SE, SW.
+            relax!(0, mid[2], p + 1, unit, 1, 0);
+            relax!(1, mid[0], p - 1, unit, -1, 0);
+            relax!(2, north[1], p + pw32, unit, 0, 1);
+            relax!(3, south[1], p - pw32, unit, 0, -1);
+            relax!(4, north[2], p + pw32 + 1, diag, 1, 1);
+            relax!(5, north[0], p + pw32 - 1, diag, -1, 1);
+            relax!(6, south[2], p - pw32 + 1, diag, 1, -1);
+            relax!(7, south[0], p - pw32 - 1, diag, -1, -1);
         }
+        Err(GridSearchError::NoPath { stats })
     }
 
-    /// The shared A* / Dijkstra / Theta* loop.
+    /// The A* / Dijkstra / Theta* entry point.
     fn run(
         &mut self,
         map: Option<&GridMap>,
@@ -630,51 +722,43 @@ impl GridSearch {
     ) -> Result<GridPath, GridSearchError> {
         let s0 = self.check(start, true)?;
         let t0 = self.check(goal, false)?;
+        match (kind, map) {
+            (Kind::Astar, _) => self.grid_search(s0, t0, true),
+            (Kind::Dijkstra, _) | (Kind::ThetaStar, None) => self.grid_search(s0, t0, false),
+            (Kind::ThetaStar, Some(map)) => self.theta_search(map, s0, t0),
+        }
+    }
+
+    /// Theta*'s loop, on `f64` costs (stored as bits in `g`) and keys of `f64` bits.
+    fn theta_search(
+        &mut self,
+        map: &GridMap,
+        s0: u32,
+        t0: u32,
+    ) -> Result<GridPath, GridSearchError> {
         let mut stats = SearchStats::default();
-        let pw = self.pw as u32;
-        let (gx, gy) = (t0 % pw, t0 / pw);
-        let four = self.options.connectivity == Connectivity::Four;
-        let octile = move |x: u32, y: u32| {
-            let dx = x.abs_diff(gx);
-            let dy = y.abs_diff(gy);
-            let (lo, hi) = if dx < dy { (dx, dy) } else { (dy, dx) };
-            if four {
-                f64::from(lo + hi)
-            } else {
-                f64::from(hi - lo) + SQRT2 * f64::from(lo)
-            }
-        };
+        let (gx, gy) = self.xy(t0);
         let euclid = move |x: u32, y: u32| {
             let dx = f64::from(x.abs_diff(gx));
             let dy = f64::from(y.abs_diff(gy));
             dx.hypot(dy)
         };
-        let (sx, sy) = (s0 % pw, s0 / pw);
-        let h0 = match kind {
-            Kind::Astar => octile(sx, sy),
-            Kind::Dijkstra => 0.0,
-            Kind::ThetaStar => euclid(sx, sy),
-        };
-        self.begin(s0, h0, &mut stats);
-        while let Some(p) = self.pop() {
-            let g = self.g[p as usize];
+        let (sx, sy) = self.xy(s0);
+        self.begin(s0, 0f64.to_bits(), &mut stats);
+        self.theta_heap.push(float_key(euclid(sx, sy), 0.0, s0));
+        let closed = self.generation | CLOSED;
+        while let Some(k) = self.theta_heap.pop() {
+            let p = k as u32;
+            if self.nodes[p as usize].stamp == closed {
+                continue;
+            }
+            self.nodes[p as usize].stamp = closed;
+            let g = f64::from_bits(self.nodes[p as usize].g);
             if p == t0 {
                 return Ok(self.trace(t0, g, stats));
             }
             stats.expansions += 1;
-            match kind {
-                Kind::Astar => {
-                    let (x, y) = (p % pw, p / pw);
-                    self.relax_neighbours(p, g, g + octile(x, y), &mut stats, octile);
-                }
-                Kind::Dijkstra => self.relax_neighbours(p, g, g, &mut stats, |_, _| 0.0),
-                Kind::ThetaStar => {
-                    // The map is always given for Theta* (see `theta_star`).
-                    if let Some(map) = map {
-                        self.theta_expand(map, p, g, &mut stats, euclid);
-                    }
-                }
-            }
+            self.theta_expand(map, p, g, &mut stats, euclid);
         }
         Err(GridSearchError::NoPath { stats })
     }
@@ -722,10 +806,10 @@ impl GridSearch {
             }
         }
         let open = self.generation;
-        let pp = self.parent[pu];
+        let pp = self.nodes[pu].parent;
         for &(q, c) in &moves[..k] {
             let qu = q as usize;
-            let st = self.stamp[qu];
+            let st = self.nodes[qu].stamp;
             if st == open | CLOSED {
                 continue;
             }
@@ -733,20 +817,21 @@ impl GridSearch {
             if pp != NONE && self.line_of_sight(map, pp, q) {
                 let (a, b) = (self.cell(pp), self.cell(q));
                 let d = (a.0 as f64 - b.0 as f64).hypot(a.1 as f64 - b.1 as f64);
-                let via = self.g[pp as usize] + d;
+                let via = f64::from_bits(self.nodes[pp as usize].g) + d;
                 if via <= ng {
                     ng = via;
                     parent = pp;
                 }
             }
-            if st == open && self.g[qu] <= ng {
+            if st == open && f64::from_bits(self.nodes[qu].g) <= ng {
                 continue;
             }
             stats.reached += u64::from(st != open);
-            self.stamp[qu] = open;
-            self.g[qu] = ng;
-            self.parent[qu] = parent;
-            self.heap.push(Reverse(key(ng + h(q % pw, q / pw), ng, q)));
+            self.nodes[qu].stamp = open;
+            self.nodes[qu].g = ng.to_bits();
+            self.nodes[qu].parent = parent;
+            let (x, y) = self.xy(q);
+            self.theta_heap.push(float_key(ng + h(x, y), ng, q));
             stats.pushes += 1;
         }
     }
@@ -765,7 +850,7 @@ impl GridSearch {
         let mut p = t;
         while p != NONE {
             cells.push(self.cell(p));
-            p = self.parent[p as usize];
+            p = self.nodes[p as usize].parent;
         }
         cells.reverse();
         GridPath { cells, cost, stats }
@@ -784,11 +869,106 @@ const DIRS: [(i32, i32, f64); 8] = [
     (-1, -1, SQRT2),
 ];
 
-/// The open-list key of a cell: one `u128` compared as an integer, smallest first (the heap
-/// holds it in [`Reverse`]). From the top: the bits of `f` (non-negative `f64` bits sort as
-/// the numbers do), the complement of `g` as `f32` bits (ties on `f` go to the larger `g`;
-/// `f32` is only a tie-breaker, the order on `f` stays exact), and the cell index.
+/// The search state of one cell, valid in the current query only if `stamp` (without the
+/// closed bit) is the current generation.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    /// Cost so far: fixed point (see [`Fixed`]) for A* and Dijkstra, `f64` bits for Theta*.
+    g: u64,
+    /// The cell it was reached from ([`NONE`] for the start).
+    parent: u32,
+    /// Generation of the last query that reached it, plus the [`CLOSED`] bit.
+    stamp: u32,
+}
+
+/// Theta*'s open-list key: one `u128` compared as an integer, smallest first. From the
+/// top: the bits of `f` (non-negative `f64` bits sort as the numbers do), the complement of
+/// `g` as `f32` bits (ties on `f` go to the larger `g`; `f32` is only a tie-breaker, the
+/// order on `f` stays exact), and the cell index.
 #[inline(always)]
-fn key(f: f64, g: f64, p: u32) -> u128 {
+fn float_key(f: f64, g: f64, p: u32) -> u128 {
     (u128::from(f.to_bits()) << 64) | (u128::from(!(g as f32).to_bits()) << 32) | u128::from(p)
+}
+
+/// Bits of the tie-break field in [`Fixed::key`].
+const TIE_BITS: u32 = 24;
+
+/// Fixed-point costs of A* and Dijkstra: a straight move costs `unit = 2^k` and a diagonal
+/// `diag`, the odd integer nearest to `sqrt(2) * 2^k` (relative error below `2^-k`), with
+/// `k = 32` up to 2^29 padded cells and smaller above so that no cost can overflow `u64`.
+///
+/// Sums are exact, so the octile heuristic in the same units is exactly consistent. A cost
+/// `a * unit + b * diag` (a straight moves, b diagonals) determines `(a, b)` (diag is odd and
+/// `b < 2^k`), so equal integer costs are equal real costs, and
+/// [`to_cells`](Fixed::to_cells) returns `a + b * sqrt 2` exactly as `f64` sums it. Two
+/// real path lengths closer than the approximation error (`b * 2^-k`) could be ordered
+/// wrongly; for that, `|a' + b' sqrt 2|` must fall below `b 2^-k` for some integers of
+/// that size, which needs `b` around `2^(k/2)` (65,536 diagonals at k = 32).
+#[derive(Debug, Clone, Copy)]
+struct Fixed {
+    /// `k`.
+    shift: u32,
+    /// Cost of a straight move, `2^k`.
+    unit: u64,
+    /// Cost of a diagonal move.
+    diag: u64,
+    /// Inverse of `diag` modulo 2^64.
+    inv_diag: u64,
+    /// Right shift of f for the 40-bit f field of the heap key.
+    f_shift: u32,
+    /// Right shift of h for the 24-bit tie-break field of the heap key.
+    h_shift: u32,
+}
+
+impl Fixed {
+    /// The scale for a padded grid of `pw x ph` cells.
+    fn new(pw: usize, ph: usize) -> Self {
+        let n = pw * ph;
+        // Any path visits each cell at most once, so g < n * diag < n * 2^(k + 1), and
+        // f = g + h < 2 n 2^(k + 1) <= 2^(bits(n) + k + 2) <= 2^64.
+        let bits = usize::BITS - n.leading_zeros();
+        let shift = 62u32.saturating_sub(bits).min(32);
+        let unit = 1u64 << shift;
+        let diag = ((std::f64::consts::SQRT_2 * unit as f64).round() as u64) | 1;
+        // Newton's iteration for the inverse of an odd number modulo 2^64.
+        let mut inv_diag = diag;
+        for _ in 0..6 {
+            inv_diag = inv_diag.wrapping_mul(2u64.wrapping_sub(diag.wrapping_mul(inv_diag)));
+        }
+        // h <= (pw + ph) * diag < (pw + ph) * 2^(k + 1).
+        let h_bits = usize::BITS - (pw + ph).leading_zeros() + shift + 1;
+        Self {
+            shift,
+            unit,
+            diag,
+            inv_diag,
+            f_shift: (bits + shift + 2).saturating_sub(64 - TIE_BITS),
+            h_shift: h_bits.saturating_sub(TIE_BITS),
+        }
+    }
+
+    /// The heap key of cell `p` with f and h (fixed point), ordered by its upper half: the
+    /// top 40 bits of f, then the top 24 bits of h (ties on f go to the smaller h, that is,
+    /// the larger g), and the cell in the lower half.
+    ///
+    /// Truncating f merges only f values less than `2^f_shift` units apart: 2^-24 cells on
+    /// grids below 2^14 padded cells (the MovingAI arena, the peers' maze), 2^-16 cells
+    /// at 2^22. Distinct lengths `a + b sqrt 2` of paths with fewer than about 10^4
+    /// diagonals lie further apart than that, so there the order is exact; otherwise a
+    /// cell may come out before one whose f is smaller by less than the quantum (a closed
+    /// cell that later gets a smaller g is reopened), and the cost is within the quantum
+    /// of the optimum. Truncating h only coarsens the tie-break.
+    #[inline(always)]
+    fn key(self, f: u64, h: u64, p: u32) -> u128 {
+        let tie = (h >> self.h_shift).min((1 << TIE_BITS) - 1);
+        let hi = ((f >> self.f_shift) << TIE_BITS) | tie;
+        (u128::from(hi) << 64) | u128::from(p)
+    }
+
+    /// A fixed-point cost in cells: `a + b * sqrt 2` for `cost = a * unit + b * diag`.
+    fn to_cells(self, cost: u64) -> f64 {
+        let b = cost.wrapping_mul(self.inv_diag) & (self.unit - 1);
+        let a = cost.wrapping_sub(b.wrapping_mul(self.diag)) >> self.shift;
+        a as f64 + b as f64 * SQRT2
+    }
 }

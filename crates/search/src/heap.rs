@@ -1,4 +1,5 @@
-//! The private open-list entry: a min-heap on `f` with ties broken toward larger `g`.
+//! The private open lists: [`Entry`] for the generic searches (a min-heap on `f` with ties
+//! broken toward larger `g`) and [`MinHeap`], the grid searches' binary heap of packed keys.
 
 use std::cmp::Ordering;
 
@@ -39,9 +40,137 @@ impl<T> Ord for Entry<T> {
     }
 }
 
+/// A binary min-heap of `u128` keys for the grid searches, whose callers pack their order
+/// (f, then the tie-break on g) and the cell into the key.
+///
+/// `WHOLE = true` orders by the whole key; `WHOLE = false` only by its upper 64 bits (one
+/// `u64` comparison): the lower half then only carries the cell, and keys with equal upper
+/// halves come out in any order.
+///
+/// Compared with `BinaryHeap<Reverse<u128>>`: the hole is sifted without swaps, the smaller
+/// child is picked by arithmetic on the comparison (no data-dependent branch to mispredict),
+/// and the sift-down stops as soon as the moved key fits.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct MinHeap<const WHOLE: bool> {
+    keys: Vec<u128>,
+}
+
+impl<const WHOLE: bool> MinHeap<WHOLE> {
+    /// Whether `a` comes out before `b`.
+    #[inline(always)]
+    fn lt(a: u128, b: u128) -> bool {
+        if WHOLE {
+            a < b
+        } else {
+            ((a >> 64) as u64) < ((b >> 64) as u64)
+        }
+    }
+
+    /// Removes every key, keeping the capacity.
+    #[inline]
+    pub fn clear(&mut self) {
+        self.keys.clear();
+    }
+
+    /// Adds `key`.
+    #[inline]
+    pub fn push(&mut self, key: u128) {
+        let keys = &mut self.keys;
+        let mut i = keys.len();
+        keys.push(key);
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            let up = keys[parent];
+            if !Self::lt(key, up) {
+                break;
+            }
+            keys[i] = up;
+            i = parent;
+        }
+        keys[i] = key;
+    }
+
+    /// Removes and returns the smallest key.
+    ///
+    /// The hole left at the root goes down to the bottom along the smaller children (as
+    /// `BinaryHeap::pop` does: the number of steps depends only on the size, so the loop's
+    /// branch is predictable), then the last key moves up into it (usually not far).
+    #[inline]
+    pub fn pop(&mut self) -> Option<u128> {
+        let keys = &mut self.keys;
+        let last = keys.pop()?;
+        let n = keys.len();
+        if n == 0 {
+            return Some(last);
+        }
+        let top = keys[0];
+        let mut i = 0;
+        let mut l = 1;
+        while l + 1 < n {
+            let pair = &keys[l..l + 2];
+            let c = usize::from(Self::lt(pair[1], pair[0]));
+            keys[i] = pair[c];
+            i = l + c;
+            l = 2 * i + 1;
+        }
+        if l + 1 == n {
+            keys[i] = keys[l];
+            i = l;
+        }
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            let up = keys[parent];
+            if !Self::lt(last, up) {
+                break;
+            }
+            keys[i] = up;
+            i = parent;
+        }
+        keys[i] = last;
+        Some(top)
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::Entry;
+    use super::{Entry, MinHeap};
+
+    #[test]
+    fn min_heap_pops_in_order() {
+        let mut heap = MinHeap::<true>::default();
+        let mut keys: Vec<u128> = (0..500u128)
+            .map(|i| (i * 7919 + 13) % 1009 + ((i % 3) << 100))
+            .collect();
+        for &k in &keys {
+            heap.push(k);
+        }
+        keys.sort_unstable();
+        let mut popped = Vec::new();
+        // Interleave: pop half, push them back, pop all.
+        for _ in 0..250 {
+            popped.push(heap.pop().unwrap());
+        }
+        for &k in &popped {
+            heap.push(k);
+        }
+        popped.clear();
+        while let Some(k) = heap.pop() {
+            popped.push(k);
+        }
+        assert_eq!(popped, keys);
+        heap.push(3);
+        heap.clear();
+        assert_eq!(heap.pop(), None);
+        // Upper halves only: the lower half is carried, not compared.
+        let mut heap = MinHeap::<false>::default();
+        let mut small: Vec<u128> = keys.iter().map(|&k| k % 1009).collect();
+        for (i, &k) in small.iter().enumerate() {
+            heap.push((k << 64) | (i as u128 % 7));
+        }
+        let tops: Vec<u128> = std::iter::from_fn(|| heap.pop()).map(|k| k >> 64).collect();
+        small.sort_unstable();
+        assert_eq!(tops, small);
+    }
     use std::collections::BinaryHeap;
 
     #[test]
