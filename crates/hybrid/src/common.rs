@@ -1,23 +1,11 @@
-//! Pieces the four planners share: parameter checks, the counted collision checker,
-//! steering, the grid downcast, zone queries and path assembly.
+//! Pieces the four planners share beyond `sampling`'s toolkit (steer, uniform sampling,
+//! the counted collision checker, step/budget validation, branches): the hybrids' own
+//! parameter checks, the grid downcast, the goal join, zone queries and path assembly.
 
 use envmap::GridMap;
-use hyplan_core::{Budget, Goal, PlanError, Point2, Query, Workspace, Zone};
-use rand::Rng;
+use hyplan_core::{Goal, PlanError, Point2, Workspace, Zone};
+use sampling::CountingChecker;
 use search::{Connectivity, GridOptions};
-
-/// Checks that `value` is finite and > 0.
-pub(crate) fn check_positive(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be finite and > 0 (world units)",
-        })
-    }
-}
 
 /// Checks that `value` is finite and >= 0.
 pub(crate) fn check_non_negative(name: &'static str, value: f64) -> Result<(), PlanError> {
@@ -28,19 +16,6 @@ pub(crate) fn check_non_negative(name: &'static str, value: f64) -> Result<(), P
             name,
             value: format!("{value}"),
             reason: "must be finite and >= 0",
-        })
-    }
-}
-
-/// Checks a probability in [0, 1].
-pub(crate) fn check_probability(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if (0.0..=1.0).contains(&value) {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be a probability in [0, 1]",
         })
     }
 }
@@ -58,24 +33,6 @@ pub(crate) fn check_count(name: &'static str, value: usize) -> Result<(), PlanEr
     }
 }
 
-/// Validates the budget, the workspace bounds and the query.
-pub(crate) fn validate<W: Workspace + ?Sized>(
-    budget: &Budget,
-    ws: &W,
-    query: &Query,
-) -> Result<(), PlanError> {
-    budget.validate()?;
-    let b = ws.bounds();
-    if !(b.width() > 0.0 && b.height() > 0.0 && b.width().is_finite() && b.height().is_finite()) {
-        return Err(PlanError::InvalidParameter {
-            name: "workspace.bounds",
-            value: format!("{} x {}", b.width(), b.height()),
-            reason: "the workspace must have a finite, positive area",
-        });
-    }
-    query.validate(ws)
-}
-
 /// The grid map behind a workspace, or a typed error naming `workspace`.
 pub(crate) fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanError> {
     ws.as_any()
@@ -87,76 +44,13 @@ pub(crate) fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanErr
         })
 }
 
-/// The workspace plus a count of the collision queries made through it.
-pub(crate) struct Checker<'a, W: ?Sized> {
-    pub ws: &'a W,
-    pub checks: u64,
-}
-
-impl<'a, W: Workspace + ?Sized> Checker<'a, W> {
-    pub(crate) fn new(ws: &'a W) -> Self {
-        Self { ws, checks: 0 }
-    }
-
-    /// Exact edge check, counted.
-    #[inline]
-    pub(crate) fn segment_free(&mut self, a: Point2, b: Point2) -> bool {
-        self.checks += 1;
-        self.ws.segment_free(a, b)
-    }
-
-    /// Point check, counted.
-    #[inline]
-    pub(crate) fn is_free(&mut self, p: Point2) -> bool {
-        self.checks += 1;
-        self.ws.is_free(p)
-    }
-}
-
-/// A uniform point in the workspace bounds.
-#[inline]
-pub(crate) fn sample_uniform<W: Workspace + ?Sized, R: Rng + ?Sized>(
-    ws: &W,
-    rng: &mut R,
-) -> Point2 {
-    let b = ws.bounds();
-    Point2::new(
-        b.min.x + hyplan_core::uniform01(rng) * b.width(),
-        b.min.y + hyplan_core::uniform01(rng) * b.height(),
-    )
-}
-
-/// The point at most `step` from `from` towards `to` (`to` itself within `step`).
-#[inline]
-pub(crate) fn steer(from: Point2, to: Point2, step: f64) -> Point2 {
-    let d = to - from;
-    let len = d.norm();
-    if len <= step {
-        to
-    } else {
-        from + d * (step / len)
-    }
-}
-
-/// The points from the root of a parent-linked tree down to `leaf`.
-pub(crate) fn branch(points: &[Point2], parent: &[Option<u32>], leaf: usize) -> Vec<Point2> {
-    let mut path = vec![points[leaf]];
-    let mut i = leaf;
-    while let Some(p) = parent[i] {
-        i = p as usize;
-        path.push(points[i]);
-    }
-    path.reverse();
-    path
-}
-
 /// How a node that came within the planner's goal radius finishes the path.
 ///
 /// Returns the goal centre when the last segment to it is free (the path then ends exactly
 /// at the goal), `Some(None)` when the node itself already satisfies the query's goal (a
 /// disc containing it), and `None` when the node cannot finish the path.
 pub(crate) fn finish_at_goal<W: Workspace + ?Sized>(
-    checker: &mut Checker<'_, W>,
+    checker: &mut CountingChecker<'_, W>,
     goal: &Goal,
     node: Point2,
 ) -> Option<Option<Point2>> {
@@ -171,6 +65,31 @@ pub(crate) fn finish_at_goal<W: Workspace + ?Sized>(
     } else {
         None
     }
+}
+
+/// Finishes a path laid along grid cells: `out` runs from a continuous anchor, through
+/// cell centres, to another continuous anchor, and `cells` are the A* cells it follows.
+/// Where a joint to an anchor is not free, the anchor's own cell centre (`cells`' first
+/// or last) is put in between; then consecutive duplicates are dropped and every segment
+/// is checked. Returns the points after the first anchor, or `None` if a segment fails.
+pub(crate) fn anchor_cell_path<W: Workspace + ?Sized>(
+    map: &GridMap,
+    checker: &mut CountingChecker<'_, W>,
+    mut out: Vec<Point2>,
+    cells: &[(usize, usize)],
+) -> Option<Vec<Point2>> {
+    let centre = |c: (usize, usize)| map.cell_center(c.0, c.1);
+    if !checker.segment_free(out[0], out[1]) {
+        out.insert(1, centre(cells[0]));
+    }
+    let n = out.len();
+    if !checker.segment_free(out[n - 2], out[n - 1]) {
+        out.insert(n - 1, centre(cells[cells.len() - 1]));
+    }
+    dedup(&mut out);
+    out.windows(2)
+        .all(|w| checker.segment_free(w[0], w[1]))
+        .then(|| out.split_off(1))
 }
 
 /// Drops consecutive exact duplicates.

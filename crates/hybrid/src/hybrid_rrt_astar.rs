@@ -19,11 +19,11 @@ use hyplan_core::{
     Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace,
 };
 use rand::{Rng, RngCore};
-use sampling::NearestIndex;
+use sampling::{CountingChecker, NearestIndex};
 use search::GridOptions;
 
 use crate::Staged;
-use crate::common::{self, Checker};
+use crate::common;
 
 /// Which earlier sub-search starts the A* threshold is measured against.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -116,8 +116,8 @@ impl Default for HybridRrtAstar {
 
 impl HybridRrtAstar {
     fn validate_params(&self) -> Result<(), PlanError> {
-        common::check_positive("step", self.step)?;
-        common::check_probability("goal_bias", self.goal_bias)?;
+        sampling::check_positive("step", self.step)?;
+        sampling::check_probability("goal_bias", self.goal_bias)?;
         common::check_non_negative("goal_threshold", self.goal_threshold)?;
         common::check_non_negative("astar_spacing", self.astar_spacing)?;
         common::check_count("astar_max_visited", self.astar_max_visited)
@@ -154,14 +154,14 @@ impl HybridRrtAstar {
         let started = Instant::now();
         self.validate_params()?;
         let map = common::as_grid(ws)?;
-        common::validate(&self.budget, ws, query)?;
+        sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         let goal = query.goal;
         let target = goal.center();
         let goal_cell = map.world_to_cell(target).ok_or(PlanError::InvalidGoal {
             point: target,
             reason: "outside the map",
         })?;
-        let mut checker = Checker::new(ws);
+        let mut checker = CountingChecker::new(ws);
         let mut index = NearestIndex::with_capacity(1024);
         let mut parent: Vec<Option<u32>> = vec![None];
         index.insert(query.start);
@@ -177,16 +177,12 @@ impl HybridRrtAstar {
         while done.is_none() && !self.budget.exhausted(iterations, started) {
             iterations += 1;
             // Phase 1 (Algorithm 1): goal-biased sample, nearest vertex, one step.
-            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
-                target
-            } else {
-                common::sample_uniform(ws, rng)
-            };
+            let sample = sampling::sample_goal_biased(ws, target, self.goal_bias, rng);
             let Some((near, _)) = index.nearest(sample) else {
                 break;
             };
             let near_point = index.point(near);
-            let new_point = common::steer(near_point, sample, self.step);
+            let new_point = sampling::steer(near_point, sample, self.step);
             if new_point == near_point || !checker.segment_free(near_point, new_point) {
                 continue;
             }
@@ -249,7 +245,7 @@ impl HybridRrtAstar {
         let Some((leaf, tail)) = done else {
             return Err(PlanError::BudgetExhausted { stats });
         };
-        let mut path = common::branch(&points, &parent, leaf);
+        let mut path = sampling::branch(&points, &parent, leaf);
         path.extend(tail);
         common::dedup(&mut path);
         stats.elapsed = started.elapsed();
@@ -275,7 +271,7 @@ impl HybridRrtAstar {
     fn join<W: Workspace + ?Sized>(
         &self,
         map: &GridMap,
-        checker: &mut Checker<'_, W>,
+        checker: &mut CountingChecker<'_, W>,
         from: Point2,
         cells: &[(usize, usize)],
         target: Point2,
@@ -288,17 +284,7 @@ impl HybridRrtAstar {
                 .map(|&c| centre(c)),
         );
         out.push(target);
-        if !checker.segment_free(out[0], out[1]) {
-            out.insert(1, centre(cells[0]));
-        }
-        let n = out.len();
-        if !checker.segment_free(out[n - 2], out[n - 1]) {
-            out.insert(n - 1, centre(cells[cells.len() - 1]));
-        }
-        common::dedup(&mut out);
-        out.windows(2)
-            .all(|w| checker.segment_free(w[0], w[1]))
-            .then(|| out.split_off(1))
+        common::anchor_cell_path(map, checker, out, cells)
     }
 }
 

@@ -23,10 +23,10 @@ use hyplan_core::{
     Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace,
 };
 use rand::{Rng, RngCore};
-use sampling::NearestIndex;
+use sampling::{CountingChecker, NearestIndex};
 
 use crate::Staged;
-use crate::common::{self, Checker};
+use crate::common;
 use crate::smooth;
 
 /// RRT-A*-BT (seed 000): RRT extensions taken in A* order with back-tracking, one-pass
@@ -135,12 +135,12 @@ impl Default for RrtAstarBt {
 
 impl RrtAstarBt {
     fn validate_params(&self) -> Result<(), PlanError> {
-        common::check_positive("step", self.step)?;
+        sampling::check_positive("step", self.step)?;
         common::check_non_negative("goal_radius", self.goal_radius)?;
         common::check_count("candidates", self.candidates)?;
         common::check_count("sample_tries", self.sample_tries)?;
         common::check_non_negative("closed_radius", self.closed_radius)?;
-        common::check_positive("curve_spacing", self.curve_spacing)
+        sampling::check_positive("curve_spacing", self.curve_spacing)
     }
 
     /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
@@ -177,10 +177,10 @@ impl RrtAstarBt {
     ) -> Result<Staged, PlanError> {
         let started = Instant::now();
         self.validate_params()?;
-        common::validate(&self.budget, ws, query)?;
+        sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         let goal = query.goal;
         let target = goal.center();
-        let mut checker = Checker::new(ws);
+        let mut checker = CountingChecker::new(ws);
         // The tree: every node ever grown, with its parent and g (path length from start).
         let mut index = NearestIndex::with_capacity(256);
         let mut parent: Vec<Option<u32>> = vec![None];
@@ -210,11 +210,11 @@ impl RrtAstarBt {
             let hp = index.point(head);
             for _ in 0..self.candidates {
                 let sample = (0..self.sample_tries).find_map(|_| {
-                    let p = common::sample_uniform(ws, rng);
+                    let p = sampling::sample_uniform(ws, rng);
                     checker.is_free(p).then_some(p)
                 });
                 let Some(sample) = sample else { continue };
-                let c = common::steer(hp, sample, self.step);
+                let c = sampling::steer(hp, sample, self.step);
                 if c == hp {
                     continue;
                 }
@@ -279,7 +279,7 @@ impl RrtAstarBt {
                 PlanError::BudgetExhausted { stats }
             });
         };
-        let mut raw = common::branch(&points, &parent, leaf);
+        let mut raw = sampling::branch(&points, &parent, leaf);
         raw.extend(end);
         common::dedup(&mut raw);
         // Node reduction (4.5): pairwise, one pass by default.
@@ -314,7 +314,11 @@ impl RrtAstarBt {
                 path,
                 trees: vec![Tree { points, parent }],
                 // PCHIP passes through the reduced path's nodes.
-                waypoints: if self.smoothing { reduced.clone() } else { Vec::new() },
+                waypoints: if self.smoothing {
+                    reduced.clone()
+                } else {
+                    Vec::new()
+                },
                 stats,
             },
             raw,

@@ -20,11 +20,11 @@ use hyplan_core::{
     Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
 };
 use rand::{Rng, RngCore};
-use sampling::Rrt;
+use sampling::{CountingChecker, Rrt};
 use search::{GridOptions, GridSearch};
 
 use crate::Staged;
-use crate::common::{self, Checker};
+use crate::common;
 
 /// RRT + A* near-obstacle refinement (seed 001).
 ///
@@ -145,7 +145,7 @@ impl RrtAstarRefine {
             other => other,
         })?;
         let raw = rrt_plan.path;
-        let mut checker = Checker::new(ws);
+        let mut checker = CountingChecker::new(ws);
         let mut stats = PlanStats {
             iterations: rrt_plan.stats.iterations,
             nodes: rrt_plan.stats.nodes,
@@ -218,7 +218,7 @@ impl RrtAstarRefine {
         &self,
         map: &GridMap,
         search: &mut Option<GridSearch>,
-        checker: &mut Checker<'_, W>,
+        checker: &mut CountingChecker<'_, W>,
         stats: &mut PlanStats,
         a: Point2,
         b: Point2,
@@ -256,17 +256,7 @@ impl RrtAstarRefine {
         }
         out.push(b);
         // Joints to the continuous anchors: fall back on the anchors' own cell centres.
-        if !checker.segment_free(out[0], out[1]) {
-            out.insert(1, centre(cells[0]));
-        }
-        let n = out.len();
-        if !checker.segment_free(out[n - 2], out[n - 1]) {
-            out.insert(n - 1, centre(cells[cells.len() - 1]));
-        }
-        common::dedup(&mut out);
-        out.windows(2)
-            .all(|w| checker.segment_free(w[0], w[1]))
-            .then(|| out.split_off(1))
+        common::anchor_cell_path(map, checker, out, cells)
     }
 }
 

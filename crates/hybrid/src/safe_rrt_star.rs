@@ -19,10 +19,10 @@ use hyplan_core::{
     Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace, Zone,
 };
 use rand::{Rng, RngCore};
-use sampling::NearestIndex;
+use sampling::{CountingChecker, StarTree};
 
 use crate::Staged;
-use crate::common::{self, Checker, ZoneView};
+use crate::common::{self, ZoneView};
 use crate::smooth;
 
 /// Safety-cost RRT* with redundant-node removal and B-spline smoothing (seed 003).
@@ -125,55 +125,17 @@ impl Default for SafeRrtStar {
     }
 }
 
-/// The tree with costs-to-come and child lists (for cost updates after rewiring).
-struct StarTree {
-    index: NearestIndex,
-    parent: Vec<Option<u32>>,
-    cost: Vec<f64>,
-    children: Vec<Vec<u32>>,
-}
-
-impl StarTree {
-    fn add(&mut self, p: Point2, parent: usize, cost: f64) -> usize {
-        let id = self.index.insert(p);
-        self.parent.push(Some(parent as u32));
-        self.cost.push(cost);
-        self.children.push(Vec::new());
-        self.children[parent].push(id as u32);
-        id
-    }
-
-    /// Makes `new_parent` the parent of `node` at `cost`, shifting the subtree's costs.
-    fn reparent(&mut self, node: usize, new_parent: usize, cost: f64) {
-        if let Some(old) = self.parent[node] {
-            let siblings = &mut self.children[old as usize];
-            if let Some(pos) = siblings.iter().position(|&c| c as usize == node) {
-                siblings.swap_remove(pos);
-            }
-        }
-        self.parent[node] = Some(new_parent as u32);
-        self.children[new_parent].push(node as u32);
-        let delta = cost - self.cost[node];
-        self.cost[node] = cost;
-        let mut stack: Vec<u32> = self.children[node].clone();
-        while let Some(c) = stack.pop() {
-            self.cost[c as usize] += delta;
-            stack.extend_from_slice(&self.children[c as usize]);
-        }
-    }
-}
-
 impl SafeRrtStar {
     fn validate_params(&self) -> Result<(), PlanError> {
-        common::check_positive("step", self.step)?;
+        sampling::check_positive("step", self.step)?;
         common::check_non_negative("goal_radius", self.goal_radius)?;
-        common::check_probability("goal_bias", self.goal_bias)?;
-        common::check_positive("gamma", self.gamma)?;
-        common::check_positive("max_radius", self.max_radius)?;
+        sampling::check_probability("goal_bias", self.goal_bias)?;
+        sampling::check_positive("gamma", self.gamma)?;
+        sampling::check_positive("max_radius", self.max_radius)?;
         common::check_non_negative("safety_weight", self.safety_weight)?;
         common::check_count("sample_tries", self.sample_tries)?;
-        common::check_positive("spline_max_spacing", self.spline_max_spacing)?;
-        common::check_positive("curve_spacing", self.curve_spacing)
+        sampling::check_positive("spline_max_spacing", self.spline_max_spacing)?;
+        sampling::check_positive("curve_spacing", self.curve_spacing)
     }
 
     /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
@@ -206,7 +168,7 @@ impl SafeRrtStar {
     ) -> Result<Staged, PlanError> {
         let started = Instant::now();
         self.validate_params()?;
-        common::validate(&self.budget, ws, query)?;
+        sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         let goal = query.goal;
         let target = goal.center();
         let view = ZoneView::new(ws, self.step / 16.0);
@@ -220,14 +182,8 @@ impl SafeRrtStar {
                 len + lambda * view.risk_length(a, b)
             }
         };
-        let mut checker = Checker::new(ws);
-        let mut tree = StarTree {
-            index: NearestIndex::with_capacity(1024),
-            parent: vec![None],
-            cost: vec![0.0],
-            children: vec![Vec::new()],
-        };
-        tree.index.insert(query.start);
+        let mut checker = CountingChecker::new(ws);
+        let mut tree = StarTree::rooted_at(query.start);
         // Goal links: (tree node, point appended after it, if any).
         let mut links: Vec<(usize, Option<Point2>)> = Vec::new();
         if (query.start - target).norm() <= self.goal_radius || goal.contains(query.start) {
@@ -246,7 +202,7 @@ impl SafeRrtStar {
                 Some(target)
             } else {
                 (0..self.sample_tries).find_map(|_| {
-                    let p = common::sample_uniform(ws, rng);
+                    let p = sampling::sample_uniform(ws, rng);
                     checker.checks += 1;
                     (view.zone(p) == Zone::Free).then_some(p)
                 })
@@ -257,7 +213,7 @@ impl SafeRrtStar {
                 break;
             };
             let nearest_point = tree.index.point(nearest);
-            let new_point = common::steer(nearest_point, sample, self.step);
+            let new_point = sampling::steer(nearest_point, sample, self.step);
             if new_point == nearest_point {
                 continue;
             }
@@ -310,7 +266,7 @@ impl SafeRrtStar {
             }
         }
 
-        let points: Vec<Point2> = (0..tree.index.len()).map(|i| tree.index.point(i)).collect();
+        let points = tree.points();
         let mut stats = PlanStats {
             iterations,
             nodes: points.len() as u64,
@@ -327,7 +283,7 @@ impl SafeRrtStar {
             stats.elapsed = started.elapsed();
             return Err(PlanError::BudgetExhausted { stats });
         };
-        let mut raw = common::branch(&points, &tree.parent, leaf);
+        let mut raw = sampling::branch(&points, &tree.parent, leaf);
         raw.extend(end);
         common::dedup(&mut raw);
         // Redundant-node removal (2.3): greedy from the start, segments avoiding Risk too.
@@ -357,7 +313,11 @@ impl SafeRrtStar {
                     parent: tree.parent,
                 }],
                 // The B-spline's control points are the reduced path's nodes.
-                waypoints: if self.smoothing { reduced.clone() } else { Vec::new() },
+                waypoints: if self.smoothing {
+                    reduced.clone()
+                } else {
+                    Vec::new()
+                },
                 stats,
             },
             raw,

@@ -7,7 +7,8 @@ use std::time::Instant;
 use hyplan_core::{Budget, Plan, PlanError, Planner, PlannerInfo, Progress, Query, Workspace};
 use rand::{Rng, RngCore};
 
-use crate::common::{self, Checker, GrowTree};
+use crate::common::{self, GrowTree};
+use crate::toolkit::{self, CountingChecker};
 
 /// The Bi-RRT planner's parameters.
 ///
@@ -93,9 +94,9 @@ impl BiRrt {
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
         let started = Instant::now();
-        common::validate(self.step, &self.budget, ws, query)?;
+        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         let goal = query.goal;
-        let mut checker = Checker::new(ws);
+        let mut checker = CountingChecker::new(ws);
         // trees[0] grows from the start, trees[1] from the goal centre.
         let mut trees = [
             GrowTree::rooted_at(query.start),
@@ -122,14 +123,14 @@ impl BiRrt {
             }
             let other = 1 - active;
             // Sample: uniform in the bounds.
-            let sample = common::sample_uniform(ws, rng);
+            let sample = toolkit::sample_uniform(ws, rng);
             // Nearest: the active tree's node closest to the sample.
             let Some((near, _)) = trees[active].index.nearest(sample) else {
                 break;
             };
             let near_point = trees[active].index.point(near);
             // Steer: at most one step towards the sample.
-            let new_point = common::steer(near_point, sample, self.step);
+            let new_point = toolkit::steer(near_point, sample, self.step);
             // Segment free: the edge, exactly; then add the node.
             if new_point != near_point && checker.segment_free(near_point, new_point) {
                 let new = trees[active].add(new_point, near);
@@ -159,7 +160,7 @@ impl BiRrt {
         };
         let path = match b {
             Some(b) => common::joined_path(&trees[0], a, &trees[1], b),
-            None => common::branch(&trees[0].points(), &trees[0].parent, a),
+            None => toolkit::branch(&trees[0].points(), &trees[0].parent, a),
         };
         Ok(Plan {
             cost: hyplan_core::path_length(&path),

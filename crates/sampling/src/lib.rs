@@ -14,6 +14,10 @@
 //! - [`BiRrt`]: two trees grown in turn, joined by one free step.
 //! - [`RrtConnect`]: two trees, greedy connect.
 //! - [`NearestIndex`]: the k-d tree (kiddo) behind one small type, plain distances.
+//! - [`toolkit`], re-exported here: the building blocks the planners are made of, for
+//!   planners in other crates: [`steer`], [`sample_uniform`], [`sample_goal_biased`], [`CountingChecker`],
+//!   [`branch`], [`StarTree`], [`validate_step_and_budget`], [`check_positive`] and
+//!   [`check_probability`].
 //!
 //! # Guarantees
 //!
@@ -72,9 +76,14 @@ mod nearest;
 mod rrt;
 mod rrt_connect;
 mod rrt_star;
+pub mod toolkit;
 
 pub use bi_rrt::BiRrt;
 pub use nearest::NearestIndex;
 pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::{RewireRadius, RrtStar};
+pub use toolkit::{
+    CountingChecker, StarTree, branch, check_positive, check_probability, sample_goal_biased,
+    sample_uniform, steer, validate_step_and_budget,
+};

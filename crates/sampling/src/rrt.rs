@@ -13,7 +13,8 @@ use rand::Rng;
 use rand::RngCore;
 
 use crate::NearestIndex;
-use crate::common::{self, Checker};
+use crate::common;
+use crate::toolkit::{self, CountingChecker};
 
 /// The RRT planner's parameters.
 ///
@@ -106,10 +107,10 @@ impl Rrt {
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
         let started = Instant::now();
-        common::validate(self.step, &self.budget, ws, query)?;
-        common::check_goal_bias(self.goal_bias)?;
+        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        toolkit::check_probability("goal_bias", self.goal_bias)?;
         let goal = query.goal;
-        let mut checker = Checker::new(ws);
+        let mut checker = CountingChecker::new(ws);
         let mut index = NearestIndex::with_capacity(1024);
         let mut parent: Vec<Option<u32>> = Vec::with_capacity(1024);
         index.insert(query.start);
@@ -130,18 +131,14 @@ impl Rrt {
                 }
             }
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
-            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
-                goal.center()
-            } else {
-                common::sample_uniform(ws, rng)
-            };
+            let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
             // Nearest: the tree node closest to the sample.
             let Some((near, _)) = index.nearest(sample) else {
                 break;
             };
             let near_point = index.point(near);
             // Steer: at most one step from the nearest node towards the sample.
-            let new_point = common::steer(near_point, sample, self.step);
+            let new_point = toolkit::steer(near_point, sample, self.step);
             if new_point == near_point {
                 continue;
             }
@@ -168,7 +165,7 @@ impl Rrt {
         let Some(leaf) = reached else {
             return Err(PlanError::BudgetExhausted { stats });
         };
-        let path = common::branch(&points, &parent, leaf);
+        let path = toolkit::branch(&points, &parent, leaf);
         Ok(Plan {
             cost: hyplan_core::path_length(&path),
             path,

@@ -10,7 +10,8 @@ use hyplan_core::{
 };
 use rand::{Rng, RngCore};
 
-use crate::common::{self, Checker, GrowTree};
+use crate::common::{self, GrowTree};
+use crate::toolkit::{self, CountingChecker};
 
 /// The outcome of one extension step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -71,7 +72,7 @@ fn extend<W: Workspace + ?Sized>(
     tree: &mut GrowTree,
     target: Point2,
     step: f64,
-    checker: &mut Checker<'_, W>,
+    checker: &mut CountingChecker<'_, W>,
 ) -> ExtendStatus {
     // Nearest: the tree node closest to the target.
     let Some((near, _)) = tree.index.nearest(target) else {
@@ -82,7 +83,7 @@ fn extend<W: Workspace + ?Sized>(
         return ExtendStatus::Reached(near);
     }
     // Steer: at most one step towards the target.
-    let new_point = common::steer(near_point, target, step);
+    let new_point = toolkit::steer(near_point, target, step);
     // Segment free: exactly.
     if !checker.segment_free(near_point, new_point) {
         return ExtendStatus::Trapped;
@@ -132,9 +133,9 @@ impl RrtConnect {
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
         let started = Instant::now();
-        common::validate(self.step, &self.budget, ws, query)?;
+        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         let goal = query.goal;
-        let mut checker = Checker::new(ws);
+        let mut checker = CountingChecker::new(ws);
         // trees[0] grows from the start, trees[1] from the goal centre.
         let mut trees = [
             GrowTree::rooted_at(query.start),
@@ -161,7 +162,7 @@ impl RrtConnect {
             }
             let other = 1 - active;
             // Sample: uniform in the bounds.
-            let sample = common::sample_uniform(ws, rng);
+            let sample = toolkit::sample_uniform(ws, rng);
             // Extend: the active tree one step towards the sample.
             let new = match extend(&mut trees[active], sample, self.step, &mut checker) {
                 ExtendStatus::Trapped => {
@@ -209,7 +210,7 @@ impl RrtConnect {
         };
         let path = match b {
             Some(b) => common::joined_path(&trees[0], a, &trees[1], b),
-            None => common::branch(&trees[0].points(), &trees[0].parent, a),
+            None => toolkit::branch(&trees[0].points(), &trees[0].parent, a),
         };
         Ok(Plan {
             cost: hyplan_core::path_length(&path),

@@ -9,8 +9,8 @@ use hyplan_core::{
 };
 use rand::{Rng, RngCore};
 
-use crate::NearestIndex;
-use crate::common::{self, Checker};
+use crate::common;
+use crate::toolkit::{self, CountingChecker, StarTree};
 
 /// How RRT* picks the neighbours it considers as parents and rewires.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -91,45 +91,6 @@ impl Default for RrtStar {
     }
 }
 
-/// The growing tree with costs-to-come and child lists (for cost updates after rewiring).
-struct StarTree {
-    index: NearestIndex,
-    parent: Vec<Option<u32>>,
-    cost: Vec<f64>,
-    children: Vec<Vec<u32>>,
-}
-
-impl StarTree {
-    fn add(&mut self, p: hyplan_core::Point2, parent: usize, cost: f64) -> usize {
-        let id = self.index.insert(p);
-        self.parent.push(Some(parent as u32));
-        self.cost.push(cost);
-        self.children.push(Vec::new());
-        self.children[parent].push(id as u32);
-        id
-    }
-
-    /// Makes `new_parent` the parent of `node`, with cost `cost`, and shifts the costs of
-    /// the whole subtree of `node` by the same amount.
-    fn reparent(&mut self, node: usize, new_parent: usize, cost: f64) {
-        if let Some(old) = self.parent[node] {
-            let siblings = &mut self.children[old as usize];
-            if let Some(pos) = siblings.iter().position(|&c| c as usize == node) {
-                siblings.swap_remove(pos);
-            }
-        }
-        self.parent[node] = Some(new_parent as u32);
-        self.children[new_parent].push(node as u32);
-        let delta = cost - self.cost[node];
-        self.cost[node] = cost;
-        let mut stack: Vec<u32> = self.children[node].clone();
-        while let Some(c) = stack.pop() {
-            self.cost[c as usize] += delta;
-            stack.extend_from_slice(&self.children[c as usize]);
-        }
-    }
-}
-
 impl RrtStar {
     fn validate_rewire(&self) -> Result<(), PlanError> {
         match self.rewire {
@@ -186,8 +147,8 @@ impl RrtStar {
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
         let started = Instant::now();
-        common::validate(self.step, &self.budget, ws, query)?;
-        common::check_goal_bias(self.goal_bias)?;
+        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        toolkit::check_probability("goal_bias", self.goal_bias)?;
         self.validate_rewire()?;
         let goal = query.goal;
         let bounds = ws.bounds();
@@ -198,14 +159,8 @@ impl RrtStar {
             RewireRadius::Gamma(g) => g,
             RewireRadius::KNearest(_) => 0.0,
         };
-        let mut checker = Checker::new(ws);
-        let mut tree = StarTree {
-            index: NearestIndex::with_capacity(1024),
-            parent: vec![None],
-            cost: vec![0.0],
-            children: vec![Vec::new()],
-        };
-        tree.index.insert(query.start);
+        let mut checker = CountingChecker::new(ws);
+        let mut tree = StarTree::rooted_at(query.start);
         // Nodes in the goal region; the best is chosen at the end (rewiring changes costs).
         let mut goal_nodes: Vec<usize> = Vec::new();
         let mut exact_goal_node: Option<usize> = None;
@@ -234,18 +189,14 @@ impl RrtStar {
                 }
             }
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
-            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
-                goal.center()
-            } else {
-                common::sample_uniform(ws, rng)
-            };
+            let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
             // Nearest: the tree node closest to the sample.
             let Some((nearest, _)) = tree.index.nearest(sample) else {
                 break;
             };
             let nearest_point = tree.index.point(nearest);
             // Steer: at most one step towards the sample.
-            let new_point = common::steer(nearest_point, sample, self.step);
+            let new_point = toolkit::steer(nearest_point, sample, self.step);
             if new_point == nearest_point {
                 continue;
             }
@@ -307,7 +258,7 @@ impl RrtStar {
             }
         }
 
-        let points: Vec<_> = (0..tree.index.len()).map(|i| tree.index.point(i)).collect();
+        let points = tree.points();
         let stats = common::stats(iterations, points.len(), checker.checks, started);
         let best = goal_nodes
             .iter()
@@ -316,7 +267,7 @@ impl RrtStar {
         let Some(leaf) = best else {
             return Err(PlanError::BudgetExhausted { stats });
         };
-        let path = common::branch(&points, &tree.parent, leaf);
+        let path = toolkit::branch(&points, &tree.parent, leaf);
         Ok(Plan {
             cost: hyplan_core::path_length(&path),
             path,

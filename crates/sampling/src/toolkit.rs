@@ -1,0 +1,293 @@
+//! The building blocks every sampling planner is made of, public so that planners in
+//! other crates (the hybrids) grow their trees exactly as these do: parameter checks,
+//! uniform and goal-biased sampling, steering, a counted collision checker and branch extraction.
+//!
+//! Each piece is the textbook step of RRT (LaValle 1998; seed `000_9b224721fe327833.txt`
+//! section 4.2) and draws nothing from the RNG beyond what its documentation says, so a
+//! planner built from them keeps its draw order, and its output, bit for bit.
+//!
+//! ```
+//! use envmap::GridMap;
+//! use hyplan_core::{Budget, Goal, Point2, Query};
+//! use rand::SeedableRng;
+//! use sampling::{CountingChecker, branch, sample_uniform, steer, validate_step_and_budget};
+//!
+//! let map = GridMap::from_ascii("
+//!     ......
+//!     ......
+//! ")?;
+//! let query = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(5.5, 1.5)));
+//! validate_step_and_budget(1.0, &Budget::iterations(100), &map, &query)?;
+//! let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+//! let mut checker = CountingChecker::new(&map);
+//! // One extension: sample, steer one step from the root, check the edge.
+//! let mut points = vec![query.start];
+//! let mut parent = vec![None];
+//! let sample = sample_uniform(&map, &mut rng);
+//! let new_point = steer(query.start, sample, 1.0);
+//! if checker.segment_free(query.start, new_point) {
+//!     points.push(new_point);
+//!     parent.push(Some(0));
+//! }
+//! assert_eq!(checker.checks, 1);
+//! assert_eq!(branch(&points, &parent, points.len() - 1)[0], query.start);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use hyplan_core::{Budget, PlanError, Point2, Query, Workspace};
+use rand::Rng;
+
+use crate::NearestIndex;
+
+/// Checks that a length parameter `name` is finite and > 0.
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `name` otherwise.
+pub fn check_positive(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be finite and > 0 (world units)",
+        })
+    }
+}
+
+/// Checks that `name` (a goal bias, say) is a probability in [0, 1].
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `name` otherwise (NaN included).
+pub fn check_probability(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if (0.0..=1.0).contains(&value) {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be a probability in [0, 1]",
+        })
+    }
+}
+
+/// Validates what every tree-growing planner has, in this order: the step (finite and
+/// positive), the budget, the workspace bounds (a finite, positive area to sample in)
+/// and the query (start and goal inside the workspace and free).
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `step` or `workspace.bounds`, or from
+/// [`Budget::validate`];
+/// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] from [`Query::validate`].
+pub fn validate_step_and_budget<W: Workspace + ?Sized>(
+    step: f64,
+    budget: &Budget,
+    ws: &W,
+    query: &Query,
+) -> Result<(), PlanError> {
+    check_positive("step", step)?;
+    budget.validate()?;
+    let b = ws.bounds();
+    if !(b.width() > 0.0 && b.height() > 0.0 && b.width().is_finite() && b.height().is_finite()) {
+        return Err(PlanError::InvalidParameter {
+            name: "workspace.bounds",
+            value: format!("{} x {}", b.width(), b.height()),
+            reason: "the workspace must have a finite, positive area",
+        });
+    }
+    query.validate(ws)
+}
+
+/// A uniform sample over the workspace bounds: two draws from `rng`, x then y.
+///
+/// Not rejection-sampled: the edge check rejects blocked extensions, as in the original
+/// RRT.
+#[inline]
+pub fn sample_uniform<W: Workspace + ?Sized, R: Rng + ?Sized>(ws: &W, rng: &mut R) -> Point2 {
+    let b = ws.bounds();
+    Point2::new(
+        b.min.x + hyplan_core::uniform01(rng) * b.width(),
+        b.min.y + hyplan_core::uniform01(rng) * b.height(),
+    )
+}
+
+/// The goal-biased sample of RRT: with probability `goal_bias` the goal centre `goal`,
+/// else [`sample_uniform`]. Draws one number from `rng` for the coin, then two more only
+/// for a uniform point.
+#[inline]
+pub fn sample_goal_biased<W: Workspace + ?Sized, R: Rng + ?Sized>(
+    ws: &W,
+    goal: Point2,
+    goal_bias: f64,
+    rng: &mut R,
+) -> Point2 {
+    if hyplan_core::uniform01(rng) < goal_bias {
+        goal
+    } else {
+        sample_uniform(ws, rng)
+    }
+}
+
+/// Steer: the point at most `step` from `from` on the segment towards `to` (`to` itself,
+/// bit for bit, when it is within `step`).
+///
+/// ```
+/// use hyplan_core::Point2;
+/// let p = sampling::steer(Point2::new(0.0, 0.0), Point2::new(3.0, 4.0), 1.0);
+/// assert!((p - Point2::new(0.6, 0.8)).norm() < 1e-12);
+/// assert_eq!(sampling::steer(p, Point2::new(1.0, 1.0), 1.0), Point2::new(1.0, 1.0));
+/// ```
+#[inline]
+pub fn steer(from: Point2, to: Point2, step: f64) -> Point2 {
+    let d = to - from;
+    let len = d.norm();
+    if len <= step {
+        to
+    } else {
+        from + d * (step / len)
+    }
+}
+
+/// The workspace plus a count of the collision queries made through it (what a plan
+/// reports as [`PlanStats::collision_checks`](hyplan_core::PlanStats::collision_checks)).
+///
+/// A planner that checks a segment some other way (a zone test, say) may add to `checks`
+/// itself.
+pub struct CountingChecker<'a, W: ?Sized> {
+    /// The workspace asked.
+    pub ws: &'a W,
+    /// Queries made so far.
+    pub checks: u64,
+}
+
+impl<'a, W: Workspace + ?Sized> CountingChecker<'a, W> {
+    /// A checker on `ws` with no queries counted yet.
+    pub fn new(ws: &'a W) -> Self {
+        Self { ws, checks: 0 }
+    }
+
+    /// [`Workspace::segment_free`] (the exact edge check), counted.
+    #[inline]
+    pub fn segment_free(&mut self, a: Point2, b: Point2) -> bool {
+        self.checks += 1;
+        self.ws.segment_free(a, b)
+    }
+
+    /// [`Workspace::is_free`] (a point check), counted.
+    #[inline]
+    pub fn is_free(&mut self, p: Point2) -> bool {
+        self.checks += 1;
+        self.ws.is_free(p)
+    }
+}
+
+/// The branch of a parent-linked tree from its root down to `leaf`: the points in path
+/// order. `parent[i]` is the parent of `points[i]` (`None` for the root).
+///
+/// # Panics
+///
+/// If `leaf` or a parent link is out of range of `points` / `parent`.
+///
+/// ```
+/// use hyplan_core::Point2;
+/// let points = [Point2::new(0.0, 0.0), Point2::new(1.0, 0.0), Point2::new(0.0, 1.0)];
+/// let parent = [None, Some(0), Some(1)];
+/// assert_eq!(sampling::branch(&points, &parent, 2), points.to_vec());
+/// ```
+pub fn branch(points: &[Point2], parent: &[Option<u32>], leaf: usize) -> Vec<Point2> {
+    let mut path = vec![points[leaf]];
+    let mut i = leaf;
+    while let Some(p) = parent[i] {
+        i = p as usize;
+        path.push(points[i]);
+    }
+    path.reverse();
+    path
+}
+
+/// The RRT* tree (Karaman and Frazzoli 2011): nodes in a nearest-neighbour index, with
+/// parent links, costs-to-come and child lists, so that rewiring a node shifts the cost of
+/// its whole subtree. Node ids are insertion order, the root is node 0.
+///
+/// ```
+/// use hyplan_core::Point2;
+/// use sampling::StarTree;
+///
+/// let mut tree = StarTree::rooted_at(Point2::new(0.0, 0.0));
+/// let a = tree.add(Point2::new(2.0, 0.0), 0, 2.0);
+/// let b = tree.add(Point2::new(3.0, 0.0), a, 3.0);
+/// // Rewire: `a` gets a cheaper parent; its child `b` follows.
+/// tree.reparent(a, 0, 1.5);
+/// assert_eq!(tree.cost[b], 2.5);
+/// assert_eq!(tree.points().len(), 3);
+/// ```
+pub struct StarTree {
+    /// The nodes, by id.
+    pub index: NearestIndex,
+    /// Each node's parent (`None` for the root).
+    pub parent: Vec<Option<u32>>,
+    /// Each node's cost-to-come from the root.
+    pub cost: Vec<f64>,
+    /// Each node's children.
+    pub children: Vec<Vec<u32>>,
+}
+
+impl StarTree {
+    /// A tree holding only `root`, at cost 0.
+    pub fn rooted_at(root: Point2) -> Self {
+        let mut index = NearestIndex::with_capacity(1024);
+        index.insert(root);
+        Self {
+            index,
+            parent: vec![None],
+            cost: vec![0.0],
+            children: vec![Vec::new()],
+        }
+    }
+
+    /// Adds `p` under `parent` with cost-to-come `cost`; returns its id.
+    ///
+    /// # Panics
+    ///
+    /// If `parent` is not a node of the tree.
+    pub fn add(&mut self, p: Point2, parent: usize, cost: f64) -> usize {
+        let id = self.index.insert(p);
+        self.parent.push(Some(parent as u32));
+        self.cost.push(cost);
+        self.children.push(Vec::new());
+        self.children[parent].push(id as u32);
+        id
+    }
+
+    /// Rewires: makes `new_parent` the parent of `node`, with cost `cost`, and shifts the
+    /// costs of the whole subtree of `node` by the same amount.
+    ///
+    /// # Panics
+    ///
+    /// If `node` or `new_parent` is not a node of the tree.
+    pub fn reparent(&mut self, node: usize, new_parent: usize, cost: f64) {
+        if let Some(old) = self.parent[node] {
+            let siblings = &mut self.children[old as usize];
+            if let Some(pos) = siblings.iter().position(|&c| c as usize == node) {
+                siblings.swap_remove(pos);
+            }
+        }
+        self.parent[node] = Some(new_parent as u32);
+        self.children[new_parent].push(node as u32);
+        let delta = cost - self.cost[node];
+        self.cost[node] = cost;
+        let mut stack: Vec<u32> = self.children[node].clone();
+        while let Some(c) = stack.pop() {
+            self.cost[c as usize] += delta;
+            stack.extend_from_slice(&self.children[c as usize]);
+        }
+    }
+
+    /// The node points in id order.
+    pub fn points(&self) -> Vec<Point2> {
+        (0..self.index.len()).map(|i| self.index.point(i)).collect()
+    }
+}
