@@ -232,7 +232,7 @@ impl HybridRrtAstar {
             }
         }
 
-        let points: Vec<Point2> = (0..index.len()).map(|i| index.point(i)).collect();
+        let points = index.points().to_vec();
         let tree_nodes = points.len() as u64;
         let mut stats = PlanStats {
             iterations,

@@ -263,7 +263,7 @@ impl RrtAstarBt {
             }
         }
 
-        let points: Vec<Point2> = (0..index.len()).map(|i| index.point(i)).collect();
+        let points = index.points().to_vec();
         let mut stats = PlanStats {
             iterations,
             nodes: points.len() as u64,

@@ -75,7 +75,7 @@ impl GrowTree {
 
     /// The points in id order.
     pub fn points(&self) -> Vec<Point2> {
-        (0..self.index.len()).map(|i| self.index.point(i)).collect()
+        self.index.points().to_vec()
     }
 
     /// Plain-data copy for [`hyplan_core::Plan::trees`].

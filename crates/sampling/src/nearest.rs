@@ -95,6 +95,13 @@ impl NearestIndex {
         self.points[id]
     }
 
+    /// Every point inserted, in id order (a tree's nodes, for
+    /// [`Tree::points`](hyplan_core::Tree::points) or [`branch`](crate::branch)).
+    #[must_use]
+    pub fn points(&self) -> &[Point2] {
+        &self.points
+    }
+
     /// Adds `p` and returns its id (the number of points inserted before it).
     pub fn insert(&mut self, p: Point2) -> usize {
         let id = self.points.len();

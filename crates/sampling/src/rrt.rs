@@ -160,7 +160,7 @@ impl Rrt {
             }
         }
 
-        let points: Vec<_> = (0..index.len()).map(|i| index.point(i)).collect();
+        let points = index.points().to_vec();
         let stats = common::stats(iterations, points.len(), checker.checks, started);
         let Some(leaf) = reached else {
             return Err(PlanError::BudgetExhausted { stats });

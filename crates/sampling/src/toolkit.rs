@@ -288,6 +288,6 @@ impl StarTree {
 
     /// The node points in id order.
     pub fn points(&self) -> Vec<Point2> {
-        (0..self.index.len()).map(|i| self.index.point(i)).collect()
+        self.index.points().to_vec()
     }
 }
