@@ -155,20 +155,7 @@ impl BiRrt {
 
         let nodes = trees[0].len() + trees[1].len();
         let stats = common::stats(iterations, nodes, checker.checks, started);
-        let Some((a, b)) = joined else {
-            return Err(PlanError::BudgetExhausted { stats });
-        };
-        let path = match b {
-            Some(b) => common::joined_path(&trees[0], a, &trees[1], b),
-            None => toolkit::branch(&trees[0].points(), &trees[0].parent, a),
-        };
-        Ok(Plan {
-            cost: hyplan_core::path_length(&path),
-            path,
-            trees: vec![trees[0].to_tree(), trees[1].to_tree()],
-            waypoints: Vec::new(),
-            stats,
-        })
+        common::two_tree_plan(&trees, joined, stats)
     }
 }
 

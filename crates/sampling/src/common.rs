@@ -1,11 +1,12 @@
 //! Private pieces the planners of this crate share: the observer plumbing, statistics,
-//! the exact-goal join and the plain growing tree. The public building blocks (checks,
+//! the exact-goal join, the plain growing tree and the ends of one- and two-tree runs
+//! (the plan built from the tree or trees). The public building blocks (checks,
 //! sampling, steering, the counted checker, branches) are in [`crate::toolkit`].
 
 use std::ops::ControlFlow;
 use std::time::Instant;
 
-use hyplan_core::{Goal, PlanStats, Point2, Progress};
+use hyplan_core::{Goal, Plan, PlanError, PlanStats, Point2, Progress, Tree};
 
 use crate::{NearestIndex, toolkit};
 
@@ -41,7 +42,7 @@ pub(crate) fn exact_goal_within(goal: &Goal, p: Point2, step: f64) -> Option<Poi
 
 /// Removes consecutive exact duplicates (a joined bidirectional path can repeat the
 /// meeting point).
-pub(crate) fn dedup(path: &mut Vec<Point2>) {
+fn dedup(path: &mut Vec<Point2>) {
     path.dedup_by(|a, b| a == b);
 }
 
@@ -89,11 +90,57 @@ impl GrowTree {
 
 /// The path of two trees joined at `a` (a node of the start tree) and `b` (a node of the
 /// goal tree): root of the start tree to `a`, then `b` back to the goal root.
-pub(crate) fn joined_path(start: &GrowTree, a: usize, goal: &GrowTree, b: usize) -> Vec<Point2> {
+fn joined_path(start: &GrowTree, a: usize, goal: &GrowTree, b: usize) -> Vec<Point2> {
     let mut path = toolkit::branch(&start.points(), &start.parent, a);
     let mut back = toolkit::branch(&goal.points(), &goal.parent, b);
     back.reverse();
     path.extend(back);
     dedup(&mut path);
     path
+}
+
+/// The end of a one-tree run: the branch from the root to `leaf` as the plan, with the
+/// tree and the statistics; without a leaf, [`PlanError::BudgetExhausted`] with the
+/// statistics.
+pub(crate) fn tree_plan(
+    tree: Tree,
+    leaf: Option<usize>,
+    stats: PlanStats,
+) -> Result<Plan, PlanError> {
+    let Some(leaf) = leaf else {
+        return Err(PlanError::BudgetExhausted { stats });
+    };
+    let path = toolkit::branch(&tree.points, &tree.parent, leaf);
+    Ok(Plan {
+        cost: hyplan_core::path_length(&path),
+        path,
+        trees: vec![tree],
+        waypoints: Vec::new(),
+        stats,
+    })
+}
+
+/// The end of a two-tree run (start tree first): the trees joined at `joined` (a start-tree
+/// node and the goal-tree node it met; `None` for the goal node when the start tree reached
+/// the goal region by itself) as the plan, with both trees and the statistics; without a
+/// join, [`PlanError::BudgetExhausted`] with the statistics.
+pub(crate) fn two_tree_plan(
+    trees: &[GrowTree; 2],
+    joined: Option<(usize, Option<usize>)>,
+    stats: PlanStats,
+) -> Result<Plan, PlanError> {
+    let Some((a, b)) = joined else {
+        return Err(PlanError::BudgetExhausted { stats });
+    };
+    let path = match b {
+        Some(b) => joined_path(&trees[0], a, &trees[1], b),
+        None => toolkit::branch(&trees[0].points(), &trees[0].parent, a),
+    };
+    Ok(Plan {
+        cost: hyplan_core::path_length(&path),
+        path,
+        trees: vec![trees[0].to_tree(), trees[1].to_tree()],
+        waypoints: Vec::new(),
+        stats,
+    })
 }

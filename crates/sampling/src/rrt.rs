@@ -162,17 +162,7 @@ impl Rrt {
 
         let points = index.points().to_vec();
         let stats = common::stats(iterations, points.len(), checker.checks, started);
-        let Some(leaf) = reached else {
-            return Err(PlanError::BudgetExhausted { stats });
-        };
-        let path = toolkit::branch(&points, &parent, leaf);
-        Ok(Plan {
-            cost: hyplan_core::path_length(&path),
-            path,
-            trees: vec![Tree { points, parent }],
-            waypoints: Vec::new(),
-            stats,
-        })
+        common::tree_plan(Tree { points, parent }, reached, stats)
     }
 }
 

@@ -264,20 +264,11 @@ impl RrtStar {
             .iter()
             .copied()
             .min_by(|&a, &b| tree.cost[a].total_cmp(&tree.cost[b]).then(a.cmp(&b)));
-        let Some(leaf) = best else {
-            return Err(PlanError::BudgetExhausted { stats });
+        let tree = Tree {
+            points,
+            parent: tree.parent,
         };
-        let path = toolkit::branch(&points, &tree.parent, leaf);
-        Ok(Plan {
-            cost: hyplan_core::path_length(&path),
-            path,
-            trees: vec![Tree {
-                points,
-                parent: tree.parent,
-            }],
-            waypoints: Vec::new(),
-            stats,
-        })
+        common::tree_plan(tree, best, stats)
     }
 }
 
