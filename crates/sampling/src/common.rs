@@ -55,10 +55,8 @@ pub(crate) struct GrowTree {
 impl GrowTree {
     /// A tree holding only its root.
     pub fn rooted_at(root: Point2) -> Self {
-        let mut index = NearestIndex::with_capacity(1024);
-        index.insert(root);
         Self {
-            index,
+            index: NearestIndex::rooted_at(root),
             parent: vec![None],
         }
     }

@@ -73,6 +73,15 @@ impl NearestIndex {
         }
     }
 
+    /// An index holding only `root` (id 0), with room for a growing tree's first 1024
+    /// nodes.
+    #[must_use]
+    pub fn rooted_at(root: Point2) -> Self {
+        let mut index = Self::with_capacity(1024);
+        index.insert(root);
+        index
+    }
+
     /// Number of points inserted (duplicates and non-finite points included).
     #[must_use]
     pub fn len(&self) -> usize {

@@ -238,10 +238,8 @@ pub struct StarTree {
 impl StarTree {
     /// A tree holding only `root`, at cost 0.
     pub fn rooted_at(root: Point2) -> Self {
-        let mut index = NearestIndex::with_capacity(1024);
-        index.insert(root);
         Self {
-            index,
+            index: NearestIndex::rooted_at(root),
             parent: vec![None],
             cost: vec![0.0],
             children: vec![Vec::new()],
