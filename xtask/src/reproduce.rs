@@ -168,6 +168,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let claims = scenario
             .claims
             .iter()
+            .filter(|c| c.across.is_empty())
             .map(|c| {
                 let means: Vec<(String, f64)> = c
                     .order
@@ -207,17 +208,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             },
         ));
     }
-    let report = report(&results, args.quick, started.elapsed().as_secs_f64());
+    let series = series_claims(&results);
+    let report = report(
+        &results,
+        &series,
+        args.quick,
+        started.elapsed().as_secs_f64(),
+    );
     let report_path = out.join("report.md");
     std::fs::write(&report_path, report)
         .with_context(|| format!("writing {}", report_path.display()))?;
-    let json: Vec<&ExperimentResult> = results.iter().map(|(_, r)| r).collect();
+    let json = serde_json::json!({
+        "experiments": results.iter().map(|(_, r)| r).collect::<Vec<_>>(),
+        "series_claims": series,
+    });
     let json_path = out.join("results.json");
     std::fs::write(&json_path, serde_json::to_string_pretty(&json)?)
         .with_context(|| format!("writing {}", json_path.display()))?;
     let (held, total) = results
         .iter()
         .flat_map(|(_, r)| &r.claims)
+        .chain(series.iter().map(|s| &s.claim))
         .fold((0, 0), |(h, t), c| (h + usize::from(c.held), t + 1));
     println!(
         "done in {:.1} s: {} experiment(s), claims held {held}/{total}\nreport:  {}\nresults: {}\nfigures: {}",
@@ -228,6 +239,50 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         figures.display()
     );
     Ok(())
+}
+
+/// A claim over a series of experiments, with the experiment it is written in.
+#[derive(Serialize)]
+struct SeriesClaim {
+    seed_file: String,
+    experiment: String,
+    claim: ClaimResult,
+}
+
+/// Evaluates the claims that span several experiments (`across`); those whose experiments
+/// did not all run (`--only`) are left out.
+fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesClaim> {
+    let mut out = Vec::new();
+    for (scenario, r) in results {
+        for c in scenario.claims.iter().filter(|c| !c.across.is_empty()) {
+            let label = &c.order[0];
+            let means: Option<Vec<(String, f64)>> = c
+                .across
+                .iter()
+                .map(|name| {
+                    let (_, other) = results.iter().find(|(_, o)| &o.name == name)?;
+                    let p = other.planners.iter().find(|p| &p.label == label)?;
+                    Some((
+                        name.clone(),
+                        p.summary.get(&c.metric).map_or(f64::NAN, |s| s.mean),
+                    ))
+                })
+                .collect();
+            let Some(means) = means else { continue };
+            let held = means.windows(2).all(|w| w[0].1 < w[1].1);
+            out.push(SeriesClaim {
+                seed_file: r.seed_file.clone(),
+                experiment: r.experiment.clone(),
+                claim: ClaimResult {
+                    text: format!("{} ({label})", c.text),
+                    metric: c.metric.clone(),
+                    means,
+                    held,
+                },
+            });
+        }
+    }
+    out
 }
 
 /// Draws run 0 of a planner again (same seed, so the same plan) with its tree, and the
@@ -274,7 +329,12 @@ fn fmt_num(x: f64) -> String {
     }
 }
 
-fn report(results: &[(&Scenario, ExperimentResult)], quick: bool, seconds: f64) -> String {
+fn report(
+    results: &[(&Scenario, ExperimentResult)],
+    series: &[SeriesClaim],
+    quick: bool,
+    seconds: f64,
+) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# hyplan: the seed papers' experiments, replayed\n");
     let _ = writeln!(
@@ -410,6 +470,34 @@ fn report(results: &[(&Scenario, ExperimentResult)], quick: bool, seconds: f64) 
             );
         }
         let _ = writeln!(s, "\n![metrics](figures/{}_metrics.svg)\n", r.name);
+    }
+    if !series.is_empty() {
+        let _ = writeln!(s, "## Claims across experiments\n");
+        for sc in series {
+            let c = &sc.claim;
+            let figures: Vec<String> = c
+                .means
+                .iter()
+                .map(|(l, m)| format!("{l} {}", fmt_num(*m)))
+                .collect();
+            let mark = if c.held { "held" } else { "NOT held" };
+            let _ = writeln!(
+                s,
+                "- **{mark}** (`{}` {}): {} (mean {}, claimed increasing: {})",
+                sc.seed_file,
+                sc.experiment,
+                c.text,
+                c.metric,
+                figures.join(", ")
+            );
+            let line = format!("{} {}: {}", sc.seed_file, sc.experiment, c.text);
+            if c.held {
+                held.push(line)
+            } else {
+                not_held.push(line)
+            }
+        }
+        let _ = writeln!(s);
     }
     let _ = writeln!(s, "## Summary\n");
     let _ = writeln!(

@@ -9,7 +9,9 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use harness::{Furniture, Limits, MapSpec, PlannerSpec, Published, Scenario, Source, draw_room};
+use harness::{
+    Claim, Furniture, Limits, MapSpec, PlannerSpec, Published, Scenario, Source, draw_room,
+};
 use rand::{Rng, SeedableRng};
 
 const WOOD: [u8; 3] = [92, 58, 30];
@@ -166,7 +168,26 @@ pub fn write_table4(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
             let scenario = (0..100)
                 .find_map(|_| {
                     let furniture = random_furniture(&mut rng, w, h, n)?;
-                    let s = table4_scenario(&name, w, h, n, furniture, seed, ours_paper, ga_paper);
+                    // The last workspace of each picture size carries the paper's trend:
+                    // time grows with the number of obstacles.
+                    let claims = if n == rows[2].0 {
+                        vec![Claim {
+                            text: format!(
+                                "at {w} x {h} px, time grows with the number of obstacles"
+                            ),
+                            metric: "time_s".into(),
+                            order: vec!["RRT-A*-BT".into()],
+                            across: rows
+                                .iter()
+                                .map(|r| format!("000-table4-{w}x{h}-{}", r.0))
+                                .collect(),
+                        }]
+                    } else {
+                        Vec::new()
+                    };
+                    let s = table4_scenario(
+                        &name, w, h, n, furniture, seed, ours_paper, ga_paper, claims,
+                    );
                     let world = s.build_world(dir, &path).ok()?;
                     let astar = PlannerSpec {
                         name: "astar".into(),
@@ -204,6 +225,7 @@ fn table4_scenario(
     seed: u64,
     ours_paper: f64,
     ga_paper: f64,
+    claims: Vec<Claim>,
 ) -> Scenario {
     let px = |(fx, fy): (f64, f64)| {
         (
@@ -281,7 +303,7 @@ fn table4_scenario(
             published("RRT-A*-BT", ours_paper),
             published("GA-PCHIP", ga_paper),
         ],
-        claims: Vec::new(),
+        claims,
         from_paper: vec![
             "picture size".into(),
             "obstacle count".into(),

@@ -251,8 +251,10 @@ pub struct Published {
     pub unit_scale: f64,
 }
 
-/// A claim of the paper: the mean of `metric` increases along `order`
-/// (the first label has the smallest value).
+/// A claim of the paper: the mean of `metric` increases along `order` (the first label
+/// has the smallest value); or, when `across` names scenarios, the mean of `metric` for
+/// the single planner in `order` increases along those scenarios (a trend over a series
+/// of experiments, such as time against obstacle count).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Claim {
@@ -260,8 +262,12 @@ pub struct Claim {
     pub text: String,
     /// Metric name.
     pub metric: String,
-    /// Planner labels from the smallest to the largest mean.
+    /// Planner labels from the smallest to the largest mean (one label with `across`).
     pub order: Vec<String>,
+    /// Scenario names from the smallest to the largest mean of the one planner in
+    /// `order`; empty for a claim within this scenario.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub across: Vec<String>,
 }
 
 /// A scenario's world: the map and the query in world coordinates.
@@ -418,6 +424,13 @@ impl Scenario {
             }
         }
         for c in &self.claims {
+            if !c.across.is_empty() && c.order.len() != 1 {
+                return bad(
+                    "claims.order",
+                    &c.order.join(", "),
+                    "a claim across scenarios names exactly one planner",
+                );
+            }
             for label in &c.order {
                 if !self.planners.iter().any(|p| p.label() == label) {
                     return bad(

@@ -104,3 +104,16 @@ fn zero_runs_is_refused() {
     let m = message("runs", &GOOD.replace("runs: 4", "runs: 0"));
     assert!(m.contains("`runs`"), "{m}");
 }
+
+#[test]
+fn a_claim_across_scenarios_names_one_planner() {
+    let text = GOOD.replace(
+        "    runs: 4,",
+        "    runs: 4,\n    claims: [Claim(text: \"t\", metric: \"length\", order: [\"rrt\", \"rrt\"], across: [\"a\", \"b\"])],",
+    );
+    let m = message("across", &text);
+    assert!(
+        m.contains("claims.order") && m.contains("exactly one planner"),
+        "{m}"
+    );
+}
