@@ -118,9 +118,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ),
     ];
     println!(
-        "| planner | median ms | min ms | max ms | solved | mean length px | mean nodes | mean expansions |"
+        "| planner | median ms (wall) | min ms | max ms | median CPU ms | solved | mean length px | mean nodes | mean expansions |"
     );
-    println!("|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|");
     for (name, planner, on_safe) in &planners {
         if !name.contains(only.as_str()) {
             continue;

@@ -302,6 +302,63 @@ pub(crate) fn grid_astar(
     }
 }
 
+/// `is_free` through a [`CountingChecker`], answered by one cell lookup when the
+/// workspace is a [`GridMap`] and the point lies strictly inside one cell (the usual case
+/// for a random sample), else by the workspace itself. Gives exactly `ws.is_free(p)` and
+/// counts one check either way; it skips the general segment sweep that a point query
+/// goes through in `GridMap::segment_free_cells`.
+pub(crate) struct PointChecker<'a> {
+    /// The grid, its bounds, origin, 1 / resolution, and width and height in cells.
+    grid: Option<(&'a GridMap, hyplan_core::Bounds, Point2, f64, f64, f64)>,
+}
+
+impl<'a> PointChecker<'a> {
+    /// The checker for `ws`: the direct lookup when it is a grid map.
+    pub(crate) fn new<W: Workspace + ?Sized>(ws: &'a W) -> Self {
+        let grid = ws
+            .as_any()
+            .and_then(|a| a.downcast_ref::<GridMap>())
+            .map(|map| {
+                (
+                    map,
+                    map.bounds(),
+                    map.origin(),
+                    1.0 / map.resolution(),
+                    map.width() as f64,
+                    map.height() as f64,
+                )
+            });
+        Self { grid }
+    }
+
+    /// Whether `p` is free, exactly as `checker.is_free(p)`, counted the same way.
+    #[inline]
+    pub(crate) fn is_free<W: Workspace + ?Sized>(
+        &self,
+        checker: &mut CountingChecker<'_, W>,
+        p: Point2,
+    ) -> bool {
+        if let Some((map, bounds, o, inv, w, h)) = self.grid {
+            // As `GridMap::segment_free_cells(p, p)`: inside the closed bounds, then the
+            // cells whose closed squares contain p, in the same cell coordinates. A
+            // coordinate that is not a whole number lies in one column (row) only.
+            if !bounds.contains(p) {
+                checker.checks += 1;
+                return false;
+            }
+            let (u, v) = ((p.x - o.x) * inv, (p.y - o.y) * inv);
+            if u >= 0.0 && v >= 0.0 && u < w && v < h {
+                let (i, j) = (u as usize, v as usize);
+                if i as f64 != u && j as f64 != v {
+                    checker.checks += 1;
+                    return map.cell_free(i, j);
+                }
+            }
+        }
+        checker.is_free(p)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
