@@ -357,6 +357,34 @@ impl<'a> PointChecker<'a> {
         }
         checker.is_free(p)
     }
+
+    /// Whether the segment `a`-`b` is free, exactly as `checker.segment_free(a, b)` and
+    /// counted as one check. On a grid map, when `b` lies well inside a blocked cell
+    /// (each cell coordinate more than 1e-6 from a whole number, far beyond the sweep's
+    /// rounding) the answer is `false` without the sweep: the sweep meets the cell of its
+    /// end point `b` and stops at the first blocked cell it meets.
+    #[inline]
+    pub(crate) fn segment_free<W: Workspace + ?Sized>(
+        &self,
+        checker: &mut CountingChecker<'_, W>,
+        a: Point2,
+        b: Point2,
+    ) -> bool {
+        if let Some((map, bounds, o, inv, w, h)) = self.grid
+            && bounds.contains(b)
+        {
+            let (u, v) = ((b.x - o.x) * inv, (b.y - o.y) * inv);
+            if u >= 0.0 && v >= 0.0 && u < w && v < h {
+                let (i, j) = (u as usize, v as usize);
+                let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && (k + 1) as f64 - t > 1e-6;
+                if inside(u, i) && inside(v, j) && !map.cell_free(i, j) {
+                    checker.checks += 1;
+                    return false;
+                }
+            }
+        }
+        checker.segment_free(a, b)
+    }
 }
 
 #[cfg(test)]

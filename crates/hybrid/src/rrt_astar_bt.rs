@@ -19,9 +19,11 @@
 //!
 //! On the room of issue 6 a plan draws ~95 000 random points (~830 rounds of 50
 //! collision-free samples, by rejection), pushes ~41 000 candidates and pops nearly all of
-//! them, three in four already closed. So the work is kept per draw and per candidate: a
-//! sample on a [`envmap::GridMap`] is one cell lookup (`common::PointChecker`, same answer
-//! and same count as `is_free`), the closed list is a bucket grid of the nodes
+//! them, three in four already closed, and most of the rest blocked. So the work is kept
+//! per draw and per candidate: a sample on a [`envmap::GridMap`] is one cell lookup
+//! (`common::PointChecker`, same answer and same count as `is_free`, bounds read once), an
+//! edge whose new end lies inside a blocked cell is refused without the segment sweep
+//! (same answer, one check counted), the closed list is a bucket grid of the nodes
 //! (`ClosedList`: the 3 x 3 cells around a point, checked exactly) instead of a k-d tree
 //! query, a candidate already closed when drawn never enters the open list (it could never
 //! be taken: nodes are never removed, and the closed test comes before the counted edge
@@ -195,9 +197,11 @@ impl RrtAstarBt {
         let target = goal.center();
         let mut checker = CountingChecker::new(ws);
         let points_free = common::PointChecker::new(ws);
+        let bounds = ws.bounds();
+        let (width, height) = (bounds.width(), bounds.height());
         // The tree: every node ever grown, with its parent and g (path length from start),
         // bucketed for the closed-list test.
-        let mut tree = ClosedList::new(ws.bounds(), self.closed_radius, query.start);
+        let mut tree = ClosedList::new(bounds, self.closed_radius, query.start);
         let mut parent: Vec<Option<u32>> = vec![None];
         let mut g: Vec<f64> = vec![0.0];
         // The open list: candidate extensions not yet taken, lowest f first.
@@ -226,7 +230,11 @@ impl RrtAstarBt {
             let hp = tree.point(head);
             for _ in 0..self.candidates {
                 let sample = (0..self.sample_tries).find_map(|_| {
-                    let p = sampling::sample_uniform(ws, rng);
+                    // `sampling::sample_uniform` with the bounds read once.
+                    let p = Point2::new(
+                        bounds.min.x + hyplan_core::uniform01(rng) * width,
+                        bounds.min.y + hyplan_core::uniform01(rng) * height,
+                    );
                     points_free.is_free(&mut checker, p).then_some(p)
                 });
                 let Some(sample) = sample else { continue };
@@ -254,7 +262,11 @@ impl RrtAstarBt {
             let mut chosen = None;
             while let Some(c) = open.pop() {
                 if !tree.is_closed(c.point)
-                    && checker.segment_free(tree.point(c.parent as usize), c.point)
+                    && points_free.segment_free(
+                        &mut checker,
+                        tree.point(c.parent as usize),
+                        c.point,
+                    )
                 {
                     chosen = Some(c);
                     break;
@@ -369,6 +381,10 @@ struct ClosedList {
     /// Every node, in id order.
     points: Vec<Point2>,
     radius: f64,
+    /// radius^2 with a relative margin below and above: a squared distance under `below`
+    /// is closer than `radius`, one over `above` is not.
+    below: f64,
+    above: f64,
     origin: Point2,
     /// 1 / cell side.
     inv: f64,
@@ -399,6 +415,8 @@ impl ClosedList {
         let mut list = Self {
             points: Vec::with_capacity(1024),
             radius,
+            below: radius * radius * (1.0 - 1e-9),
+            above: radius * radius * (1.0 + 1e-9),
             origin: bounds.min,
             inv: if side > 0.0 { 1.0 / side } else { 0.0 },
             nx,
@@ -448,7 +466,9 @@ impl ClosedList {
                 while k != NONE {
                     let q = self.points[k as usize];
                     let (dx, dy) = (p.x - q.x, p.y - q.y);
-                    if (dx * dx + dy * dy).sqrt() < self.radius {
+                    let d2 = dx * dx + dy * dy;
+                    // Squared distances settle all but the near-ties without a root.
+                    if d2 < self.below || (d2 <= self.above && d2.sqrt() < self.radius) {
                         return true;
                     }
                     k = self.prev[k as usize];
