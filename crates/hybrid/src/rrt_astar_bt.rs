@@ -390,7 +390,8 @@ struct ClosedList {
     inv: f64,
     nx: usize,
     ny: usize,
-    /// Per cell, the last node added to it (`NONE` if empty).
+    /// Per cell, the last node added to it (`NONE` if empty); row-major, `nx + 2` wide,
+    /// with an empty ring of cells around the grid so every cell has eight neighbours.
     last: Vec<u32>,
     /// Per node, the node added to its cell before it (`NONE` if first).
     prev: Vec<u32>,
@@ -421,28 +422,27 @@ impl ClosedList {
             inv: if side > 0.0 { 1.0 / side } else { 0.0 },
             nx,
             ny,
-            last: vec![NONE; nx * ny],
+            last: vec![NONE; (nx + 2) * (ny + 2)],
             prev: Vec::with_capacity(1024),
         };
         list.insert(root);
         list
     }
 
-    /// The cell of `p`, clamped to the grid (clamping keeps neighbours neighbours).
-    fn cell(&self, p: Point2) -> (usize, usize) {
+    /// The index in `last` of the cell of `p`, clamped to the grid (clamping keeps
+    /// neighbours neighbours).
+    fn cell(&self, p: Point2) -> usize {
         let i = ((p.x - self.origin.x) * self.inv) as i64;
         let j = ((p.y - self.origin.y) * self.inv) as i64;
-        (
-            i.clamp(0, self.nx as i64 - 1) as usize,
-            j.clamp(0, self.ny as i64 - 1) as usize,
-        )
+        let i = i.clamp(0, self.nx as i64 - 1) as usize + 1;
+        let j = j.clamp(0, self.ny as i64 - 1) as usize + 1;
+        j * (self.nx + 2) + i
     }
 
     /// Adds `p` and returns its id.
     fn insert(&mut self, p: Point2) -> usize {
         let id = self.points.len();
-        let (i, j) = self.cell(p);
-        let k = j * self.nx + i;
+        let k = self.cell(p);
         self.points.push(p);
         self.prev.push(self.last[k]);
         self.last[k] = id as u32;
@@ -459,23 +459,35 @@ impl ClosedList {
         if self.radius <= 0.0 {
             return false;
         }
-        let (i, j) = self.cell(p);
-        for jj in j.saturating_sub(1)..=(j + 1).min(self.ny - 1) {
-            for ii in i.saturating_sub(1)..=(i + 1).min(self.nx - 1) {
-                let mut k = self.last[jj * self.nx + ii];
-                while k != NONE {
-                    let q = self.points[k as usize];
-                    let (dx, dy) = (p.x - q.x, p.y - q.y);
-                    let d2 = dx * dx + dy * dy;
-                    // Squared distances settle all but the near-ties without a root.
-                    if d2 < self.below || (d2 <= self.above && d2.sqrt() < self.radius) {
-                        return true;
-                    }
-                    k = self.prev[k as usize];
+        let c = self.cell(p);
+        let w = self.nx + 2;
+        // The cell first, then its neighbours.
+        [
+            c,
+            c - 1,
+            c + 1,
+            c - w,
+            c + w,
+            c - w - 1,
+            c - w + 1,
+            c + w - 1,
+            c + w + 1,
+        ]
+        .into_iter()
+        .any(|cell| {
+            let mut k = self.last[cell];
+            while k != NONE {
+                let q = self.points[k as usize];
+                let (dx, dy) = (p.x - q.x, p.y - q.y);
+                let d2 = dx * dx + dy * dy;
+                // Squared distances settle all but the near-ties without a root.
+                if d2 < self.below || (d2 <= self.above && d2.sqrt() < self.radius) {
+                    return true;
                 }
+                k = self.prev[k as usize];
             }
-        }
-        false
+            false
+        })
     }
 }
 
