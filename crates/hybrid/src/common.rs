@@ -315,9 +315,11 @@ pub(crate) struct PointChecker<'a> {
 impl<'a> PointChecker<'a> {
     /// The checker for `ws`: the direct lookup when it is a grid map.
     pub(crate) fn new<W: Workspace + ?Sized>(ws: &'a W) -> Self {
+        // Cell indices go through `i32` (a cheaper conversion than to `usize`).
         let grid = ws
             .as_any()
             .and_then(|a| a.downcast_ref::<GridMap>())
+            .filter(|map| map.width() < i32::MAX as usize && map.height() < i32::MAX as usize)
             .map(|map| {
                 (
                     map,
@@ -348,10 +350,10 @@ impl<'a> PointChecker<'a> {
             }
             let (u, v) = ((p.x - o.x) * inv, (p.y - o.y) * inv);
             if u >= 0.0 && v >= 0.0 && u < w && v < h {
-                let (i, j) = (u as usize, v as usize);
-                if i as f64 != u && j as f64 != v {
+                let (i, j) = (u as i32, v as i32);
+                if f64::from(i) != u && f64::from(j) != v {
                     checker.checks += 1;
-                    return map.cell_free(i, j);
+                    return map.cell_free(i as usize, j as usize);
                 }
             }
         }
@@ -375,9 +377,10 @@ impl<'a> PointChecker<'a> {
         {
             let (u, v) = ((b.x - o.x) * inv, (b.y - o.y) * inv);
             if u >= 0.0 && v >= 0.0 && u < w && v < h {
-                let (i, j) = (u as usize, v as usize);
-                let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && (k + 1) as f64 - t > 1e-6;
-                if inside(u, i) && inside(v, j) && !map.cell_free(i, j) {
+                let (i, j) = (u as i32, v as i32);
+                let inside =
+                    |t: f64, k: i32| t - f64::from(k) > 1e-6 && f64::from(k) + 1.0 - t > 1e-6;
+                if inside(u, i) && inside(v, j) && !map.cell_free(i as usize, j as usize) {
                     checker.checks += 1;
                     return false;
                 }

@@ -432,10 +432,11 @@ impl ClosedList {
     /// The index in `last` of the cell of `p`, clamped to the grid (clamping keeps
     /// neighbours neighbours).
     fn cell(&self, p: Point2) -> usize {
-        let i = ((p.x - self.origin.x) * self.inv) as i64;
-        let j = ((p.y - self.origin.y) * self.inv) as i64;
-        let i = i.clamp(0, self.nx as i64 - 1) as usize + 1;
-        let j = j.clamp(0, self.ny as i64 - 1) as usize + 1;
+        // `as i32` saturates, and the grid is at most 257 cells a side.
+        let i = ((p.x - self.origin.x) * self.inv) as i32;
+        let j = ((p.y - self.origin.y) * self.inv) as i32;
+        let i = i.clamp(0, self.nx as i32 - 1) as usize + 1;
+        let j = j.clamp(0, self.ny as i32 - 1) as usize + 1;
         j * (self.nx + 2) + i
     }
 
