@@ -317,6 +317,37 @@ fn slug(s: &str) -> String {
         .collect()
 }
 
+/// Writes one claim as a report bullet and files it under held or not held for the summary.
+fn claim_line(
+    s: &mut String,
+    c: &ClaimResult,
+    place: &str,
+    held: &mut Vec<String>,
+    not_held: &mut Vec<String>,
+    seed_file: &str,
+    experiment: &str,
+) {
+    let figures: Vec<String> = c
+        .means
+        .iter()
+        .map(|(l, m)| format!("{l} {}", fmt_num(*m)))
+        .collect();
+    let mark = if c.held { "held" } else { "NOT held" };
+    let _ = writeln!(
+        s,
+        "- **{mark}**{place}: {} (mean {}, claimed increasing: {})",
+        c.text,
+        c.metric,
+        figures.join(", ")
+    );
+    let line = format!("{seed_file} {experiment}: {}", c.text);
+    if c.held {
+        held.push(line)
+    } else {
+        not_held.push(line)
+    }
+}
+
 fn fmt_num(x: f64) -> String {
     if !x.is_finite() {
         "-".into()
@@ -437,25 +468,15 @@ fn report(
         if !r.claims.is_empty() {
             let _ = writeln!(s, "\nClaims:\n");
             for c in &r.claims {
-                let figures: Vec<String> = c
-                    .means
-                    .iter()
-                    .map(|(l, m)| format!("{l} {}", fmt_num(*m)))
-                    .collect();
-                let mark = if c.held { "held" } else { "NOT held" };
-                let _ = writeln!(
-                    s,
-                    "- **{mark}**: {} (mean {}, claimed increasing: {})",
-                    c.text,
-                    c.metric,
-                    figures.join(", ")
+                claim_line(
+                    &mut s,
+                    c,
+                    "",
+                    &mut held,
+                    &mut not_held,
+                    &r.seed_file,
+                    &r.experiment,
                 );
-                let line = format!("{} {}: {}", r.seed_file, r.experiment, c.text);
-                if c.held {
-                    held.push(line)
-                } else {
-                    not_held.push(line)
-                }
             }
         }
         let _ = writeln!(s);
@@ -474,28 +495,16 @@ fn report(
     if !series.is_empty() {
         let _ = writeln!(s, "## Claims across experiments\n");
         for sc in series {
-            let c = &sc.claim;
-            let figures: Vec<String> = c
-                .means
-                .iter()
-                .map(|(l, m)| format!("{l} {}", fmt_num(*m)))
-                .collect();
-            let mark = if c.held { "held" } else { "NOT held" };
-            let _ = writeln!(
-                s,
-                "- **{mark}** (`{}` {}): {} (mean {}, claimed increasing: {})",
-                sc.seed_file,
-                sc.experiment,
-                c.text,
-                c.metric,
-                figures.join(", ")
+            let place = format!(" (`{}` {})", sc.seed_file, sc.experiment);
+            claim_line(
+                &mut s,
+                &sc.claim,
+                &place,
+                &mut held,
+                &mut not_held,
+                &sc.seed_file,
+                &sc.experiment,
             );
-            let line = format!("{} {}: {}", sc.seed_file, sc.experiment, c.text);
-            if c.held {
-                held.push(line)
-            } else {
-                not_held.push(line)
-            }
         }
         let _ = writeln!(s);
     }
