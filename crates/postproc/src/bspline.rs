@@ -5,6 +5,7 @@ use nalgebra::Vector2;
 
 use crate::PostprocError;
 use crate::error::validate_path;
+use crate::resample::cumulative_lengths;
 
 /// A clamped B-spline of degree 3 (lower when there are fewer than four control points),
 /// evaluated with de Boor's algorithm.
@@ -197,13 +198,8 @@ impl BSpline {
         validate_path(nodes)?;
         let n = nodes.len();
         let p = (n - 1).min(3);
-        let mut params = Vec::with_capacity(n);
-        params.push(0.0);
-        let mut s = 0.0;
-        for w in nodes.windows(2) {
-            s += nalgebra::distance(&w[0], &w[1]);
-            params.push(s);
-        }
+        let params = cumulative_lengths(nodes);
+        let s = params[n - 1];
         // Averaged knots (NURBS Book eq. 9.8): clamped, one interior knot per inner node
         // beyond the degree.
         let mut knots = vec![0.0; p + 1];

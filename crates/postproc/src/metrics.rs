@@ -83,12 +83,8 @@ impl PathMetrics {
 /// ```
 #[must_use]
 pub fn count_turns(path: &[Point2], threshold: f64) -> usize {
-    let mut clean: Vec<Point2> = Vec::with_capacity(path.len());
-    for &p in path {
-        if clean.last() != Some(&p) {
-            clean.push(p);
-        }
-    }
+    let mut clean = path.to_vec();
+    clean.dedup();
     turning_angles(&clean)
         .iter()
         .filter(|a| a.abs() > threshold)

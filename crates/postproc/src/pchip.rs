@@ -6,6 +6,7 @@ use nalgebra::Vector2;
 
 use crate::PostprocError;
 use crate::error::validate_path;
+use crate::resample::cumulative_lengths;
 
 /// A PCHIP curve through a path's nodes: x(s) and y(s) are each a monotone piecewise cubic
 /// Hermite interpolant over the cumulative chord length s (seed 000, section 4.6).
@@ -49,13 +50,7 @@ impl Pchip {
     /// [`PostprocError::RepeatedNode`] (a zero chord would make the parameter stall).
     pub fn new(nodes: &[Point2]) -> Result<Self, PostprocError> {
         validate_path(nodes)?;
-        let mut knots = Vec::with_capacity(nodes.len());
-        let mut s = 0.0;
-        knots.push(0.0);
-        for w in nodes.windows(2) {
-            s += nalgebra::distance(&w[0], &w[1]);
-            knots.push(s);
-        }
+        let knots = cumulative_lengths(nodes);
         let xs: Vec<f64> = nodes.iter().map(|p| p.x).collect();
         let ys: Vec<f64> = nodes.iter().map(|p| p.y).collect();
         let dx = pchip_slopes(&knots, &xs);
