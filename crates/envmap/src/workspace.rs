@@ -93,21 +93,12 @@ fn sweep(
     // Closed strip [c, c+1] meets [lo, hi] iff ceil(lo) - 1 <= c <= floor(hi).
     let c_first = clamp_index(lo.ceil() - 1.0, np);
     let c_last = clamp_index(hi.floor(), np);
-    let (Some(c_first), Some(c_last)) = (c_first, c_last) else {
-        return true;
-    };
     for c in c_first..=c_last {
         let s0 = lo.max(c as f64);
         let s1 = hi.min(c as f64 + 1.0);
         let (qa, qb) = (q_at(s0), q_at(s1));
         let (qlo, qhi) = (qa.min(qb), qa.max(qb));
-        let (Some(r_first), Some(r_last)) = (
-            clamp_index(qlo.ceil() - 1.0, nq),
-            clamp_index(qhi.floor(), nq),
-        ) else {
-            continue;
-        };
-        for r in r_first..=r_last {
+        for r in clamp_index(qlo.ceil() - 1.0, nq)..=clamp_index(qhi.floor(), nq) {
             if !visit(c, r) {
                 return false;
             }
@@ -116,15 +107,14 @@ fn sweep(
     true
 }
 
-/// Clamps a (whole-number) float index to `[0, n - 1]`; `None` when the range is empty
-/// because the index lies entirely past the end.
-fn clamp_index(x: f64, n: usize) -> Option<usize> {
+/// Clamps a (whole-number) float index to `[0, n - 1]`.
+fn clamp_index(x: f64, n: usize) -> usize {
     if x < 0.0 {
-        Some(0)
+        0
     } else if x >= n as f64 {
-        Some(n - 1)
+        n - 1
     } else {
-        Some(x as usize)
+        x as usize
     }
 }
 
