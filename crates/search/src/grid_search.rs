@@ -443,7 +443,8 @@ impl GridSearch {
 
     /// Any-angle path from `start` to `goal` by Theta* (Nash, Daniel, Koenig and Felner,
     /// 2007): A* on the grid moves, except that a cell's parent may be any earlier cell in
-    /// line of sight, so the path goes straight between cell centres where it can.
+    /// line of sight, so the path goes straight between cell centres where it can. The
+    /// diagonal moves never cut corners, whatever [`GridOptions::corner_cutting`] says.
     ///
     /// Line of sight between two cell centres means that every cell the closed segment
     /// touches (corners included, as [`GridMap::segment_cells`] sees it) is passable, so

@@ -148,13 +148,6 @@ fn plan_on_grid<W: Workspace + ?Sized>(
         point: goal_point,
         reason: "outside the map",
     })?;
-    let options = match algo {
-        Algo::ThetaStar => GridOptions {
-            corner_cutting: false,
-            ..options
-        },
-        _ => options,
-    };
     let mut search = GridSearch::new(map, options).map_err(|e| PlanError::InvalidParameter {
         name: "workspace",
         value: e.to_string(),
