@@ -24,8 +24,11 @@ proptest! {
                 prop_assert!(nalgebra::distance(&w[0], &w[1]) <= SPACING, "{}: gap", method);
             }
             prop_assert!(s.points.iter().all(|&p| !grid.point_blocked(p)), "{}: sample in a blocked cell", method);
+            // Turns are counted at inner nodes only, and no curve is shorter than its chord.
             let m = s.metrics();
-            prop_assert!(m.length > 0.0 && m.segments + 1 == m.nodes);
+            let chord = nalgebra::distance(&path[0], &path[path.len() - 1]);
+            prop_assert!(m.length >= chord - 1e-9, "{}: {} < chord {}", method, m.length, chord);
+            prop_assert!(m.nodes >= 2 && m.turns + 2 <= m.nodes, "{}: {:?}", method, m);
         }
     }
 }
