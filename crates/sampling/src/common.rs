@@ -72,15 +72,10 @@ impl GrowTree {
         self.parent.len()
     }
 
-    /// The points in id order.
-    pub fn points(&self) -> Vec<Point2> {
-        self.index.points().to_vec()
-    }
-
     /// Plain-data copy for [`hyplan_core::Plan::trees`].
     pub fn to_tree(&self) -> hyplan_core::Tree {
         hyplan_core::Tree {
-            points: self.points(),
+            points: self.index.points().to_vec(),
             parent: self.parent.clone(),
         }
     }
@@ -89,8 +84,8 @@ impl GrowTree {
 /// The path of two trees joined at `a` (a node of the start tree) and `b` (a node of the
 /// goal tree): root of the start tree to `a`, then `b` back to the goal root.
 fn joined_path(start: &GrowTree, a: usize, goal: &GrowTree, b: usize) -> Vec<Point2> {
-    let mut path = toolkit::branch(&start.points(), &start.parent, a);
-    let mut back = toolkit::branch(&goal.points(), &goal.parent, b);
+    let mut path = toolkit::branch(start.index.points(), &start.parent, a);
+    let mut back = toolkit::branch(goal.index.points(), &goal.parent, b);
     back.reverse();
     path.extend(back);
     dedup(&mut path);
@@ -132,7 +127,7 @@ pub(crate) fn two_tree_plan(
     };
     let path = match b {
         Some(b) => joined_path(&trees[0], a, &trees[1], b),
-        None => toolkit::branch(&trees[0].points(), &trees[0].parent, a),
+        None => toolkit::branch(trees[0].index.points(), &trees[0].parent, a),
     };
     Ok(Plan {
         cost: hyplan_core::path_length(&path),

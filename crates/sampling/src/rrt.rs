@@ -12,8 +12,7 @@ use hyplan_core::{
 use rand::Rng;
 use rand::RngCore;
 
-use crate::NearestIndex;
-use crate::common;
+use crate::common::{self, GrowTree};
 use crate::toolkit::{self, CountingChecker};
 
 /// The RRT planner's parameters.
@@ -111,10 +110,7 @@ impl Rrt {
         toolkit::check_probability("goal_bias", self.goal_bias)?;
         let goal = query.goal;
         let mut checker = CountingChecker::new(ws);
-        let mut index = NearestIndex::with_capacity(1024);
-        let mut parent: Vec<Option<u32>> = Vec::with_capacity(1024);
-        index.insert(query.start);
-        parent.push(None);
+        let mut tree = GrowTree::rooted_at(query.start);
         let mut iterations = 0_u64;
         let mut reached = goal.contains(query.start).then_some(0_usize);
 
@@ -123,7 +119,7 @@ impl Rrt {
             if iterations.is_multiple_of(common::OBSERVE_EVERY) {
                 let progress = Progress {
                     iterations,
-                    nodes: parent.len() as u64,
+                    nodes: tree.len() as u64,
                     best_cost: None,
                 };
                 if observer(&progress).is_break() {
@@ -133,10 +129,10 @@ impl Rrt {
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
             let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
             // Nearest: the tree node closest to the sample.
-            let Some((near, _)) = index.nearest(sample) else {
+            let Some((near, _)) = tree.index.nearest(sample) else {
                 break;
             };
-            let near_point = index.point(near);
+            let near_point = tree.index.point(near);
             // Steer: at most one step from the nearest node towards the sample.
             let new_point = toolkit::steer(near_point, sample, self.step);
             if new_point == near_point {
@@ -147,22 +143,23 @@ impl Rrt {
                 continue;
             }
             // Add the new node with its parent.
-            let new = index.insert(new_point);
-            parent.push(Some(near as u32));
+            let new = tree.add(new_point, near);
             // Goal test: inside the goal region, or an exact goal point one free step away.
             if goal.contains(new_point) {
                 reached = Some(new);
             } else if let Some(g) = common::exact_goal_within(&goal, new_point, self.step)
                 && checker.segment_free(new_point, g)
             {
-                reached = Some(index.insert(g));
-                parent.push(Some(new as u32));
+                reached = Some(tree.add(g, new));
             }
         }
 
-        let points = index.points().to_vec();
-        let stats = common::stats(iterations, points.len(), checker.checks, started);
-        common::tree_plan(Tree { points, parent }, reached, stats)
+        let stats = common::stats(iterations, tree.len(), checker.checks, started);
+        let tree = Tree {
+            points: tree.index.points().to_vec(),
+            parent: tree.parent,
+        };
+        common::tree_plan(tree, reached, stats)
     }
 }
 
