@@ -249,7 +249,7 @@ impl SafeRrtStar {
             let new = tree.add(new_point, chosen.0, chosen.1);
             // Rewire: neighbours that become cheaper through the new node.
             for &(i, _) in &near {
-                if i == chosen.0 || i == new {
+                if i == chosen.0 {
                     continue;
                 }
                 let p = tree.index.point(i);

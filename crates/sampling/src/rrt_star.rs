@@ -235,7 +235,7 @@ impl RrtStar {
             let new = tree.add(new_point, parent.0, parent.1);
             // Rewire: neighbours that become cheaper through the new node change parent.
             for &(i, d) in &near {
-                if i == parent.0 || i == new {
+                if i == parent.0 {
                     continue;
                 }
                 let through_new = parent.1 + d;
