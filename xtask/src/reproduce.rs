@@ -6,12 +6,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::Context as _;
-use harness::{
-    PlannerSpec, RunMetrics, Scenario, Summary, World, build_planner, run_planner, run_seed,
-};
-use hyplan_core::Point2;
+use harness::{PlannerSpec, RunMetrics, Scenario, Summary, World, run_planner};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
-use rand::SeedableRng;
 use serde::Serialize;
 
 /// Options of `cargo xtask reproduce`.
@@ -285,8 +281,7 @@ fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesClaim> 
     out
 }
 
-/// Draws run 0 of a planner again (same seed, so the same plan) with its tree, and the
-/// path the harness scored for it.
+/// Draws run 0 of a planner: its trees and the path the harness scored for it.
 fn figure(
     scenario: &Scenario,
     world: &World,
@@ -294,15 +289,11 @@ fn figure(
     runs: &[RunMetrics],
     dir: &Path,
 ) -> anyhow::Result<()> {
-    let planner = build_planner(spec).map_err(|e| anyhow::anyhow!(e))?;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(run_seed(scenario.base_seed, 0));
-    let trees = planner
-        .plan(&world.map, &world.query, &mut rng)
-        .map(|p| p.trees)
-        .unwrap_or_default();
-    let path: Vec<Point2> = runs.first().map(|r| r.path.clone()).unwrap_or_default();
+    let (trees, path) = runs
+        .first()
+        .map_or((&[][..], &[][..]), |r| (&r.trees[..], &r.path[..]));
     let file = dir.join(format!("{}_{}.png", scenario.name, slug(spec.label())));
-    harness::draw_world(world, &trees, &path, &file).map_err(|e| anyhow::anyhow!(e))
+    harness::draw_world(world, trees, path, &file).map_err(|e| anyhow::anyhow!(e))
 }
 
 fn slug(s: &str) -> String {

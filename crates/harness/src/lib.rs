@@ -15,7 +15,8 @@
 //! - [`World`]: a scenario's map built and its query placed; [`Scenario::build_world`].
 //! - [`Furniture`], [`draw_room`]: room pictures drawn in code from their furniture.
 //! - [`build_planner`]: a planner by name with its parameters, as `Box<dyn Planner>`.
-//! - [`RunMetrics`], [`measure`]: what one run is scored on.
+//! - [`RunMetrics`], [`measure`]: what one run is scored on; [`post_process`]: smoothing,
+//!   node metrics and transfer time of one plan, shared with `hyplan plan`.
 //! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
 //! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate.
 //! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
@@ -37,7 +38,7 @@ mod stats;
 
 #[cfg(feature = "plot")]
 pub use figure::{chart_metrics, draw_world};
-pub use metrics::{RunMetrics, Scoring, measure};
+pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
 pub use planners::{PLANNER_NAMES, build_planner};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};

@@ -40,6 +40,9 @@ pub struct RunMetrics {
     /// The final path (world coordinates), kept for figures.
     #[serde(skip)]
     pub path: Vec<Point2>,
+    /// The planner's trees, kept for run 0 only (for figures); empty otherwise.
+    #[serde(skip)]
+    pub trees: Vec<hyplan_core::Tree>,
 }
 
 impl RunMetrics {
@@ -131,6 +134,7 @@ pub fn measure(
         transfer_time_s: nan,
         min_clearance: nan,
         path: Vec::new(),
+        trees: Vec::new(),
     };
     let plan = match outcome {
         Ok(plan) => plan,
@@ -144,39 +148,74 @@ pub fn measure(
     };
     m.explored = explored(&plan.stats, explored_by_expansions);
     let started = std::time::Instant::now();
-    let smoothed =
-        postproc::smooth_checked(&plan.path, smoothing, spacing, |a, b| ws.segment_free(a, b));
-    let smooth_s = started.elapsed().as_secs_f64();
-    m.time_s = plan.stats.elapsed.as_secs_f64() + smooth_s;
-    let Ok(smoothed) = smoothed else {
+    let processed = post_process(plan, smoothing, spacing, limits, |a, b| {
+        ws.segment_free(a, b)
+    });
+    m.time_s = plan.stats.elapsed.as_secs_f64() + started.elapsed().as_secs_f64();
+    let Ok(processed) = processed else {
         // A curve that cannot be repaired is a failed run: we never report a colliding path.
         return m;
     };
     m.success = true;
-    // A planner that returns a dense curve names the nodes it is built on: count nodes,
-    // segments and turns on those, as the papers do, and time the curve as a curve.
-    let dense = !plan.waypoints.is_empty();
-    let metrics = if dense {
-        PathMetrics::of(&plan.waypoints)
-    } else {
-        smoothed.metrics()
-    };
-    m.length = smoothed.length();
+    let metrics = processed.metrics;
+    m.length = processed.smoothed.length();
     m.nodes = metrics.nodes as f64;
     m.inner_nodes = metrics.nodes.saturating_sub(2) as f64;
     m.segments = metrics.segments as f64;
     m.turns = metrics.turns as f64;
-    if let Some(limits) = limits {
-        let timing = if dense {
-            postproc::time_curve(&smoothed.points, limits)
-        } else {
-            smoothed.time(limits)
-        };
-        m.transfer_time_s = timing.map_or(nan, |t| t.transfer_time);
-    }
-    m.min_clearance = min_clearance(obstacles, &smoothed.points, spacing);
-    m.path = smoothed.points;
+    m.transfer_time_s = processed.transfer_time_s.unwrap_or(nan);
+    m.min_clearance = min_clearance(obstacles, &processed.smoothed.points);
+    m.path = processed.smoothed.points;
     m
+}
+
+/// What post-processing made of one plan.
+#[derive(Debug, Clone)]
+pub struct Processed {
+    /// The checked final curve (samples at most `spacing` apart).
+    pub smoothed: postproc::Smoothed,
+    /// Length, nodes, segments and turns of the final path's nodes.
+    pub metrics: PathMetrics,
+    /// Transfer time under the limits, s (`None` without limits).
+    pub transfer_time_s: Option<f64>,
+}
+
+/// Post-processes a plan as the harness and `hyplan plan` both do: smooths it with
+/// `method` (checked with `segment_free` at most `spacing` apart), measures its nodes and
+/// times it under `limits`.
+///
+/// A planner that returns a dense curve names the nodes it is built on
+/// ([`Plan::waypoints`]); left as it is (`Smoothing::None`), such a path is counted on those
+/// nodes, as the papers count, and timed as a curve rather than as a polyline that stops
+/// at every sample.
+///
+/// # Errors
+///
+/// The smoothing's or the timing's [`postproc::PostprocError`].
+pub fn post_process(
+    plan: &Plan,
+    method: Smoothing,
+    spacing: f64,
+    limits: Option<&Limits>,
+    segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Result<Processed, postproc::PostprocError> {
+    let smoothed = postproc::smooth_checked(&plan.path, method, spacing, segment_free)?;
+    let as_curve = !plan.waypoints.is_empty() && method == Smoothing::None;
+    let metrics = if as_curve {
+        PathMetrics::of(&plan.waypoints)
+    } else {
+        smoothed.metrics()
+    };
+    let transfer_time_s = match limits {
+        None => None,
+        Some(l) if as_curve => Some(postproc::time_curve(&smoothed.points, l)?.transfer_time),
+        Some(l) => Some(smoothed.time(l)?.transfer_time),
+    };
+    Ok(Processed {
+        smoothed,
+        metrics,
+        transfer_time_s,
+    })
 }
 
 fn explored(stats: &hyplan_core::PlanStats, by_expansions: bool) -> f64 {
@@ -187,18 +226,15 @@ fn explored(stats: &hyplan_core::PlanStats, by_expansions: bool) -> f64 {
     }
 }
 
-/// Smallest clearance along a polyline sampled at most `spacing` apart.
-fn min_clearance(ws: &dyn Workspace, path: &[Point2], spacing: f64) -> f64 {
+/// Smallest clearance over the samples of a checked curve (they are at most a quarter
+/// cell apart, so the samples themselves are the scan); NaN when the workspace does not
+/// know clearances.
+fn min_clearance(ws: &dyn Workspace, samples: &[Point2]) -> f64 {
     let mut best = f64::INFINITY;
-    for w in path.windows(2) {
-        let d = nalgebra::distance(&w[0], &w[1]);
-        let steps = (d / spacing).ceil().max(1.0) as usize;
-        for k in 0..=steps {
-            let p = w[0] + (w[1] - w[0]) * (k as f64 / steps as f64);
-            match ws.clearance(p) {
-                Some(c) => best = best.min(c),
-                None => return f64::NAN,
-            }
+    for &p in samples {
+        match ws.clearance(p) {
+            Some(c) => best = best.min(c),
+            None => return f64::NAN,
         }
     }
     if best.is_finite() { best } else { f64::NAN }

@@ -25,12 +25,6 @@ pub fn run_seed(base: u64, run: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// The smoothing method of a name (`none`, `prune`, `pchip`, `bspline`, `bspline-interp`).
-#[must_use]
-pub fn smoothing_by_name(name: &str) -> Option<Smoothing> {
-    Smoothing::ALL.into_iter().find(|s| s.name() == name)
-}
-
 /// Runs one planner of a scenario `runs` times and scores each run.
 ///
 /// Run k uses `ChaCha8Rng::seed_from_u64(run_seed(scenario.base_seed, k))`. With the
@@ -53,8 +47,8 @@ pub fn run_planner(
     let smoothing = spec
         .smoothing
         .as_deref()
-        .map_or(Some(Smoothing::None), smoothing_by_name);
-    let smoothing = smoothing.ok_or_else(|| format!("unknown smoothing {:?}", spec.smoothing))?;
+        .map_or(Ok(Smoothing::None), str::parse);
+    let smoothing = smoothing.map_err(|e: postproc::PostprocError| e.to_string())?;
     let limits = match scenario.limits {
         Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max).map_err(|e| e.to_string())?),
         None => None,
@@ -75,7 +69,11 @@ pub fn run_planner(
         let seed = run_seed(scenario.base_seed, u64::from(k));
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let outcome = planner.plan(&world.map, &world.query, &mut rng);
-        let m = measure(&scoring, &outcome, k, seed);
+        let mut m = measure(&scoring, &outcome, k, seed);
+        // Run 0's trees go into the figures; the others' would only cost memory.
+        if let (0, Ok(plan)) = (k, outcome) {
+            m.trees = plan.trees;
+        }
         progress();
         m
     };

@@ -414,7 +414,7 @@ impl Scenario {
                 Self::invalid(path, &format!("planners[{i}]"), &p.name, &reason)
             })?;
             if let Some(s) = &p.smoothing
-                && crate::runner::smoothing_by_name(s).is_none()
+                && s.parse::<postproc::Smoothing>().is_err()
             {
                 return bad(
                     &format!("planners[{i}].smoothing"),

@@ -274,7 +274,16 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                         .collect()
                 };
                 let path = to_input(&plan.path);
-                let post = post_process(plan, &map, args.smooth, limits.as_ref())?;
+                // Curves are checked at most a quarter cell apart against the zones the
+                // planner avoided (the map's `blocked_from`).
+                let post = harness::post_process(
+                    plan,
+                    args.smooth,
+                    0.25 * map.resolution(),
+                    limits.as_ref(),
+                    |a, b| map.segment_free_cells(a, b),
+                )
+                .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", args.smooth.name()))?;
                 RunRecord {
                     planner: args.planner.clone(),
                     run,
@@ -288,8 +297,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                     iterations: plan.stats.iterations,
                     collision_checks: plan.stats.collision_checks,
                     path,
-                    smoothed: post.smoothed.as_deref().map(to_input),
-                    turns: Some(post.turns),
+                    smoothed: (args.smooth != postproc::Smoothing::None)
+                        .then(|| to_input(&post.smoothed.points)),
+                    turns: Some(post.metrics.turns),
                     transfer_time_s: post.transfer_time_s,
                 }
             }
@@ -334,55 +344,6 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(crate::EXIT_NO_PATH)
-    })
-}
-
-/// What post-processing made of one plan.
-struct PostProcessed {
-    /// The smoothed curve (world), when smoothing was asked for.
-    smoothed: Option<Vec<hyplan_core::Point2>>,
-    /// Turns over 10 degrees between the final path's node segments.
-    turns: usize,
-    /// Transfer time under the limits, s.
-    transfer_time_s: Option<f64>,
-}
-
-/// Smooths (checked against the map's blocking zones, a quarter cell apart), counts turns
-/// on the final path's nodes and times it.
-fn post_process(
-    plan: &Plan,
-    map: &envmap::GridMap,
-    method: postproc::Smoothing,
-    limits: Option<&postproc::Limits>,
-) -> anyhow::Result<PostProcessed> {
-    use hyplan_core::Workspace as _;
-    let spacing = 0.25 * map.resolution();
-    let s = postproc::smooth_checked(&plan.path, method, spacing, |a, b| map.segment_free(a, b))
-        .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", method.name()))?;
-    // A planner that already returned a dense curve names its nodes in `waypoints`.
-    let dense = !plan.waypoints.is_empty();
-    let turns = if dense && method == postproc::Smoothing::None {
-        postproc::PathMetrics::of(plan.nodes()).turns
-    } else {
-        s.metrics().turns
-    };
-    let transfer_time_s = match limits {
-        None => None,
-        Some(l) if dense && method.is_polyline() => Some(
-            postproc::time_curve(&s.points, l)
-                .map_err(|e| anyhow::anyhow!("timing: {e}"))?
-                .transfer_time,
-        ),
-        Some(l) => Some(
-            s.time(l)
-                .map_err(|e| anyhow::anyhow!("timing: {e}"))?
-                .transfer_time,
-        ),
-    };
-    Ok(PostProcessed {
-        smoothed: (method != postproc::Smoothing::None).then_some(s.points),
-        turns,
-        transfer_time_s,
     })
 }
 
