@@ -40,6 +40,14 @@ fn runs_are_scored_and_summarised() {
                 .windows(2)
                 .all(|p| hyplan_core::Workspace::segment_free(&w.map, p[0], p[1]))
         );
-        assert_eq!(r.segments + 1.0, r.nodes);
+        // Turns can only happen at inner nodes, and the path keeps the query's ends.
+        assert!(
+            r.turns <= r.inner_nodes,
+            "{} turns at {} inner nodes",
+            r.turns,
+            r.inner_nodes
+        );
+        assert_eq!(r.path.first(), Some(&w.query.start));
+        assert!(w.query.goal.contains(*r.path.last().unwrap()));
     }
 }
