@@ -7,10 +7,19 @@ use crate::SearchStats;
 use crate::heap::MinHeap;
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
-/// "No parent" in the parent array.
+/// "No parent" in Theta*'s parent array, "no target" for a one-to-all search.
 const NONE: u32 = u32::MAX;
-/// Stamp bit of a closed cell; the rest of the stamp is the generation.
+/// Stamp bit of a closed cell in Theta*'s nodes; the rest of the stamp is the generation.
 const CLOSED: u32 = 1 << 31;
+/// Bits of the generation field at the top of a word (see [`GridSearch::base`]).
+const GEN_BITS: u32 = 8;
+/// The generation field of a word starts at this bit.
+const GEN_SHIFT: u32 = 64 - GEN_BITS;
+/// The g field of a word starts at this bit (below it: the parent move, 3 bits, and the
+/// closed bit).
+const G_SHIFT: u32 = 4;
+/// The g field of a word, shifted down.
+const G_MASK: u64 = (1 << (GEN_SHIFT - G_SHIFT)) - 1;
 
 /// Which moves a grid search may make.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -278,9 +287,14 @@ pub struct GridSearch {
     passable: Vec<bool>,
     /// Legal moves out of each cell, one bit per direction of [`DIRS`].
     moves: Vec<u8>,
-    /// Per-cell search state.
-    nodes: Vec<Node>,
+    /// Per-cell state of A* and Dijkstra: one [`Word`] each.
+    words: Vec<u64>,
+    /// Query counter of `words` (1 to `2^GEN_BITS - 1`).
     generation: u32,
+    /// Per-cell state of Theta* (allocated by its first query).
+    theta_nodes: Vec<Node>,
+    /// Query counter of `theta_nodes`.
+    theta_generation: u32,
     /// The fixed-point cost scale of this grid's size.
     fixed: Fixed,
     /// `u64::MAX / pw + 1`: divides a padded index by `pw` with one multiplication.
@@ -317,15 +331,10 @@ impl GridSearch {
             options,
             passable: vec![false; n],
             moves: vec![0; n],
-            nodes: vec![
-                Node {
-                    g: 0,
-                    parent: NONE,
-                    stamp: 0
-                };
-                n
-            ],
+            words: vec![u64::MAX; n],
             generation: 0,
+            theta_nodes: Vec::new(),
+            theta_generation: 0,
             fixed: Fixed::new(pw, height + 2),
             magic: u64::MAX / pw as u64 + 1,
             heap: MinHeap::default(),
@@ -485,11 +494,10 @@ impl GridSearch {
         let mut next = vec![NONE; w * h];
         for j in 0..h {
             for i in 0..w {
-                let p = self.index(i, j) as usize;
-                if self.nodes[p].stamp & !CLOSED == self.generation {
-                    cost[j * w + i] = self.fixed.to_cells(self.nodes[p].g);
-                    let q = self.nodes[p].parent;
-                    if q != NONE {
+                let p = self.index(i, j);
+                if let Some(g) = self.g_of(p) {
+                    cost[j * w + i] = self.fixed.to_cells(g);
+                    if let Some(q) = self.parent(p) {
                         let (qi, qj) = self.cell(q);
                         next[j * w + i] = (qj * w + qi) as u32;
                     }
@@ -550,24 +558,72 @@ impl GridSearch {
         Ok(p)
     }
 
-    /// Starts a query from `s`: bumps the generation (clearing the stamps only on
-    /// wrap-around), empties the open list and opens `s` with g = `g0` (in the units of the
-    /// search) and heap key `key`.
-    fn begin(&mut self, s: u32, g0: u64, stats: &mut SearchStats) {
+    /// Starts an A* / Dijkstra query from `s`: bumps the generation (refilling the words
+    /// only when its field wraps around, once in `2^GEN_BITS - 1` queries), empties the
+    /// open list and opens `s` with g = 0. Returns the query's base word (its generation
+    /// field; g = 0, open).
+    fn begin(&mut self, s: u32, stats: &mut SearchStats) -> u64 {
         self.generation += 1;
-        if self.generation >= CLOSED {
-            for node in &mut self.nodes {
-                node.stamp = 0;
-            }
+        if self.generation >= 1 << GEN_BITS {
+            self.words.fill(u64::MAX);
             self.generation = 1;
         }
         self.heap.clear();
-        self.theta_heap.clear();
         self.stack.clear();
-        let s = s as usize;
-        self.nodes[s].g = g0;
-        self.nodes[s].parent = NONE;
-        self.nodes[s].stamp = self.generation;
+        let base = self.base();
+        self.words[s as usize] = base;
+        stats.pushes += 1;
+        stats.reached = 1;
+        base
+    }
+
+    /// The current query's base [`Word`]: its generation field, g = 0, open. Later
+    /// generations have smaller fields, so a word of an earlier query (or the initial
+    /// `u64::MAX`) compares above every word of this one.
+    fn base(&self) -> u64 {
+        u64::from(!self.generation & ((1 << GEN_BITS) - 1)) << GEN_SHIFT
+    }
+
+    /// The g of padded cell `p` in the current A* / Dijkstra query (`None` if the query
+    /// has not reached it).
+    fn g_of(&self, p: u32) -> Option<u64> {
+        let word = self.words[p as usize];
+        (word >> GEN_SHIFT == self.base() >> GEN_SHIFT).then_some((word >> G_SHIFT) & G_MASK)
+    }
+
+    /// The cell that `p` was last reached from in the current A* / Dijkstra query (`None`
+    /// at the start, the one cell with g = 0, and for cells not reached).
+    fn parent(&self, p: u32) -> Option<u32> {
+        self.g_of(p).filter(|&g| g > 0)?;
+        let (dx, dy, _) = DIRS[(self.words[p as usize] >> 1) as usize & 7];
+        Some((i64::from(p) - i64::from(dy) * self.pw as i64 - i64::from(dx)) as u32)
+    }
+
+    /// Starts a Theta* query from `s` on its own nodes (allocated by the first query),
+    /// with g = 0.
+    fn begin_theta(&mut self, s: u32, stats: &mut SearchStats) {
+        if self.theta_nodes.len() != self.words.len() {
+            let unset = Node {
+                g: 0,
+                parent: NONE,
+                stamp: 0,
+            };
+            self.theta_nodes = vec![unset; self.words.len()];
+            self.theta_generation = 0;
+        }
+        self.theta_generation += 1;
+        if self.theta_generation >= CLOSED {
+            for node in &mut self.theta_nodes {
+                node.stamp = 0;
+            }
+            self.theta_generation = 1;
+        }
+        self.theta_heap.clear();
+        self.theta_nodes[s as usize] = Node {
+            g: 0f64.to_bits(),
+            parent: NONE,
+            stamp: self.theta_generation,
+        };
         stats.pushes += 1;
         stats.reached = 1;
     }
@@ -613,52 +669,61 @@ impl GridSearch {
         };
         let (sx, sy) = self.xy(s0);
         let h0 = h(sx, sy);
-        self.begin(s0, 0, &mut stats);
+        // `base | g << G_SHIFT | d << 1` is an open word of this query with cost g reached
+        // by move d, `| 1` closes it; every word above `last` belongs to an earlier query.
+        let base = self.begin(s0, &mut stats);
+        let last = base | ((1 << GEN_SHIFT) - 1);
         self.heap.push(fx.key(h0, h0, s0));
-        let open = self.generation;
-        let closed = open | CLOSED;
         // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
         // on the stack has it.
         let mut f_cur = h0 >> fx.f_shift;
         let pw = self.pw;
         let magic = self.magic;
         let Self {
-            nodes,
+            words,
             moves,
             heap,
             stack,
             ..
         } = self;
+        // The heap's root is the cell being expanded (taken but not yet removed): the first
+        // successor that goes to the heap replaces it (one sift instead of a pop and a push).
+        let mut taken = false;
         loop {
             let p = if let Some(p) = stack.pop() {
                 p
-            } else if let Some(k) = heap.pop() {
+            } else {
+                if taken {
+                    heap.pop();
+                }
+                let Some(k) = heap.peek() else {
+                    break;
+                };
+                taken = true;
                 f_cur = (k >> 64) as u64 >> TIE_BITS;
                 k as u32
-            } else {
-                break;
             };
             let pu = p as usize;
-            let here = &mut nodes[pu];
+            let word = words[pu];
             // A cell can sit in the heap several times (each time its g dropped); with a
             // consistent heuristic the first pop carries its final g, the later ones are
             // stale.
-            if here.stamp == closed {
+            if word & 1 != 0 {
                 continue;
             }
-            here.stamp = closed;
-            let g = here.g;
+            words[pu] = word | 1;
+            let g = (word >> G_SHIFT) & G_MASK;
             if p == t0 {
                 let cost = fx.to_cells(g);
-                return Ok(self.trace(t0, cost, stats));
+                return Ok(self.trace_words(t0, cost, stats));
             }
             stats.expansions += 1;
             let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
             let x = p - y * pw as u32;
             let mask = moves[pu];
-            // The 3 x 3 block around p as three rows of three nodes (south, middle, north),
+            // The 3 x 3 block around p as three rows of three words (south, middle, north),
             // so that the moves below index them with constants.
-            let (below, rest) = nodes.split_at_mut(pu - 1);
+            let (below, rest) = words.split_at_mut(pu - 1);
             let (mid, above) = rest.split_at_mut(3);
             let (Some(south), Some(mid), Some(north)) = (
                 below[pu - pw - 1..].first_chunk_mut::<3>(),
@@ -668,30 +733,32 @@ impl GridSearch {
                 // p is an inner cell of the padded grid: its 3 x 3 block exists.
                 continue;
             };
-            // One move: bit of `mask`, node, padded index, cost, (dx, dy).
+            // One move: bit of `mask`, word, padded index, cost, (dx, dy).
             macro_rules! relax {
-                ($bit:expr, $node:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
-                    let node = &mut $node;
+                ($bit:expr, $word:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
+                    let word = &mut $word;
                     let ng = g + $cost;
-                    let st = node.stamp;
-                    // Relax a legal move unless q is open or closed with a g at least
-                    // as good (a closed cell's g is final, so never worse). The node
-                    // is read even for an illegal move (it exists: the padded border),
-                    // so that one branch decides.
-                    let legal = (mask >> $bit) & 1 != 0;
-                    if legal & !((st | CLOSED == closed) & (node.g <= ng)) {
-                        stats.reached += u64::from(st != open);
-                        *node = Node {
-                            g: ng,
-                            parent: p,
-                            stamp: open,
-                        };
+                    // Relax a legal move unless q has a g from this query at least as
+                    // good (open, or closed: a closed cell's g is final, so never
+                    // worse). With the bits below g all set in `test`, one comparison
+                    // says it (a word of an earlier query is above every word of this
+                    // one), and an illegal move's test is all ones, above every word.
+                    // The word is read even for an illegal move (it exists: the padded
+                    // border), so that one branch decides.
+                    let illegal = u64::from((mask >> $bit) & 1 ^ 1).wrapping_neg();
+                    let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | illegal;
+                    if test < *word {
+                        stats.reached += u64::from(*word > last);
+                        *word = (test & !((1 << G_SHIFT) - 1)) | ($bit << 1);
                         let q: u32 = $q;
                         let hq = h(x.wrapping_add_signed($dx), y.wrapping_add_signed($dy));
                         // The heuristic is consistent and the arithmetic exact, so
                         // f >= f_cur.
                         if (ng + hq) >> fx.f_shift <= f_cur {
                             stack.push(q);
+                        } else if taken {
+                            heap.replace_top(fx.key(ng + hq, hq, q));
+                            taken = false;
                         } else {
                             heap.push(fx.key(ng + hq, hq, q));
                         }
@@ -745,16 +812,16 @@ impl GridSearch {
             dx.hypot(dy)
         };
         let (sx, sy) = self.xy(s0);
-        self.begin(s0, 0f64.to_bits(), &mut stats);
+        self.begin_theta(s0, &mut stats);
         self.theta_heap.push(float_key(euclid(sx, sy), 0.0, s0));
-        let closed = self.generation | CLOSED;
+        let closed = self.theta_generation | CLOSED;
         while let Some(k) = self.theta_heap.pop() {
             let p = k as u32;
-            if self.nodes[p as usize].stamp == closed {
+            if self.theta_nodes[p as usize].stamp == closed {
                 continue;
             }
-            self.nodes[p as usize].stamp = closed;
-            let g = f64::from_bits(self.nodes[p as usize].g);
+            self.theta_nodes[p as usize].stamp = closed;
+            let g = f64::from_bits(self.theta_nodes[p as usize].g);
             if p == t0 {
                 return Ok(self.trace(t0, g, stats));
             }
@@ -806,11 +873,11 @@ impl GridSearch {
                 }
             }
         }
-        let open = self.generation;
-        let pp = self.nodes[pu].parent;
+        let open = self.theta_generation;
+        let pp = self.theta_nodes[pu].parent;
         for &(q, c) in &moves[..k] {
             let qu = q as usize;
-            let st = self.nodes[qu].stamp;
+            let st = self.theta_nodes[qu].stamp;
             if st == open | CLOSED {
                 continue;
             }
@@ -818,19 +885,19 @@ impl GridSearch {
             if pp != NONE && self.line_of_sight(map, pp, q) {
                 let (a, b) = (self.cell(pp), self.cell(q));
                 let d = (a.0 as f64 - b.0 as f64).hypot(a.1 as f64 - b.1 as f64);
-                let via = f64::from_bits(self.nodes[pp as usize].g) + d;
+                let via = f64::from_bits(self.theta_nodes[pp as usize].g) + d;
                 if via <= ng {
                     ng = via;
                     parent = pp;
                 }
             }
-            if st == open && f64::from_bits(self.nodes[qu].g) <= ng {
+            if st == open && f64::from_bits(self.theta_nodes[qu].g) <= ng {
                 continue;
             }
             stats.reached += u64::from(st != open);
-            self.nodes[qu].stamp = open;
-            self.nodes[qu].g = ng.to_bits();
-            self.nodes[qu].parent = parent;
+            self.theta_nodes[qu].stamp = open;
+            self.theta_nodes[qu].g = ng.to_bits();
+            self.theta_nodes[qu].parent = parent;
             let (x, y) = self.xy(q);
             self.theta_heap.push(float_key(ng + h(x, y), ng, q));
             stats.pushes += 1;
@@ -845,13 +912,25 @@ impl GridSearch {
         map.segment_cells(pa, pb, |i, j| self.cell_passable(i, j))
     }
 
-    /// The path to `t` by parent links.
+    /// The path to `t` of a Theta* query, by parent links.
     fn trace(&self, t: u32, cost: f64, stats: SearchStats) -> GridPath {
         let mut cells = Vec::new();
         let mut p = t;
         while p != NONE {
             cells.push(self.cell(p));
-            p = self.nodes[p as usize].parent;
+            p = self.theta_nodes[p as usize].parent;
+        }
+        cells.reverse();
+        GridPath { cells, cost, stats }
+    }
+
+    /// The path to `t` of an A* / Dijkstra query, by the parent moves in the words.
+    fn trace_words(&self, t: u32, cost: f64, stats: SearchStats) -> GridPath {
+        let mut cells = vec![self.cell(t)];
+        let mut p = t;
+        while let Some(q) = self.parent(p) {
+            cells.push(self.cell(q));
+            p = q;
         }
         cells.reverse();
         GridPath { cells, cost, stats }
@@ -925,10 +1004,11 @@ impl Fixed {
     /// The scale for a padded grid of `pw x ph` cells.
     fn new(pw: usize, ph: usize) -> Self {
         let n = pw * ph;
-        // Any path visits each cell at most once, so g < n * diag < n * 2^(k + 1), and
+        // Any path visits each cell at most once, so g < n * diag < n * 2^(k + 1) <=
+        // 2^(bits(n) + k + 1), which must fit the word's g field, and
         // f = g + h < 2 n 2^(k + 1) <= 2^(bits(n) + k + 2) <= 2^64.
         let bits = usize::BITS - n.leading_zeros();
-        let shift = 62u32.saturating_sub(bits).min(32);
+        let shift = (GEN_SHIFT - G_SHIFT - 1).saturating_sub(bits).min(32);
         let unit = 1u64 << shift;
         let diag = ((std::f64::consts::SQRT_2 * unit as f64).round() as u64) | 1;
         // Newton's iteration for the inverse of an odd number modulo 2^64.

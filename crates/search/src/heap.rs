@@ -49,10 +49,13 @@ impl<T> Ord for Entry<T> {
 ///
 /// Compared with `BinaryHeap<Reverse<u128>>`: the hole is sifted without swaps, the smaller
 /// child is picked by arithmetic on the comparison (no data-dependent branch to mispredict),
-/// and the sift-down stops as soon as the moved key fits.
+/// and [`pop`](MinHeap::pop) walks a number of levels that depends only on the size: the
+/// slots past the last key hold `u128::MAX`, so the last level needs no branch either.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct MinHeap<const WHOLE: bool> {
+    /// The keys in `[0, len)`, then `u128::MAX` up to at least `2 len + 1` slots.
     keys: Vec<u128>,
+    len: usize,
 }
 
 impl<const WHOLE: bool> MinHeap<WHOLE> {
@@ -69,15 +72,20 @@ impl<const WHOLE: bool> MinHeap<WHOLE> {
     /// Removes every key, keeping the capacity.
     #[inline]
     pub fn clear(&mut self) {
-        self.keys.clear();
+        self.keys[..self.len].fill(u128::MAX);
+        self.len = 0;
     }
 
     /// Adds `key`.
     #[inline]
     pub fn push(&mut self, key: u128) {
+        let mut i = self.len;
+        self.len += 1;
+        if self.keys.len() < 2 * self.len + 1 {
+            let grown = (4 * self.len + 1).max(64);
+            self.keys.resize(grown, u128::MAX);
+        }
         let keys = &mut self.keys;
-        let mut i = keys.len();
-        keys.push(key);
         while i > 0 {
             let parent = (i - 1) / 2;
             let up = keys[parent];
@@ -90,32 +98,73 @@ impl<const WHOLE: bool> MinHeap<WHOLE> {
         keys[i] = key;
     }
 
-    /// Removes and returns the smallest key.
-    ///
-    /// The hole left at the root goes down to the bottom along the smaller children (as
-    /// `BinaryHeap::pop` does: the number of steps depends only on the size, so the loop's
-    /// branch is predictable), then the last key moves up into it (usually not far).
+    /// The smallest key, left in the heap.
     #[inline]
-    pub fn pop(&mut self) -> Option<u128> {
+    pub fn peek(&self) -> Option<u128> {
+        (self.len > 0).then(|| self.keys[0])
+    }
+
+    /// Replaces the smallest key by `key`: a pop and a push in one sift from the root,
+    /// which stops at once when `key` is still the smallest (a search that follows a
+    /// corridor pushes the cell it expands next).
+    ///
+    /// The heap must not be empty.
+    #[inline]
+    pub fn replace_top(&mut self, key: u128) {
         let keys = &mut self.keys;
-        let last = keys.pop()?;
-        let n = keys.len();
-        if n == 0 {
-            return Some(last);
-        }
-        let top = keys[0];
+        let n = self.len;
         let mut i = 0;
         let mut l = 1;
-        while l + 1 < n {
+        // Children past the last key are `u128::MAX`, never smaller than `key`... unless
+        // `key` is `u128::MAX` too, which the `l < n` bound settles.
+        while l < n {
+            let pair = &keys[l..l + 2];
+            let c = usize::from(Self::lt(pair[1], pair[0]));
+            let child = pair[c];
+            if !Self::lt(child, key) {
+                break;
+            }
+            keys[i] = child;
+            i = l + c;
+            l = 2 * i + 1;
+        }
+        keys[i] = key;
+    }
+
+    /// Removes and returns the smallest key.
+    ///
+    /// The hole left at the root goes down along the smaller children through the full
+    /// levels (their number depends only on the size, so the loop's branch is
+    /// predictable), then into the last, partial level when a key is there (chosen by
+    /// arithmetic); the last key then moves up into the hole (usually not at all).
+    #[inline]
+    pub fn pop(&mut self) -> Option<u128> {
+        let n = self.len.checked_sub(1)?;
+        self.len = n;
+        let keys = &mut self.keys;
+        let top = keys[0];
+        let last = std::mem::replace(&mut keys[n], u128::MAX);
+        if n == 0 {
+            return Some(top);
+        }
+        // Levels 0 to `depth - 1` are full; level `depth` holds the keys from 2^depth - 1.
+        let depth = n.ilog2();
+        let mut i = 0;
+        for _ in 1..depth {
+            let l = 2 * i + 1;
             let pair = &keys[l..l + 2];
             let c = usize::from(Self::lt(pair[1], pair[0]));
             keys[i] = pair[c];
             i = l + c;
-            l = 2 * i + 1;
         }
-        if l + 1 == n {
-            keys[i] = keys[l];
-            i = l;
+        if depth > 0 {
+            let l = 2 * i + 1;
+            let pair = &keys[l..l + 2];
+            let c = usize::from(Self::lt(pair[1], pair[0]));
+            let j = l + c;
+            let j = if j < n { j } else { i };
+            keys[i] = keys[j];
+            i = j;
         }
         while i > 0 {
             let parent = (i - 1) / 2;
@@ -171,7 +220,47 @@ mod tests {
         small.sort_unstable();
         assert_eq!(tops, small);
     }
+    use std::cmp::Reverse;
     use std::collections::BinaryHeap;
+
+    #[test]
+    fn min_heap_matches_a_sorted_model_under_mixed_operations() {
+        // Sizes cross many powers of two (the padded last level of `pop`), keys repeat.
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut heap = MinHeap::<true>::default();
+        let mut model = BinaryHeap::new();
+        for round in 0..20_000 {
+            let r = next();
+            let key = u128::from(r % 97) << 70 | u128::from(r >> 40);
+            match r % 7 {
+                0..=2 => {
+                    heap.push(key);
+                    model.push(Reverse(key));
+                }
+                3 | 4 => assert_eq!(heap.pop(), model.pop().map(|k| k.0), "round {round}"),
+                5 if !model.is_empty() => {
+                    heap.replace_top(key);
+                    model.pop();
+                    model.push(Reverse(key));
+                }
+                _ => assert_eq!(heap.peek(), model.peek().map(|k| k.0)),
+            }
+            if round % 5_000 == 4_999 {
+                heap.clear();
+                model.clear();
+            }
+        }
+        while let Some(Reverse(k)) = model.pop() {
+            assert_eq!(heap.pop(), Some(k));
+        }
+        assert_eq!(heap.pop(), None);
+    }
 
     #[test]
     fn smallest_f_first_then_largest_g() {
