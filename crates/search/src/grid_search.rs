@@ -4,7 +4,7 @@
 use envmap::GridMap;
 
 use crate::SearchStats;
-use crate::heap::MinHeap;
+use crate::heap::{HeapKey, MinHeap, Upper};
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 /// "No parent" in Theta*'s parent array, "no target" for a one-to-all search.
@@ -299,10 +299,12 @@ pub struct GridSearch {
     fixed: Fixed,
     /// `u64::MAX / pw + 1`: divides a padded index by `pw` with one multiplication.
     magic: u64,
-    /// Open list of A* and Dijkstra (ordered by the upper half of [`Fixed::key`]).
-    heap: MinHeap<false>,
+    /// Open list of A* and Dijkstra on grids whose keys fit 64 bits (see [`Fixed`]).
+    heap: MinHeap<u64>,
+    /// Open list of A* and Dijkstra on larger grids.
+    wide_heap: MinHeap<Upper>,
     /// Open list of Theta* (ordered by the whole [`float_key`]).
-    theta_heap: MinHeap<true>,
+    theta_heap: MinHeap<u128>,
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
     /// so they skip the heap (see [`GridSearch::pop`]).
     stack: Vec<u32>,
@@ -338,6 +340,7 @@ impl GridSearch {
             fixed: Fixed::new(pw, height + 2),
             magic: u64::MAX / pw as u64 + 1,
             heap: MinHeap::default(),
+            wide_heap: MinHeap::default(),
             theta_heap: MinHeap::default(),
             stack: Vec::new(),
         };
@@ -569,6 +572,7 @@ impl GridSearch {
             self.generation = 1;
         }
         self.heap.clear();
+        self.wide_heap.clear();
         self.stack.clear();
         let base = self.base();
         self.words[s as usize] = base;
@@ -650,6 +654,20 @@ impl GridSearch {
         t0: u32,
         heuristic: bool,
     ) -> Result<GridPath, GridSearchError> {
+        if self.fixed.narrow {
+            self.grid_search_with::<u64>(s0, t0, heuristic)
+        } else {
+            self.grid_search_with::<Upper>(s0, t0, heuristic)
+        }
+    }
+
+    /// [`grid_search`](GridSearch::grid_search) with open-list keys of type `K`.
+    fn grid_search_with<K: GridKey>(
+        &mut self,
+        s0: u32,
+        t0: u32,
+        heuristic: bool,
+    ) -> Result<GridPath, GridSearchError> {
         let mut stats = SearchStats::default();
         let fx = self.fixed;
         let (unit, diag) = (fx.unit, fx.diag);
@@ -673,7 +691,7 @@ impl GridSearch {
         // by move d, `| 1` closes it; every word above `last` belongs to an earlier query.
         let base = self.begin(s0, &mut stats);
         let last = base | ((1 << GEN_SHIFT) - 1);
-        self.heap.push(fx.key(h0, h0, s0));
+        K::heap(&mut self.heap, &mut self.wide_heap).push(K::pack(fx, fx.order(h0, h0), s0));
         // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
         // on the stack has it.
         let mut f_cur = h0 >> fx.f_shift;
@@ -683,9 +701,11 @@ impl GridSearch {
             words,
             moves,
             heap,
+            wide_heap,
             stack,
             ..
         } = self;
+        let heap = K::heap(heap, wide_heap);
         // The heap's root is the cell being expanded (taken but not yet removed): the first
         // successor that goes to the heap replaces it (one sift instead of a pop and a push).
         let mut taken = false;
@@ -700,8 +720,8 @@ impl GridSearch {
                     break;
                 };
                 taken = true;
-                f_cur = (k >> 64) as u64 >> TIE_BITS;
-                k as u32
+                f_cur = k.order(fx) >> fx.tie_bits;
+                k.cell(fx)
             };
             let pu = p as usize;
             let word = words[pu];
@@ -757,10 +777,10 @@ impl GridSearch {
                         if (ng + hq) >> fx.f_shift <= f_cur {
                             stack.push(q);
                         } else if taken {
-                            heap.replace_top(fx.key(ng + hq, hq, q));
+                            heap.replace_top(K::pack(fx, fx.order(ng + hq, hq), q));
                             taken = false;
                         } else {
-                            heap.push(fx.key(ng + hq, hq, q));
+                            heap.push(K::pack(fx, fx.order(ng + hq, hq), q));
                         }
                         stats.pushes += 1;
                     }
@@ -970,12 +990,63 @@ fn float_key(f: f64, g: f64, p: u32) -> u128 {
     (u128::from(f.to_bits()) << 64) | (u128::from(!(g as f32).to_bits()) << 32) | u128::from(p)
 }
 
-/// Bits of the tie-break field in [`Fixed::key`].
-const TIE_BITS: u32 = 24;
+/// The open-list key of A* and Dijkstra: the order ([`Fixed::order`]: f, then the
+/// tie-break on h) above the cell, in one `u64` on grids where both fit
+/// ([`Fixed::narrow`]), else in the two halves of a `u128` ordered by its upper half.
+trait GridKey: HeapKey {
+    /// The key of cell `p` with order field `order`.
+    fn pack(fx: Fixed, order: u64, p: u32) -> Self;
+    /// The order field.
+    fn order(self, fx: Fixed) -> u64;
+    /// The cell.
+    fn cell(self, fx: Fixed) -> u32;
+    /// The open list of this key type.
+    fn heap<'a>(
+        narrow: &'a mut MinHeap<u64>,
+        wide: &'a mut MinHeap<Upper>,
+    ) -> &'a mut MinHeap<Self>;
+}
+
+impl GridKey for u64 {
+    #[inline(always)]
+    fn pack(fx: Fixed, order: u64, p: u32) -> Self {
+        (order << fx.cell_bits) | u64::from(p)
+    }
+    #[inline(always)]
+    fn order(self, fx: Fixed) -> u64 {
+        self >> fx.cell_bits
+    }
+    #[inline(always)]
+    fn cell(self, fx: Fixed) -> u32 {
+        (self & ((1 << fx.cell_bits) - 1)) as u32
+    }
+    fn heap<'a>(narrow: &'a mut MinHeap<u64>, _: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
+        narrow
+    }
+}
+
+impl GridKey for Upper {
+    #[inline(always)]
+    fn pack(_: Fixed, order: u64, p: u32) -> Self {
+        Upper((u128::from(order) << 64) | u128::from(p))
+    }
+    #[inline(always)]
+    fn order(self, _: Fixed) -> u64 {
+        (self.0 >> 64) as u64
+    }
+    #[inline(always)]
+    fn cell(self, _: Fixed) -> u32 {
+        self.0 as u32
+    }
+    fn heap<'a>(_: &'a mut MinHeap<u64>, wide: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
+        wide
+    }
+}
 
 /// Fixed-point costs of A* and Dijkstra: a straight move costs `unit = 2^k` and a diagonal
 /// `diag`, the odd integer nearest to `sqrt(2) * 2^k` (relative error below `2^-k`), with
-/// `k = 32` up to 2^29 padded cells and smaller above so that no cost can overflow `u64`.
+/// `k = 32` up to 2^18 padded cells and smaller above so that g fits the 52 bits of its
+/// field in a cell's word.
 ///
 /// Sums are exact, so the octile heuristic in the same units is exactly consistent. A cost
 /// `a * unit + b * diag` (a straight moves, b diagonals) determines `(a, b)` (diag is odd and
@@ -994,10 +1065,16 @@ struct Fixed {
     diag: u64,
     /// Inverse of `diag` modulo 2^64.
     inv_diag: u64,
-    /// Right shift of f for the 40-bit f field of the heap key.
+    /// Right shift of f for the f field of the order.
     f_shift: u32,
-    /// Right shift of h for the 24-bit tie-break field of the heap key.
+    /// Right shift of h for the tie-break field of the order.
     h_shift: u32,
+    /// Bits of the tie-break field.
+    tie_bits: u32,
+    /// Whether the open-list keys are `u64` (order above `cell_bits` bits of cell).
+    narrow: bool,
+    /// Bits of the cell in a `u64` key.
+    cell_bits: u32,
 }
 
 impl Fixed {
@@ -1018,32 +1095,49 @@ impl Fixed {
         }
         // h <= (pw + ph) * diag < (pw + ph) * 2^(k + 1).
         let h_bits = usize::BITS - (pw + ph).leading_zeros() + shift + 1;
+        // The f field quantum is 2^(bits(n) + 2 - f_bits) cells: a `u64` key is used when
+        // f gets at least bits(n) + 18 bits (a quantum of 2^-16 cells or finer) besides
+        // the cell and at least 8 bits of tie-break.
+        let cell_bits = usize::BITS - (n - 1).leading_zeros();
+        let spare = (64 - cell_bits).saturating_sub(bits + 18);
+        let narrow = spare >= 8;
+        let (f_bits, tie_bits) = if narrow {
+            let tie_bits = spare.min(16);
+            (64 - cell_bits - tie_bits, tie_bits)
+        } else {
+            (40, 24)
+        };
         Self {
             shift,
             unit,
             diag,
             inv_diag,
-            f_shift: (bits + shift + 2).saturating_sub(64 - TIE_BITS),
-            h_shift: h_bits.saturating_sub(TIE_BITS),
+            f_shift: (bits + shift + 2).saturating_sub(f_bits),
+            h_shift: h_bits.saturating_sub(tie_bits),
+            tie_bits,
+            narrow,
+            cell_bits,
         }
     }
 
-    /// The heap key of cell `p` with f and h (fixed point), ordered by its upper half: the
-    /// top 40 bits of f, then the top 24 bits of h (ties on f go to the smaller h, that is,
-    /// the larger g), and the cell in the lower half.
+    /// The order of a cell with f and h (fixed point) in the open list: the top bits of f,
+    /// then the top `tie_bits` bits of h (ties on f go to the smaller h, that is, the
+    /// larger g). With `u64` keys the cell's bits follow (so the order of equal fields is
+    /// by cell); with `u128` keys the order is the upper half, and equal ones come out in
+    /// any order.
     ///
-    /// Truncating f merges only f values less than `2^f_shift` units apart: 2^-24 cells on
-    /// grids below 2^14 padded cells (the MovingAI arena, the peers' maze), 2^-16 cells
-    /// at 2^22. Distinct lengths `a + b sqrt 2` of paths with fewer than about 10^4
+    /// Truncating f merges only f values less than `2^f_shift` units apart: 2^-18 cells on
+    /// the peers' 101 x 101 maze, 2^-22 on the MovingAI arena, at most 2^-16 wherever keys
+    /// are `u64` (up to about 2^19 padded cells), and 2^-16 cells at 2^22 cells with
+    /// `u128` keys. Distinct lengths `a + b sqrt 2` of paths with fewer than about 10^4
     /// diagonals lie further apart than that, so there the order is exact; otherwise a
     /// cell may come out before one whose f is smaller by less than the quantum (a closed
     /// cell that later gets a smaller g is reopened), and the cost is within the quantum
     /// of the optimum. Truncating h only coarsens the tie-break.
     #[inline(always)]
-    fn key(self, f: u64, h: u64, p: u32) -> u128 {
-        let tie = (h >> self.h_shift).min((1 << TIE_BITS) - 1);
-        let hi = ((f >> self.f_shift) << TIE_BITS) | tie;
-        (u128::from(hi) << 64) | u128::from(p)
+    fn order(self, f: u64, h: u64) -> u64 {
+        let tie = (h >> self.h_shift).min((1 << self.tie_bits) - 1);
+        ((f >> self.f_shift) << self.tie_bits) | tie
     }
 
     /// A fixed-point cost in cells: `a + b * sqrt 2` for `cost = a * unit + b * diag`.

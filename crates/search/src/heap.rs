@@ -40,50 +40,90 @@ impl<T> Ord for Entry<T> {
     }
 }
 
-/// A binary min-heap of `u128` keys for the grid searches, whose callers pack their order
-/// (f, then the tie-break on g) and the cell into the key.
-///
-/// `WHOLE = true` orders by the whole key; `WHOLE = false` only by its upper 64 bits (one
-/// `u64` comparison): the lower half then only carries the cell, and keys with equal upper
-/// halves come out in any order.
+/// A key of [`MinHeap`]: its order, and the value that fills the slots past the last key.
+pub(crate) trait HeapKey: Copy {
+    /// Above or equal to every key.
+    const MAX: Self;
+    /// Whether `a` comes out before `b`.
+    fn lt(a: Self, b: Self) -> bool;
+}
+
+/// Ordered as integers (Theta*'s keys, and the grid searches' keys on smaller grids).
+impl HeapKey for u128 {
+    const MAX: Self = u128::MAX;
+    #[inline(always)]
+    fn lt(a: Self, b: Self) -> bool {
+        a < b
+    }
+}
+
+/// Ordered as integers.
+impl HeapKey for u64 {
+    const MAX: Self = u64::MAX;
+    #[inline(always)]
+    fn lt(a: Self, b: Self) -> bool {
+        a < b
+    }
+}
+
+/// A key ordered by its upper 64 bits only (one `u64` comparison): the lower half carries
+/// the cell, and keys with equal upper halves come out in any order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Upper(pub u128);
+
+impl HeapKey for Upper {
+    const MAX: Self = Upper(u128::MAX);
+    #[inline(always)]
+    fn lt(a: Self, b: Self) -> bool {
+        ((a.0 >> 64) as u64) < ((b.0 >> 64) as u64)
+    }
+}
+
+/// A binary min-heap for the grid searches, whose callers pack their order (f, then the
+/// tie-break on g) and the cell into the key.
 ///
 /// Compared with `BinaryHeap<Reverse<u128>>`: the hole is sifted without swaps, the smaller
 /// child is picked by arithmetic on the comparison (no data-dependent branch to mispredict),
 /// and [`pop`](MinHeap::pop) walks a number of levels that depends only on the size: the
-/// slots past the last key hold `u128::MAX`, so the last level needs no branch either.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct MinHeap<const WHOLE: bool> {
-    /// The keys in `[0, len)`, then `u128::MAX` up to at least `2 len + 1` slots.
-    keys: Vec<u128>,
+/// slots past the last key hold [`HeapKey::MAX`], so the last level needs no branch either.
+#[derive(Debug, Clone)]
+pub(crate) struct MinHeap<K> {
+    /// The keys in `[0, len)`, then `K::MAX` up to at least `2 len + 1` slots.
+    keys: Vec<K>,
     len: usize,
 }
 
-impl<const WHOLE: bool> MinHeap<WHOLE> {
+impl<K: HeapKey> Default for MinHeap<K> {
+    fn default() -> Self {
+        Self {
+            keys: Vec::new(),
+            len: 0,
+        }
+    }
+}
+
+impl<K: HeapKey> MinHeap<K> {
     /// Whether `a` comes out before `b`.
     #[inline(always)]
-    fn lt(a: u128, b: u128) -> bool {
-        if WHOLE {
-            a < b
-        } else {
-            ((a >> 64) as u64) < ((b >> 64) as u64)
-        }
+    fn lt(a: K, b: K) -> bool {
+        K::lt(a, b)
     }
 
     /// Removes every key, keeping the capacity.
     #[inline]
     pub fn clear(&mut self) {
-        self.keys[..self.len].fill(u128::MAX);
+        self.keys[..self.len].fill(K::MAX);
         self.len = 0;
     }
 
     /// Adds `key`.
     #[inline]
-    pub fn push(&mut self, key: u128) {
+    pub fn push(&mut self, key: K) {
         let mut i = self.len;
         self.len += 1;
         if self.keys.len() < 2 * self.len + 1 {
             let grown = (4 * self.len + 1).max(64);
-            self.keys.resize(grown, u128::MAX);
+            self.keys.resize(grown, K::MAX);
         }
         let keys = &mut self.keys;
         while i > 0 {
@@ -100,7 +140,7 @@ impl<const WHOLE: bool> MinHeap<WHOLE> {
 
     /// The smallest key, left in the heap.
     #[inline]
-    pub fn peek(&self) -> Option<u128> {
+    pub fn peek(&self) -> Option<K> {
         (self.len > 0).then(|| self.keys[0])
     }
 
@@ -110,13 +150,13 @@ impl<const WHOLE: bool> MinHeap<WHOLE> {
     ///
     /// The heap must not be empty.
     #[inline]
-    pub fn replace_top(&mut self, key: u128) {
+    pub fn replace_top(&mut self, key: K) {
         let keys = &mut self.keys;
         let n = self.len;
         let mut i = 0;
         let mut l = 1;
-        // Children past the last key are `u128::MAX`, never smaller than `key`... unless
-        // `key` is `u128::MAX` too, which the `l < n` bound settles.
+        // Children past the last key are `K::MAX`, never smaller than `key`... unless
+        // `key` is `K::MAX` too, which the `l < n` bound settles.
         while l < n {
             let pair = &keys[l..l + 2];
             let c = usize::from(Self::lt(pair[1], pair[0]));
@@ -138,12 +178,12 @@ impl<const WHOLE: bool> MinHeap<WHOLE> {
     /// predictable), then into the last, partial level when a key is there (chosen by
     /// arithmetic); the last key then moves up into the hole (usually not at all).
     #[inline]
-    pub fn pop(&mut self) -> Option<u128> {
+    pub fn pop(&mut self) -> Option<K> {
         let n = self.len.checked_sub(1)?;
         self.len = n;
         let keys = &mut self.keys;
         let top = keys[0];
-        let last = std::mem::replace(&mut keys[n], u128::MAX);
+        let last = std::mem::replace(&mut keys[n], K::MAX);
         if n == 0 {
             return Some(top);
         }
@@ -182,11 +222,11 @@ impl<const WHOLE: bool> MinHeap<WHOLE> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Entry, MinHeap};
+    use super::{Entry, MinHeap, Upper};
 
     #[test]
     fn min_heap_pops_in_order() {
-        let mut heap = MinHeap::<true>::default();
+        let mut heap = MinHeap::<u128>::default();
         let mut keys: Vec<u128> = (0..500u128)
             .map(|i| (i * 7919 + 13) % 1009 + ((i % 3) << 100))
             .collect();
@@ -211,12 +251,14 @@ mod tests {
         heap.clear();
         assert_eq!(heap.pop(), None);
         // Upper halves only: the lower half is carried, not compared.
-        let mut heap = MinHeap::<false>::default();
+        let mut heap = MinHeap::<Upper>::default();
         let mut small: Vec<u128> = keys.iter().map(|&k| k % 1009).collect();
         for (i, &k) in small.iter().enumerate() {
-            heap.push((k << 64) | (i as u128 % 7));
+            heap.push(Upper((k << 64) | (i as u128 % 7)));
         }
-        let tops: Vec<u128> = std::iter::from_fn(|| heap.pop()).map(|k| k >> 64).collect();
+        let tops: Vec<u128> = std::iter::from_fn(|| heap.pop())
+            .map(|k| k.0 >> 64)
+            .collect();
         small.sort_unstable();
         assert_eq!(tops, small);
     }
@@ -233,7 +275,7 @@ mod tests {
             state ^= state << 17;
             state
         };
-        let mut heap = MinHeap::<true>::default();
+        let mut heap = MinHeap::<u128>::default();
         let mut model = BinaryHeap::new();
         for round in 0..20_000 {
             let r = next();
