@@ -692,11 +692,16 @@ impl GridSearch {
         let base = self.begin(s0, &mut stats);
         let last = base | ((1 << GEN_SHIFT) - 1);
         K::heap(&mut self.heap, &mut self.wide_heap).push(K::pack(fx, fx.order(h0, h0), s0));
-        // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
-        // on the stack has it.
-        let mut f_cur = h0 >> fx.f_shift;
-        let pw = self.pw;
-        let magic = self.magic;
+        let run = Run {
+            t0,
+            base,
+            last,
+            f0: h0 >> fx.f_shift,
+            pw: self.pw,
+            magic: self.magic,
+            fx,
+            h,
+        };
         let Self {
             words,
             moves,
@@ -706,96 +711,9 @@ impl GridSearch {
             ..
         } = self;
         let heap = K::heap(heap, wide_heap);
-        // The heap's root is the cell being expanded (taken but not yet removed): the first
-        // successor that goes to the heap replaces it (one sift instead of a pop and a push).
-        let mut taken = false;
-        loop {
-            let p = if let Some(p) = stack.pop() {
-                p
-            } else {
-                if taken {
-                    heap.pop();
-                }
-                let Some(k) = heap.peek() else {
-                    break;
-                };
-                taken = true;
-                f_cur = k.order(fx) >> fx.tie_bits;
-                k.cell(fx)
-            };
-            let pu = p as usize;
-            let word = words[pu];
-            // A cell can sit in the heap several times (each time its g dropped); with a
-            // consistent heuristic the first pop carries its final g, the later ones are
-            // stale.
-            if word & 1 != 0 {
-                continue;
-            }
-            words[pu] = word | 1;
-            let g = (word >> G_SHIFT) & G_MASK;
-            if p == t0 {
-                let cost = fx.to_cells(g);
-                return Ok(self.trace_words(t0, cost, stats));
-            }
-            stats.expansions += 1;
-            let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
-            let x = p - y * pw as u32;
-            let mask = moves[pu];
-            // The 3 x 3 block around p as three rows of three words (south, middle, north),
-            // so that the moves below index them with constants.
-            let (below, rest) = words.split_at_mut(pu - 1);
-            let (mid, above) = rest.split_at_mut(3);
-            let (Some(south), Some(mid), Some(north)) = (
-                below[pu - pw - 1..].first_chunk_mut::<3>(),
-                mid.first_chunk_mut::<3>(),
-                above[pw - 3..].first_chunk_mut::<3>(),
-            ) else {
-                // p is an inner cell of the padded grid: its 3 x 3 block exists.
-                continue;
-            };
-            // One move: bit of `mask`, word, padded index, cost, (dx, dy).
-            macro_rules! relax {
-                ($bit:expr, $word:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
-                    let word = &mut $word;
-                    let ng = g + $cost;
-                    // Relax a legal move unless q has a g from this query at least as
-                    // good (open, or closed: a closed cell's g is final, so never
-                    // worse). With the bits below g all set in `test`, one comparison
-                    // says it (a word of an earlier query is above every word of this
-                    // one), and an illegal move's test is all ones, above every word.
-                    // The word is read even for an illegal move (it exists: the padded
-                    // border), so that one branch decides.
-                    let illegal = u64::from((mask >> $bit) & 1 ^ 1).wrapping_neg();
-                    let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | illegal;
-                    if test < *word {
-                        stats.reached += u64::from(*word > last);
-                        *word = (test & !((1 << G_SHIFT) - 1)) | ($bit << 1);
-                        let q: u32 = $q;
-                        let hq = h(x.wrapping_add_signed($dx), y.wrapping_add_signed($dy));
-                        // The heuristic is consistent and the arithmetic exact, so
-                        // f >= f_cur.
-                        if (ng + hq) >> fx.f_shift <= f_cur {
-                            stack.push(q);
-                        } else if taken {
-                            heap.replace_top(K::pack(fx, fx.order(ng + hq, hq), q));
-                            taken = false;
-                        } else {
-                            heap.push(K::pack(fx, fx.order(ng + hq, hq), q));
-                        }
-                        stats.pushes += 1;
-                    }
-                }};
-            }
-            let pw32 = pw as u32;
-            // The order of `DIRS`: E, W, N, S, NE, NW, SE, SW.
-            relax!(0, mid[2], p + 1, unit, 1, 0);
-            relax!(1, mid[0], p - 1, unit, -1, 0);
-            relax!(2, north[1], p + pw32, unit, 0, 1);
-            relax!(3, south[1], p - pw32, unit, 0, -1);
-            relax!(4, north[2], p + pw32 + 1, diag, 1, 1);
-            relax!(5, north[0], p + pw32 - 1, diag, -1, 1);
-            relax!(6, south[2], p - pw32 + 1, diag, 1, -1);
-            relax!(7, south[0], p - pw32 - 1, diag, -1, -1);
+        if let Some(g) = expand(&run, words, moves, heap, stack, &mut stats) {
+            let cost = fx.to_cells(g);
+            return Ok(self.trace_words(t0, cost, stats));
         }
         Err(GridSearchError::NoPath { stats })
     }
@@ -990,6 +908,142 @@ fn float_key(f: f64, g: f64, p: u32) -> u128 {
     (u128::from(f.to_bits()) << 64) | (u128::from(!(g as f32).to_bits()) << 32) | u128::from(p)
 }
 
+/// The fixed inputs of [`expand`].
+struct Run<H> {
+    /// Target cell (`NONE`: none).
+    t0: u32,
+    /// The query's base word ([`GridSearch::base`]).
+    base: u64,
+    /// Every word above this one belongs to an earlier query.
+    last: u64,
+    /// `f >> f_shift` of the start.
+    f0: u64,
+    pw: usize,
+    magic: u64,
+    fx: Fixed,
+    /// Heuristic at padded coordinates.
+    h: H,
+}
+
+/// The loop of A* / Dijkstra (see [`GridSearch::grid_search`]) on the query's arrays,
+/// passed apart so that nothing else can alias them: expands cells until the target is
+/// taken from the open list (returns its g) or the open list runs out (`None`).
+#[inline]
+fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
+    run: &Run<H>,
+    words: &mut [u64],
+    moves: &[u8],
+    heap: &mut MinHeap<K>,
+    stack: &mut Vec<u32>,
+    stats: &mut SearchStats,
+) -> Option<u64> {
+    let Run {
+        t0,
+        base,
+        last,
+        f0,
+        pw,
+        magic,
+        fx,
+        ref h,
+    } = *run;
+    let (unit, diag) = (fx.unit, fx.diag);
+    // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
+    // on the stack has it.
+    let mut f_cur = f0;
+    // The heap's root is the cell being expanded (taken but not yet removed): the first
+    // successor that goes to the heap replaces it (one sift instead of a pop and a push).
+    let mut taken = false;
+    loop {
+        let p = if let Some(p) = stack.pop() {
+            p
+        } else {
+            if taken {
+                heap.pop();
+            }
+            let Some(k) = heap.peek() else {
+                break;
+            };
+            taken = true;
+            f_cur = k.order(fx) >> fx.tie_bits;
+            k.cell(fx)
+        };
+        let pu = p as usize;
+        let word = words[pu];
+        // A cell can sit in the heap several times (each time its g dropped); with a
+        // consistent heuristic the first pop carries its final g, the later ones are
+        // stale.
+        if word & 1 != 0 {
+            continue;
+        }
+        words[pu] = word | 1;
+        let g = (word >> G_SHIFT) & G_MASK;
+        if p == t0 {
+            return Some(g);
+        }
+        stats.expansions += 1;
+        let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
+        let x = p - y * pw as u32;
+        let mask = moves[pu];
+        // The 3 x 3 block around p as three rows of three words (south, middle, north),
+        // so that the moves below index them with constants.
+        let (below, rest) = words.split_at_mut(pu - 1);
+        let (mid, above) = rest.split_at_mut(3);
+        let (Some(south), Some(mid), Some(north)) = (
+            below[pu - pw - 1..].first_chunk_mut::<3>(),
+            mid.first_chunk_mut::<3>(),
+            above[pw - 3..].first_chunk_mut::<3>(),
+        ) else {
+            // p is an inner cell of the padded grid: its 3 x 3 block exists.
+            continue;
+        };
+        // One move: bit of `mask`, word, padded index, cost, (dx, dy).
+        macro_rules! relax {
+            ($bit:expr, $word:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
+                let word = &mut $word;
+                let ng = g + $cost;
+                // Relax a legal move unless q has a g from this query at least as
+                // good (open, or closed: a closed cell's g is final, so never
+                // worse). With the bits below g all set in `test`, one comparison
+                // says it (a word of an earlier query is above every word of this
+                // one), and an illegal move's test is all ones, above every word.
+                // The word is read even for an illegal move (it exists: the padded
+                // border), so that one branch decides.
+                let illegal = u64::from((mask >> $bit) & 1 ^ 1).wrapping_neg();
+                let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | illegal;
+                if test < *word {
+                    stats.reached += u64::from(*word > last);
+                    *word = (test & !((1 << G_SHIFT) - 1)) | ($bit << 1);
+                    let q: u32 = $q;
+                    let hq = h(x.wrapping_add_signed($dx), y.wrapping_add_signed($dy));
+                    // The heuristic is consistent and the arithmetic exact, so
+                    // f >= f_cur.
+                    if (ng + hq) >> fx.f_shift <= f_cur {
+                        stack.push(q);
+                    } else if taken {
+                        heap.replace_top(K::pack(fx, fx.order(ng + hq, hq), q));
+                        taken = false;
+                    } else {
+                        heap.push(K::pack(fx, fx.order(ng + hq, hq), q));
+                    }
+                    stats.pushes += 1;
+                }
+            }};
+        }
+        let pw32 = pw as u32;
+        // The order of `DIRS`: E, W, N, S, NE, NW, SE, SW.
+        relax!(0, mid[2], p + 1, unit, 1, 0);
+        relax!(1, mid[0], p - 1, unit, -1, 0);
+        relax!(2, north[1], p + pw32, unit, 0, 1);
+        relax!(3, south[1], p - pw32, unit, 0, -1);
+        relax!(4, north[2], p + pw32 + 1, diag, 1, 1);
+        relax!(5, north[0], p + pw32 - 1, diag, -1, 1);
+        relax!(6, south[2], p - pw32 + 1, diag, 1, -1);
+        relax!(7, south[0], p - pw32 - 1, diag, -1, -1);
+    }
+    None
+}
+
 /// The open-list key of A* and Dijkstra: the order ([`Fixed::order`]: f, then the
 /// tie-break on h) above the cell, in one `u64` on grids where both fit
 /// ([`Fixed::narrow`]), else in the two halves of a `u128` ordered by its upper half.
@@ -1136,8 +1190,8 @@ impl Fixed {
     /// of the optimum. Truncating h only coarsens the tie-break.
     #[inline(always)]
     fn order(self, f: u64, h: u64) -> u64 {
-        let tie = (h >> self.h_shift).min((1 << self.tie_bits) - 1);
-        ((f >> self.f_shift) << self.tie_bits) | tie
+        // h < 2^(h_shift + tie_bits), so the tie field holds it.
+        ((f >> self.f_shift) << self.tie_bits) | (h >> self.h_shift)
     }
 
     /// A fixed-point cost in cells: `a + b * sqrt 2` for `cost = a * unit + b * diag`.
