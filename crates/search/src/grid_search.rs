@@ -396,7 +396,17 @@ impl GridSearch {
                 self.moves[p] = mask;
             }
         }
+        self.reset_words();
         Ok(())
+    }
+
+    /// Sets every word to "not reached": `u64::MAX` (above the words of every query) on
+    /// passable cells, and 0 on blocked ones and the border (below every move's test, so
+    /// no move into them improves anything).
+    fn reset_words(&mut self) {
+        for (word, &free) in self.words.iter_mut().zip(&self.passable) {
+            *word = if free { u64::MAX } else { 0 };
+        }
     }
 
     /// Map columns.
@@ -567,8 +577,9 @@ impl GridSearch {
     /// field; g = 0, open).
     fn begin(&mut self, s: u32, stats: &mut SearchStats) -> u64 {
         self.generation += 1;
-        if self.generation >= 1 << GEN_BITS {
-            self.words.fill(u64::MAX);
+        // The field of generation 2^GEN_BITS - 1 would be 0, the word of blocked cells.
+        if self.generation >= (1 << GEN_BITS) - 1 {
+            self.reset_words();
             self.generation = 1;
         }
         self.heap.clear();
@@ -997,20 +1008,21 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
             // p is an inner cell of the padded grid: its 3 x 3 block exists.
             continue;
         };
-        // One move: bit of `mask`, word, padded index, cost, (dx, dy).
+        // One move: whether it is legal (all ones if not), word, bit, padded index, cost,
+        // (dx, dy).
         macro_rules! relax {
-            ($bit:expr, $word:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
+            ($illegal:expr, $word:expr, $bit:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
                 let word = &mut $word;
                 let ng = g + $cost;
                 // Relax a legal move unless q has a g from this query at least as
                 // good (open, or closed: a closed cell's g is final, so never
                 // worse). With the bits below g all set in `test`, one comparison
                 // says it (a word of an earlier query is above every word of this
-                // one), and an illegal move's test is all ones, above every word.
-                // The word is read even for an illegal move (it exists: the padded
-                // border), so that one branch decides.
-                let illegal = u64::from((mask >> $bit) & 1 ^ 1).wrapping_neg();
-                let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | illegal;
+                // one, a blocked cell's word is 0, below every test), and an illegal
+                // move's test is all ones, above every word. The word is read even
+                // for an illegal move (it exists: the padded border), so that one
+                // branch decides.
+                let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | $illegal;
                 if test < *word {
                     stats.reached += u64::from(*word > last);
                     *word = (test & !((1 << G_SHIFT) - 1)) | ($bit << 1);
@@ -1032,14 +1044,17 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
         }
         let pw32 = pw as u32;
         // The order of `DIRS`: E, W, N, S, NE, NW, SE, SW.
-        relax!(0, mid[2], p + 1, unit, 1, 0);
-        relax!(1, mid[0], p - 1, unit, -1, 0);
-        relax!(2, north[1], p + pw32, unit, 0, 1);
-        relax!(3, south[1], p - pw32, unit, 0, -1);
-        relax!(4, north[2], p + pw32 + 1, diag, 1, 1);
-        relax!(5, north[0], p + pw32 - 1, diag, -1, 1);
-        relax!(6, south[2], p - pw32 + 1, diag, 1, -1);
-        relax!(7, south[0], p - pw32 - 1, diag, -1, -1);
+        // A straight move is legal exactly when its cell is passable, which the blocked
+        // word says; a diagonal also needs the corner rule, which the mask says.
+        let illegal = |bit: u8| u64::from((mask >> bit) & 1 ^ 1).wrapping_neg();
+        relax!(0, mid[2], 0, p + 1, unit, 1, 0);
+        relax!(0, mid[0], 1, p - 1, unit, -1, 0);
+        relax!(0, north[1], 2, p + pw32, unit, 0, 1);
+        relax!(0, south[1], 3, p - pw32, unit, 0, -1);
+        relax!(illegal(4), north[2], 4, p + pw32 + 1, diag, 1, 1);
+        relax!(illegal(5), north[0], 5, p + pw32 - 1, diag, -1, 1);
+        relax!(illegal(6), south[2], 6, p - pw32 + 1, diag, 1, -1);
+        relax!(illegal(7), south[0], 7, p - pw32 - 1, diag, -1, -1);
     }
     None
 }

@@ -158,9 +158,10 @@ impl<K: HeapKey> MinHeap<K> {
         // Children past the last key are `K::MAX`, never smaller than `key`... unless
         // `key` is `K::MAX` too, which the `l < n` bound settles.
         while l < n {
-            let pair = &keys[l..l + 2];
-            let c = usize::from(Self::lt(pair[1], pair[0]));
-            let child = pair[c];
+            let (a, b) = (keys[l], keys[l + 1]);
+            let c = Self::lt(b, a);
+            let child = if c { b } else { a };
+            let c = usize::from(c);
             if !Self::lt(child, key) {
                 break;
             }
@@ -192,15 +193,15 @@ impl<K: HeapKey> MinHeap<K> {
         let mut i = 0;
         for _ in 1..depth {
             let l = 2 * i + 1;
-            let pair = &keys[l..l + 2];
-            let c = usize::from(Self::lt(pair[1], pair[0]));
-            keys[i] = pair[c];
+            let (a, b) = (keys[l], keys[l + 1]);
+            let c = Self::lt(b, a);
+            keys[i] = if c { b } else { a };
+            let c = usize::from(c);
             i = l + c;
         }
         if depth > 0 {
             let l = 2 * i + 1;
-            let pair = &keys[l..l + 2];
-            let c = usize::from(Self::lt(pair[1], pair[0]));
+            let c = usize::from(Self::lt(keys[l + 1], keys[l]));
             let j = l + c;
             let j = if j < n { j } else { i };
             keys[i] = keys[j];
