@@ -308,6 +308,9 @@ pub struct GridSearch {
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
     /// so they skip the heap (see [`GridSearch::pop`]).
     stack: Vec<u32>,
+    /// Where each cell's key sits in the A* / Dijkstra open list, if it is there (checked
+    /// against the key before use, so stale values are harmless).
+    slot: Vec<u32>,
 }
 
 impl GridSearch {
@@ -343,6 +346,7 @@ impl GridSearch {
             wide_heap: MinHeap::default(),
             theta_heap: MinHeap::default(),
             stack: Vec::new(),
+            slot: vec![0; n],
         };
         search.update(map)?;
         Ok(search)
@@ -719,10 +723,11 @@ impl GridSearch {
             heap,
             wide_heap,
             stack,
+            slot,
             ..
         } = self;
         let heap = K::heap(heap, wide_heap);
-        if let Some(g) = expand(&run, words, moves, heap, stack, &mut stats) {
+        if let Some(g) = expand(&run, words, moves, heap, stack, slot, &mut stats) {
             let cost = fx.to_cells(g);
             return Ok(self.trace_words(t0, cost, stats));
         }
@@ -946,6 +951,7 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     moves: &[u8],
     heap: &mut MinHeap<K>,
     stack: &mut Vec<u32>,
+    slot: &mut [u32],
     stats: &mut SearchStats,
 ) -> Option<u64> {
     let Run {
@@ -962,6 +968,12 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
     // on the stack has it.
     let mut f_cur = f0;
+    // Keeps `slot` up to date as the heap moves keys.
+    macro_rules! place {
+        () => {
+            &mut |k: K, i: usize| slot[k.cell(fx) as usize] = i as u32
+        };
+    }
     // The heap's root is the cell being expanded (taken but not yet removed): the first
     // successor that goes to the heap replaces it (one sift instead of a pop and a push).
     let mut taken = false;
@@ -970,7 +982,7 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
             p
         } else {
             if taken {
-                heap.pop();
+                heap.pop_placed(place!());
             }
             let Some(k) = heap.peek() else {
                 break;
@@ -1032,11 +1044,22 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
                     // f >= f_cur.
                     if (ng + hq) >> fx.f_shift <= f_cur {
                         stack.push(q);
-                    } else if taken {
-                        heap.replace_top(K::pack(fx, fx.order(ng + hq, hq), q));
-                        taken = false;
                     } else {
-                        heap.push(K::pack(fx, fx.order(ng + hq, hq), q));
+                        let key = K::pack(fx, fx.order(ng + hq, hq), q);
+                        // Already queued (its g dropped): lower its key in place. The
+                        // taken root is on its way out, so it does not count.
+                        // (`K::MAX` holds no cell: the border cell with the last index
+                        // is never queued.)
+                        let i = slot[q as usize] as usize;
+                        let queued = (heap.at(i).cell(fx) == q) & ((i != 0) | !taken);
+                        if queued {
+                            heap.decrease_placed(i, key, place!());
+                        } else if taken {
+                            heap.replace_top_placed(key, place!());
+                            taken = false;
+                        } else {
+                            heap.push_placed(key, place!());
+                        }
                     }
                     stats.pushes += 1;
                 }

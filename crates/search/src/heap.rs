@@ -119,23 +119,20 @@ impl<K: HeapKey> MinHeap<K> {
     /// Adds `key`.
     #[inline]
     pub fn push(&mut self, key: K) {
-        let mut i = self.len;
-        self.len += 1;
-        if self.keys.len() < 2 * self.len + 1 {
-            let grown = (4 * self.len + 1).max(64);
-            self.keys.resize(grown, K::MAX);
-        }
-        let keys = &mut self.keys;
-        while i > 0 {
-            let parent = (i - 1) / 2;
-            let up = keys[parent];
-            if !Self::lt(key, up) {
-                break;
-            }
-            keys[i] = up;
-            i = parent;
-        }
-        keys[i] = key;
+        self.push_placed(key, &mut |_, _| {});
+    }
+
+    /// Removes and returns the smallest key.
+    #[inline]
+    pub fn pop(&mut self) -> Option<K> {
+        self.pop_placed(&mut |_, _| {})
+    }
+
+    /// Replaces the smallest key by `key` (see
+    /// [`replace_top_placed`](MinHeap::replace_top_placed)).
+    #[cfg(test)]
+    pub fn replace_top(&mut self, key: K) {
+        self.replace_top_placed(key, &mut |_, _| {});
     }
 
     /// The smallest key, left in the heap.
@@ -144,13 +141,57 @@ impl<K: HeapKey> MinHeap<K> {
         (self.len > 0).then(|| self.keys[0])
     }
 
+    /// The key at position `i`, or `K::MAX` if `i` holds none.
+    #[inline]
+    pub fn at(&self, i: usize) -> K {
+        // Slots from `len` on hold `K::MAX`.
+        self.keys.get(i).copied().unwrap_or(K::MAX)
+    }
+
+    /// Moves `key` up from the hole at position `i` to where it belongs.
+    #[inline(always)]
+    fn sift_up(&mut self, mut i: usize, key: K, place: &mut impl FnMut(K, usize)) {
+        let keys = &mut self.keys;
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            let up = keys[parent];
+            if !Self::lt(key, up) {
+                break;
+            }
+            keys[i] = up;
+            place(up, i);
+            i = parent;
+        }
+        keys[i] = key;
+        place(key, i);
+    }
+
+    /// Adds `key`. `place(k, i)` is called for every key `k` that lands at position `i`
+    /// (here and in the other `_placed` operations), so that callers can keep an index.
+    #[inline]
+    pub fn push_placed(&mut self, key: K, place: &mut impl FnMut(K, usize)) {
+        let i = self.len;
+        self.len += 1;
+        if self.keys.len() < 2 * self.len + 1 {
+            let grown = (4 * self.len + 1).max(64);
+            self.keys.resize(grown, K::MAX);
+        }
+        self.sift_up(i, key, place);
+    }
+
+    /// Lowers the key at position `i` to `key` (which must not come after it).
+    #[inline]
+    pub fn decrease_placed(&mut self, i: usize, key: K, place: &mut impl FnMut(K, usize)) {
+        self.sift_up(i, key, place);
+    }
+
     /// Replaces the smallest key by `key`: a pop and a push in one sift from the root,
     /// which stops at once when `key` is still the smallest (a search that follows a
     /// corridor pushes the cell it expands next).
     ///
     /// The heap must not be empty.
     #[inline]
-    pub fn replace_top(&mut self, key: K) {
+    pub fn replace_top_placed(&mut self, key: K, place: &mut impl FnMut(K, usize)) {
         let keys = &mut self.keys;
         let n = self.len;
         let mut i = 0;
@@ -166,10 +207,12 @@ impl<K: HeapKey> MinHeap<K> {
                 break;
             }
             keys[i] = child;
+            place(child, i);
             i = l + c;
             l = 2 * i + 1;
         }
         keys[i] = key;
+        place(key, i);
     }
 
     /// Removes and returns the smallest key.
@@ -179,7 +222,7 @@ impl<K: HeapKey> MinHeap<K> {
     /// predictable), then into the last, partial level when a key is there (chosen by
     /// arithmetic); the last key then moves up into the hole (usually not at all).
     #[inline]
-    pub fn pop(&mut self) -> Option<K> {
+    pub fn pop_placed(&mut self, place: &mut impl FnMut(K, usize)) -> Option<K> {
         let n = self.len.checked_sub(1)?;
         self.len = n;
         let keys = &mut self.keys;
@@ -195,28 +238,23 @@ impl<K: HeapKey> MinHeap<K> {
             let l = 2 * i + 1;
             let (a, b) = (keys[l], keys[l + 1]);
             let c = Self::lt(b, a);
-            keys[i] = if c { b } else { a };
-            let c = usize::from(c);
-            i = l + c;
+            let child = if c { b } else { a };
+            keys[i] = child;
+            place(child, i);
+            i = l + usize::from(c);
         }
         if depth > 0 {
             let l = 2 * i + 1;
             let c = usize::from(Self::lt(keys[l + 1], keys[l]));
             let j = l + c;
-            let j = if j < n { j } else { i };
-            keys[i] = keys[j];
-            i = j;
-        }
-        while i > 0 {
-            let parent = (i - 1) / 2;
-            let up = keys[parent];
-            if !Self::lt(last, up) {
-                break;
+            if j < n {
+                let child = keys[j];
+                keys[i] = child;
+                place(child, i);
+                i = j;
             }
-            keys[i] = up;
-            i = parent;
         }
-        keys[i] = last;
+        self.sift_up(i, last, place);
         Some(top)
     }
 }
