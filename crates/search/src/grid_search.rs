@@ -540,8 +540,8 @@ impl GridSearch {
     /// Cell `(i, j)` of a flat padded index.
     #[inline]
     fn cell(&self, p: u32) -> (usize, usize) {
-        let p = p as usize;
-        (p % self.pw - 1, p / self.pw - 1)
+        let (x, y) = self.xy(p);
+        (x as usize - 1, y as usize - 1)
     }
 
     /// Checks that a query cell is inside the map and passable; returns its index.
@@ -613,9 +613,15 @@ impl GridSearch {
     /// The cell that `p` was last reached from in the current A* / Dijkstra query (`None`
     /// at the start, the one cell with g = 0, and for cells not reached).
     fn parent(&self, p: u32) -> Option<u32> {
+        self.parent_move(p).map(|(q, _, _)| q)
+    }
+
+    /// [`parent`](GridSearch::parent), with the move `(dx, dy)` from it to `p`.
+    fn parent_move(&self, p: u32) -> Option<(u32, i32, i32)> {
         self.g_of(p).filter(|&g| g > 0)?;
         let (dx, dy, _) = DIRS[(self.words[p as usize] >> 1) as usize & 7];
-        Some((i64::from(p) - i64::from(dy) * self.pw as i64 - i64::from(dx)) as u32)
+        let q = (i64::from(p) - i64::from(dy) * self.pw as i64 - i64::from(dx)) as u32;
+        Some((q, dx, dy))
     }
 
     /// Starts a Theta* query from `s` on its own nodes (allocated by the first query),
@@ -880,10 +886,13 @@ impl GridSearch {
 
     /// The path to `t` of an A* / Dijkstra query, by the parent moves in the words.
     fn trace_words(&self, t: u32, cost: f64, stats: SearchStats) -> GridPath {
-        let mut cells = vec![self.cell(t)];
+        let (mut i, mut j) = self.cell(t);
+        let mut cells = vec![(i, j)];
         let mut p = t;
-        while let Some(q) = self.parent(p) {
-            cells.push(self.cell(q));
+        while let Some((q, dx, dy)) = self.parent_move(p) {
+            i = i.wrapping_add_signed(-dx as isize);
+            j = j.wrapping_add_signed(-dy as isize);
+            cells.push((i, j));
             p = q;
         }
         cells.reverse();
