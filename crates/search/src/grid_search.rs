@@ -227,35 +227,46 @@ enum Kind {
 /// `GridSearch::new` copies which cells are passable (under the map's
 /// [`blocked_from`](GridMap::blocked_from)) into an array padded with a blocked border, so
 /// the inner loop needs no bounds tests for the map's edges, and one byte per cell with its
-/// legal moves (corner rule applied). Each query then runs on a flat per-cell array of
-/// nodes (g, parent, stamp; no hash map) with fixed-point integer costs (see "Costs"
-/// below), a binary heap of packed `u128` keys whose ties go to the larger g, and a closed
-/// bit in the stamp (stale heap entries are skipped). A successor whose f equals the f of
-/// the cell being expanded skips the heap and goes on a stack that is popped first: it
-/// would come out next anyway, and this runs straight and diagonal stretches toward the
-/// goal depth-first. The arrays are reset in O(1) between queries by a generation counter:
-/// a cell's g and parent count only when its stamp carries the current generation.
+/// legal moves (corner rule applied). A* and Dijkstra then keep **one `u64` word per cell**
+/// (no hash map): from the top, the query's generation (8 bits), g in fixed point (52 bits,
+/// see "Costs" below), the move the cell was reached by (3 bits: the parent, for the path)
+/// and a closed bit. Later queries have smaller generation fields, so a word of an earlier
+/// query compares above every word of the current one and the arrays are reset in O(1)
+/// between queries (refilled once in 254 queries); blocked cells hold 0. Whether a move
+/// improves its cell is then one `u64` comparison.
+///
+/// The open list is a binary heap of packed keys (f, then h for ties toward the larger g,
+/// then the cell; one `u64` on grids up to about 2^19 padded cells, else a `u128`) with
+/// decrease-key: a slot per cell says where its key sits, so a cell whose g drops is moved
+/// up in place instead of queued twice. A successor whose f equals the f of the cell being
+/// expanded skips the heap and goes on a stack that is popped first: it would come out
+/// next anyway, and this runs straight and diagonal stretches toward the goal depth-first.
+/// The first successor that does go to the heap takes the place of the cell being
+/// expanded at the root (one sift instead of a pop and a push). Theta* keeps its own nodes
+/// (`f64` g, parent, stamp) and heap, allocated by its first query.
 ///
 /// # Memory
 ///
 /// Per cell of the padded `(width + 2) x (height + 2)` grid: 1 byte passable, 1 byte
-/// legal-move mask, 8 bytes g (`u64` fixed point, or `f64` bits for Theta*), 4 bytes parent
-/// (`u32`), 4 bytes stamp (`u32`): **18 bytes**, allocated once
-/// in [`new`](GridSearch::new) and reused; plus 16 bytes per open-list entry (the heap
-/// keeps its capacity across queries too).
+/// legal-move mask, 8 bytes word, 4 bytes heap slot (`u32`): **14 bytes**
+/// ([`BYTES_PER_CELL`](GridSearch::BYTES_PER_CELL)), allocated once in
+/// [`new`](GridSearch::new) and reused; plus 8 or 16 bytes per open-list entry (the heap
+/// keeps its capacity across queries too). The first Theta* query adds 16 bytes per cell.
 ///
 /// # Costs and heuristics
 ///
 /// Straight moves cost 1, diagonals sqrt 2 (cell units). A* uses the octile distance
 /// (Manhattan when 4-connected), which is admissible and consistent, so its costs are
-/// optimal; Dijkstra uses none. A* and Dijkstra add costs as `u64` fixed-point integers:
-/// 2^32 per straight move and the odd integer nearest to sqrt(2) 2^32 per diagonal (fewer
-/// fraction bits on grids above 2^29 cells), so sums are exact, the heuristic in the same
-/// units is exactly consistent and f is compared exactly. The cost returned is `a + b *
-/// sqrt 2` in `f64` for the path's a straight moves and b diagonals, recovered exactly from
-/// the integer. The integer order is the real order of path lengths except between lengths
-/// closer than `b * 2^-33` cells, which needs paths of tens of thousands of diagonals; even
-/// then the result is within that of the optimum. Theta* sums `f64` Euclidean lengths.
+/// optimal; Dijkstra uses none. A* and Dijkstra add costs as fixed-point integers: 2^32
+/// per straight move and the odd integer nearest to sqrt(2) 2^32 per diagonal (fewer
+/// fraction bits from 2^19 padded cells on, so that g fits its 52 bits), so sums are
+/// exact and the heuristic in the same units is exactly consistent. The open list orders
+/// by f cut to the key's f field (a quantum of 2^-16 cells or finer below 2^22 cells).
+/// The cost returned is `a + b * sqrt 2` in `f64` for the path's a straight moves and b
+/// diagonals, recovered exactly from the integer. The integer order is the real order of
+/// path lengths except between lengths closer than `b * 2^-33` cells (at 2^32), which needs
+/// paths of tens of thousands of diagonals; even then the result is within that of the
+/// optimum. Theta* sums `f64` Euclidean lengths.
 ///
 /// # Example
 ///
@@ -289,7 +300,7 @@ pub struct GridSearch {
     moves: Vec<u8>,
     /// Per-cell state of A* and Dijkstra: one [`Word`] each.
     words: Vec<u64>,
-    /// Query counter of `words` (1 to `2^GEN_BITS - 1`).
+    /// Query counter of `words` (1 to `2^GEN_BITS - 2`).
     generation: u32,
     /// Per-cell state of Theta* (allocated by its first query).
     theta_nodes: Vec<Node>,
@@ -437,8 +448,8 @@ impl GridSearch {
         i < self.width && j < self.height && self.passable[self.index(i, j) as usize]
     }
 
-    /// Scratch bytes held per padded cell (see the type doc).
-    pub const BYTES_PER_CELL: usize = 1 + 1 + 8 + 4 + 4;
+    /// Scratch bytes held per padded cell by A* and Dijkstra (see the type doc).
+    pub const BYTES_PER_CELL: usize = 1 + 1 + 8 + 4;
 
     /// Optimal path from `start` to `goal` by A* with the octile (or Manhattan) heuristic.
     ///
@@ -576,7 +587,7 @@ impl GridSearch {
     }
 
     /// Starts an A* / Dijkstra query from `s`: bumps the generation (refilling the words
-    /// only when its field wraps around, once in `2^GEN_BITS - 1` queries), empties the
+    /// only when its field wraps around, once in `2^GEN_BITS - 2` queries), empties the
     /// open list and opens `s` with g = 0. Returns the query's base word (its generation
     /// field; g = 0, open).
     fn begin(&mut self, s: u32, stats: &mut SearchStats) -> u64 {
@@ -1146,7 +1157,7 @@ impl GridKey for Upper {
 
 /// Fixed-point costs of A* and Dijkstra: a straight move costs `unit = 2^k` and a diagonal
 /// `diag`, the odd integer nearest to `sqrt(2) * 2^k` (relative error below `2^-k`), with
-/// `k = 32` up to 2^18 padded cells and smaller above so that g fits the 52 bits of its
+/// `k = 32` below 2^19 padded cells and smaller above so that g fits the 52 bits of its
 /// field in a cell's word.
 ///
 /// Sums are exact, so the octile heuristic in the same units is exactly consistent. A cost

@@ -12,7 +12,7 @@
 //!   remembered, bounded by [`BacktrackLimits`] (seed 000's "BT"); not optimal.
 //! - [`SearchResult`], [`SearchStats`], [`NotFound`]: what they return.
 //!
-//! On grid maps, with scratch memory reused across queries ([`GridSearch`], 18 bytes per
+//! On grid maps, with scratch memory reused across queries ([`GridSearch`], 14 bytes per
 //! cell):
 //!
 //! - [`GridSearch::astar`], [`GridSearch::dijkstra`]: 4/8-connected, octile costs, corner
