@@ -10,13 +10,24 @@
 //! costs, successors in a fixed array). Before timing, every scenario is solved once by
 //! both and both costs are checked against the `.scen` optimum (`max(1e-3, 1e-5 len)`).
 //! One iteration = every scenario of the file once; throughput is counted in scenarios.
+//!
+//! A second group, `grid_search_generated`, runs both on 512 x 512 maps of the kinds of
+//! the MovingAI benchmark sets, generated here from fixed seeds (mazes with corridors 1, 4
+//! and 16 cells wide, random obstacles at 20% and 35%, 32-cell rooms with doors), ten
+//! queries each between random free cells at least 128 apart. There is no `.scen` file:
+//! each query's optimum is our Dijkstra's cost, and both A*s are checked against it.
+//! `cargo bench -p hyplan-benches --bench grid_search -- grid_search/` runs the first group
+//! only, `-- generated` the second.
 
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_main};
 use envmap::GridMap;
+use hyplan_core::Zone;
 use ordered_float::OrderedFloat;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
 use search::{GridOptions, GridSearch, ScenEntry, read_scen};
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
@@ -127,45 +138,187 @@ fn grid_search(c: &mut Criterion) {
     ];
     let mut group = c.benchmark_group("grid_search");
     for s in &suites {
-        // Checked once, outside the timed loop: both must return the optimal cost.
-        let mut ours = GridSearch::new(&s.map, GridOptions::default()).unwrap();
-        for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
-            let tol = f64::max(1e-3, 1e-5 * opt);
-            let mine = ours.astar(a, b).map(|p| p.cost).ok();
-            let peer = peer_astar(&s.map, a, b);
-            assert!(
-                mine.is_some_and(|c| (c - opt).abs() <= tol),
-                "{} #{k}: ours {mine:?} vs {opt}",
-                s.name
-            );
-            assert!(
-                peer.is_some_and(|c| (c - opt).abs() <= tol),
-                "{} #{k}: peer {peer:?} vs {opt}",
-                s.name
-            );
+        run_suite(&mut group, s);
+    }
+    group.finish();
+}
+
+/// Both A*s on one suite, after checking both return the optimum on every query.
+fn run_suite(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    s: &Suite,
+) {
+    // Checked once, outside the timed loop: both must return the optimal cost.
+    let mut ours = GridSearch::new(&s.map, GridOptions::default()).unwrap();
+    for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
+        let tol = f64::max(1e-3, 1e-5 * opt);
+        let mine = ours.astar(a, b).map(|p| p.cost).ok();
+        let peer = peer_astar(&s.map, a, b);
+        assert!(
+            mine.is_some_and(|c| (c - opt).abs() <= tol),
+            "{} #{k}: ours {mine:?} vs {opt}",
+            s.name
+        );
+        assert!(
+            peer.is_some_and(|c| (c - opt).abs() <= tol),
+            "{} #{k}: peer {peer:?} vs {opt}",
+            s.name
+        );
+    }
+    group.throughput(Throughput::Elements(s.queries.len() as u64));
+    let id = format!("{}/{}", s.name, s.queries.len());
+    group.bench_function(BenchmarkId::new("hyplan_grid_astar", &id), |bench| {
+        bench.iter(|| {
+            let mut total = 0.0;
+            for &(a, b, _) in &s.queries {
+                total += ours
+                    .astar(black_box(a), black_box(b))
+                    .map_or(0.0, |p| p.cost);
+            }
+            total
+        });
+    });
+    group.bench_function(BenchmarkId::new("pathfinding_astar", &id), |bench| {
+        bench.iter(|| {
+            let mut total = 0.0;
+            for &(a, b, _) in &s.queries {
+                total += peer_astar(&s.map, black_box(a), black_box(b)).unwrap_or(0.0);
+            }
+            total
+        });
+    });
+}
+
+/// A `n x n` maze of `corridor`-wide passages and 1-cell walls, carved by a depth-first
+/// walk (the recursive backtracker) over the grid of rooms.
+fn maze(n: usize, corridor: usize, rng: &mut ChaCha8Rng) -> GridMap {
+    let mut map = GridMap::filled(n, n, Zone::Forbidden).expect("size");
+    let k = (n - 1) / (corridor + 1);
+    let corner = |r: usize| 1 + r * (corridor + 1);
+    let carve = |map: &mut GridMap, x0: usize, y0: usize, w: usize, h: usize| {
+        for j in y0..y0 + h {
+            for i in x0..x0 + w {
+                map.set_cell_zone(i, j, Zone::Free);
+            }
         }
-        group.throughput(Throughput::Elements(s.queries.len() as u64));
-        let id = format!("{}/{}", s.name, s.queries.len());
-        group.bench_function(BenchmarkId::new("hyplan_grid_astar", &id), |bench| {
-            bench.iter(|| {
-                let mut total = 0.0;
-                for &(a, b, _) in &s.queries {
-                    total += ours
-                        .astar(black_box(a), black_box(b))
-                        .map_or(0.0, |p| p.cost);
+    };
+    let mut seen = vec![false; k * k];
+    let mut stack = vec![(0, 0)];
+    seen[0] = true;
+    carve(&mut map, corner(0), corner(0), corridor, corridor);
+    while let Some(&(ci, cj)) = stack.last() {
+        let next: Vec<(usize, usize)> = [(1i64, 0i64), (-1, 0), (0, 1), (0, -1)]
+            .iter()
+            .map(|&(di, dj)| (ci as i64 + di, cj as i64 + dj))
+            .filter(|&(i, j)| i >= 0 && j >= 0 && i < k as i64 && j < k as i64)
+            .map(|(i, j)| (i as usize, j as usize))
+            .filter(|&(i, j)| !seen[j * k + i])
+            .collect();
+        if next.is_empty() {
+            stack.pop();
+            continue;
+        }
+        let (ni, nj) = next[rng.random_range(0..next.len())];
+        seen[nj * k + ni] = true;
+        carve(&mut map, corner(ni), corner(nj), corridor, corridor);
+        // The wall between the two rooms.
+        let (x0, y0) = (corner(ci.min(ni)), corner(cj.min(nj)));
+        if ni != ci {
+            carve(&mut map, x0 + corridor, y0, 1, corridor);
+        } else {
+            carve(&mut map, x0, y0 + corridor, corridor, 1);
+        }
+        stack.push((ni, nj));
+    }
+    map
+}
+
+/// A `n x n` map whose cells are blocked with probability `p`.
+fn random(n: usize, p: f64, rng: &mut ChaCha8Rng) -> GridMap {
+    let mut map = GridMap::filled(n, n, Zone::Free).expect("size");
+    for j in 0..n {
+        for i in 0..n {
+            if rng.random_bool(p) {
+                map.set_cell_zone(i, j, Zone::Forbidden);
+            }
+        }
+    }
+    map
+}
+
+/// A `n x n` map of `room`-sized rooms with 1-cell walls and two doors in each wall.
+fn rooms(n: usize, room: usize, rng: &mut ChaCha8Rng) -> GridMap {
+    let mut map = GridMap::filled(n, n, Zone::Free).expect("size");
+    for j in 0..n {
+        for i in 0..n {
+            if i % room == 0 || j % room == 0 {
+                map.set_cell_zone(i, j, Zone::Forbidden);
+            }
+        }
+    }
+    for ry in (0..n).step_by(room) {
+        for rx in (0..n).step_by(room) {
+            for _ in 0..2 {
+                let door = 1 + rng.random_range(0..room - 1);
+                if rx + room < n && ry + door < n {
+                    map.set_cell_zone(rx + room, ry + door, Zone::Free);
                 }
-                total
-            });
-        });
-        group.bench_function(BenchmarkId::new("pathfinding_astar", &id), |bench| {
-            bench.iter(|| {
-                let mut total = 0.0;
-                for &(a, b, _) in &s.queries {
-                    total += peer_astar(&s.map, black_box(a), black_box(b)).unwrap_or(0.0);
+                if ry + room < n && rx + door < n {
+                    map.set_cell_zone(rx + door, ry + room, Zone::Free);
                 }
-                total
-            });
-        });
+            }
+        }
+    }
+    map
+}
+
+/// Ten queries between random free cells of `map` at least `n / 4` apart (by the optimal
+/// length), with our Dijkstra's cost as the reference.
+fn queries(map: &GridMap, rng: &mut ChaCha8Rng) -> Vec<Scenario> {
+    let (w, h) = (map.width(), map.height());
+    let mut search = GridSearch::new(map, GridOptions::default()).expect("grid");
+    let mut out = Vec::new();
+    while out.len() < 10 {
+        let a = (rng.random_range(0..w), rng.random_range(0..h));
+        let b = (rng.random_range(0..w), rng.random_range(0..h));
+        if !map.cell_free(a.0, a.1) || !map.cell_free(b.0, b.1) {
+            continue;
+        }
+        if let Ok(p) = search.dijkstra(a, b)
+            && p.cost >= w as f64 / 4.0
+        {
+            out.push((a, b, p.cost));
+        }
+    }
+    out
+}
+
+/// The generated maps of the second group.
+fn generated() -> Vec<Suite> {
+    let n = 512;
+    let mut rng = ChaCha8Rng::seed_from_u64(2026);
+    let maps: [(&'static str, GridMap); 6] = [
+        ("maze512-1", maze(n, 1, &mut rng)),
+        ("maze512-4", maze(n, 4, &mut rng)),
+        ("maze512-16", maze(n, 16, &mut rng)),
+        ("random512-20", random(n, 0.20, &mut rng)),
+        ("random512-35", random(n, 0.35, &mut rng)),
+        ("rooms512-32", rooms(n, 32, &mut rng)),
+    ];
+    maps.into_iter()
+        .map(|(name, map)| {
+            let queries = queries(&map, &mut rng);
+            Suite { name, map, queries }
+        })
+        .collect()
+}
+
+/// The second group: both A*s on the generated maps.
+fn grid_search_generated(c: &mut Criterion) {
+    let mut group = c.benchmark_group("grid_search_generated");
+    group.sample_size(10);
+    for s in &generated() {
+        run_suite(&mut group, s);
     }
     group.finish();
 }
@@ -174,6 +327,7 @@ fn grid_search(c: &mut Criterion) {
 fn benches() {
     let mut c = Criterion::default().configure_from_args();
     grid_search(&mut c);
+    grid_search_generated(&mut c);
 }
 
 criterion_main!(benches);
