@@ -1,2 +1,4 @@
 //! Criterion benches of hyplan's hot paths live in this package's `benches/` folder; the
-//! library itself is empty.
+//! library holds the workloads they share with the examples.
+
+pub mod grid;

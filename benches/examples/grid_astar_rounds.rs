@@ -1,0 +1,90 @@
+//! Our grid A* against the `pathfinding` peer, timed alternately over several rounds (the
+//! fastest round of each counts), with expansions and pushes per expansion: a quicker,
+//! noise-robust view next to the criterion group.
+//!
+//! ```sh
+//! cargo run --release -p hyplan-benches --example grid_astar_rounds [-- ROUNDS [--generated]]
+//! ```
+//!
+//! Without `--generated`: the bench's MovingAI suites (the arena pair of `shared/data` and
+//! the peers' maze); with it, the generated 512 x 512 maps as well.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use hyplan_benches::grid::{Suite, generated, movingai, peer_astar};
+use search::{GridOptions, GridSearch};
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let rounds: usize = args
+        .iter()
+        .find_map(|a| a.parse().ok())
+        .unwrap_or(15)
+        .max(1);
+    let mut suites: Vec<Suite> = movingai().into_iter().collect();
+    if args.iter().any(|a| a == "--generated") {
+        suites.extend(generated());
+    }
+    println!(
+        "suite,queries,expansions,pushes_per_expansion,ours_ms,peer_ms,ours_ns_per_expansion,peer_ns_per_expansion,ratio"
+    );
+    let (mut ours_total, mut peer_total) = (0.0, 0.0);
+    for s in &suites {
+        let mut search = GridSearch::new(&s.map, GridOptions::default()).expect("grid");
+        let (mut expansions, mut pushes) = (0u64, 0u64);
+        for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
+            let tol = f64::max(1e-3, 1e-5 * opt);
+            let mine = search.astar(a, b).expect("ours finds a path");
+            let peer = peer_astar(&s.map, a, b).expect("the peer finds a path");
+            assert!(
+                (mine.cost - opt).abs() <= tol,
+                "{} #{k}: ours {}",
+                s.name,
+                mine.cost
+            );
+            assert!((peer - opt).abs() <= tol, "{} #{k}: peer {peer}", s.name);
+            expansions += mine.stats.expansions;
+            pushes += mine.stats.pushes;
+        }
+        let (mut ours, mut peer) = (f64::MAX, f64::MAX);
+        for _ in 0..rounds {
+            let t = Instant::now();
+            let mut sum = 0.0;
+            for &(a, b, _) in &s.queries {
+                sum += search
+                    .astar(black_box(a), black_box(b))
+                    .map_or(0.0, |p| p.cost);
+            }
+            black_box(sum);
+            ours = ours.min(t.elapsed().as_secs_f64());
+            let t = Instant::now();
+            let mut sum = 0.0;
+            for &(a, b, _) in &s.queries {
+                sum += peer_astar(&s.map, black_box(a), black_box(b)).unwrap_or(0.0);
+            }
+            black_box(sum);
+            peer = peer.min(t.elapsed().as_secs_f64());
+        }
+        ours_total += ours;
+        peer_total += peer;
+        let per = |t: f64| t * 1e9 / expansions as f64;
+        println!(
+            "{},{},{expansions},{:.2},{:.3},{:.3},{:.1},{:.1},{:.2}",
+            s.name,
+            s.queries.len(),
+            pushes as f64 / expansions as f64,
+            ours * 1e3,
+            peer * 1e3,
+            per(ours),
+            per(peer),
+            peer / ours
+        );
+    }
+    println!(
+        "total,,,,{:.3},{:.3},,,{:.2}",
+        ours_total * 1e3,
+        peer_total * 1e3,
+        peer_total / ours_total
+    );
+}
