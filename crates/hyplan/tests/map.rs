@@ -46,7 +46,11 @@ fn picture() -> String {
             pic.set_rgb(x, y, [50, 60, 70]);
         }
     }
-    let p = tmp("two_boxes.png");
+    // One file per call: tests run in parallel, and one rewriting the file while the
+    // binary of another reads it made that read fail.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let p = tmp(&format!("two_boxes_{n}.png"));
     envmap::write_picture(&pic, &p).unwrap();
     p.display().to_string()
 }
