@@ -2,7 +2,6 @@
 //! a new node of one comes within a free step of the other.
 
 use std::ops::ControlFlow;
-use std::time::Instant;
 
 use hyplan_core::{Budget, Plan, PlanError, Planner, PlannerInfo, Progress, Query, Workspace};
 use rand::{Rng, RngCore};
@@ -93,69 +92,36 @@ impl BiRrt {
         R: Rng + ?Sized,
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
-        let started = Instant::now();
-        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
-        let goal = query.goal;
-        let mut checker = CountingChecker::new(ws);
-        // trees[0] grows from the start, trees[1] from the goal centre.
-        let mut trees = [
-            GrowTree::rooted_at(query.start),
-            GrowTree::rooted_at(goal.center()),
-        ];
-        let mut iterations = 0_u64;
-        // (start-tree node, goal-tree node) where the trees met; goal node None = start tree
-        // reached the goal region by itself.
-        let mut joined: Option<(usize, Option<usize>)> =
-            goal.contains(query.start).then_some((0, None));
-        let mut active = 0_usize;
-
-        while joined.is_none() && !self.budget.exhausted(iterations, started) {
-            iterations += 1;
-            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
-                let progress = Progress {
-                    iterations,
-                    nodes: (trees[0].len() + trees[1].len()) as u64,
-                    best_cost: None,
-                };
-                if observer(&progress).is_break() {
-                    break;
-                }
-            }
+        let (goal, step) = (query.goal, self.step);
+        let grow = |trees: &mut [GrowTree; 2],
+                    active: usize,
+                    sample,
+                    checker: &mut CountingChecker<'_, W>| {
             let other = 1 - active;
-            // Sample: uniform in the bounds.
-            let sample = toolkit::sample_uniform(ws, rng);
-            // Nearest: the active tree's node closest to the sample.
-            let Some((near, _)) = trees[active].index.nearest(sample) else {
-                break;
-            };
+            // Nearest: the active tree's node closest to the sample (a tree is never empty).
+            let (near, _) = trees[active].index.nearest(sample)?;
             let near_point = trees[active].index.point(near);
             // Steer: at most one step towards the sample.
-            let new_point = toolkit::steer(near_point, sample, self.step);
+            let new_point = toolkit::steer(near_point, sample, step);
             // Segment free: the edge, exactly; then add the node.
-            if new_point != near_point && checker.segment_free(near_point, new_point) {
-                let new = trees[active].add(new_point, near);
-                // Goal test: the start tree inside a goal disc ends the search by itself.
-                if active == 0 && goal.radius() > 0.0 && goal.contains(new_point) {
-                    joined = Some((new, None));
-                } else if let Some((meet, d)) = trees[other].index.nearest(new_point)
-                    // Join: the other tree's nearest node within a step, through a free edge.
-                    && d <= self.step
-                    && checker.segment_free(new_point, trees[other].index.point(meet))
-                {
-                    joined = Some(if active == 0 {
-                        (new, Some(meet))
-                    } else {
-                        (meet, Some(new))
-                    });
-                }
+            if new_point == near_point || !checker.segment_free(near_point, new_point) {
+                return None;
             }
-            // Swap: the other tree grows next.
-            active = other;
-        }
-
-        let nodes = trees[0].len() + trees[1].len();
-        let stats = common::stats(iterations, nodes, checker.checks, started);
-        common::two_tree_plan(&trees, joined, stats)
+            let new = trees[active].add(new_point, near);
+            // Goal test: the start tree inside a goal disc ends the search by itself.
+            if active == 0 && goal.radius() > 0.0 && goal.contains(new_point) {
+                return Some((new, None));
+            }
+            // Join: the other tree's nearest node within a step, through a free edge.
+            let (meet, d) = trees[other].index.nearest(new_point)?;
+            (d <= step && checker.segment_free(new_point, trees[other].index.point(meet)))
+                .then_some(if active == 0 {
+                    (new, Some(meet))
+                } else {
+                    (meet, Some(new))
+                })
+        };
+        common::grow_two_trees(step, &self.budget, ws, query, rng, observer, grow)
     }
 }
 

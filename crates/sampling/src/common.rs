@@ -1,13 +1,17 @@
 //! Private pieces the planners of this crate share: the observer plumbing, statistics,
-//! the exact-goal join, the plain growing tree and the ends of one- and two-tree runs
-//! (the plan built from the tree or trees). The public building blocks (checks,
+//! the exact-goal join, the plain growing tree, the loop of the two-tree planners and the
+//! ends of one- and two-tree runs (the plan built from the tree or trees). The public building blocks (checks,
 //! sampling, steering, the counted checker, branches) are in [`crate::toolkit`].
 
 use std::ops::ControlFlow;
 use std::time::Instant;
 
-use hyplan_core::{Goal, Plan, PlanError, PlanStats, Point2, Progress, Tree};
+use hyplan_core::{
+    Budget, Goal, Plan, PlanError, PlanStats, Point2, Progress, Query, Tree, Workspace,
+};
+use rand::Rng;
 
+use crate::toolkit::CountingChecker;
 use crate::{NearestIndex, toolkit};
 
 /// What an observer returns when it does not want to stop the run.
@@ -113,13 +117,73 @@ pub(crate) fn tree_plan(
     })
 }
 
+/// Where two trees met: a start-tree node and the goal-tree node it met (`None` for the
+/// goal node when the start tree reached the goal region by itself).
+pub(crate) type Join = (usize, Option<usize>);
+
+/// The loop of the two-tree planners (Bi-RRT, RRT-Connect): one tree from the start, one
+/// from the goal centre, grown in turn until they meet or the budget runs out, with the
+/// observer called every [`OBSERVE_EVERY`] iterations.
+///
+/// Each iteration draws one uniform sample and hands it to `grow` with the trees and the
+/// index of the one to grow (`active`); `grow` returns where the trees met, if they did.
+/// The other tree grows next.
+pub(crate) fn grow_two_trees<W, R, F, G>(
+    step: f64,
+    budget: &Budget,
+    ws: &W,
+    query: &Query,
+    rng: &mut R,
+    observer: &mut F,
+    mut grow: G,
+) -> Result<Plan, PlanError>
+where
+    W: Workspace + ?Sized,
+    R: Rng + ?Sized,
+    F: FnMut(&Progress) -> ControlFlow<()>,
+    G: FnMut(&mut [GrowTree; 2], usize, Point2, &mut CountingChecker<'_, W>) -> Option<Join>,
+{
+    let started = Instant::now();
+    toolkit::validate_step_and_budget(step, budget, ws, query)?;
+    let mut checker = CountingChecker::new(ws);
+    // trees[0] grows from the start, trees[1] from the goal centre.
+    let mut trees = [
+        GrowTree::rooted_at(query.start),
+        GrowTree::rooted_at(query.goal.center()),
+    ];
+    let mut iterations = 0_u64;
+    let mut joined = query.goal.contains(query.start).then_some((0, None));
+    let mut active = 0_usize;
+    while joined.is_none() && !budget.exhausted(iterations, started) {
+        iterations += 1;
+        if iterations.is_multiple_of(OBSERVE_EVERY) {
+            let progress = Progress {
+                iterations,
+                nodes: (trees[0].len() + trees[1].len()) as u64,
+                best_cost: None,
+            };
+            if observer(&progress).is_break() {
+                break;
+            }
+        }
+        // Sample: uniform in the bounds.
+        let sample = toolkit::sample_uniform(ws, rng);
+        joined = grow(&mut trees, active, sample, &mut checker);
+        // Swap: the other tree grows next.
+        active = 1 - active;
+    }
+    let nodes = trees[0].len() + trees[1].len();
+    let stats = stats(iterations, nodes, checker.checks, started);
+    two_tree_plan(&trees, joined, stats)
+}
+
 /// The end of a two-tree run (start tree first): the trees joined at `joined` (a start-tree
 /// node and the goal-tree node it met; `None` for the goal node when the start tree reached
 /// the goal region by itself) as the plan, with both trees and the statistics; without a
 /// join, [`PlanError::BudgetExhausted`] with the statistics.
 pub(crate) fn two_tree_plan(
     trees: &[GrowTree; 2],
-    joined: Option<(usize, Option<usize>)>,
+    joined: Option<Join>,
     stats: PlanStats,
 ) -> Result<Plan, PlanError> {
     let Some((a, b)) = joined else {

@@ -3,7 +3,6 @@
 //! reaches it or is blocked. The trees swap roles every iteration.
 
 use std::ops::ControlFlow;
-use std::time::Instant;
 
 use hyplan_core::{
     Budget, Plan, PlanError, Planner, PlannerInfo, Point2, Progress, Query, Workspace,
@@ -132,80 +131,44 @@ impl RrtConnect {
         R: Rng + ?Sized,
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
-        let started = Instant::now();
-        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
-        let goal = query.goal;
-        let mut checker = CountingChecker::new(ws);
-        // trees[0] grows from the start, trees[1] from the goal centre.
-        let mut trees = [
-            GrowTree::rooted_at(query.start),
-            GrowTree::rooted_at(goal.center()),
-        ];
-        let mut iterations = 0_u64;
-        // (start-tree node, goal-tree node) where the trees met (None: the start tree reached
-        // the goal disc by itself).
-        let mut joined: Option<(usize, Option<usize>)> =
-            goal.contains(query.start).then_some((0, None));
-        let mut active = 0_usize;
-
-        while joined.is_none() && !self.budget.exhausted(iterations, started) {
-            iterations += 1;
-            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
-                let progress = Progress {
-                    iterations,
-                    nodes: (trees[0].len() + trees[1].len()) as u64,
-                    best_cost: None,
-                };
-                if observer(&progress).is_break() {
-                    break;
-                }
-            }
+        let (goal, step) = (query.goal, self.step);
+        let grow = |trees: &mut [GrowTree; 2],
+                    active: usize,
+                    sample,
+                    checker: &mut CountingChecker<'_, W>| {
             let other = 1 - active;
-            // Sample: uniform in the bounds.
-            let sample = toolkit::sample_uniform(ws, rng);
             // Extend: the active tree one step towards the sample.
-            let new = match extend(&mut trees[active], sample, self.step, &mut checker) {
-                ExtendStatus::Trapped => {
-                    active = other;
-                    continue;
-                }
+            let new = match extend(&mut trees[active], sample, step, checker) {
+                ExtendStatus::Trapped => return None,
                 ExtendStatus::Reached(n) | ExtendStatus::Advanced(n) => n,
             };
             let target = trees[active].index.point(new);
             // Goal test: the start tree inside a goal disc ends the search by itself.
             if active == 0 && goal.radius() > 0.0 && goal.contains(target) {
-                joined = Some((new, None));
-                break;
+                return Some((new, None));
             }
             // Connect: the other tree steps towards the new node until it reaches it or is
             // blocked.
             loop {
-                match extend(&mut trees[other], target, self.step, &mut checker) {
+                match extend(&mut trees[other], target, step, checker) {
                     ExtendStatus::Advanced(m) => {
                         let p = trees[other].index.point(m);
                         if other == 0 && goal.radius() > 0.0 && goal.contains(p) {
-                            joined = Some((m, None));
-                            break;
+                            return Some((m, None));
                         }
                     }
                     ExtendStatus::Reached(m) => {
-                        joined = Some(if active == 0 {
+                        return Some(if active == 0 {
                             (new, Some(m))
                         } else {
                             (m, Some(new))
                         });
-                        break;
                     }
-                    ExtendStatus::Trapped => break,
+                    ExtendStatus::Trapped => return None,
                 }
             }
-            // Swap: the other tree extends next.
-            active = other;
-        }
-
-        let nodes = trees[0].len() + trees[1].len();
-        let stats = common::stats(iterations, nodes, checker.checks, started);
-        common::two_tree_plan(&trees, joined, stats)
+        };
+        common::grow_two_trees(step, &self.budget, ws, query, rng, observer, grow)
     }
 }
 
