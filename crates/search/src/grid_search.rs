@@ -298,7 +298,7 @@ pub struct GridSearch {
     passable: Vec<bool>,
     /// Legal moves out of each cell, one bit per direction of [`DIRS`].
     moves: Vec<u8>,
-    /// Per-cell state of A* and Dijkstra: one [`Word`] each.
+    /// Per-cell state of A* and Dijkstra: one word each (see the type doc).
     words: Vec<u64>,
     /// Query counter of `words` (1 to `2^GEN_BITS - 2`).
     generation: u32,
@@ -317,7 +317,7 @@ pub struct GridSearch {
     /// Open list of Theta* (ordered by the whole [`float_key`]).
     theta_heap: MinHeap<u128>,
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
-    /// so they skip the heap (see [`GridSearch::pop`]).
+    /// so they skip the heap (see [`GridSearch::grid_search`]).
     stack: Vec<u32>,
     /// Where each cell's key sits in the A* / Dijkstra open list, if it is there (checked
     /// against the key before use, so stale values are harmless).
@@ -607,7 +607,7 @@ impl GridSearch {
         base
     }
 
-    /// The current query's base [`Word`]: its generation field, g = 0, open. Later
+    /// The current query's base word: its generation field, g = 0, open. Later
     /// generations have smaller fields, so a word of an earlier query (or the initial
     /// `u64::MAX`) compares above every word of this one.
     fn base(&self) -> u64 {
@@ -675,11 +675,12 @@ impl GridSearch {
     /// A* (`heuristic`) or Dijkstra from `s0` to `t0` (`NONE`: no target, run until the
     /// reachable cells are exhausted) on fixed-point integer costs.
     ///
-    /// Open list: the [`MinHeap`] of [`Fixed::key`]s (smallest f first, ties toward larger
-    /// g, i.e. smaller h), plus a stack of cells whose f equals the f being expanded: they
+    /// Open list: the [`MinHeap`] of [`GridKey`]s (smallest f first, ties toward larger g,
+    /// i.e. smaller h; `u64` keys when [`Fixed::narrow`], else `u128`), with decrease-key
+    /// through `slot`, plus a stack of cells whose f equals the f being expanded: they
     /// would come out of the heap next anyway (their g is final, the heuristic being
-    /// consistent), so they skip it, and runs toward the goal go depth-first. Stale heap
-    /// entries (a cell pushed again after its g dropped) are skipped by the closed bit.
+    /// consistent), so they skip it, and runs toward the goal go depth-first. Stale
+    /// entries are skipped by the closed bit.
     fn grid_search(
         &mut self,
         s0: u32,
@@ -720,14 +721,12 @@ impl GridSearch {
         let (sx, sy) = self.xy(s0);
         let h0 = h(sx, sy);
         // `base | g << G_SHIFT | d << 1` is an open word of this query with cost g reached
-        // by move d, `| 1` closes it; every word above `last` belongs to an earlier query.
+        // by move d, `| 1` closes it.
         let base = self.begin(s0, &mut stats);
-        let last = base | ((1 << GEN_SHIFT) - 1);
         K::heap(&mut self.heap, &mut self.wide_heap).push(K::pack(fx, fx.order(h0, h0), s0));
         let run = Run {
             t0,
             base,
-            last,
             f0: h0 >> fx.f_shift,
             pw: self.pw,
             magic: self.magic,
@@ -950,8 +949,6 @@ struct Run<H> {
     t0: u32,
     /// The query's base word ([`GridSearch::base`]).
     base: u64,
-    /// Every word above this one belongs to an earlier query.
-    last: u64,
     /// `f >> f_shift` of the start.
     f0: u64,
     pw: usize,
@@ -977,7 +974,6 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     let Run {
         t0,
         base,
-        last,
         f0,
         pw,
         magic,
@@ -985,6 +981,8 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
         ref h,
     } = *run;
     let (unit, diag) = (fx.unit, fx.diag);
+    // Every word above this one belongs to an earlier query.
+    let last = base | ((1 << GEN_SHIFT) - 1);
     // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
     // on the stack has it.
     let mut f_cur = f0;
@@ -1013,9 +1011,10 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
         };
         let pu = p as usize;
         let word = words[pu];
-        // A cell can sit in the heap several times (each time its g dropped); with a
-        // consistent heuristic the first pop carries its final g, the later ones are
-        // stale.
+        // Already closed: a stale entry. Queued cells are lowered in place, but a cell
+        // whose lower f sends it to the stack leaves its heap entry behind (and, when f
+        // values closer than the key's quantum were ordered wrongly, a closed cell can be
+        // reopened and queued again).
         if word & 1 != 0 {
             continue;
         }

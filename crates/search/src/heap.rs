@@ -48,7 +48,7 @@ pub(crate) trait HeapKey: Copy {
     fn lt(a: Self, b: Self) -> bool;
 }
 
-/// Ordered as integers (Theta*'s keys, and the grid searches' keys on smaller grids).
+/// Ordered as integers (Theta*'s keys).
 impl HeapKey for u128 {
     const MAX: Self = u128::MAX;
     #[inline(always)]
@@ -57,7 +57,7 @@ impl HeapKey for u128 {
     }
 }
 
-/// Ordered as integers.
+/// Ordered as integers (the grid searches' keys on grids where they fit 64 bits).
 impl HeapKey for u64 {
     const MAX: Self = u64::MAX;
     #[inline(always)]
@@ -103,12 +103,6 @@ impl<K: HeapKey> Default for MinHeap<K> {
 }
 
 impl<K: HeapKey> MinHeap<K> {
-    /// Whether `a` comes out before `b`.
-    #[inline(always)]
-    fn lt(a: K, b: K) -> bool {
-        K::lt(a, b)
-    }
-
     /// Removes every key, keeping the capacity.
     #[inline]
     pub fn clear(&mut self) {
@@ -155,7 +149,7 @@ impl<K: HeapKey> MinHeap<K> {
         while i > 0 {
             let parent = (i - 1) / 2;
             let up = keys[parent];
-            if !Self::lt(key, up) {
+            if !K::lt(key, up) {
                 break;
             }
             keys[i] = up;
@@ -200,10 +194,10 @@ impl<K: HeapKey> MinHeap<K> {
         // `key` is `K::MAX` too, which the `l < n` bound settles.
         while l < n {
             let (a, b) = (keys[l], keys[l + 1]);
-            let c = Self::lt(b, a);
+            let c = K::lt(b, a);
             let child = if c { b } else { a };
             let c = usize::from(c);
-            if !Self::lt(child, key) {
+            if !K::lt(child, key) {
                 break;
             }
             keys[i] = child;
@@ -237,7 +231,7 @@ impl<K: HeapKey> MinHeap<K> {
         for _ in 1..depth {
             let l = 2 * i + 1;
             let (a, b) = (keys[l], keys[l + 1]);
-            let c = Self::lt(b, a);
+            let c = K::lt(b, a);
             let child = if c { b } else { a };
             keys[i] = child;
             place(child, i);
@@ -245,7 +239,7 @@ impl<K: HeapKey> MinHeap<K> {
         }
         if depth > 0 {
             let l = 2 * i + 1;
-            let c = usize::from(Self::lt(keys[l + 1], keys[l]));
+            let c = usize::from(K::lt(keys[l + 1], keys[l]));
             let j = l + c;
             if j < n {
                 let child = keys[j];
@@ -341,6 +335,68 @@ mod tests {
             assert_eq!(heap.pop(), Some(k));
         }
         assert_eq!(heap.pop(), None);
+    }
+
+    #[test]
+    fn placed_operations_keep_an_index_of_every_key() {
+        // Keys carry their "cell" in the low 16 bits; `place` records where each sits, as
+        // the grid searches' slots do, and `decrease_placed` uses it.
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut heap = MinHeap::<u64>::default();
+        let mut slot = vec![usize::MAX; 1 << 16];
+        let mut key_of = vec![None::<u64>; 1 << 16];
+        macro_rules! place {
+            () => {
+                &mut |k: u64, i: usize| slot[(k & 0xffff) as usize] = i
+            };
+        }
+        let mut next_cell = 0u64;
+        for round in 0..20_000 {
+            let r = next();
+            match r % 4 {
+                0 | 1 => {
+                    let key = ((r >> 40) << 16) | next_cell;
+                    key_of[next_cell as usize] = Some(key);
+                    heap.push_placed(key, place!());
+                    next_cell += 1;
+                }
+                2 => {
+                    if let Some(k) = heap.pop_placed(place!()) {
+                        key_of[(k & 0xffff) as usize] = None;
+                    }
+                }
+                _ => {
+                    // Lower a queued key.
+                    let cell = (r >> 20) % next_cell.max(1);
+                    if let Some(old) = key_of[cell as usize] {
+                        let new = ((old >> 16) / 2) << 16 | cell;
+                        key_of[cell as usize] = Some(new);
+                        let i = slot[cell as usize];
+                        assert_eq!(heap.at(i), old, "round {round}");
+                        heap.decrease_placed(i, new, place!());
+                    }
+                }
+            }
+            if next_cell == 1 << 16 {
+                break;
+            }
+        }
+        // Every queued key sits where its slot says, and they come out in order.
+        for (cell, key) in key_of.iter().enumerate() {
+            if let Some(k) = key {
+                assert_eq!(heap.at(slot[cell]), *k);
+            }
+        }
+        let mut expected: Vec<u64> = key_of.iter().flatten().copied().collect();
+        expected.sort_unstable();
+        let got: Vec<u64> = std::iter::from_fn(|| heap.pop()).collect();
+        assert_eq!(got, expected);
     }
 
     #[test]
