@@ -10,7 +10,7 @@ use hyplan_core::Zone;
 use ordered_float::OrderedFloat;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use search::{GridOptions, GridSearch, ScenEntry, read_scen};
+use search::{GridOptions, GridSearch, ScenEntry, SearchStats, read_scen};
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 
@@ -249,4 +249,51 @@ pub fn movingai() -> [Suite; 2] {
             &shared().join("peers/maps/maze.scen"),
         ),
     ]
+}
+
+/// Solves every query of `s` once with `ours` and with the peer and asserts both costs are
+/// within `max(1e-3, 1e-5 len)` of the optimum; returns our summed counters.
+pub fn check(s: &Suite, ours: &mut GridSearch) -> SearchStats {
+    let mut total = SearchStats::default();
+    for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
+        let tol = f64::max(1e-3, 1e-5 * opt);
+        let mine = ours.astar(a, b).ok();
+        let peer = peer_astar(&s.map, a, b);
+        let name = s.name;
+        assert!(
+            mine.as_ref().is_some_and(|p| (p.cost - opt).abs() <= tol),
+            "{name} #{k}: ours {:?} vs {opt}",
+            mine.map(|p| p.cost)
+        );
+        assert!(
+            peer.is_some_and(|c| (c - opt).abs() <= tol),
+            "{name} #{k}: peer {peer:?} vs {opt}"
+        );
+        if let Some(p) = mine {
+            total.expansions += p.stats.expansions;
+            total.pushes += p.stats.pushes;
+        }
+    }
+    total
+}
+
+/// Every query of `s` by our A* on `ours`; the summed costs (so nothing is optimised away).
+pub fn run_ours(s: &Suite, ours: &mut GridSearch) -> f64 {
+    s.queries
+        .iter()
+        .map(|&(a, b, _)| {
+            let p = ours.astar(std::hint::black_box(a), std::hint::black_box(b));
+            p.map_or(0.0, |p| p.cost)
+        })
+        .sum()
+}
+
+/// Every query of `s` by the peer; the summed costs.
+pub fn run_peer(s: &Suite) -> f64 {
+    s.queries
+        .iter()
+        .map(|&(a, b, _)| {
+            peer_astar(&s.map, std::hint::black_box(a), std::hint::black_box(b)).unwrap_or(0.0)
+        })
+        .sum()
 }

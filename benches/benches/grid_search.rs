@@ -19,10 +19,8 @@
 //! `cargo bench -p hyplan-benches --bench grid_search -- grid_search/` runs the first group
 //! only, `-- generated` the second.
 
-use std::hint::black_box;
-
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_main};
-use hyplan_benches::grid::{Suite, generated, movingai, peer_astar};
+use hyplan_benches::grid::{self, Suite, generated, movingai};
 use search::{GridOptions, GridSearch};
 
 fn grid_search(c: &mut Criterion) {
@@ -41,42 +39,14 @@ fn run_suite(
 ) {
     // Checked once, outside the timed loop: both must return the optimal cost.
     let mut ours = GridSearch::new(&s.map, GridOptions::default()).unwrap();
-    for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
-        let tol = f64::max(1e-3, 1e-5 * opt);
-        let mine = ours.astar(a, b).map(|p| p.cost).ok();
-        let peer = peer_astar(&s.map, a, b);
-        assert!(
-            mine.is_some_and(|c| (c - opt).abs() <= tol),
-            "{} #{k}: ours {mine:?} vs {opt}",
-            s.name
-        );
-        assert!(
-            peer.is_some_and(|c| (c - opt).abs() <= tol),
-            "{} #{k}: peer {peer:?} vs {opt}",
-            s.name
-        );
-    }
+    grid::check(s, &mut ours);
     group.throughput(Throughput::Elements(s.queries.len() as u64));
     let id = format!("{}/{}", s.name, s.queries.len());
     group.bench_function(BenchmarkId::new("hyplan_grid_astar", &id), |bench| {
-        bench.iter(|| {
-            let mut total = 0.0;
-            for &(a, b, _) in &s.queries {
-                total += ours
-                    .astar(black_box(a), black_box(b))
-                    .map_or(0.0, |p| p.cost);
-            }
-            total
-        });
+        bench.iter(|| grid::run_ours(s, &mut ours));
     });
     group.bench_function(BenchmarkId::new("pathfinding_astar", &id), |bench| {
-        bench.iter(|| {
-            let mut total = 0.0;
-            for &(a, b, _) in &s.queries {
-                total += peer_astar(&s.map, black_box(a), black_box(b)).unwrap_or(0.0);
-            }
-            total
-        });
+        bench.iter(|| grid::run_peer(s));
     });
 }
 

@@ -12,7 +12,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use hyplan_benches::grid::{Suite, generated, movingai, peer_astar};
+use hyplan_benches::grid::{self, Suite, generated, movingai};
 use search::{GridOptions, GridSearch};
 
 fn main() {
@@ -32,38 +32,15 @@ fn main() {
     let (mut ours_total, mut peer_total) = (0.0, 0.0);
     for s in &suites {
         let mut search = GridSearch::new(&s.map, GridOptions::default()).expect("grid");
-        let (mut expansions, mut pushes) = (0u64, 0u64);
-        for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
-            let tol = f64::max(1e-3, 1e-5 * opt);
-            let mine = search.astar(a, b).expect("ours finds a path");
-            let peer = peer_astar(&s.map, a, b).expect("the peer finds a path");
-            assert!(
-                (mine.cost - opt).abs() <= tol,
-                "{} #{k}: ours {}",
-                s.name,
-                mine.cost
-            );
-            assert!((peer - opt).abs() <= tol, "{} #{k}: peer {peer}", s.name);
-            expansions += mine.stats.expansions;
-            pushes += mine.stats.pushes;
-        }
+        let counts = grid::check(s, &mut search);
+        let (expansions, pushes) = (counts.expansions, counts.pushes);
         let (mut ours, mut peer) = (f64::MAX, f64::MAX);
         for _ in 0..rounds {
             let t = Instant::now();
-            let mut sum = 0.0;
-            for &(a, b, _) in &s.queries {
-                sum += search
-                    .astar(black_box(a), black_box(b))
-                    .map_or(0.0, |p| p.cost);
-            }
-            black_box(sum);
+            black_box(grid::run_ours(s, &mut search));
             ours = ours.min(t.elapsed().as_secs_f64());
             let t = Instant::now();
-            let mut sum = 0.0;
-            for &(a, b, _) in &s.queries {
-                sum += peer_astar(&s.map, black_box(a), black_box(b)).unwrap_or(0.0);
-            }
-            black_box(sum);
+            black_box(grid::run_peer(s));
             peer = peer.min(t.elapsed().as_secs_f64());
         }
         ours_total += ours;
