@@ -298,16 +298,20 @@ mod tests {
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
 
-    #[test]
-    fn min_heap_matches_a_sorted_model_under_mixed_operations() {
-        // Sizes cross many powers of two (the padded last level of `pop`), keys repeat.
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = move || {
+    /// A xorshift64 sequence from `state` (not 0).
+    fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
             state ^= state << 13;
             state ^= state >> 7;
             state ^= state << 17;
             state
-        };
+        }
+    }
+
+    #[test]
+    fn min_heap_matches_a_sorted_model_under_mixed_operations() {
+        // Sizes cross many powers of two (the padded last level of `pop`), keys repeat.
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15_u64);
         let mut heap = MinHeap::<u128>::default();
         let mut model = BinaryHeap::new();
         for round in 0..20_000 {
@@ -341,13 +345,7 @@ mod tests {
     fn placed_operations_keep_an_index_of_every_key() {
         // Keys carry their "cell" in the low 16 bits; `place` records where each sits, as
         // the grid searches' slots do, and `decrease_placed` uses it.
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d_u64);
         let mut heap = MinHeap::<u64>::default();
         let mut slot = vec![usize::MAX; 1 << 16];
         let mut key_of = vec![None::<u64>; 1 << 16];
