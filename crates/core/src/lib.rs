@@ -70,3 +70,8 @@ pub use plan::{Plan, PlanStats, Progress, Tree};
 pub use planner::{Planner, PlannerInfo};
 pub use query::{Goal, Query};
 pub use workspace::{Workspace, Zone, uniform01};
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -102,3 +102,8 @@ pub use picture::Picture;
 pub use pipeline::{Pipeline, PipelineOutput};
 pub use rectangles::{CellRect, bounding_rectangles, fill_rectangles};
 pub use zones::zones;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -46,3 +46,8 @@ pub use scenario::{
     Claim, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape, Source, World,
 };
 pub use stats::{Stat, Summary};
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -90,3 +90,8 @@ pub use outcome::Staged;
 pub use rrt_astar_bt::RrtAstarBt;
 pub use rrt_astar_refine::RrtAstarRefine;
 pub use safe_rrt_star::SafeRrtStar;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

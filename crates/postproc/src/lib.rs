@@ -96,3 +96,8 @@ pub use prune::{prune_pairwise, shortcut_farthest, shortcut_greedy};
 pub use resample::{Curve, MAX_SAMPLES};
 pub use smooth::{Repair, Smoothed, Smoothing, smooth_checked};
 pub use timing::{Limits, ProfilePoint, Timing, straight_time, time_curve, time_polyline};
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -69,6 +69,13 @@
 //! # Features
 //!
 //! None.
+//!
+//! # The core types and `rand`
+//!
+//! The planners take and return `hyplan-core`'s types, re-exported here so one dependency
+//! is enough: [`Workspace`], [`Query`], [`Goal`], [`Plan`], [`PlanError`], [`Budget`],
+//! [`Point2`], [`Bounds`], [`Planner`], [`Tree`]. The RNG argument is any [`rand::Rng`] of `rand` 0.9
+//! (re-exported as [`rand`]); `rand_chacha`'s `ChaCha8Rng` 0.9 is what hyplan itself uses.
 
 mod bi_rrt;
 mod common;
@@ -77,6 +84,11 @@ mod rrt;
 mod rrt_connect;
 mod rrt_star;
 pub mod toolkit;
+
+pub use hyplan_core::{
+    Bounds, Budget, Goal, Plan, PlanError, Planner, Point2, Query, Tree, Workspace,
+};
+pub use rand;
 
 pub use bi_rrt::BiRrt;
 pub use nearest::NearestIndex;
@@ -87,3 +99,8 @@ pub use toolkit::{
     CountingChecker, StarTree, branch, check_positive, check_probability, sample_goal_biased,
     sample_uniform, steer, validate_step_and_budget,
 };
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -55,23 +55,42 @@
 //!
 //! # Features
 //!
-//! None.
+//! - `grid` (default): the grid searches on [`envmap::GridMap`] and their planners. Without
+//!   it, `search` is the generic algorithms and the `.scen` reader alone, and builds no map
+//!   or image crate (`cargo tree -p search --no-default-features`).
+//!
+//! # The core types
+//!
+//! The planners take and return `hyplan-core`'s types, re-exported here so one dependency
+//! is enough: [`Workspace`], [`Query`], [`Goal`], [`Plan`], [`PlanError`], [`Budget`],
+//! [`Point2`], [`Planner`]. Randomness is not used by `search`.
 
 mod astar;
 mod backtrack;
 mod dijkstra;
+#[cfg(feature = "grid")]
 mod grid_search;
 mod heap;
 mod movingai;
+#[cfg(feature = "grid")]
 mod planners;
 mod result;
+
+pub use hyplan_core::{Budget, Goal, Plan, PlanError, Planner, Point2, Query, Workspace};
 
 pub use astar::astar;
 pub use backtrack::{BacktrackLimits, backtrack};
 pub use dijkstra::dijkstra;
+#[cfg(feature = "grid")]
 pub use grid_search::{
     Connectivity, CostField, GridOptions, GridPath, GridSearch, GridSearchError,
 };
 pub use movingai::{ScenEntry, ScenError, parse_scen, read_scen};
+#[cfg(feature = "grid")]
 pub use planners::{GridAstar, GridDijkstra, ThetaStar};
 pub use result::{NotFound, SearchResult, SearchStats};
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
