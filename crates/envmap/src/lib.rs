@@ -35,6 +35,8 @@
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
 //! - [`demo_room`]: a synthetic top-view room picture for examples and benchmarks.
+//! - [`generate`]: seeded hard maps (maze, spiral, bug trap, narrow passage, large floor
+//!   plan, clutter, rooms) with a suggested start and goal.
 //!
 //! # Conventions
 //!
@@ -69,6 +71,7 @@ mod demo;
 mod edt;
 mod error;
 mod frame;
+pub mod generate;
 mod grid_map;
 mod inflation;
 mod io;
