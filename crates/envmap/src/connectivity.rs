@@ -87,7 +87,9 @@ pub fn disconnection_hopping(map: &GridMap, query: &Query, hop: f64) -> Option<N
     let start = map.world_to_cell(query.start)?;
     let target = Target::new(map, &query.goal)?;
     let zones = map.zones();
-    if !flood(map, start, &target, Moves::Four, |k| zones[k] < Zone::Forbidden) {
+    if !flood(map, start, &target, Moves::Four, |k| {
+        zones[k] < Zone::Forbidden
+    }) {
         return Some(NoPathCause::Wall);
     }
     let free = |p: Point2| map.zone_at(p) == Zone::Free;
@@ -181,7 +183,9 @@ impl Target {
     /// The rows that meet the disc.
     fn rows(&self) -> (usize, usize) {
         let lo = (self.cv - self.r - 1.0).ceil().max(0.0) as usize;
-        let hi = (self.cv + self.r).floor().clamp(0.0, self.height as f64 - 1.0) as usize;
+        let hi = (self.cv + self.r)
+            .floor()
+            .clamp(0.0, self.height as f64 - 1.0) as usize;
         (lo, hi)
     }
 
@@ -350,7 +354,10 @@ mod tests {
         let map = GridMap::from_ascii("..#..\n..#..").unwrap();
         let point = q((0.5, 0.5), (4.5, 0.5));
         assert!(disconnection(&map, &point, Moves::Four).is_some());
-        let disc = Query::new(Point2::new(0.5, 0.5), Goal::disc(Point2::new(4.5, 0.5), 2.6));
+        let disc = Query::new(
+            Point2::new(0.5, 0.5),
+            Goal::disc(Point2::new(4.5, 0.5), 2.6),
+        );
         assert_eq!(disconnection(&map, &disc, Moves::Four), None);
     }
 
@@ -377,7 +384,10 @@ mod tests {
         let not = with_risk_band(&g.map, 3.0).avoiding_risk();
         assert!(disconnection(&not, &query, Moves::Four).is_some());
         // Only obstacles blocking: connected.
-        assert_eq!(disconnection(&with_risk_band(&g.map, 5.0), &query, Moves::Four), None);
+        assert_eq!(
+            disconnection(&with_risk_band(&g.map, 5.0), &query, Moves::Four),
+            None
+        );
     }
 
     #[test]
@@ -390,7 +400,10 @@ mod tests {
             disconnection(&banded, &query, Moves::Four),
             Some(NoPathCause::Wall)
         );
-        assert_eq!(disconnection_hopping(&g.map, &query, 2.0), Some(NoPathCause::Wall));
+        assert_eq!(
+            disconnection_hopping(&g.map, &query, 2.0),
+            Some(NoPathCause::Wall)
+        );
     }
 
     #[test]

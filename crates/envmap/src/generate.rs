@@ -91,7 +91,8 @@ impl HardMap {
 
     /// The kind's default map for a planner of step `step` (world units = cells, clamped
     /// to at least 1): corridors and doors 1.5 steps wide, the narrow passage half a
-    /// step wide (at least 2 cells), walls 3 cells thick. Sizes: maze 12 x 12 maze cells,
+    /// step wide (at least 6 cells, so that a 2-cell risk band leaves a safe core), walls 3
+    /// cells thick. Sizes: maze 12 x 12 maze cells,
     /// spiral 5 rings, bug trap 40 steps a side, narrow passage 40 x 24 steps, clutter 50 x
     /// 50 steps, rooms 5 x 5 rooms of 6 steps; the floor plan is 2000 x 2000 cells
     /// whatever the step (doors 1.5 steps wide).
@@ -106,7 +107,7 @@ impl HardMap {
             HardMap::NarrowPassage => narrow_passage(
                 cells(40.0),
                 cells(24.0),
-                ((0.5 * s).round() as usize).max(2),
+                ((0.5 * s).round() as usize).max(6),
                 cells(2.0),
                 rng,
             ),
@@ -237,7 +238,12 @@ pub fn maze<R: Rng + ?Sized>(
 /// by one `corridor`-wide gap. Consecutive gaps sit on opposite sides (which side first is
 /// drawn from `rng`), so the route winds half a turn per ring. Start: outside the outer
 /// ring, in the lower-left corner; goal: the centre of the room.
-pub fn spiral<R: Rng + ?Sized>(rings: usize, corridor: usize, wall: usize, rng: &mut R) -> Generated {
+pub fn spiral<R: Rng + ?Sized>(
+    rings: usize,
+    corridor: usize,
+    wall: usize,
+    rng: &mut R,
+) -> Generated {
     let (rings, c, w) = (rings.max(1), corridor.max(1), wall.max(1));
     let room = 2 * c;
     let size = room + 2 * rings * (c + w) + 2 * c;
@@ -482,7 +488,10 @@ pub fn clutter<R: Rng + ?Sized>(
         if connected(&canvas, start, goal) {
             covered += before.iter().filter(|&&b| !b).count();
         } else {
-            for (k, (x, y)) in (y0..y1).flat_map(|y| (x0..x1).map(move |x| (x, y))).enumerate() {
+            for (k, (x, y)) in (y0..y1)
+                .flat_map(|y| (x0..x1).map(move |x| (x, y)))
+                .enumerate()
+            {
                 canvas.blocked[y * width + x] = before[k];
             }
         }
@@ -657,7 +666,12 @@ mod tests {
         let canvas = Canvas {
             width: g.map.width(),
             height: g.map.height(),
-            blocked: g.map.zones().iter().map(|&z| z == Zone::Forbidden).collect(),
+            blocked: g
+                .map
+                .zones()
+                .iter()
+                .map(|&z| z == Zone::Forbidden)
+                .collect(),
         };
         let cell = |p: Point2| g.map.world_to_cell(p).unwrap();
         assert!(connected(&canvas, cell(g.start), cell(g.goal)));
@@ -668,7 +682,11 @@ mod tests {
         for kind in HardMap::ALL {
             for seed in 0..3 {
                 let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-                let step = if kind == HardMap::FloorPlan { 40.0 } else { 4.0 };
+                let step = if kind == HardMap::FloorPlan {
+                    40.0
+                } else {
+                    4.0
+                };
                 let g = kind.generate(step, &mut rng);
                 check(&g);
                 let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
@@ -693,7 +711,12 @@ mod tests {
         let canvas = Canvas {
             width: 40,
             height: 20,
-            blocked: g.map.zones().iter().map(|&z| z == Zone::Forbidden).collect(),
+            blocked: g
+                .map
+                .zones()
+                .iter()
+                .map(|&z| z == Zone::Forbidden)
+                .collect(),
         };
         let cell = |p: Point2| g.map.world_to_cell(p).unwrap();
         assert!(!connected(&canvas, cell(g.start), cell(g.goal)));

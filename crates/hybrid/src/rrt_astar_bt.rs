@@ -116,7 +116,9 @@ pub struct RrtAstarBt {
     /// r, radius of the goal region that ends the search, world units, finite and >= 0.
     /// Default 20 (the paper's 20 px). A node within it finishes the path at the goal
     /// centre when that segment is free, or where it is when it lies in the query's goal
-    /// disc.
+    /// disc. A node within one `step` of the goal centre also finishes the path when the
+    /// segment to the centre is free (RRT's goal connection, 4.2: "reaches q_goal (in best
+    /// case)"), so a goal region smaller than the step is still reached.
     pub goal_radius: f64,
     /// N_max, candidate extensions drawn per iteration, >= 1. Default 50 (the paper's
     /// value; our reading of what it counts).
@@ -244,7 +246,8 @@ impl RrtAstarBt {
         let mut reached: Option<(usize, Option<Point2>)> = None;
         let mut failure = false;
 
-        if (query.start - target).norm() <= self.goal_radius || goal.contains(query.start) {
+        let reach = self.goal_radius.max(self.step);
+        if (query.start - target).norm() <= reach || goal.contains(query.start) {
             reached = common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e));
         }
         while reached.is_none() && !self.budget.exhausted(iterations, started) {
@@ -340,7 +343,7 @@ impl RrtAstarBt {
             head = id;
             grown += 1;
             // Goal test: within r of the goal (4.2), then join the goal itself if free.
-            if (c.point - target).norm() <= self.goal_radius || goal.contains(c.point) {
+            if (c.point - target).norm() <= reach || goal.contains(c.point) {
                 reached = common::finish_at_goal(&mut checker, &goal, c.point).map(|e| (id, e));
             }
         }

@@ -89,6 +89,6 @@ pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::{RewireRadius, RrtStar};
 pub use toolkit::{
-    CountingChecker, StarTree, branch, check_connected, check_positive, check_probability, sample_goal_biased,
-    sample_uniform, steer, validate_step_and_budget,
+    CountingChecker, StarTree, branch, check_connected, check_positive, check_probability,
+    sample_goal_biased, sample_uniform, steer, validate_step_and_budget,
 };

@@ -62,7 +62,12 @@ fn connected(map: &GridMap, query: &Query) -> bool {
         if meets(i, j) {
             return true;
         }
-        for (a, b) in [(i.wrapping_sub(1), j), (i + 1, j), (i, j.wrapping_sub(1)), (i, j + 1)] {
+        for (a, b) in [
+            (i.wrapping_sub(1), j),
+            (i + 1, j),
+            (i, j.wrapping_sub(1)),
+            (i, j + 1),
+        ] {
             if a < w && b < h && !seen[b * w + a] && map.cell_free(a, b) {
                 seen[b * w + a] = true;
                 queue.push_back((a, b));
@@ -352,7 +357,11 @@ fn unreachable_goal_spends_the_budget() {
             other => panic!("{}: {other:?}", planner.info().name),
         }
         let started = std::time::Instant::now();
-        match planner.plan(&NoProof(&map), &query, &mut ChaCha8Rng::seed_from_u64(SEED_1)) {
+        match planner.plan(
+            &NoProof(&map),
+            &query,
+            &mut ChaCha8Rng::seed_from_u64(SEED_1),
+        ) {
             Err(PlanError::BudgetExhausted { stats }) => {
                 assert_eq!(stats.iterations, 3_000, "{}", planner.info().name);
                 assert!(stats.nodes > 10);
@@ -396,7 +405,11 @@ fn time_limit_stops_the_search() {
     ];
     for planner in planners {
         let started = std::time::Instant::now();
-        let r = planner.plan(&NoProof(&map), &query, &mut ChaCha8Rng::seed_from_u64(SEED_1));
+        let r = planner.plan(
+            &NoProof(&map),
+            &query,
+            &mut ChaCha8Rng::seed_from_u64(SEED_1),
+        );
         let took = started.elapsed();
         assert!(matches!(r, Err(PlanError::BudgetExhausted { .. })));
         assert!(
