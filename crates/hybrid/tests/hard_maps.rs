@@ -71,16 +71,8 @@ fn all_planners(step: f64, budget: Budget) -> Vec<Box<dyn Planner>> {
         budget,
         ..RrtStar::default()
     }));
-    v.push(Box::new(BiRrt {
-        step,
-        budget,
-        ..BiRrt::default()
-    }));
-    v.push(Box::new(RrtConnect {
-        step,
-        budget,
-        ..RrtConnect::default()
-    }));
+    v.push(Box::new(BiRrt { step, budget }));
+    v.push(Box::new(RrtConnect { step, budget }));
     v.push(Box::new(GridAstar::default()));
     v.push(Box::new(GridDijkstra::default()));
     v.push(Box::new(ThetaStar::default()));
