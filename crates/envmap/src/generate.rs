@@ -608,7 +608,7 @@ pub fn rooms<R: Rng + ?Sized>(
 }
 
 /// The same map with a high-risk band: every free cell whose centre lies within `radius`
-/// cells (Euclidean, centre to centre, as [`zones`](crate::zones)) of a Forbidden cell
+/// cells (Euclidean, centre to centre, as [`zones`]) of a Forbidden cell
 /// becomes [`Zone::Risk`]. The start and goal of a [`Generated`] map may fall in the band:
 /// check them against the zones you plan in.
 #[must_use]
