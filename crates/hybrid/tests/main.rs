@@ -4,4 +4,5 @@
 mod claims;
 mod conformance;
 mod fixtures;
+mod hard_maps;
 mod utrap;

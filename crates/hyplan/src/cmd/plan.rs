@@ -13,7 +13,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use envmap::{GridMap, InputFrame, LoadOptions, load_map};
-use hyplan_core::{Budget, Goal, Plan, PlanError, Point2, Query, Zone};
+use hyplan_core::{Budget, Goal, NoPathCause, Plan, PlanError, Point2, Query, Zone};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
 use serde::Serialize;
@@ -133,6 +133,61 @@ pub struct RunRecord {
     /// Time to follow the final path from rest to rest under --vmax/--wmax/--amax, s.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub transfer_time_s: Option<f64>,
+    /// When no path was found: why.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub no_path: Option<NoPathRecord>,
+}
+
+/// Why a run found no path, for `--json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct NoPathRecord {
+    /// `disconnected` (proved before planning: start and goal not connected in the zones
+    /// the planner may use), `exhausted` (a complete search ran out of nodes) or `budget`
+    /// (iterations or time ran out).
+    pub kind: &'static str,
+    /// For `disconnected`: `wall` (obstacles separate start and goal) or `risk-band` (the
+    /// high-risk band closes every passage).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cause: Option<&'static str>,
+    /// For `risk-band`: the band's radius on the map, in the input's units.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub band_radius: Option<f64>,
+    /// For `risk-band`: every safety radius strictly below this (input units) leaves a
+    /// passage in the safe zone (the widest path's bottleneck).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_safety_radius: Option<f64>,
+    /// The planner's message.
+    pub message: String,
+}
+
+impl NoPathRecord {
+    /// The record of a "no path" error; lengths divided by `scale` (world units per input
+    /// unit).
+    fn new(e: &PlanError, scale: f64) -> Self {
+        let (kind, cause, band, max) = match e {
+            PlanError::Disconnected { cause, .. } => match cause {
+                NoPathCause::RiskBand {
+                    band_radius,
+                    max_radius,
+                } => (
+                    "disconnected",
+                    Some("risk-band"),
+                    Some(band_radius / scale),
+                    Some(max_radius / scale),
+                ),
+                _ => ("disconnected", Some("wall"), None, None),
+            },
+            PlanError::NoPath { .. } => ("exhausted", None, None, None),
+            _ => ("budget", None, None, None),
+        };
+        Self {
+            kind,
+            cause,
+            band_radius: band,
+            max_safety_radius: max,
+            message: e.to_string(),
+        }
+    }
 }
 
 fn parse_xy(s: &str) -> Result<(f64, f64), String> {
@@ -301,6 +356,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                         .then(|| to_input(&post.smoothed.points)),
                     turns: Some(post.metrics.turns),
                     transfer_time_s: post.transfer_time_s,
+                    no_path: None,
                 }
             }
             Err(e) if e.is_no_path() => {
@@ -321,6 +377,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                     smoothed: None,
                     turns: None,
                     transfer_time_s: None,
+                    no_path: Some(NoPathRecord::new(e, scale)),
                 }
             }
             Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
