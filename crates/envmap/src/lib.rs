@@ -10,7 +10,8 @@
 //! Maps and frames:
 //! - [`GridMap`]: the grid, its frame (origin at the lower-left corner, y up) and zones;
 //!   [`GridMap::segment_cells`], [`GridMap::segment_free_cells`]: every cell a segment
-//!   touches, corners included; [`GridMap::clearance_at`] (also `Workspace::clearance`):
+//!   touches, corners included (cells are closed; [`TOUCH_TOLERANCE`] is the rounding
+//!   margin); [`GridMap::clearance_at`] (also `Workspace::clearance`):
 //!   a lower bound on the distance to the nearest blocked cell, from a cached exact EDT.
 //! - [`Mask`]: a binary grid in map cells; [`Picture`]: an 8-bit raster, top row first.
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
@@ -101,4 +102,5 @@ pub use mask::Mask;
 pub use picture::Picture;
 pub use pipeline::{Pipeline, PipelineOutput};
 pub use rectangles::{CellRect, bounding_rectangles, fill_rectangles};
+pub use workspace::TOUCH_TOLERANCE;
 pub use zones::zones;
