@@ -29,7 +29,8 @@
 //! - [`Inflation`]: Nav2's inflation costs, the graded alternative to zones.
 //!
 //! Files:
-//! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension.
+//! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension,
+//!   within a memory limit ([`DEFAULT_MAX_CELLS`]).
 //! - [`read_movingai`], [`parse_movingai`]: MovingAI `.map`.
 //! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`], [`write_ros`]: ROS map_server.
 //! - [`read_picture`], [`decode_picture`], [`write_picture`], [`render_zones`],
@@ -97,7 +98,7 @@ pub use io::ros::{
     ROS_FREE, ROS_OCCUPIED, ROS_RISK, RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml,
     ros_cell_counts, write_ros,
 };
-pub use io::{LoadOptions, LoadedMap, MapKind, load_map};
+pub use io::{DEFAULT_MAX_CELLS, LoadOptions, LoadedMap, MapKind, load_map};
 pub use mask::Mask;
 pub use picture::Picture;
 pub use pipeline::{Pipeline, PipelineOutput};

@@ -4,7 +4,6 @@ use hyplan_core::{Bounds, Point2, Workspace, Zone};
 
 use crate::GridMap;
 
-
 impl GridMap {
     /// Visits every cell whose closed square the closed segment `a`-`b` touches, corner
     /// touches included, until `visit` returns `false`; returns whether every visit
@@ -272,7 +271,10 @@ mod tests {
         assert!(!map.segment_free(a, b));
         assert!(!map.segment_free(b, a));
         // In a world frame whose edges are not exact in binary either.
-        let shifted = map.clone().with_frame(0.05, Point2::new(-10.0, 3.3)).unwrap();
+        let shifted = map
+            .clone()
+            .with_frame(0.05, Point2::new(-10.0, 3.3))
+            .unwrap();
         let to_world = |p: Point2| Point2::new(-10.0 + p.x * 0.05, 3.3 + p.y * 0.05);
         assert!(!shifted.segment_free(to_world(a), to_world(b)));
         // A point on the corner of the blocked cell is not free; just off it, it is.
