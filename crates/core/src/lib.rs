@@ -11,10 +11,11 @@
 //! - [`Bounds`]: the axis-aligned box a workspace lives in.
 //! - [`Zone`]: the three zones of a safe map (safe, high-risk, forbidden).
 //! - [`Workspace`]: the queries a planner asks of the world (`is_free`, `segment_free`,
-//!   `clearance`, `zone`, `sample_free`).
+//!   `clearance`, `zone`, `sample_free`, `disconnection`).
 //! - [`Query`] and [`Goal`]: start point and goal point or goal disc.
 //! - [`Plan`], [`Tree`] and [`PlanStats`]: what a planner returns.
-//! - [`PlanError`]: typed failures, including "no path" with the statistics of the attempt.
+//! - [`PlanError`]: typed failures, including "no path" with the statistics of the attempt;
+//!   [`NoPathCause`]: what separates start and goal when a connectivity check proves it.
 //! - [`Budget`]: iteration and time limits.
 //! - [`Planner`] and [`PlannerInfo`]: the object-safe trait the harness holds as
 //!   `Box<dyn Planner>`.
@@ -64,7 +65,7 @@ mod query;
 mod workspace;
 
 pub use budget::Budget;
-pub use error::PlanError;
+pub use error::{NoPathCause, PlanError};
 pub use geometry::{Bounds, Point2, path_length};
 pub use plan::{Plan, PlanStats, Progress, Tree};
 pub use planner::{Planner, PlannerInfo};

@@ -53,6 +53,18 @@ pub trait Workspace {
         }
     }
 
+    /// A proof that no free path joins the query's start to its goal, with the cause, when
+    /// the workspace can give one cheaply (a grid map checks the connectivity of the cells
+    /// that let motion through); `None` when they are connected or the workspace cannot
+    /// tell (the default).
+    ///
+    /// Sampling planners call it before sampling: "no path" before the budget is spent
+    /// only with this proof.
+    fn disconnection(&self, query: &crate::Query) -> Option<crate::NoPathCause> {
+        let _ = query;
+        None
+    }
+
     /// The concrete workspace, for planners that need more than this trait (grid searches
     /// downcast it to a grid map). `None` by default.
     fn as_any(&self) -> Option<&dyn std::any::Any> {
@@ -98,6 +110,9 @@ impl<W: Workspace + ?Sized> Workspace for &W {
     }
     fn zone(&self, p: Point2) -> Zone {
         (**self).zone(p)
+    }
+    fn disconnection(&self, query: &crate::Query) -> Option<crate::NoPathCause> {
+        (**self).disconnection(query)
     }
     fn as_any(&self) -> Option<&dyn std::any::Any> {
         (**self).as_any()

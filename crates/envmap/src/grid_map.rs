@@ -329,14 +329,23 @@ impl GridMap {
     /// cell blocks, i.e. `blocked_from == Zone::Free`).
     #[must_use]
     pub fn blocked_distance(&self) -> Option<&DistanceField> {
-        let k = match self.blocked_from {
+        self.distance_from(self.blocked_from)
+    }
+
+    /// The exact distance transform of the cells whose zone is at least `zone` (`Risk`:
+    /// the band and the obstacles; `Forbidden`: the obstacles), computed once and cached
+    /// (`None` for `Zone::Free`).
+    #[must_use]
+    pub fn distance_from(&self, zone: Zone) -> Option<&DistanceField> {
+        let k = match zone {
             Zone::Free => return None,
             Zone::Risk => 0,
             Zone::Forbidden => 1,
         };
-        Some(self.clearance_fields[k].get_or_init(|| {
-            distance_transform(&Mask::from_zones_at_least(self, self.blocked_from))
-        }))
+        Some(
+            self.clearance_fields[k]
+                .get_or_init(|| distance_transform(&Mask::from_zones_at_least(self, zone))),
+        )
     }
 
     /// A lower bound on the distance, world units, from `p` to the nearest cell that

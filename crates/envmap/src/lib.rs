@@ -37,6 +37,11 @@
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
 //! - [`demo_room`]: a synthetic top-view room picture for examples and benchmarks.
+//! - [`connectivity`]: whether start and goal are connected in the cells a planner may
+//!   use, and if not why (an obstacle wall, or the risk band and the largest safety radius
+//!   that connects them).
+//! - [`generate`]: seeded hard maps (maze, spiral, bug trap, narrow passage, large floor
+//!   plan, clutter, rooms) with a suggested start and goal.
 //!
 //! # Conventions
 //!
@@ -67,10 +72,12 @@
 
 mod binarize;
 mod components;
+pub mod connectivity;
 mod demo;
 mod edt;
 mod error;
 mod frame;
+pub mod generate;
 mod grid_map;
 mod inflation;
 mod io;

@@ -168,6 +168,10 @@ impl Workspace for GridMap {
         Some(self.clearance_at(p))
     }
 
+    fn disconnection(&self, query: &hyplan_core::Query) -> Option<hyplan_core::NoPathCause> {
+        crate::connectivity::disconnection(self, query, crate::connectivity::Moves::Four)
+    }
+
     fn as_any(&self) -> Option<&dyn std::any::Any> {
         Some(self)
     }

@@ -155,7 +155,7 @@ pub fn build_planner(spec: &PlannerSpec) -> Result<Box<dyn Planner>, String> {
                 step: p.get("step").unwrap_or(d.step),
                 goal_radius: p.get("goal_radius").unwrap_or(d.goal_radius),
                 candidates: p.count("candidates", d.candidates, 1)?,
-                closed_radius: p.get("closed_radius").unwrap_or(d.closed_radius),
+                closed_radius: p.get("closed_radius").or(d.closed_radius),
                 reduction_passes: p.count("reduction_passes", d.reduction_passes, 0)?,
                 backtracking: p.flag("backtracking", d.backtracking)?,
                 smoothing: p.flag("smoothing", d.smoothing)?,

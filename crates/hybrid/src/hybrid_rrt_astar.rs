@@ -129,7 +129,8 @@ impl HybridRrtAstar {
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget, or named `workspace`
     /// when `ws` is not a grid map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
-    /// for a query outside the map or blocked; [`PlanError::BudgetExhausted`] when neither
+    /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
+    /// passable cells do not join start and goal; [`PlanError::BudgetExhausted`] when neither
     /// the tree nor a sub-search reached the goal within the budget.
     pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,
@@ -155,6 +156,7 @@ impl HybridRrtAstar {
         self.validate_params()?;
         let map = common::as_grid(ws)?;
         sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        sampling::check_connected(ws, query, started)?;
         let goal = query.goal;
         let target = goal.center();
         let goal_cell = map.world_to_cell(target).ok_or(PlanError::InvalidGoal {

@@ -59,7 +59,7 @@
 //! ")?;
 //! let query = Query::new(Point2::new(1.5, 4.5), Goal::Point(Point2::new(28.5, 4.5)));
 //! let planners: Vec<Box<dyn Planner>> = vec![
-//!     Box::new(RrtAstarBt { step: 3.0, goal_radius: 1.5, closed_radius: 0.75, ..Default::default() }),
+//!     Box::new(RrtAstarBt { step: 3.0, goal_radius: 1.5, closed_radius: Some(0.75), ..Default::default() }),
 //!     Box::new(RrtAstarRefine { step: 2.0, near_radius: 2.0, ..Default::default() }),
 //!     Box::new(HybridRrtAstar::default()),
 //!     Box::new(SafeRrtStar { step: 2.0, ..Default::default() }),

@@ -29,4 +29,7 @@ pub struct Staged {
     /// Back-tracking steps taken (`rrt-astar-bt`): nodes added under an earlier node than
     /// the one added just before (the search resumed from an older option).
     pub backtracks: u32,
+    /// Times the open list ran dry and the search went on from the tree node nearest to a
+    /// fresh sample (`rrt-astar-bt` with back-tracking).
+    pub restarts: u32,
 }

@@ -58,6 +58,18 @@ use crate::smooth;
 /// PCHIP curve is checked against the same workspace, so the returned path stays in the
 /// safe zone too. Works on any [`Workspace`].
 ///
+/// # Completeness
+///
+/// Before sampling, the planner asks the workspace for a proof that start and goal are
+/// not connected ([`Workspace::disconnection`]; a grid map checks its passable cells) and
+/// returns [`PlanError::Disconnected`] with the cause at once when there is one. Otherwise
+/// only a path or the budget ends the run: when the open list runs dry (every candidate
+/// closed or blocked), the search goes on from the tree node nearest to a fresh random
+/// sample (RRT's rule, 4.2), whose new round of candidates refills the open list
+/// ([`Staged::restarts`] counts these). The paper's back-tracking (4.4, the open list
+/// keeping earlier nodes' options, best f first) is unchanged wherever the list is not
+/// empty; the paper does not say what happens when it is.
+///
 /// # Units
 ///
 /// Lengths are world units. The defaults are the paper's pixel values, so they fit a
@@ -88,7 +100,7 @@ use crate::smooth;
 ///     ........#...........
 ///     ....................
 /// ")?;
-/// let planner = RrtAstarBt { step: 2.0, goal_radius: 1.0, closed_radius: 0.5, ..RrtAstarBt::default() };
+/// let planner = RrtAstarBt { step: 2.0, goal_radius: 1.0, closed_radius: Some(0.5), ..RrtAstarBt::default() };
 /// let query = Query::new(Point2::new(1.5, 3.5), Goal::Point(Point2::new(18.5, 3.5)));
 /// let plan = planner.plan(&map, &query, &mut rand_chacha::ChaCha8Rng::seed_from_u64(1))?;
 /// assert_eq!(plan.path[0], query.start);
@@ -112,10 +124,11 @@ pub struct RrtAstarBt {
     /// Rejection draws allowed for one collision-free sample, >= 1. Default 1000 (ours).
     pub sample_tries: usize,
     /// A candidate closer than this to an existing node is rejected (A*'s closed list),
-    /// world units, finite and >= 0. Default 10 = step / 4 (ours; with step / 2 the
-    /// candidates through the room's narrow passages are too often all closed: 31
-    /// failures in 100 seeds, against 0 with step / 4).
-    pub closed_radius: f64,
+    /// world units, finite and >= 0; `None` (default) follows the step: `step / 4` (ours;
+    /// 10 px for the paper's 40 px step; with step / 2 the candidates through the room's
+    /// narrow passages are too often all closed: 31 failures in 100 seeds, against 0 with
+    /// step / 4).
+    pub closed_radius: Option<f64>,
     /// Passes of the pairwise node reduction (4.5): 1 (default, the paper's one pass), or
     /// 0 to repeat until nothing changes.
     pub reduction_passes: usize,
@@ -141,7 +154,7 @@ impl Default for RrtAstarBt {
             goal_radius: 20.0,
             candidates: 50,
             sample_tries: 1000,
-            closed_radius: 10.0,
+            closed_radius: None,
             reduction_passes: 1,
             backtracking: true,
             smoothing: true,
@@ -152,12 +165,21 @@ impl Default for RrtAstarBt {
 }
 
 impl RrtAstarBt {
+    /// The closed-list radius in use: [`closed_radius`](Self::closed_radius), or a quarter
+    /// step.
+    #[must_use]
+    pub fn closed_radius(&self) -> f64 {
+        self.closed_radius.unwrap_or(self.step / 4.0)
+    }
+
     fn validate_params(&self) -> Result<(), PlanError> {
         sampling::check_positive("step", self.step)?;
         common::check_non_negative("goal_radius", self.goal_radius)?;
         common::check_count("candidates", self.candidates)?;
         common::check_count("sample_tries", self.sample_tries)?;
-        common::check_non_negative("closed_radius", self.closed_radius)?;
+        if let Some(r) = self.closed_radius {
+            common::check_non_negative("closed_radius", r)?;
+        }
         sampling::check_positive("curve_spacing", self.curve_spacing)
     }
 
@@ -167,11 +189,12 @@ impl RrtAstarBt {
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget;
     /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or blocked; [`PlanError::NoPath`] when the open list ran empty (every
-    /// candidate of every node was blocked or closed: the reachable space is covered,
-    /// though this is not a proof) or, without back-tracking, at the first node with no
-    /// admissible candidate; [`PlanError::BudgetExhausted`] when the iterations or
-    /// time ran out.
+    /// workspace or blocked; [`PlanError::Disconnected`] (with the cause) when the
+    /// workspace proves start and goal unconnected ([`Workspace::disconnection`], before
+    /// any sampling); without back-tracking, [`PlanError::NoPath`] at the first node with
+    /// no admissible candidate (the paper's "premature end", kept as the ablation: not a
+    /// proof); [`PlanError::BudgetExhausted`] when the iterations or time ran out. With
+    /// back-tracking an empty open list does not end the run (see the type's docs).
     pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,
         ws: &W,
@@ -196,6 +219,7 @@ impl RrtAstarBt {
         let started = Instant::now();
         self.validate_params()?;
         sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        sampling::check_connected(ws, query, started)?;
         let goal = query.goal;
         let target = goal.center();
         let mut checker = CountingChecker::new(ws);
@@ -204,7 +228,9 @@ impl RrtAstarBt {
         let (width, height) = (bounds.width(), bounds.height());
         // The tree: every node ever grown, with its parent and g (path length from start),
         // bucketed for the closed-list test.
-        let mut tree = ClosedList::new(bounds, self.closed_radius, query.start);
+        let mut tree = ClosedList::new(bounds, self.closed_radius(), query.start);
+        // The same nodes for nearest-node queries, used only when the open list runs dry.
+        let mut nearest = sampling::NearestIndex::rooted_at(query.start);
         let mut parent: Vec<Option<u32>> = vec![None];
         let mut g: Vec<f64> = vec![0.0];
         // The open list: candidate extensions not yet taken, lowest f first.
@@ -214,6 +240,7 @@ impl RrtAstarBt {
         let mut iterations = 0_u64;
         let mut grown = 0_u64;
         let mut backtracks = 0_u32;
+        let mut restarts = 0_u32;
         let mut reached: Option<(usize, Option<Point2>)> = None;
         let mut failure = false;
 
@@ -276,9 +303,29 @@ impl RrtAstarBt {
                 }
             }
             let Some(c) = chosen else {
-                // No option left anywhere: the reachable space is covered.
-                failure = true;
-                break;
+                if !self.backtracking {
+                    // RRT-A* alone: the paper's premature end.
+                    failure = true;
+                    break;
+                }
+                // No option left on the open list. Back-tracking goes on from the tree node
+                // nearest to a fresh collision-free sample (RRT's own choice of the node
+                // to extend, 4.2), whose new round of candidates refills the list. Every
+                // node keeps a chance of being extended again in any direction, so the
+                // search is probabilistically complete, as RRT is; only the budget or a
+                // path ends it.
+                let sample = (0..self.sample_tries).find_map(|_| {
+                    let p = Point2::new(
+                        bounds.min.x + hyplan_core::uniform01(rng) * width,
+                        bounds.min.y + hyplan_core::uniform01(rng) * height,
+                    );
+                    points_free.is_free(&mut checker, p).then_some(p)
+                });
+                if let Some((n, _)) = sample.and_then(|p| nearest.nearest(p)) {
+                    head = n;
+                }
+                restarts += 1;
+                continue;
             };
             let from = c.parent as usize;
             if from != head {
@@ -287,6 +334,7 @@ impl RrtAstarBt {
             // Grow: the chosen candidate becomes the new head (g as computed when it was
             // drawn).
             let id = tree.insert(c.point);
+            nearest.insert(c.point);
             parent.push(Some(c.parent));
             g.push(g[from] + (c.point - tree.point(from)).norm());
             head = id;
@@ -360,6 +408,7 @@ impl RrtAstarBt {
             smoothing_repairs: repairs,
             smoothing_refused: refused,
             backtracks,
+            restarts,
             ..Staged::default()
         })
     }

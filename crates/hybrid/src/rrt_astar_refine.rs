@@ -105,7 +105,9 @@ impl RrtAstarRefine {
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget, or named `workspace`
     /// when `ws` is not a grid map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
-    /// for a query outside the map or blocked; [`PlanError::BudgetExhausted`] when the RRT
+    /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
+    /// passable cells do not join start and goal (checked by the RRT before sampling);
+    /// [`PlanError::BudgetExhausted`] when the RRT
     /// does not reach the goal within its budget.
     pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,

@@ -138,13 +138,49 @@ impl SafeRrtStar {
         sampling::check_positive("curve_spacing", self.curve_spacing)
     }
 
+    /// The proof step before sampling: on a grid map whose only blocked zone is Forbidden,
+    /// [`envmap::connectivity::disconnection_hopping`] (nodes in Free, edges up to
+    /// `max(step, goal_radius)` long across the band); on any other workspace, its own
+    /// [`Workspace::disconnection`].
+    fn check_connected<W: Workspace + ?Sized>(
+        &self,
+        ws: &W,
+        query: &Query,
+        started: Instant,
+    ) -> Result<(), PlanError> {
+        let grid = ws
+            .as_any()
+            .and_then(|a| a.downcast_ref::<envmap::GridMap>())
+            .filter(|map| map.blocked_from == Zone::Forbidden);
+        let cause = match grid {
+            Some(map) => envmap::connectivity::disconnection_hopping(
+                map,
+                query,
+                self.step.max(self.goal_radius),
+            ),
+            None => ws.disconnection(query),
+        };
+        match cause {
+            None => Ok(()),
+            Some(cause) => Err(PlanError::Disconnected {
+                cause,
+                stats: PlanStats {
+                    elapsed: started.elapsed(),
+                    ..PlanStats::default()
+                },
+            }),
+        }
+    }
+
     /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
     ///
     /// # Errors
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget;
     /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or in Forbidden; [`PlanError::BudgetExhausted`] when no node reached the
+    /// workspace or in Forbidden; [`PlanError::Disconnected`] when the map proves that no
+    /// path of this planner can exist (an obstacle wall, or a risk band wider than the
+    /// edges can cross); [`PlanError::BudgetExhausted`] when no node reached the
     /// goal within the budget.
     pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,
@@ -169,6 +205,7 @@ impl SafeRrtStar {
         let started = Instant::now();
         self.validate_params()?;
         sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        self.check_connected(ws, query, started)?;
         let goal = query.goal;
         let target = goal.center();
         let view = ZoneView::new(ws, self.step / 16.0);

@@ -4,7 +4,9 @@
 
 use envmap::GridMap;
 use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
-use hyplan_core::{Bounds, Budget, Goal, Plan, PlanError, Planner, Point2, Query, Workspace, Zone};
+use hyplan_core::{
+    Bounds, Budget, Goal, NoPathCause, Plan, PlanError, Planner, Point2, Query, Workspace, Zone,
+};
 use proptest::prelude::*;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -173,6 +175,7 @@ fn walled_off_goal_gives_no_path() {
     fixtures::fill(&mut map, 25, 0, 26, 24, Zone::Forbidden);
     fixtures::add_band(&mut map, 1);
     let query = room_query();
+    // Every planner proves it at once, names the wall, and samples nothing.
     for (planner, avoids) in fixtures::all_planners(2_000) {
         let ws = fixtures::planning_map(&map, avoids);
         let name = planner.info().name;
@@ -180,26 +183,9 @@ fn walled_off_goal_gives_no_path() {
             .plan(&ws, &query, &mut ChaCha8Rng::seed_from_u64(SEED_1))
             .expect_err(name);
         assert!(err.is_no_path(), "{name}: {err}");
-        assert!(err.stats().unwrap().nodes >= 1, "{name}");
+        assert_eq!(err.cause(), Some(&NoPathCause::Wall), "{name}: {err}");
+        assert_eq!(err.stats().unwrap().iterations, 0, "{name}");
     }
-    // RRT-A*-BT covers the reachable space and stops before its budget.
-    let bt = RrtAstarBt {
-        step: 2.0,
-        goal_radius: 1.0,
-        closed_radius: 0.5,
-        ..RrtAstarBt::default()
-    };
-    let err = bt
-        .plan(
-            &map.clone().avoiding_risk(),
-            &query,
-            &mut ChaCha8Rng::seed_from_u64(3),
-        )
-        .unwrap_err();
-    let PlanError::NoPath { stats } = err else {
-        panic!("{err}")
-    };
-    assert!(stats.iterations < 10_000);
 }
 
 #[test]

@@ -25,7 +25,7 @@ pub fn all_planners(iterations: u64) -> Vec<(Box<dyn Planner>, Avoids)> {
             Box::new(RrtAstarBt {
                 step: 2.0,
                 goal_radius: 1.0,
-                closed_radius: 0.5,
+                closed_radius: Some(0.5),
                 candidates: 20,
                 curve_spacing: 0.25,
                 budget,

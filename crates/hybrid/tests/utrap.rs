@@ -29,7 +29,7 @@ fn planner(backtracking: bool) -> RrtAstarBt {
     RrtAstarBt {
         step: 4.0,
         goal_radius: 2.0,
-        closed_radius: 1.0,
+        closed_radius: Some(1.0),
         curve_spacing: 0.5,
         backtracking,
         ..RrtAstarBt::default()

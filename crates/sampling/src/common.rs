@@ -145,6 +145,7 @@ where
 {
     let started = Instant::now();
     toolkit::validate_step_and_budget(step, budget, ws, query)?;
+    toolkit::check_connected(ws, query, started)?;
     let mut checker = CountingChecker::new(ws);
     // trees[0] grows from the start, trees[1] from the goal centre.
     let mut trees = [

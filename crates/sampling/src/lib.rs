@@ -16,7 +16,8 @@
 //! - [`NearestIndex`]: the k-d tree (kiddo) behind one small type, plain distances.
 //! - [`toolkit`], re-exported here: the building blocks the planners are made of, for
 //!   planners in other crates: [`steer`], [`sample_uniform`], [`sample_goal_biased`], [`CountingChecker`],
-//!   [`branch`], [`StarTree`], [`validate_step_and_budget`], [`check_positive`] and
+//!   [`branch`], [`StarTree`], [`validate_step_and_budget`], [`check_connected`] (the
+//!   connectivity proof before sampling), [`check_positive`] and
 //!   [`check_probability`].
 //!
 //! # Guarantees
@@ -33,6 +34,10 @@
 //!   outside the map or blocked) is a typed error, never a panic; a spent budget is
 //!   [`PlanError::BudgetExhausted`](hyplan_core::PlanError::BudgetExhausted) with the
 //!   statistics of the attempt.
+//! - Probabilistically complete: a planner stops before its budget only with a path or a
+//!   proof that none exists ([`PlanError::Disconnected`](hyplan_core::PlanError::Disconnected),
+//!   from [`Workspace::disconnection`](hyplan_core::Workspace::disconnection): on a grid map, start and goal
+//!   not connected through passable cells, with the cause).
 //!
 //! # Conventions
 //!
@@ -84,6 +89,6 @@ pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::{RewireRadius, RrtStar};
 pub use toolkit::{
-    CountingChecker, StarTree, branch, check_positive, check_probability, sample_goal_biased,
+    CountingChecker, StarTree, branch, check_connected, check_positive, check_probability, sample_goal_biased,
     sample_uniform, steer, validate_step_and_budget,
 };

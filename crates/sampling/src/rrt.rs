@@ -108,6 +108,7 @@ impl Rrt {
         let started = Instant::now();
         toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         toolkit::check_probability("goal_bias", self.goal_bias)?;
+        toolkit::check_connected(ws, query, started)?;
         let goal = query.goal;
         let mut checker = CountingChecker::new(ws);
         let mut tree = GrowTree::rooted_at(query.start);

@@ -150,6 +150,7 @@ impl RrtStar {
         toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         toolkit::check_probability("goal_bias", self.goal_bias)?;
         self.validate_rewire()?;
+        toolkit::check_connected(ws, query, started)?;
         let goal = query.goal;
         let bounds = ws.bounds();
         let gamma = match self.rewire {

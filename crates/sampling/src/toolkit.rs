@@ -34,7 +34,9 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use hyplan_core::{Budget, PlanError, Point2, Query, Workspace};
+use std::time::Instant;
+
+use hyplan_core::{Budget, PlanError, PlanStats, Point2, Query, Workspace};
 use rand::Rng;
 
 use crate::NearestIndex;
@@ -99,6 +101,32 @@ pub fn validate_step_and_budget<W: Workspace + ?Sized>(
         });
     }
     query.validate(ws)
+}
+
+/// The proof step of probabilistic completeness: asks the workspace whether start and
+/// goal are connected at all ([`Workspace::disconnection`]: a grid map checks the
+/// connectivity of its passable cells). A sampling planner calls it after validating its
+/// input and before sampling, so that it stops with "no path" before its budget is spent
+/// only with this proof, and otherwise samples until the budget ends.
+///
+/// # Errors
+///
+/// [`PlanError::Disconnected`] with the cause and the time since `started`.
+pub fn check_connected<W: Workspace + ?Sized>(
+    ws: &W,
+    query: &Query,
+    started: Instant,
+) -> Result<(), PlanError> {
+    match ws.disconnection(query) {
+        None => Ok(()),
+        Some(cause) => Err(PlanError::Disconnected {
+            cause,
+            stats: PlanStats {
+                elapsed: started.elapsed(),
+                ..PlanStats::default()
+            },
+        }),
+    }
 }
 
 /// A uniform sample over the workspace bounds: two draws from `rng`, x then y.

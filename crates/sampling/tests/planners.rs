@@ -41,6 +41,53 @@ fn assert_valid(map: &GridMap, query: &Query, plan: &hyplan_core::Plan, name: &s
     );
 }
 
+/// Whether a chain of free cells sharing sides joins the start's cell to a cell whose
+/// closed square meets the goal disc (a plain breadth-first search, independent of
+/// `envmap::connectivity`).
+fn connected(map: &GridMap, query: &Query) -> bool {
+    let Some(start) = map.world_to_cell(query.start) else {
+        return false;
+    };
+    let (w, h) = (map.width(), map.height());
+    let g = query.goal.center();
+    let meets = |i: usize, j: usize| {
+        let dx = (i as f64 - g.x).max(g.x - (i as f64 + 1.0)).max(0.0);
+        let dy = (j as f64 - g.y).max(g.y - (j as f64 + 1.0)).max(0.0);
+        dx.hypot(dy) <= query.goal.radius()
+    };
+    let mut seen = vec![false; w * h];
+    let mut queue = std::collections::VecDeque::from([start]);
+    seen[start.1 * w + start.0] = true;
+    while let Some((i, j)) = queue.pop_front() {
+        if meets(i, j) {
+            return true;
+        }
+        for (a, b) in [(i.wrapping_sub(1), j), (i + 1, j), (i, j.wrapping_sub(1)), (i, j + 1)] {
+            if a < w && b < h && !seen[b * w + a] && map.cell_free(a, b) {
+                seen[b * w + a] = true;
+                queue.push_back((a, b));
+            }
+        }
+    }
+    false
+}
+
+/// A grid map that cannot prove disconnection (it hides `Workspace::disconnection`): the
+/// planners must then spend their budget.
+struct NoProof<'a>(&'a GridMap);
+
+impl Workspace for NoProof<'_> {
+    fn bounds(&self) -> hyplan_core::Bounds {
+        self.0.bounds()
+    }
+    fn is_free(&self, p: Point2) -> bool {
+        self.0.is_free(p)
+    }
+    fn segment_free(&self, a: Point2, b: Point2) -> bool {
+        self.0.segment_free(a, b)
+    }
+}
+
 fn free_cells(map: &GridMap) -> Vec<Point2> {
     let mut out = Vec::new();
     for j in 0..map.height() {
@@ -89,6 +136,13 @@ proptest! {
                 (Err(PlanError::BudgetExhausted { stats: sa }), Err(PlanError::BudgetExhausted { stats: sb })) => {
                     prop_assert_eq!(sa.iterations, 1_500);
                     prop_assert_eq!(sa.nodes, sb.nodes);
+                    prop_assert!(connected(&map, &query), "{}: gave up on a connected query", name);
+                }
+                // "No path" before the budget only with a proof: the independent flood
+                // fill below agrees that start and goal are not connected.
+                (Err(PlanError::Disconnected { stats, .. }), Err(PlanError::Disconnected { .. })) => {
+                    prop_assert_eq!(stats.iterations, 0);
+                    prop_assert!(!connected(&map, &query), "{}: false proof", name);
                 }
                 _ => prop_assert!(false, "{}: unexpected or non-deterministic result {:?} / {:?}", name, a.as_ref().err(), b.as_ref().err()),
             }
@@ -271,7 +325,9 @@ fn bad_queries_are_typed_errors() {
     }
 }
 
-/// A walled-off goal: every planner spends exactly its iteration budget and says so.
+/// A walled-off goal: every planner proves it at once on the grid map, naming the wall;
+/// on a workspace that cannot prove it, every planner spends exactly its iteration budget
+/// and says so.
 #[test]
 fn unreachable_goal_spends_the_budget() {
     let map = GridMap::from_ascii(
@@ -288,8 +344,15 @@ fn unreachable_goal_spends_the_budget() {
         Goal::disc(Point2::new(9.5, 3.5), 0.5),
     );
     for planner in all_planners(1.0, 3_000) {
-        let started = std::time::Instant::now();
         match planner.plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(SEED_1)) {
+            Err(PlanError::Disconnected { cause, stats }) => {
+                assert_eq!(cause, hyplan_core::NoPathCause::Wall);
+                assert_eq!(stats.iterations, 0);
+            }
+            other => panic!("{}: {other:?}", planner.info().name),
+        }
+        let started = std::time::Instant::now();
+        match planner.plan(&NoProof(&map), &query, &mut ChaCha8Rng::seed_from_u64(SEED_1)) {
             Err(PlanError::BudgetExhausted { stats }) => {
                 assert_eq!(stats.iterations, 3_000, "{}", planner.info().name);
                 assert!(stats.nodes > 10);
@@ -333,7 +396,7 @@ fn time_limit_stops_the_search() {
     ];
     for planner in planners {
         let started = std::time::Instant::now();
-        let r = planner.plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(SEED_1));
+        let r = planner.plan(&NoProof(&map), &query, &mut ChaCha8Rng::seed_from_u64(SEED_1));
         let took = started.elapsed();
         assert!(matches!(r, Err(PlanError::BudgetExhausted { .. })));
         assert!(

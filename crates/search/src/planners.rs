@@ -79,8 +79,10 @@ macro_rules! grid_planner {
             ///
             /// [`PlanError::InvalidParameter`] named `workspace` when `ws` is not a grid
             /// map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for points
-            /// outside the map, not finite or blocked; [`PlanError::NoPath`] (with the
-            /// expansion count) when every reachable cell was expanded.
+            /// outside the map, not finite or blocked; [`PlanError::Disconnected`] (with
+            /// the cause: a wall, or the risk band) when a flood fill of the passable
+            /// cells, run first, does not join start and goal; [`PlanError::NoPath`]
+            /// (with the expansion count) when every reachable cell was expanded.
             pub fn plan<W: Workspace + ?Sized, R: RngCore + ?Sized>(
                 &self,
                 ws: &W,
@@ -138,6 +140,22 @@ fn plan_on_grid<W: Workspace + ?Sized>(
     let started = Instant::now();
     let map = as_grid(ws)?;
     query.validate(map)?;
+    // A flood fill proves "no path", with its cause, faster than exhausting the search.
+    let moves = match (algo, options.connectivity, options.corner_cutting) {
+        (Algo::Astar | Algo::Dijkstra, crate::Connectivity::Eight, true) => {
+            envmap::connectivity::Moves::Eight
+        }
+        _ => envmap::connectivity::Moves::Four,
+    };
+    if let Some(cause) = envmap::connectivity::disconnection(map, query, moves) {
+        return Err(PlanError::Disconnected {
+            cause,
+            stats: PlanStats {
+                elapsed: started.elapsed(),
+                ..PlanStats::default()
+            },
+        });
+    }
     let cell_of = |p: Point2| map.world_to_cell(p);
     let start_cell = cell_of(query.start).ok_or(PlanError::InvalidStart {
         point: query.start,

@@ -123,7 +123,11 @@ fn unreachable_goal_is_no_path_with_stats() {
     let q = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(4.5, 1.5)));
     for p in planners() {
         match p.plan(&map, &q, &mut rand::rng()) {
-            Err(PlanError::NoPath { stats }) => assert!(stats.expansions >= 4),
+            // Proved by the flood fill before any search, with the cause.
+            Err(PlanError::Disconnected { cause, stats }) => {
+                assert_eq!(cause, hyplan_core::NoPathCause::Wall);
+                assert_eq!(stats.expansions, 0);
+            }
             other => panic!("{}: {other:?}", p.info().name),
         }
     }
