@@ -53,7 +53,10 @@ fn a_tiny_time_limit_stops_every_planner_within_10_ms() {
             })
             .min()
             .unwrap();
-        report.push(format!("{name}: {:.1} ms over", overshoot.as_secs_f64() * 1e3));
+        report.push(format!(
+            "{name}: {:.1} ms over",
+            overshoot.as_secs_f64() * 1e3
+        ));
         if overshoot > Duration::from_millis(10) {
             panic!("{name} overshot its 20 ms limit by {overshoot:?}: {report:?}");
         }

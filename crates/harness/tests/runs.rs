@@ -58,7 +58,11 @@ fn every_planner_gives_the_same_bits_on_threads() {
         let parallel = run_planner(&s, &w, &spec, 4, true, &|| {}).unwrap();
         for (a, b) in serial.iter().zip(&parallel) {
             let what = format!("{name} / {smoothing}, run {}", a.run);
-            assert_eq!((a.run, a.seed, a.success), (b.run, b.seed, b.success), "{what}");
+            assert_eq!(
+                (a.run, a.seed, a.success),
+                (b.run, b.seed, b.success),
+                "{what}"
+            );
             assert_eq!(a.path, b.path, "{what}");
             for (x, y) in [
                 (a.length, b.length),

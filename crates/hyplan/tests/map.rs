@@ -287,7 +287,15 @@ fn maps_above_the_memory_limit_name_size_limit_and_flag() {
     for file in [&pgm, &map, &yaml] {
         for args in [
             vec!["map", file.as_str()],
-            vec!["plan", "--map", file.as_str(), "--start", "1,1", "--goal", "5,5"],
+            vec![
+                "plan",
+                "--map",
+                file.as_str(),
+                "--start",
+                "1,1",
+                "--goal",
+                "5,5",
+            ],
         ] {
             let o = hyplan(&args);
             let e = stderr(&o);
@@ -301,5 +309,9 @@ fn maps_above_the_memory_limit_name_size_limit_and_flag() {
     // The flag lowers the limit too.
     let o = hyplan(&["map", &picture(), "--max-cells", "100"]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("50 x 40 = 2000 cells"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("50 x 40 = 2000 cells"),
+        "{}",
+        stderr(&o)
+    );
 }
