@@ -4,6 +4,11 @@
 //!   seed papers' experiments and writes a report.
 //! - `cargo xtask bench-peers [--runs N] [--only CASE] [--planners LIST]`: our sampling
 //!   planners against OMPL 1.5, table of median-time ratios.
+//! - `cargo xtask soak [--minutes N] [--seed S]`: every planner and smoothing method on
+//!   seeded generated maps, each path checked by an exact segment-versus-cell test;
+//!   prints plans checked, colliding and panics per planner.
+//! - `cargo xtask proptest-soak [--minutes N]`: the property tests, round after round
+//!   with fresh seeds; a failure prints the seed that replays it.
 
 use std::process::ExitCode;
 
@@ -12,6 +17,7 @@ use clap::{Parser, Subcommand};
 mod bench_peers;
 mod reproduce;
 mod rooms;
+mod soak;
 
 #[derive(Parser)]
 #[command(name = "xtask", about = "hyplan project tasks")]
@@ -30,6 +36,10 @@ enum Task {
     Rooms,
     /// Generate the nine Table 4 workspaces of seed 000 into scenarios/.
     Table4,
+    /// Every planner and smoothing method on generated maps, paths checked exactly.
+    Soak(soak::Args),
+    /// The property tests with fresh seeds, round after round.
+    ProptestSoak(soak::PropArgs),
 }
 
 fn main() -> ExitCode {
@@ -37,6 +47,8 @@ fn main() -> ExitCode {
     let result = match cli.task {
         Task::Reproduce(args) => reproduce::run(&args),
         Task::BenchPeers(args) => bench_peers::run(&args),
+        Task::Soak(args) => soak::run(&args),
+        Task::ProptestSoak(args) => soak::run_proptests(&args),
         Task::Table4 => rooms::write_table4(std::path::Path::new("scenarios")).map(|files| {
             for f in files {
                 println!("wrote {}", f.display());

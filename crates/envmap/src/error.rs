@@ -107,6 +107,24 @@ pub enum MapError {
         /// What is expected.
         reason: String,
     },
+    /// The map has more cells than the memory limit allows; refused before its cells are
+    /// read or allocated. Raise the limit with [`LoadOptions::max_cells`](crate::LoadOptions)
+    /// (`--max-cells` in `hyplan`).
+    #[error(
+        "{}: the map is {width} x {height} = {cells} cells, above the memory limit of {limit} cells",
+        path.display(),
+        cells = (*width as u128) * (*height as u128)
+    )]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// Columns (pixels or cells) the file declares.
+        width: usize,
+        /// Rows the file declares.
+        height: usize,
+        /// The limit, cells.
+        limit: usize,
+    },
     /// The grid built from a file is invalid (size overflow and the like).
     #[error("{}: invalid map", path.display())]
     Grid {

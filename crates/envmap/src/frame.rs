@@ -10,6 +10,11 @@ use hyplan_core::Point2;
 ///   `[x, x+1) x [y, y+1)`. This is the frame of image viewers, of MovingAI `.scen` files
 ///   and of the OMPL peer.
 /// - [`InputFrame::World`] for ROS map_server YAML maps: metres in the map frame, y up.
+/// - [`InputFrame::MapFrame`] for ROS maps whose `origin` has a non-zero yaw: metres in
+///   the map frame, which is the grid's frame turned by `yaw` about `origin`. As in Nav2,
+///   the grid stays axis-aligned in its own frame: a map-frame point `p` is the grid point
+///   `origin + R(-yaw) (p - origin)`, and a grid point `g` (a path) goes back out as
+///   `origin + R(yaw) (g - origin)`.
 ///
 /// ```
 /// use envmap::InputFrame;
@@ -34,6 +39,22 @@ pub enum InputFrame {
     },
     /// World units of the map (metres for ROS maps), y up.
     World,
+    /// Metres in the map frame of a ROS map with a non-zero yaw: the grid (world) frame
+    /// is this frame turned by `yaw` about `origin`.
+    MapFrame {
+        /// The map-frame position of the grid's lower-left corner (the YAML's x, y),
+        /// also the grid's [`origin`](crate::GridMap::origin).
+        origin: Point2,
+        /// The grid's rotation, radians counter-clockwise (the YAML's yaw).
+        yaw: f64,
+    },
+}
+
+/// `p` turned by `angle` (radians, counter-clockwise) about `pivot`.
+fn rotate_about(p: Point2, pivot: Point2, angle: f64) -> Point2 {
+    let (s, c) = angle.sin_cos();
+    let (dx, dy) = (p.x - pivot.x, p.y - pivot.y);
+    Point2::new(pivot.x + c * dx - s * dy, pivot.y + s * dx + c * dy)
 }
 
 impl InputFrame {
@@ -50,6 +71,7 @@ impl InputFrame {
                 origin.y + (height as f64 - y) * resolution,
             ),
             Self::World => Point2::new(x, y),
+            Self::MapFrame { origin, yaw } => rotate_about(Point2::new(x, y), origin, -yaw),
         }
     }
 
@@ -66,15 +88,22 @@ impl InputFrame {
                 height as f64 - (p.y - origin.y) / resolution,
             ),
             Self::World => (p.x, p.y),
+            Self::MapFrame { origin, yaw } => {
+                let q = rotate_about(p, origin, yaw);
+                (q.x, q.y)
+            }
         }
     }
 
-    /// A short name of the frame's unit for messages: `"cells, y down"` or `"world units, y up"`.
+    /// A short description of the frame's unit for messages.
     #[must_use]
     pub const fn describe(&self) -> &'static str {
         match self {
             Self::Cells { .. } => "cells, y down from the top row",
             Self::World => "world units (metres for ROS maps), y up",
+            Self::MapFrame { .. } => {
+                "metres in the map frame (the grid turned by the yaw of origin)"
+            }
         }
     }
 }

@@ -10,7 +10,8 @@
 //! Maps and frames:
 //! - [`GridMap`]: the grid, its frame (origin at the lower-left corner, y up) and zones;
 //!   [`GridMap::segment_cells`], [`GridMap::segment_free_cells`]: every cell a segment
-//!   touches, corners included; [`GridMap::clearance_at`] (also `Workspace::clearance`):
+//!   touches, corners included (cells are closed; [`TOUCH_TOLERANCE`] is the rounding
+//!   margin); [`GridMap::clearance_at`] (also `Workspace::clearance`):
 //!   a lower bound on the distance to the nearest blocked cell, from a cached exact EDT.
 //! - [`Mask`]: a binary grid in map cells; [`Picture`]: an 8-bit raster, top row first.
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
@@ -28,7 +29,8 @@
 //! - [`Inflation`]: Nav2's inflation costs, the graded alternative to zones.
 //!
 //! Files:
-//! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension.
+//! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension,
+//!   within a memory limit ([`DEFAULT_MAX_CELLS`]).
 //! - [`read_movingai`], [`parse_movingai`]: MovingAI `.map`.
 //! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`], [`write_ros`]: ROS map_server.
 //! - [`read_picture`], [`decode_picture`], [`write_picture`], [`render_zones`],
@@ -103,11 +105,12 @@ pub use io::ros::{
     ROS_FREE, ROS_OCCUPIED, ROS_RISK, RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml,
     ros_cell_counts, write_ros,
 };
-pub use io::{LoadOptions, LoadedMap, MapKind, load_map};
+pub use io::{DEFAULT_MAX_CELLS, LoadOptions, LoadedMap, MapKind, load_map};
 pub use mask::Mask;
 pub use picture::Picture;
 pub use pipeline::{Pipeline, PipelineOutput};
 pub use rectangles::{CellRect, bounding_rectangles, fill_rectangles};
+pub use workspace::TOUCH_TOLERANCE;
 pub use zones::zones;
 
 /// The README's examples, compiled and run as doctests.

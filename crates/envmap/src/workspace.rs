@@ -9,6 +9,15 @@ impl GridMap {
     /// touches included, until `visit` returns `false`; returns whether every visit
     /// returned `true`.
     ///
+    /// **The boundary rule: cells are closed.** A segment (or a point, `a == b`) that
+    /// reaches a cell's edge or corner touches that cell, wherever on the segment the
+    /// contact is: at an end point, in the middle, or along a whole grid line (then the
+    /// cells on both sides are touched). Floating-point rounding never lets a contact
+    /// slip through: a segment that misses a cell by less than [`TOUCH_TOLERANCE`] cells
+    /// (measured along the minor axis) counts as touching it, and the sweep's rounding
+    /// errors stay far below that margin on maps up to 10^6 cells a side. So the visited
+    /// set is the exact closed-cell set, plus at most cells missed by a hair.
+    ///
     /// The segment is swept along its major axis one column (or row) at a time, so the
     /// cost grows with the number of cells crossed, not with the map size. Cells outside
     /// the map are not visited; callers check the end points against the bounds.
@@ -18,10 +27,12 @@ impl GridMap {
         b: Point2,
         mut visit: impl FnMut(usize, usize) -> bool,
     ) -> bool {
-        let inv = 1.0 / self.resolution();
+        // Division, not multiplication by 1/resolution: an edge given in world units
+        // (origin + k * resolution) then lands on k whenever that is representable.
+        let r = self.resolution();
         let o = self.origin();
-        let (ua, va) = ((a.x - o.x) * inv, (a.y - o.y) * inv);
-        let (ub, vb) = ((b.x - o.x) * inv, (b.y - o.y) * inv);
+        let (ua, va) = ((a.x - o.x) / r, (a.y - o.y) / r);
+        let (ub, vb) = ((b.x - o.x) / r, (b.y - o.y) / r);
         let (w, h) = (self.width(), self.height());
         if (ub - ua).abs() >= (vb - va).abs() {
             sweep(ua, va, ub, vb, w, h, &mut visit)
@@ -72,6 +83,11 @@ impl GridMap {
     }
 }
 
+/// How close, in cells, a segment may pass to a cell and still count as touching it in
+/// [`GridMap::segment_cells`]: a margin for the rounding of world-to-cell conversion and of
+/// the sweep, never a gap a path could use (1e-9 cells is a nanometre on a 1 m grid).
+pub const TOUCH_TOLERANCE: f64 = 1e-9;
+
 /// Sweeps the closed segment (p0, q0)-(p1, q1) along the major axis p, with
 /// |p1 - p0| >= |q1 - q0|, visiting (column, row) pairs of the closed unit cells it meets
 /// within `[0, np) x [0, nq)`.
@@ -88,16 +104,29 @@ fn sweep(
     if !(lo.is_finite() && hi.is_finite() && q0.is_finite() && q1.is_finite()) {
         return false;
     }
-    let slope = if p1 == p0 { 0.0 } else { (q1 - q0) / (p1 - p0) };
-    let q_at = |p: f64| if p1 == p0 { q0 } else { q0 + (p - p0) * slope };
+    // q on the segment at p. The end points return their own q, not a value recomputed
+    // through the slope: a segment that ends exactly on a grid line must reach it
+    // (recomputing 0.375 + 2.875 * (1.625 / 2.875) gives 1.9999999999999998, which missed
+    // the cell above; issue 16). Inside, the product comes before the division so that a
+    // line through a grid corner lands on it whenever the inputs are exact.
+    let q_at = |p: f64| {
+        if p == p0 {
+            q0
+        } else if p == p1 {
+            q1
+        } else {
+            q0 + (p - p0) * (q1 - q0) / (p1 - p0)
+        }
+    };
+    let tol = TOUCH_TOLERANCE;
     // Closed strip [c, c+1] meets [lo, hi] iff ceil(lo) - 1 <= c <= floor(hi).
-    let c_first = clamp_index(lo.ceil() - 1.0, np);
-    let c_last = clamp_index(hi.floor(), np);
+    let c_first = clamp_index((lo - tol).ceil() - 1.0, np);
+    let c_last = clamp_index((hi + tol).floor(), np);
     for c in c_first..=c_last {
-        let s0 = lo.max(c as f64);
-        let s1 = hi.min(c as f64 + 1.0);
+        let s0 = lo.max(c as f64).min(hi);
+        let s1 = hi.min(c as f64 + 1.0).max(lo);
         let (qa, qb) = (q_at(s0), q_at(s1));
-        let (qlo, qhi) = (qa.min(qb), qa.max(qb));
+        let (qlo, qhi) = (qa.min(qb) - tol, qa.max(qb) + tol);
         for r in clamp_index(qlo.ceil() - 1.0, nq)..=clamp_index(qhi.floor(), nq) {
             if !visit(c, r) {
                 return false;
@@ -213,6 +242,48 @@ mod tests {
                 (1, 6)
             ]
         );
+    }
+
+    /// Issue 16: the segment ends on the bottom edge of cell (2, 2); the slope
+    /// recomputation put the end at y = 1.9999999999999998 and missed that cell.
+    #[test]
+    fn segment_ending_on_a_cell_edge_touches_that_cell() {
+        let map = GridMap::filled(5, 4, Zone::Free).unwrap();
+        assert_eq!(
+            cells(&map, (0.0, 0.375), (2.875, 2.0)),
+            vec![(0, 0), (1, 0), (1, 1), (2, 1), (2, 2)]
+        );
+        assert_eq!(
+            cells(&map, (2.875, 2.0), (0.0, 0.375)),
+            vec![(0, 0), (1, 0), (1, 1), (2, 1), (2, 2)]
+        );
+        let mut blocked = map.clone();
+        blocked.set_cell_zone(2, 2, Zone::Forbidden);
+        assert!(!blocked.segment_free(Point2::new(0.0, 0.375), Point2::new(2.875, 2.0)));
+        assert!(!blocked.is_free(Point2::new(2.875, 2.0)));
+        assert!(blocked.is_free(Point2::new(2.875, 1.999)));
+    }
+
+    /// A line through a grid corner with coordinates that are not exact in binary
+    /// (0.1, 0.3, 1.9, 1.7): the corner (1, 1) is reached, so the cells meeting there
+    /// are touched.
+    #[test]
+    fn corner_contact_survives_rounding() {
+        let mut map = GridMap::filled(3, 3, Zone::Free).unwrap();
+        map.set_cell_zone(0, 1, Zone::Forbidden);
+        let (a, b) = (Point2::new(0.1, 0.3), Point2::new(1.9, 1.7));
+        assert!(!map.segment_free(a, b));
+        assert!(!map.segment_free(b, a));
+        // In a world frame whose edges are not exact in binary either.
+        let shifted = map
+            .clone()
+            .with_frame(0.05, Point2::new(-10.0, 3.3))
+            .unwrap();
+        let to_world = |p: Point2| Point2::new(-10.0 + p.x * 0.05, 3.3 + p.y * 0.05);
+        assert!(!shifted.segment_free(to_world(a), to_world(b)));
+        // A point on the corner of the blocked cell is not free; just off it, it is.
+        assert!(!shifted.is_free(to_world(Point2::new(1.0, 1.0))));
+        assert!(shifted.is_free(to_world(Point2::new(1.01, 0.99))));
     }
 
     #[test]

@@ -88,9 +88,19 @@ fn yaml_missing_and_out_of_range_fields() {
     assert_eq!(field_of(&e), "occupied_thresh");
     let e = yaml_error(&GOOD_YAML.replace("free_thresh: 0.196", "free_thresh: -0.1"));
     assert_eq!(field_of(&e), "free_thresh");
-    let e = yaml_error(&GOOD_YAML.replace("0.0]", "0.5]"));
+    // A yaw is accepted (issue 16); a wrong origin is quoted on one line.
+    let meta = parse_ros_yaml(
+        GOOD_YAML.replace("0.0]", "0.5]").as_bytes(),
+        Path::new("y.yaml"),
+    );
+    assert_eq!(meta.unwrap().yaw, 0.5);
+    let e = yaml_error(&GOOD_YAML.replace("-10.0, -10.0, 0.0]", "1.5, 2]"));
     assert_eq!(field_of(&e), "origin");
-    assert!(e.to_string().contains("yaw"), "{e}");
+    assert!(
+        e.to_string().contains("= [1.5, 2]: expected [x, y, yaw]"),
+        "{e}"
+    );
+    assert!(!e.to_string().contains('\n'), "{e}");
     let e = yaml_error(&GOOD_YAML.replace("negate: 0", "negate: 2"));
     assert_eq!(field_of(&e), "negate");
     let e = yaml_error(&format!("{GOOD_YAML}mode: fancy\n"));
@@ -149,9 +159,17 @@ fn movingai_malformed_files() {
     assert!(reason.contains("\"x\""), "{reason}");
     let (_, reason) = map_error("type octile\nwidth 3\nmap\n...\n");
     assert!(reason.contains("height"), "{reason}");
-    // Huge header, tiny file: an error, not an allocation.
-    let (_, reason) = map_error("type octile\nheight 100000000\nwidth 100000000\nmap\n...\n");
+    // Large header, tiny file: an error, not an allocation.
+    let (_, reason) = map_error("type octile\nheight 10000\nwidth 10000\nmap\n...\n");
     assert!(reason.contains("width"), "{reason}");
+    // Above the memory limit: refused from the header, naming the size and the limit.
+    let e = parse_movingai(
+        b"type octile\nheight 100000000\nwidth 100000000\nmap\n...\n",
+        Path::new("bad.map"),
+    )
+    .unwrap_err();
+    assert!(matches!(e, MapError::TooLarge { .. }), "{e:?}");
+    assert!(e.to_string().contains("100000000 x 100000000"), "{e}");
 }
 
 #[test]

@@ -3,6 +3,8 @@
 #[cfg(feature = "image")]
 mod data;
 mod errors;
+#[cfg(feature = "image")]
+mod limits;
 mod pipeline;
 mod properties;
 #[cfg(feature = "image")]

@@ -1,4 +1,5 @@
 //! Public-API tests of `harness`: scenario validation and Monte-Carlo runs.
 
+mod budgets;
 mod runs;
 mod scenarios;

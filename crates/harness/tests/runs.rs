@@ -24,6 +24,59 @@ fn parallel_runs_equal_serial_runs() {
     }
 }
 
+/// Every planner, and every smoothing method on one of them: the runs spread over threads
+/// give the serial runs' bits (paths, lengths, counts), only the times differ.
+#[test]
+fn every_planner_gives_the_same_bits_on_threads() {
+    let (s, w) = scenario();
+    let names = [
+        "rrt",
+        "rrt-star",
+        "bi-rrt",
+        "rrt-connect",
+        "astar",
+        "dijkstra",
+        "theta-star",
+        "rrt-astar-bt",
+        "rrt-astar-refine",
+        "hybrid-rrt-astar",
+        "safe-rrt-star",
+    ];
+    let smoothings = ["none", "prune", "pchip", "bspline", "bspline-interp"];
+    let specs = names
+        .iter()
+        .map(|n| (n, "none"))
+        .chain(smoothings.iter().map(|m| (&"rrt-connect", *m)));
+    for (name, smoothing) in specs {
+        let spec = harness::PlannerSpec {
+            name: (*name).to_string(),
+            label: None,
+            params: Default::default(),
+            smoothing: Some(smoothing.to_string()),
+        };
+        let serial = run_planner(&s, &w, &spec, 4, false, &|| {}).unwrap();
+        let parallel = run_planner(&s, &w, &spec, 4, true, &|| {}).unwrap();
+        for (a, b) in serial.iter().zip(&parallel) {
+            let what = format!("{name} / {smoothing}, run {}", a.run);
+            assert_eq!(
+                (a.run, a.seed, a.success),
+                (b.run, b.seed, b.success),
+                "{what}"
+            );
+            assert_eq!(a.path, b.path, "{what}");
+            for (x, y) in [
+                (a.length, b.length),
+                (a.nodes, b.nodes),
+                (a.turns, b.turns),
+                (a.explored, b.explored),
+                (a.min_clearance, b.min_clearance),
+            ] {
+                assert_eq!(x.to_bits(), y.to_bits(), "{what}");
+            }
+        }
+    }
+}
+
 #[test]
 fn runs_are_scored_and_summarised() {
     let (s, w) = scenario();

@@ -333,7 +333,8 @@ impl<'a> PointChecker<'a> {
         Self { grid }
     }
 
-    /// Whether `p` is free, exactly as `checker.is_free(p)`, counted the same way.
+    /// Whether `p` is free, exactly as `checker.is_free(p)`, counted the same way: the
+    /// direct lookup answers only for points more than 1e-6 cells from every cell edge.
     #[inline]
     pub(crate) fn is_free<W: Workspace + ?Sized>(
         &self,
@@ -351,7 +352,12 @@ impl<'a> PointChecker<'a> {
             let (u, v) = ((p.x - o.x) * inv, (p.y - o.y) * inv);
             if u >= 0.0 && v >= 0.0 && u < w && v < h {
                 let (i, j) = (u as i32, v as i32);
-                if f64::from(i) != u && f64::from(j) != v {
+                // Clear of the cell's edges by far more than the sweep's touch margin
+                // (envmap::TOUCH_TOLERANCE) and the rounding of `* inv`; closer points
+                // go through the sweep, which treats cells as closed.
+                let inside =
+                    |t: f64, k: i32| t - f64::from(k) > 1e-6 && f64::from(k) + 1.0 - t > 1e-6;
+                if inside(u, i) && inside(v, j) {
                     checker.checks += 1;
                     return map.cell_free(i as usize, j as usize);
                 }

@@ -22,7 +22,7 @@ pub const EXIT_ERROR: u8 = 2;
     version,
     about = "2-D path planning for mobile robots"
 )]
-struct Cli {
+pub(crate) struct Cli {
     #[command(subcommand)]
     command: Command,
 }

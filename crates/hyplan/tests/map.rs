@@ -267,3 +267,51 @@ fn yaml_out_round_trips_through_the_library() {
     );
     assert_eq!(v["origin"], serde_json::json!([1.0, -2.0]));
 }
+
+/// A map above the memory limit is refused with exit 2, its size, the limit and the flag
+/// that raises it, whatever its format; `hyplan plan` says the same.
+#[test]
+fn maps_above_the_memory_limit_name_size_limit_and_flag() {
+    let n = 30_000;
+    let pgm = tmp_file("huge.pgm", format!("P5\n{n} {n}\n255\n").as_bytes());
+    let map = tmp_file(
+        "huge.map",
+        format!("type octile\nheight {n}\nwidth {n}\nmap\n").as_bytes(),
+    );
+    tmp_file("huge_img.pgm", format!("P5\n{n} {n}\n255\n").as_bytes());
+    let yaml = tmp_file(
+        "huge.yaml",
+        b"image: huge_img.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n\
+          occupied_thresh: 0.65\nfree_thresh: 0.196\n",
+    );
+    for file in [&pgm, &map, &yaml] {
+        for args in [
+            vec!["map", file.as_str()],
+            vec![
+                "plan",
+                "--map",
+                file.as_str(),
+                "--start",
+                "1,1",
+                "--goal",
+                "5,5",
+            ],
+        ] {
+            let o = hyplan(&args);
+            let e = stderr(&o);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {e}");
+            assert!(e.contains("30000 x 30000"), "{e}");
+            assert!(e.contains("limit of 100000000 cells"), "{e}");
+            assert!(e.contains("--max-cells 900000000"), "{e}");
+            assert_eq!(e.trim().lines().count(), 1, "{e}");
+        }
+    }
+    // The flag lowers the limit too.
+    let o = hyplan(&["map", &picture(), "--max-cells", "100"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("50 x 40 = 2000 cells"),
+        "{}",
+        stderr(&o)
+    );
+}

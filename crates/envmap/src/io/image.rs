@@ -15,16 +15,22 @@ use crate::{CellRect, GridMap, MapError, Mask, Picture};
 /// decoder knows), [`MapError::EmptyImage`] (zero width or height),
 /// [`MapError::NoImageSupport`] without the `image` feature.
 pub fn read_picture(path: &Path) -> Result<Picture, MapError> {
+    read_picture_limited(path, crate::io::DEFAULT_MAX_CELLS)
+}
+
+/// [`read_picture`] with a memory limit of `max_cells` pixels.
+pub(crate) fn read_picture_limited(path: &Path, max_cells: usize) -> Result<Picture, MapError> {
     #[cfg(feature = "image")]
     {
         let bytes = std::fs::read(path).map_err(|source| MapError::Read {
             path: path.to_path_buf(),
             source,
         })?;
-        decode_picture(&bytes, path)
+        decode_picture_limited(&bytes, path, max_cells)
     }
     #[cfg(not(feature = "image"))]
     {
+        let _ = max_cells;
         Err(MapError::NoImageSupport {
             path: path.to_path_buf(),
         })
@@ -36,18 +42,43 @@ pub fn read_picture(path: &Path) -> Result<Picture, MapError> {
 ///
 /// # Errors
 ///
-/// As [`read_picture`], minus the io error.
+/// As [`read_picture`], minus the io error, plus [`MapError::TooLarge`] for a picture of
+/// more than [`DEFAULT_MAX_CELLS`](crate::DEFAULT_MAX_CELLS) pixels.
 pub fn decode_picture(bytes: &[u8], path: &Path) -> Result<Picture, MapError> {
+    decode_picture_limited(bytes, path, crate::io::DEFAULT_MAX_CELLS)
+}
+
+/// [`decode_picture`] with a memory limit of `max_cells` pixels, checked on the header
+/// before any pixel is decoded.
+pub(crate) fn decode_picture_limited(
+    bytes: &[u8],
+    path: &Path,
+    max_cells: usize,
+) -> Result<Picture, MapError> {
     #[cfg(feature = "image")]
     {
         let decode = |source| MapError::Decode {
             path: path.to_path_buf(),
             source,
         };
-        let reader = image::ImageReader::new(std::io::Cursor::new(bytes))
-            .with_guessed_format()
-            .map_err(|e| decode(image::ImageError::IoError(e)))?;
-        // The reader's default limits (512 MiB) refuse absurd headers before allocating.
+        let reader = || {
+            image::ImageReader::new(std::io::Cursor::new(bytes))
+                .with_guessed_format()
+                .map_err(|e| decode(image::ImageError::IoError(e)))
+        };
+        let (w, h) = reader()?.into_dimensions().map_err(decode)?;
+        crate::io::check_cells(path, w as usize, h as usize, max_cells)?;
+        // Within our limit, the decoder may take what the picture needs: up to 8 bytes a
+        // pixel (16-bit RGBA) and its own buffers; the image crate's 512 MiB default
+        // would refuse large maps we accept, with a message naming neither size.
+        let mut limits = image::Limits::default();
+        limits.max_alloc = Some(
+            (u64::from(w) * u64::from(h))
+                .saturating_mul(16)
+                .max(1 << 29),
+        );
+        let mut reader = reader()?;
+        reader.limits(limits);
         let img = reader.decode().map_err(decode)?;
         let (w, h) = (img.width() as usize, img.height() as usize);
         if w == 0 || h == 0 {
@@ -66,7 +97,7 @@ pub fn decode_picture(bytes: &[u8], path: &Path) -> Result<Picture, MapError> {
     }
     #[cfg(not(feature = "image"))]
     {
-        let _ = bytes;
+        let _ = (bytes, max_cells);
         Err(MapError::NoImageSupport {
             path: path.to_path_buf(),
         })

@@ -29,6 +29,36 @@ pub struct LoadOptions {
     pub safety_radius: Option<f64>,
     /// ROS maps: unknown cells become `Free` instead of `Forbidden` (the default).
     pub unknown_free: bool,
+    /// The memory limit, in cells: a file declaring more cells (width x height) is
+    /// refused with [`MapError::TooLarge`] before its pixels or rows are decoded. Default
+    /// [`DEFAULT_MAX_CELLS`].
+    pub max_cells: usize,
+}
+
+/// The default memory limit of [`LoadOptions::max_cells`]: 10^8 cells (10,000 x 10,000).
+///
+/// Loading and planning keep several arrays per cell (the decoded picture, the obstacle
+/// mask, component labels, the distance transform, the zones, and a grid search's words),
+/// a few tens of bytes per cell in all: 10^8 cells is a few GB, the most a workstation can
+/// be expected to hold.
+pub const DEFAULT_MAX_CELLS: usize = 100_000_000;
+
+/// `Err(TooLarge)` when `width x height` exceeds `limit`.
+pub(crate) fn check_cells(
+    path: &Path,
+    width: usize,
+    height: usize,
+    limit: usize,
+) -> Result<(), MapError> {
+    if width.checked_mul(height).is_none_or(|n| n > limit) {
+        return Err(MapError::TooLarge {
+            path: path.to_path_buf(),
+            width,
+            height,
+            limit,
+        });
+    }
+    Ok(())
 }
 
 impl Default for LoadOptions {
@@ -39,6 +69,7 @@ impl Default for LoadOptions {
             rectangles: false,
             safety_radius: None,
             unknown_free: false,
+            max_cells: DEFAULT_MAX_CELLS,
         }
     }
 }
@@ -94,11 +125,14 @@ pub struct LoadedMap {
 ///
 /// Frames: pictures and `.map` files give a map with resolution 1 and origin (0, 0), and
 /// [`InputFrame::Cells`] (y down); ROS maps keep their resolution and origin and use
-/// [`InputFrame::World`] (metres, y up).
+/// [`InputFrame::World`] (metres, y up), or [`InputFrame::MapFrame`] when the YAML's
+/// `origin` has a non-zero yaw (the grid is then axis-aligned in its own frame, and
+/// map-frame coordinates are rotated into it).
 ///
 /// # Errors
 ///
-/// Any [`MapError`] of the readers, and [`MapError::InvalidParameter`] for a negative or
+/// Any [`MapError`] of the readers, [`MapError::TooLarge`] for a file with more than
+/// [`LoadOptions::max_cells`] cells, and [`MapError::InvalidParameter`] for a negative or
 /// non-finite safety radius.
 ///
 /// ```no_run
@@ -124,22 +158,24 @@ pub fn load_map(path: &Path, opts: &LoadOptions) -> Result<LoadedMap, MapError> 
         rectangles: opts.rectangles,
         safety_radius: opts.safety_radius.unwrap_or(0.0),
     };
+    let mut yaw = 0.0;
     let (out, frame_res, origin, frame_kind_world) = match kind {
         MapKind::Picture => {
-            let picture = self::image::read_picture(path)?;
+            let picture = self::image::read_picture_limited(path, opts.max_cells)?;
             pipeline.safety_radius = opts
                 .safety_radius
                 .unwrap_or(Pipeline::default().safety_radius);
             (pipeline.run(&picture)?, 1.0, None, false)
         }
         MapKind::MovingAi => {
-            let map = movingai::read_movingai(path)?;
+            let map = movingai::read_movingai_limited(path, opts.max_cells)?;
             let mask = Mask::from_zones_at_least(&map, Zone::Forbidden);
             (pipeline.run_mask(mask, &[])?, 1.0, None, false)
         }
         MapKind::Ros => {
             let meta = ros::read_ros_yaml(path)?;
-            let picture = self::image::read_picture(&meta.image)?;
+            yaw = meta.yaw;
+            let picture = self::image::read_picture_limited(&meta.image, opts.max_cells)?;
             let unknown = if opts.unknown_free {
                 Zone::Free
             } else {
@@ -165,7 +201,12 @@ pub fn load_map(path: &Path, opts: &LoadOptions) -> Result<LoadedMap, MapError> 
             path: path.to_path_buf(),
             source,
         })?;
-    let frame = if frame_kind_world {
+    let frame = if frame_kind_world && yaw != 0.0 {
+        InputFrame::MapFrame {
+            origin: map.origin(),
+            yaw,
+        }
+    } else if frame_kind_world {
         InputFrame::World
     } else {
         InputFrame::Cells {

@@ -17,13 +17,21 @@ use crate::{GridMap, MapError};
 /// # Errors
 ///
 /// [`MapError::Read`] if the file cannot be read, [`MapError::Line`] (with the file line)
-/// for a missing or malformed header, no `map` line, or rows not matching the header.
+/// for a missing or malformed header, no `map` line, or rows not matching the header,
+/// [`MapError::TooLarge`] when the header gives more than
+/// [`DEFAULT_MAX_CELLS`](crate::DEFAULT_MAX_CELLS) cells ([`load_map`](crate::load_map)
+/// takes the limit from its options).
 pub fn read_movingai(path: &Path) -> Result<GridMap, MapError> {
+    read_movingai_limited(path, crate::io::DEFAULT_MAX_CELLS)
+}
+
+/// [`read_movingai`] with a memory limit of `max_cells` cells.
+pub(crate) fn read_movingai_limited(path: &Path, max_cells: usize) -> Result<GridMap, MapError> {
     let bytes = std::fs::read(path).map_err(|source| MapError::Read {
         path: path.to_path_buf(),
         source,
     })?;
-    parse_movingai(&bytes, path)
+    parse_movingai_limited(&bytes, path, max_cells)
 }
 
 /// Parses the bytes of a MovingAI `.map` file; `path` only names the file in errors.
@@ -44,6 +52,15 @@ pub fn read_movingai(path: &Path) -> Result<GridMap, MapError> {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn parse_movingai(bytes: &[u8], path: &Path) -> Result<GridMap, MapError> {
+    parse_movingai_limited(bytes, path, crate::io::DEFAULT_MAX_CELLS)
+}
+
+/// [`parse_movingai`] with a memory limit of `max_cells` cells, checked on the header.
+fn parse_movingai_limited(
+    bytes: &[u8],
+    path: &Path,
+    max_cells: usize,
+) -> Result<GridMap, MapError> {
     let err = |line: usize, reason: String| MapError::Line {
         path: path.to_path_buf(),
         line,
@@ -88,6 +105,7 @@ pub fn parse_movingai(bytes: &[u8], path: &Path) -> Result<GridMap, MapError> {
     }
     let width = width.ok_or_else(|| err(last_line, "no `width` line before `map`".into()))?;
     let height = height.ok_or_else(|| err(last_line, "no `height` line before `map`".into()))?;
+    crate::io::check_cells(path, width, height, max_cells)?;
     // Collect the rows before allocating, so a huge header cannot allocate more than the file.
     let mut rows = Vec::new();
     for (n, line) in lines {

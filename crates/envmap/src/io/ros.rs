@@ -30,8 +30,12 @@ pub struct RosMapMeta {
     pub image: PathBuf,
     /// Metres per cell.
     pub resolution: f64,
-    /// World position of the lower-left corner of the lower-left cell, metres.
+    /// Map-frame position of the lower-left corner of the lower-left cell, metres.
     pub origin: Point2,
+    /// Rotation of the grid about `origin`, radians counter-clockwise (the third entry of
+    /// `origin` in the YAML). The grid stays axis-aligned in its own frame; see
+    /// [`InputFrame::MapFrame`](crate::InputFrame::MapFrame) for the conversion.
+    pub yaw: f64,
     /// Swap black and white.
     pub negate: bool,
     /// Occupancy probability above which a cell is occupied, in `[0, 1]`.
@@ -47,7 +51,8 @@ pub struct RosMapMeta {
 /// Required keys, as Nav2's `map_io`: `image`, `resolution` (> 0), `origin`
 /// (`[x, y, yaw]`), `occupied_thresh` and `free_thresh` (in `[0, 1]`, free <= occupied).
 /// Optional: `negate` (0/1 or boolean, default 0), `mode` (`trinary` default, `scale`,
-/// `raw`). A non-zero yaw is **rejected**: hyplan's grids are axis-aligned.
+/// `raw`). A non-zero yaw is kept in [`RosMapMeta::yaw`], as Nav2's map server keeps it
+/// in the map's origin pose.
 ///
 /// # Errors
 ///
@@ -117,20 +122,13 @@ pub fn parse_ros_yaml(bytes: &[u8], path: &Path) -> Result<RosMapMeta, MapError>
             "must be > 0",
         ));
     }
-    let origin = match required("origin")? {
+    let (origin, yaw) = match required("origin")? {
         Value::Sequence(s) if s.len() == 3 => {
             let xs = s
                 .iter()
                 .map(|v| number("origin", v))
                 .collect::<Result<Vec<_>, _>>()?;
-            if xs[2] != 0.0 {
-                return Err(field(
-                    "origin",
-                    show(required("origin")?),
-                    "a non-zero yaw is not supported (hyplan grids are axis-aligned)",
-                ));
-            }
-            Point2::new(xs[0], xs[1])
+            (Point2::new(xs[0], xs[1]), xs[2])
         }
         v => return Err(field("origin", show(v), "expected [x, y, yaw]")),
     };
@@ -180,6 +178,7 @@ pub fn parse_ros_yaml(bytes: &[u8], path: &Path) -> Result<RosMapMeta, MapError>
         image,
         resolution,
         origin,
+        yaw,
         negate,
         occupied_thresh,
         free_thresh,
@@ -187,9 +186,10 @@ pub fn parse_ros_yaml(bytes: &[u8], path: &Path) -> Result<RosMapMeta, MapError>
     })
 }
 
-/// A YAML value as written, shortened, for error messages.
+/// A YAML value on one line, shortened, for error messages: scalars as written, lists
+/// as `[a, b, c]`, mappings as `{k: v}`.
 fn show(v: &Value) -> String {
-    let s = serde_yaml_ng::to_string(v).unwrap_or_else(|_| format!("{v:?}"));
+    let s = one_line(v);
     let s = s.trim();
     if s.chars().count() > 60 {
         format!("{}...", s.chars().take(60).collect::<String>())
@@ -345,4 +345,25 @@ pub fn write_ros(map: &GridMap, yaml_path: &Path) -> Result<(), MapError> {
         path: yaml_path.to_path_buf(),
         source,
     })
+}
+
+/// `v` in YAML's flow style, on one line.
+fn one_line(v: &Value) -> String {
+    match v {
+        Value::Sequence(items) => {
+            let items: Vec<String> = items.iter().map(one_line).collect();
+            format!("[{}]", items.join(", "))
+        }
+        Value::Mapping(m) => {
+            let items: Vec<String> = m
+                .iter()
+                .map(|(k, v)| format!("{}: {}", one_line(k), one_line(v)))
+                .collect();
+            format!("{{{}}}", items.join(", "))
+        }
+        Value::Tagged(t) => format!("{} {}", t.tag, one_line(&t.value)),
+        scalar => serde_yaml_ng::to_string(scalar)
+            .map(|s| s.trim().replace('\n', " "))
+            .unwrap_or_else(|_| format!("{scalar:?}")),
+    }
 }

@@ -37,6 +37,9 @@ pub struct Args {
     /// Print one JSON object instead of a summary.
     #[arg(long)]
     pub json: bool,
+    /// Memory limit: maps with more cells (width x height) are refused before loading.
+    #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
+    pub max_cells: usize,
 }
 
 /// Runs `hyplan map`.
@@ -47,8 +50,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         rectangles: args.rectangles,
         safety_radius: args.safety_radius,
         unknown_free: args.unknown_free,
+        max_cells: args.max_cells,
     };
-    let loaded = envmap::load_map(&args.input, &opts)?;
+    let loaded = super::load_map(&args.input, &opts)?;
     let rects: Vec<CellRect> = loaded.components.iter().map(|c| c.rect).collect();
     if let Some(out) = &args.out {
         let shown: &[CellRect] = if args.rectangles { &rects } else { &[] };
@@ -106,6 +110,7 @@ fn summary_json(args: &Args, loaded: &LoadedMap, rects: &[CellRect]) -> serde_js
     let frame = match loaded.frame {
         InputFrame::Cells { .. } => "cells_y_down",
         InputFrame::World => "world_y_up",
+        InputFrame::MapFrame { .. } => "map_frame_rotated",
     };
     serde_json::json!({
         "input": args.input.display().to_string(),

@@ -9,6 +9,21 @@ macro_rules! outln {
     }};
 }
 
+/// `envmap::load_map`, with the flag that raises the memory limit named when a map is
+/// refused for its size.
+pub fn load_map(
+    path: &std::path::Path,
+    opts: &envmap::LoadOptions,
+) -> anyhow::Result<envmap::LoadedMap> {
+    envmap::load_map(path, opts).map_err(|e| match e {
+        envmap::MapError::TooLarge { width, height, .. } => anyhow::anyhow!(
+            "{e}; raise the limit with --max-cells {}",
+            width.saturating_mul(height)
+        ),
+        e => e.into(),
+    })
+}
+
 pub mod map;
 pub mod plan;
 pub mod scen;

@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
-use envmap::{GridMap, InputFrame, LoadOptions, load_map};
+use envmap::{GridMap, InputFrame, LoadOptions};
 use hyplan_core::{Budget, Goal, NoPathCause, Plan, PlanError, Point2, Query, Zone};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
@@ -92,6 +92,9 @@ pub struct Args {
     /// Robot acceleration limit, input units per second squared.
     #[arg(long, allow_hyphen_values = true, requires_all = ["vmax", "wmax"])]
     pub amax: Option<f64>,
+    /// Memory limit: maps with more cells (width x height) are refused before loading.
+    #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
+    pub max_cells: usize,
 }
 
 /// What one run produced; one CSV row, one JSON line, one human line.
@@ -206,7 +209,7 @@ fn parse_xy(s: &str) -> Result<(f64, f64), String> {
 fn input_scale(frame: &InputFrame) -> f64 {
     match *frame {
         InputFrame::Cells { resolution, .. } => resolution,
-        InputFrame::World => 1.0,
+        InputFrame::World | InputFrame::MapFrame { .. } => 1.0,
     }
 }
 
@@ -220,10 +223,11 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let opts = LoadOptions {
         threshold: args.threshold,
         safety_radius: args.safety_radius,
+        max_cells: args.max_cells,
         ..LoadOptions::default()
     };
-    let loaded =
-        load_map(&args.map, &opts).with_context(|| format!("loading {}", args.map.display()))?;
+    let loaded = super::load_map(&args.map, &opts)
+        .with_context(|| format!("loading {}", args.map.display()))?;
     let frame = loaded.frame;
     let map = if args.avoid_risk {
         loaded.map.avoiding_risk()

@@ -1,0 +1,65 @@
+//! Budgets honoured: a tiny time limit on a large map stops every budgeted planner within
+//! 10 ms of the limit.
+
+use std::collections::BTreeMap;
+use std::time::{Duration, Instant};
+
+use envmap::generate;
+use harness::{PlannerSpec, build_planner};
+use hyplan_core::{Goal, Query};
+use rand_chacha::ChaCha8Rng;
+use rand_chacha::rand_core::SeedableRng;
+
+/// The planners with a [`hyplan_core::Budget`]; the grid searches have none (they end
+/// when the grid is exhausted, see docs/reliability.md).
+const BUDGETED: &[&str] = &[
+    "rrt",
+    "rrt-star",
+    "bi-rrt",
+    "rrt-connect",
+    "rrt-astar-bt",
+    "rrt-astar-refine",
+    "hybrid-rrt-astar",
+    "safe-rrt-star",
+];
+
+#[test]
+fn a_tiny_time_limit_stops_every_planner_within_10_ms() {
+    // 2000 x 2000 cells of rooms and doors: no planner finishes in 20 ms.
+    let g = generate::floor_plan(2000, 2000, 3, 4, &mut ChaCha8Rng::seed_from_u64(16));
+    let query = Query::new(g.start, Goal::Point(g.goal));
+    let limit = Duration::from_millis(20);
+    let mut report = Vec::new();
+    for &name in BUDGETED {
+        let spec = PlannerSpec {
+            name: name.to_string(),
+            label: None,
+            params: BTreeMap::from([
+                ("step".to_string(), 10.0),
+                ("max_iterations".to_string(), 1e12),
+                ("time_limit_s".to_string(), limit.as_secs_f64()),
+            ]),
+            smoothing: None,
+        };
+        let planner = build_planner(&spec).unwrap();
+        // The least overshoot of three calls: a machine busy with other work can delay
+        // one call's return; a planner that ignores its budget overshoots every time.
+        let overshoot = (0..3)
+            .map(|k| {
+                let mut rng = ChaCha8Rng::seed_from_u64(k);
+                let t = Instant::now();
+                let _ = planner.plan(&g.map, &query, &mut rng);
+                t.elapsed().saturating_sub(limit)
+            })
+            .min()
+            .unwrap();
+        report.push(format!(
+            "{name}: {:.1} ms over",
+            overshoot.as_secs_f64() * 1e3
+        ));
+        if overshoot > Duration::from_millis(10) {
+            panic!("{name} overshot its 20 ms limit by {overshoot:?}: {report:?}");
+        }
+    }
+    eprintln!("{report:?}");
+}
