@@ -139,9 +139,9 @@ fn claim_line(s: &mut String, c: &ClaimResult, place: &str) {
         .collect();
     let _ = writeln!(
         s,
-        "  - {}, claimed increasing; means {}",
+        "  - {}: means {} (claimed increasing in this order)",
         metric_name(&c.metric),
-        means.join(" < ")
+        means.join(", ")
     );
     for st in &c.steps {
         let d = &st.decision;
