@@ -302,7 +302,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     std::fs::write(&json_path, serde_json::to_string_pretty(&json)?)
         .with_context(|| format!("writing {}", json_path.display()))?;
     if args.update_docs {
-        for page in crate::report::update_docs(&root.join("docs/papers"), &results, &series, args.quick)? {
+        for page in
+            crate::report::update_docs(&root.join("docs/papers"), &results, &series, args.quick)?
+        {
             println!("updated {}", page.display());
         }
     }
@@ -350,7 +352,10 @@ pub(crate) struct SeriesClaim {
 /// Whether the scenario `name` belongs to the entry `entry` of a claim's `across`: the
 /// same name, or the name followed by `-` and a layout suffix.
 fn in_group(name: &str, entry: &str) -> bool {
-    name == entry || name.strip_prefix(entry).is_some_and(|rest| rest.starts_with('-'))
+    name == entry
+        || name
+            .strip_prefix(entry)
+            .is_some_and(|rest| rest.starts_with('-'))
 }
 
 /// Evaluates the claims that span several experiments (`across`), pooling the runs of

@@ -214,7 +214,7 @@ fn random_furniture(
     let mut out: Vec<Furniture> = Vec::new();
     for k in 0..n {
         let placed = (0..2000).find_map(|_| {
-            let rgb = palette[k % palette.len()];            // Whole pixels and degrees: the scenario files stay readable.
+            let rgb = palette[k % palette.len()]; // Whole pixels and degrees: the scenario files stay readable.
             let mut draw = |lo: f64, hi: f64| rng.random_range(lo..hi).round();
             let (cx, cy) = (draw(0.0, w as f64), draw(0.0, h as f64));
             let piece = if draw(0.0, 1.0) == 0.0 && draw(0.0, 1.0) == 0.0 {

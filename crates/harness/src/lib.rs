@@ -45,6 +45,7 @@ pub use planners::{PLANNER_NAMES, build_planner};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
-    Claim, ClaimKind, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape, Source, World,
+    Claim, ClaimKind, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape,
+    Source, World,
 };
 pub use stats::{Stat, Summary};

@@ -409,7 +409,11 @@ mod tests {
         let t = mann_whitney_u(&males, &females, Alternative::TwoSided).unwrap();
         assert_eq!(t.method, PMethod::Asymptotic);
         assert_eq!(t.u, 21.0);
-        assert!((t.p_value - 0.069_106_524_768_272_56).abs() < 1e-12, "{}", t.p_value);
+        assert!(
+            (t.p_value - 0.069_106_524_768_272_56).abs() < 1e-12,
+            "{}",
+            t.p_value
+        );
         let g = mann_whitney_u(&males, &females, Alternative::Greater).unwrap();
         assert!((g.p_value - 0.069_106_524_768_272_56 / 2.0).abs() < 1e-12);
     }

@@ -415,10 +415,22 @@ mod tests {
         let (map, q) = wall();
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
         for bad in [
-            GaPchip { population: 1, ..GaPchip::default() },
-            GaPchip { elites: 30, ..GaPchip::default() },
-            GaPchip { via_points: 0, ..GaPchip::default() },
-            GaPchip { mutation_rate: 1.5, ..GaPchip::default() },
+            GaPchip {
+                population: 1,
+                ..GaPchip::default()
+            },
+            GaPchip {
+                elites: 30,
+                ..GaPchip::default()
+            },
+            GaPchip {
+                via_points: 0,
+                ..GaPchip::default()
+            },
+            GaPchip {
+                mutation_rate: 1.5,
+                ..GaPchip::default()
+            },
         ] {
             assert!(matches!(
                 bad.plan(&map, &q, &mut rng),
@@ -434,7 +446,10 @@ mod tests {
         )
         .unwrap();
         let q = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(8.5, 1.5)));
-        let ga = GaPchip { budget: Budget::iterations(20), ..GaPchip::default() };
+        let ga = GaPchip {
+            budget: Budget::iterations(20),
+            ..GaPchip::default()
+        };
         assert!(matches!(
             ga.plan(&closed, &q, &mut rng),
             Err(PlanError::BudgetExhausted { .. })
