@@ -1,12 +1,12 @@
 //! `cargo xtask reproduce`: every scenario of `scenarios/`, run with the papers' run
 //! counts, reported beside the papers' numbers.
 
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::Context as _;
-use harness::{PlannerSpec, RunMetrics, Scenario, Summary, World, run_planner};
+use harness::stats::{Decision, Verdict, decide_less};
+use harness::{ClaimKind, PlannerSpec, RunMetrics, Scenario, Summary, World, run_planner};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use serde::Serialize;
 
@@ -25,11 +25,20 @@ pub struct Args {
     /// Output folder (default `target/reproduce`).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Also write each `docs/papers/` page's generated results section (between its
+    /// `<!-- reproduce:begin -->` and `<!-- reproduce:end -->` markers) from this run.
+    #[arg(long)]
+    pub update_docs: bool,
 }
 
+/// The level at which every ordering claim is decided (two one-sided Mann-Whitney U
+/// tests, see [`harness::stats::decide_less`]).
+pub const ALPHA: f64 = 0.01;
+
 /// The metrics shown in the tables, with their headings.
-const COLUMNS: &[(&str, &str)] = &[
-    ("time_s", "time (ms)"),
+pub(crate) const COLUMNS: &[(&str, &str)] = &[
+    ("cpu_time_s", "CPU (ms)"),
+    ("time_s", "wall (ms)"),
     ("length", "length"),
     ("nodes", "nodes"),
     ("segments", "segments"),
@@ -40,30 +49,100 @@ const COLUMNS: &[(&str, &str)] = &[
 ];
 
 #[derive(Serialize)]
-struct PlannerResult {
-    label: String,
-    name: String,
-    summary: Summary,
-    runs: Vec<RunMetrics>,
+pub(crate) struct PlannerResult {
+    pub label: String,
+    pub name: String,
+    pub summary: Summary,
+    pub runs: Vec<RunMetrics>,
+}
+
+/// One step of a claimed order: `smaller` < `larger`, decided on the runs.
+#[derive(Serialize)]
+pub(crate) struct Step {
+    pub smaller: String,
+    pub larger: String,
+    pub means: (f64, f64),
+    pub decision: Decision,
 }
 
 #[derive(Serialize)]
-struct ClaimResult {
+pub(crate) struct ClaimResult {
+    pub text: String,
+    pub metric: String,
+    pub kind: ClaimKind,
+    pub means: Vec<(String, f64)>,
+    pub steps: Vec<Step>,
+    pub verdict: Verdict,
+}
+
+#[derive(Serialize)]
+pub(crate) struct ExperimentResult {
+    pub name: String,
+    pub seed_file: String,
+    pub experiment: String,
+    pub file: String,
+    pub runs: u32,
+    pub planners: Vec<PlannerResult>,
+    pub claims: Vec<ClaimResult>,
+    /// The shortest path to the goal region on the planning map (Theta*), and the
+    /// straight start-goal distance, scenario units.
+    pub shortest: Option<(f64, f64)>,
+}
+
+/// The values of `metric` over runs: every run for times and explored nodes, the
+/// successful ones for path measures (as [`Summary`] counts them).
+fn values(runs: &[RunMetrics], metric: &str) -> Vec<f64> {
+    let all = matches!(metric, "time_s" | "cpu_time_s" | "explored");
+    runs.iter()
+        .filter(|r| all || r.success)
+        .filter_map(|r| r.get(metric))
+        .filter(|v| v.is_finite())
+        .collect()
+}
+
+fn mean(v: &[f64]) -> f64 {
+    if v.is_empty() {
+        f64::NAN
+    } else {
+        v.iter().sum::<f64>() / v.len() as f64
+    }
+}
+
+/// Decides a claimed increasing order over labelled samples, step by step.
+fn decide_order(
     text: String,
-    metric: String,
-    means: Vec<(String, f64)>,
-    held: bool,
-}
-
-#[derive(Serialize)]
-struct ExperimentResult {
-    name: String,
-    seed_file: String,
-    experiment: String,
-    file: String,
-    runs: u32,
-    planners: Vec<PlannerResult>,
-    claims: Vec<ClaimResult>,
+    metric: &str,
+    kind: ClaimKind,
+    samples: Vec<(String, Vec<f64>)>,
+) -> ClaimResult {
+    let means = samples.iter().map(|(l, v)| (l.clone(), mean(v))).collect();
+    let steps: Vec<Step> = samples
+        .windows(2)
+        .map(|w| Step {
+            smaller: w[0].0.clone(),
+            larger: w[1].0.clone(),
+            means: (mean(&w[0].1), mean(&w[1].1)),
+            decision: decide_less(&w[0].1, &w[1].1, ALPHA),
+        })
+        .collect();
+    let verdicts: Vec<Verdict> = steps.iter().map(|s| s.decision.verdict).collect();
+    let verdict = if verdicts.contains(&Verdict::NoData) {
+        Verdict::NoData
+    } else if verdicts.contains(&Verdict::NotHeld) {
+        Verdict::NotHeld
+    } else if verdicts.iter().all(|v| *v == Verdict::Held) {
+        Verdict::Held
+    } else {
+        Verdict::NotSignificant
+    };
+    ClaimResult {
+        text,
+        metric: metric.to_string(),
+        kind,
+        means,
+        steps,
+        verdict,
+    }
 }
 
 fn workspace_root() -> PathBuf {
@@ -81,11 +160,13 @@ fn load_all(dir: &Path) -> anyhow::Result<Vec<(PathBuf, Scenario, World)>> {
         .filter(|p| p.extension().is_some_and(|e| e == "ron"))
         .collect();
     files.sort();
-    let mut out = Vec::new();
-    for f in files {
-        let (s, w) = Scenario::load(&f)?;
-        out.push((f, s, w));
-    }
+    // Building a room's map (drawing, binarizing, the band) takes a fraction of a second
+    // for the largest pictures: build them on every core.
+    use rayon::prelude::*;
+    let out = files
+        .into_par_iter()
+        .map(|f| Scenario::load(&f).map(|(s, w)| (f, s, w)))
+        .collect::<Result<Vec<_>, _>>()?;
     anyhow::ensure!(
         !out.is_empty(),
         "no scenario files (*.ron) in {}",
@@ -166,27 +247,28 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .iter()
             .filter(|c| c.across.is_empty())
             .map(|c| {
-                let means: Vec<(String, f64)> = c
+                let samples = c
                     .order
                     .iter()
                     .map(|label| {
-                        let mean = planners
+                        let v = planners
                             .iter()
                             .find(|p| &p.label == label)
-                            .and_then(|p| p.summary.get(&c.metric))
-                            .map_or(f64::NAN, |s| s.mean);
-                        (label.clone(), mean)
+                            .map_or_else(Vec::new, |p| values(&p.runs, &c.metric));
+                        (label.clone(), v)
                     })
                     .collect();
-                let held = means.windows(2).all(|w| w[0].1 < w[1].1);
-                ClaimResult {
-                    text: c.text.clone(),
-                    metric: c.metric.clone(),
-                    means,
-                    held,
-                }
+                decide_order(c.text.clone(), &c.metric, c.kind.clone(), samples)
             })
             .collect();
+        // The yardstick for the papers' lengths, where they publish one (Theta* on a large
+        // room takes seconds, so not for the time-only tables).
+        let shortest = scenario
+            .published
+            .iter()
+            .any(|p| p.metric == "length")
+            .then(|| shortest_path(world))
+            .flatten();
         results.push((
             scenario,
             ExperimentResult {
@@ -201,35 +283,41 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 runs,
                 planners,
                 claims,
+                shortest,
             },
         ));
     }
     let series = series_claims(&results);
-    let report = report(
-        &results,
-        &series,
-        args.quick,
-        started.elapsed().as_secs_f64(),
-    );
+    let seconds = started.elapsed().as_secs_f64();
+    let report = crate::report::report(&results, &series, args.quick, seconds);
     let report_path = out.join("report.md");
-    std::fs::write(&report_path, report)
+    std::fs::write(&report_path, &report)
         .with_context(|| format!("writing {}", report_path.display()))?;
     let json = serde_json::json!({
+        "alpha": ALPHA,
         "experiments": results.iter().map(|(_, r)| r).collect::<Vec<_>>(),
         "series_claims": series,
     });
     let json_path = out.join("results.json");
     std::fs::write(&json_path, serde_json::to_string_pretty(&json)?)
         .with_context(|| format!("writing {}", json_path.display()))?;
-    let (held, total) = results
-        .iter()
-        .flat_map(|(_, r)| &r.claims)
-        .chain(series.iter().map(|s| &s.claim))
-        .fold((0, 0), |(h, t), c| (h + usize::from(c.held), t + 1));
+    if args.update_docs {
+        for page in
+            crate::report::update_docs(&root.join("docs/papers"), &results, &series, args.quick)?
+        {
+            println!("updated {}", page.display());
+        }
+    }
+    let tally = crate::report::Tally::of(&results, &series);
     println!(
-        "done in {:.1} s: {} experiment(s), claims held {held}/{total}\nreport:  {}\nresults: {}\nfigures: {}",
-        started.elapsed().as_secs_f64(),
+        "done in {seconds:.1} s: {} experiment(s); measured claims: {} held, {} not held, {} not significant, {} without data (alpha {ALPHA}); {} by construction and {} not comparable, shown apart\nreport:  {}\nresults: {}\nfigures: {}",
         results.len(),
+        tally.held,
+        tally.not_held,
+        tally.not_significant,
+        tally.no_data,
+        tally.by_construction,
+        tally.not_comparable,
         report_path.display(),
         json_path.display(),
         figures.display()
@@ -237,44 +325,97 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// A claim over a series of experiments, with the experiment it is written in.
-#[derive(Serialize)]
-struct SeriesClaim {
-    seed_file: String,
-    experiment: String,
-    claim: ClaimResult,
+/// The shortest path to the goal region on the planning map by Theta* (any-angle, on the
+/// grid's cells), and the straight start-goal distance: the yardstick for lengths.
+fn shortest_path(world: &World) -> Option<(f64, f64)> {
+    let spec = PlannerSpec {
+        name: "theta-star".into(),
+        label: None,
+        params: Default::default(),
+        smoothing: None,
+    };
+    let planner = harness::build_planner(&spec).ok()?;
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(0);
+    let plan = planner.plan(&world.map, &world.query, &mut rng).ok()?;
+    let straight = (world.query.goal.center() - world.query.start).norm();
+    Some((plan.length(), straight))
 }
 
-/// Evaluates the claims that span several experiments (`across`); those whose experiments
-/// did not all run (`--only`) are left out.
+/// A claim over a series of experiments, with the experiment it is written in.
+#[derive(Serialize)]
+pub(crate) struct SeriesClaim {
+    pub seed_file: String,
+    pub experiment: String,
+    pub claim: ClaimResult,
+}
+
+/// Whether the scenario `name` belongs to the entry `entry` of a claim's `across`: the
+/// same name, or the name followed by `-` and a layout suffix.
+fn in_group(name: &str, entry: &str) -> bool {
+    name == entry
+        || name
+            .strip_prefix(entry)
+            .is_some_and(|rest| rest.starts_with('-'))
+}
+
+/// Evaluates the claims that span several experiments (`across`), pooling the runs of
+/// every layout of a group; those whose experiments did not all run (`--only`) are left
+/// out.
 fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesClaim> {
     let mut out = Vec::new();
     for (scenario, r) in results {
         for c in scenario.claims.iter().filter(|c| !c.across.is_empty()) {
+            if c.order.len() > 1 {
+                // Planners compared on one group of scenarios, runs pooled.
+                let group = &c.across[0];
+                if !results.iter().any(|(_, o)| in_group(&o.name, group)) {
+                    continue;
+                }
+                let samples = c
+                    .order
+                    .iter()
+                    .map(|label| {
+                        let pooled: Vec<f64> = results
+                            .iter()
+                            .filter(|(_, o)| in_group(&o.name, group))
+                            .filter_map(|(_, o)| o.planners.iter().find(|p| &p.label == label))
+                            .flat_map(|p| values(&p.runs, &c.metric))
+                            .collect();
+                        (label.clone(), pooled)
+                    })
+                    .collect();
+                out.push(SeriesClaim {
+                    seed_file: r.seed_file.clone(),
+                    experiment: r.experiment.clone(),
+                    claim: decide_order(c.text.clone(), &c.metric, c.kind.clone(), samples),
+                });
+                continue;
+            }
             let label = &c.order[0];
-            let means: Option<Vec<(String, f64)>> = c
+            let samples: Option<Vec<(String, Vec<f64>)>> = c
                 .across
                 .iter()
-                .map(|name| {
-                    let (_, other) = results.iter().find(|(_, o)| &o.name == name)?;
-                    let p = other.planners.iter().find(|p| &p.label == label)?;
-                    Some((
-                        name.clone(),
-                        p.summary.get(&c.metric).map_or(f64::NAN, |s| s.mean),
-                    ))
+                .map(|entry| {
+                    let pooled: Vec<f64> = results
+                        .iter()
+                        .filter(|(_, o)| in_group(&o.name, entry))
+                        .filter_map(|(_, o)| o.planners.iter().find(|p| &p.label == label))
+                        .flat_map(|p| values(&p.runs, &c.metric))
+                        .collect();
+                    let any = results.iter().any(|(_, o)| in_group(&o.name, entry));
+                    any.then(|| (entry.clone(), pooled))
                 })
                 .collect();
-            let Some(means) = means else { continue };
-            let held = means.windows(2).all(|w| w[0].1 < w[1].1);
+            let Some(samples) = samples else { continue };
             out.push(SeriesClaim {
                 seed_file: r.seed_file.clone(),
                 experiment: r.experiment.clone(),
-                claim: ClaimResult {
-                    text: format!("{} ({label})", c.text),
-                    metric: c.metric.clone(),
-                    means,
-                    held,
-                },
+                claim: decide_order(
+                    format!("{} ({label})", c.text),
+                    &c.metric,
+                    c.kind.clone(),
+                    samples,
+                ),
             });
         }
     }
@@ -296,7 +437,7 @@ fn figure(
     harness::draw_world(world, trees, path, &file).map_err(|e| anyhow::anyhow!(e))
 }
 
-fn slug(s: &str) -> String {
+pub(crate) fn slug(s: &str) -> String {
     s.chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() {
@@ -306,211 +447,4 @@ fn slug(s: &str) -> String {
             }
         })
         .collect()
-}
-
-/// Writes one claim as a report bullet and files it under held or not held for the summary.
-fn claim_line(
-    s: &mut String,
-    c: &ClaimResult,
-    place: &str,
-    held: &mut Vec<String>,
-    not_held: &mut Vec<String>,
-    seed_file: &str,
-    experiment: &str,
-) {
-    let figures: Vec<String> = c
-        .means
-        .iter()
-        .map(|(l, m)| format!("{l} {}", fmt_num(*m)))
-        .collect();
-    let mark = if c.held { "held" } else { "NOT held" };
-    let _ = writeln!(
-        s,
-        "- **{mark}**{place}: {} (mean {}, claimed increasing: {})",
-        c.text,
-        c.metric,
-        figures.join(", ")
-    );
-    let line = format!("{seed_file} {experiment}: {}", c.text);
-    if c.held {
-        held.push(line)
-    } else {
-        not_held.push(line)
-    }
-}
-
-fn fmt_num(x: f64) -> String {
-    if !x.is_finite() {
-        "-".into()
-    } else if x.abs() >= 100.0 {
-        format!("{x:.1}")
-    } else if x.abs() >= 1.0 {
-        format!("{x:.2}")
-    } else {
-        format!("{x:.4}")
-    }
-}
-
-fn report(
-    results: &[(&Scenario, ExperimentResult)],
-    series: &[SeriesClaim],
-    quick: bool,
-    seconds: f64,
-) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "# hyplan: the seed papers' experiments, replayed\n");
-    let _ = writeln!(
-        s,
-        "Produced by `cargo xtask reproduce{}` in {seconds:.1} s. Every number under \"ours\" was \
-         computed by this run; the only numbers typed in are the papers' own (from the scenario \
-         files' `published` entries). Means are over successful runs; time and explored nodes \
-         over all runs. Maps the papers show only in lost figures are reconstructions: see each \
-         scenario file and `docs/papers/`.\n",
-        if quick { " --quick" } else { "" }
-    );
-    let (mut held, mut not_held) = (Vec::new(), Vec::new());
-    for (scenario, r) in results {
-        let _ = writeln!(s, "## `{}` {}: {}\n", r.seed_file, r.experiment, r.name);
-        if !scenario.description.is_empty() {
-            let _ = writeln!(s, "{}\n", scenario.description);
-        }
-        let _ = writeln!(
-            s,
-            "Scenario `{}`, units: {}, {} runs per planner, base seed {}.",
-            r.file, scenario.units, r.runs, scenario.base_seed
-        );
-        if !scenario.from_paper.is_empty() {
-            let _ = writeln!(s, "From the paper: {}.", scenario.from_paper.join(", "));
-        }
-        if !scenario.reconstructed.is_empty() {
-            let _ = writeln!(
-                s,
-                "Our reconstruction: {}.",
-                scenario.reconstructed.join(", ")
-            );
-        }
-        let _ = writeln!(
-            s,
-            "\n| planner | success | {} |",
-            COLUMNS.iter().map(|c| c.1).collect::<Vec<_>>().join(" | ")
-        );
-        let _ = writeln!(s, "|---|---:|{}", "---:|".repeat(COLUMNS.len()));
-        for p in &r.planners {
-            let cells: Vec<String> = COLUMNS
-                .iter()
-                .map(|(m, _)| {
-                    p.summary.get(m).map_or("-".into(), |st| {
-                        // Times are shown in ms: ours are far below a second.
-                        let k = if *m == "time_s" { 1e3 } else { 1.0 };
-                        if st.count == 0 {
-                            "-".into()
-                        } else {
-                            format!("{} ± {}", fmt_num(k * st.mean), fmt_num(k * st.std))
-                        }
-                    })
-                })
-                .collect();
-            let _ = writeln!(
-                s,
-                "| {} | {:.0}% | {} |",
-                p.label,
-                100.0 * p.summary.success_rate,
-                cells.join(" | ")
-            );
-        }
-        if !scenario.published.is_empty() {
-            let _ = writeln!(s, "\nThe paper's numbers beside ours (mean):\n");
-            let _ = writeln!(s, "| planner | metric | paper | ours | ours / paper |");
-            let _ = writeln!(s, "|---|---|---:|---:|---:|");
-            for p in &scenario.published {
-                let ours = r
-                    .planners
-                    .iter()
-                    .find(|q| q.label == p.planner)
-                    .and_then(|q| q.summary.get(&p.metric))
-                    .map(|st| st.mean);
-                let (ours_s, ratio) = match ours {
-                    Some(o) if o.is_finite() => {
-                        (fmt_num(o), format!("{:.3}", o / (p.value * p.unit_scale)))
-                    }
-                    Some(_) => ("-".into(), "-".into()),
-                    None => ("paper only (not run)".into(), "-".into()),
-                };
-                let mut note = if p.note.is_empty() {
-                    String::new()
-                } else {
-                    format!(" ({})", p.note)
-                };
-                if p.unit_scale != 1.0 {
-                    let _ = write!(note, " [x{} to our units]", p.unit_scale);
-                }
-                let _ = writeln!(
-                    s,
-                    "| {} | {}{} | {} | {} | {} |",
-                    p.planner,
-                    p.metric,
-                    note,
-                    fmt_num(p.value),
-                    ours_s,
-                    ratio
-                );
-            }
-        }
-        if !r.claims.is_empty() {
-            let _ = writeln!(s, "\nClaims:\n");
-            for c in &r.claims {
-                claim_line(
-                    &mut s,
-                    c,
-                    "",
-                    &mut held,
-                    &mut not_held,
-                    &r.seed_file,
-                    &r.experiment,
-                );
-            }
-        }
-        let _ = writeln!(s);
-        for p in &r.planners {
-            let _ = writeln!(
-                s,
-                "![{} {}](figures/{}_{}.png)",
-                r.name,
-                p.label,
-                r.name,
-                slug(&p.label)
-            );
-        }
-        let _ = writeln!(s, "\n![metrics](figures/{}_metrics.svg)\n", r.name);
-    }
-    if !series.is_empty() {
-        let _ = writeln!(s, "## Claims across experiments\n");
-        for sc in series {
-            let place = format!(" (`{}` {})", sc.seed_file, sc.experiment);
-            claim_line(
-                &mut s,
-                &sc.claim,
-                &place,
-                &mut held,
-                &mut not_held,
-                &sc.seed_file,
-                &sc.experiment,
-            );
-        }
-        let _ = writeln!(s);
-    }
-    let _ = writeln!(s, "## Summary\n");
-    let _ = writeln!(
-        s,
-        "Claims held: {} of {}.\n",
-        held.len(),
-        held.len() + not_held.len()
-    );
-    for l in &held {
-        let _ = writeln!(s, "- held: {l}");
-    }
-    for l in &not_held {
-        let _ = writeln!(s, "- not held: {l}");
-    }
-    s
 }

@@ -18,7 +18,9 @@
 //! - [`RunMetrics`], [`measure`]: what one run is scored on; [`post_process`]: smoothing,
 //!   node metrics and transfer time of one plan, shared with `hyplan plan`.
 //! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
-//! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate.
+//! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate;
+//!   [`stats::mann_whitney_u`] and [`stats::decide_less`]: the rank test that decides a
+//!   paper's ordering claim on our runs, with its p-value and effect size.
 //! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
 //!   box plots of the metrics.
 //!
@@ -34,7 +36,7 @@ mod planners;
 mod room;
 mod runner;
 mod scenario;
-mod stats;
+pub mod stats;
 
 #[cfg(feature = "plot")]
 pub use figure::{chart_metrics, draw_world};
@@ -43,7 +45,8 @@ pub use planners::{PLANNER_NAMES, build_planner};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
-    Claim, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape, Source, World,
+    Claim, ClaimKind, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape,
+    Source, World,
 };
 pub use stats::{Stat, Summary};
 

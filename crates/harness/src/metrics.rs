@@ -18,6 +18,11 @@ pub struct RunMetrics {
     pub success: bool,
     /// Computation time, seconds (planning plus post-processing).
     pub time_s: f64,
+    /// CPU time of the planning call on its thread, seconds (the planner's own smoothing
+    /// included, the harness's post-processing not): what time claims are decided on, as
+    /// it does not count the time other processes hold the core. NaN where the platform
+    /// gives no thread CPU clock.
+    pub cpu_time_s: f64,
     /// Path length, scenario units.
     pub length: f64,
     /// Path nodes (waypoints, start and goal included) before any dense resampling.
@@ -46,12 +51,13 @@ pub struct RunMetrics {
 }
 
 impl RunMetrics {
-    /// The value of a metric by its name (`time_s`, `length`, `nodes`, `inner_nodes`, `segments`, `turns`,
+    /// The value of a metric by its name (`time_s`, `cpu_time_s`, `length`, `nodes`, `inner_nodes`, `segments`, `turns`,
     /// `explored`, `transfer_time_s`, `min_clearance`, `success`).
     #[must_use]
     pub fn get(&self, metric: &str) -> Option<f64> {
         Some(match metric {
             "time_s" => self.time_s,
+            "cpu_time_s" => self.cpu_time_s,
             "length" => self.length,
             "nodes" => self.nodes,
             "inner_nodes" => self.inner_nodes,
@@ -68,6 +74,7 @@ impl RunMetrics {
     /// Names accepted by [`get`](RunMetrics::get).
     pub const METRICS: &'static [&'static str] = &[
         "time_s",
+        "cpu_time_s",
         "length",
         "nodes",
         "inner_nodes",
@@ -125,6 +132,7 @@ pub fn measure(
         seed,
         success: false,
         time_s: nan,
+        cpu_time_s: nan,
         length: nan,
         nodes: nan,
         inner_nodes: nan,

@@ -7,7 +7,7 @@
 use std::collections::BTreeMap;
 use std::time::Duration;
 
-use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
+use hybrid::{GaPchip, HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
 use hyplan_core::{Budget, Planner};
 use sampling::{BiRrt, RewireRadius, Rrt, RrtConnect, RrtStar};
 use search::{GridAstar, GridDijkstra, ThetaStar};
@@ -88,7 +88,7 @@ impl Params<'_> {
 /// Parameters (scenario units): `step`, `goal_bias`, `max_iterations`, `time_limit_s`
 /// for the sampling planners; `gamma` or `k_nearest` and `full_budget` (1 = use the whole
 /// budget) for `rrt-star`; none for the grid searches; for the hybrids, their struct
-/// fields by name (`candidates`, `closed_radius`, `near_radius`, `goal_threshold`,
+/// fields by name (`candidates`, `closed_radius`, `via_points`, `population`, `near_radius`, `goal_threshold`,
 /// `astar_spacing`, `astar_max_visited`, `safety_weight`, ...; switches as 0 or 1), see
 /// the `hybrid` crate. Values are checked by the planner
 /// when it runs; here only names and integer fields are checked.
@@ -197,6 +197,23 @@ pub fn build_planner(spec: &PlannerSpec) -> Result<Box<dyn Planner>, String> {
                 max_radius: p.get("max_radius").unwrap_or(d.max_radius),
                 safety_weight: p.get("safety_weight").unwrap_or(d.safety_weight),
                 spline_max_spacing: p.get("spline_max_spacing").unwrap_or(d.spline_max_spacing),
+                curve_spacing: p.get("curve_spacing").unwrap_or(d.curve_spacing),
+                smoothing: p.flag("smoothing", d.smoothing)?,
+                budget: p.budget(d.budget)?,
+                ..d
+            })
+        }
+        "ga-pchip" => {
+            let d = GaPchip::default();
+            Box::new(GaPchip {
+                via_points: p.count("via_points", d.via_points, 1)?,
+                population: p.count("population", d.population, 2)?,
+                elites: p.count("elites", d.elites, 0)?,
+                crossover_rate: p.get("crossover_rate").unwrap_or(d.crossover_rate),
+                mutation_rate: p.get("mutation_rate").unwrap_or(d.mutation_rate),
+                mutation_radius: p.get("mutation_radius").unwrap_or(d.mutation_radius),
+                stall_generations: p.count("stall_generations", d.stall_generations, 1)?,
+                probe_spacing: p.get("probe_spacing").unwrap_or(d.probe_spacing),
                 curve_spacing: p.get("curve_spacing").unwrap_or(d.curve_spacing),
                 smoothing: p.flag("smoothing", d.smoothing)?,
                 budget: p.budget(d.budget)?,

@@ -62,6 +62,15 @@ pub struct Scenario {
     /// Which values are our reconstruction (field names), explained in `docs/papers/`.
     #[serde(default)]
     pub reconstructed: Vec<String>,
+    /// Parameters fitted to one of the paper's numbers, each saying to which (the report
+    /// marks them: a figure computed with them is not an independent measurement).
+    #[serde(default)]
+    pub fitted: Vec<String>,
+    /// The label of the paper's baseline in this experiment: the report divides each
+    /// method's published and measured means by the baseline's (ratios within the paper,
+    /// ours beside the paper's).
+    #[serde(default)]
+    pub baseline: Option<String>,
 }
 
 fn default_quick_runs() -> u32 {
@@ -249,12 +258,45 @@ pub struct Published {
     /// units (e.g. 100 when a length in mm is printed in units of 100 mm). Default 1.
     #[serde(default = "one")]
     pub unit_scale: f64,
+    /// The value exactly as the paper prints it (`"6009.30"`, `"3815.034"`), shown in the
+    /// report; empty: `value` as Rust prints it.
+    #[serde(default)]
+    pub printed: String,
 }
 
-/// A claim of the paper: the mean of `metric` increases along `order` (the first label
-/// has the smallest value); or, when `across` names scenarios, the mean of `metric` for
-/// the single planner in `order` increases along those scenarios (a trend over a series
-/// of experiments, such as time against obstacle count).
+impl Published {
+    /// The value as the paper prints it.
+    #[must_use]
+    pub fn shown(&self) -> String {
+        if self.printed.is_empty() {
+            self.value.to_string()
+        } else {
+            self.printed.clone()
+        }
+    }
+}
+
+/// Whether a claim is a measurement that can go either way on our runs.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum ClaimKind {
+    /// Decided by a rank test on our runs; counted in the summary.
+    #[default]
+    Measured,
+    /// Follows from how the comparison is built (the reason says why): shown, not counted.
+    ByConstruction(String),
+    /// Cannot be compared on our runs (the reason says why): shown, not counted.
+    NotComparable(String),
+}
+
+/// A claim of the paper: `metric` increases along `order` (the first label has the
+/// smallest values); or, when `across` names scenarios, `metric` of the single planner in
+/// `order` increases along those scenarios (a trend over a series of experiments, such as
+/// time against obstacle count); or, when `across` names one group, the planners in
+/// `order` compared on the runs of every scenario of the group pooled (a cell of a table
+/// with several layouts). An entry of `across` stands for the scenario of that name
+/// and for every scenario whose name is it followed by `-` (several layouts of one cell,
+/// pooled). Each step of the order is decided by a rank test over the runs
+/// ([`decide_less`](crate::stats::decide_less)).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Claim {
@@ -264,10 +306,18 @@ pub struct Claim {
     pub metric: String,
     /// Planner labels from the smallest to the largest mean (one label with `across`).
     pub order: Vec<String>,
-    /// Scenario names from the smallest to the largest mean of the one planner in
-    /// `order`; empty for a claim within this scenario.
+    /// Scenario names (or groups) from the smallest to the largest values of the one
+    /// planner in `order`; one group to compare several planners pooled over it; empty for
+    /// a claim within this scenario.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub across: Vec<String>,
+    /// Measured, by construction or not comparable (default measured).
+    #[serde(default, skip_serializing_if = "is_measured")]
+    pub kind: ClaimKind,
+}
+
+fn is_measured(k: &ClaimKind) -> bool {
+    *k == ClaimKind::Measured
 }
 
 /// A scenario's world: the map and the query in world coordinates.
@@ -424,11 +474,18 @@ impl Scenario {
             }
         }
         for c in &self.claims {
-            if !c.across.is_empty() && c.order.len() != 1 {
+            if c.across.len() > 1 && c.order.len() != 1 {
                 return bad(
                     "claims.order",
                     &c.order.join(", "),
-                    "a claim across scenarios names exactly one planner",
+                    "a trend across scenarios names exactly one planner",
+                );
+            }
+            if c.across.len() == 1 && c.order.len() < 2 {
+                return bad(
+                    "claims.order",
+                    &c.order.join(", "),
+                    "a claim over one group of scenarios names two planners or more",
                 );
             }
             for label in &c.order {

@@ -1,5 +1,5 @@
 //! The seed papers' hybrid planners: RRT-A*-BT, RRT + A* refinement, Hybrid RRT-A* and
-//! safety-cost RRT*.
+//! safety-cost RRT*; and GA-PCHIP, the baseline seed 000 compares with.
 //!
 //! Each planner is a documented reading of its paper (the readings, with what the text
 //! says, what is ambiguous and what we chose, are in `docs/papers/`), a plain parameter
@@ -15,6 +15,7 @@
 //! | [`RrtAstarRefine`] | `rrt-astar-refine` | `001_7c0427b868de6fdd.txt`, 2.3 | an `envmap::GridMap` | the map's blocked cells |
 //! | [`HybridRrtAstar`] | `hybrid-rrt-astar` | `002_6cddcbbe62b23f10.txt`, III, Fig. 2 | an `envmap::GridMap` | the map's blocked cells |
 //! | [`SafeRrtStar`] | `safe-rrt-star` | `003_19d461d9f3ced1b0.txt`, 2.2-2.3 | any workspace (exact zones on a `GridMap`) | Forbidden; pays for Risk, read through `Workspace::zone` |
+//! | [`GaPchip`] | `ga-pchip` | seed 000's baseline, its reference [4] (Bakdi et al. 2017) | any workspace | what `segment_free` rejects: pass a safe map |
 //!
 //! - [`Staged`]: a plan with each stage's path (raw, reduced, smoothed) and counters,
 //!   from each planner's `plan_detailed`.
@@ -78,6 +79,7 @@
 //! None.
 
 mod common;
+mod ga_pchip;
 mod hybrid_rrt_astar;
 mod outcome;
 mod rrt_astar_bt;
@@ -85,6 +87,7 @@ mod rrt_astar_refine;
 mod safe_rrt_star;
 mod smooth;
 
+pub use ga_pchip::GaPchip;
 pub use hybrid_rrt_astar::{HybridRrtAstar, SpacingRule};
 pub use outcome::Staged;
 pub use rrt_astar_bt::RrtAstarBt;

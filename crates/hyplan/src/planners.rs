@@ -46,7 +46,8 @@ pub fn uses_goal_bias(name: &str) -> bool {
 pub fn build(name: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner>> {
     let mut params = std::collections::BTreeMap::new();
     if !is_grid_search(name) {
-        if let Some(step) = flags.step {
+        // GA-PCHIP has no step: its segments join via-points anywhere on the map.
+        if let Some(step) = flags.step.filter(|_| name != "ga-pchip") {
             params.insert("step".to_string(), step);
             // RRT-A*-BT's closed list is a radius around grown nodes, a quarter step by
             // default (10 px for 40 px steps): keep that ratio for another step.
