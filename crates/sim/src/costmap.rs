@@ -241,21 +241,48 @@ impl CostmapBuilder {
         let origin = bounds.min;
         let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
         let mut prior = vec![false; width * height];
-        let shapes = StaticWorld {
-            grid: None,
-            grid_segments: Vec::new(),
-            ..mapped.clone()
+        // Each shape marks the cells of its bounding box that it reaches into.
+        let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
+            let a = ((lo - o) / res).floor().max(0.0) as usize;
+            let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
+            a..b.max(a)
         };
-        if !(shapes.segments.is_empty() && shapes.discs.is_empty()) {
-            for j in 0..height {
-                for i in 0..width {
-                    let c = Point2::new(
-                        origin.x + (i as f64 + 0.5) * res,
-                        origin.y + (j as f64 + 0.5) * res,
-                    );
-                    prior[j * width + i] = shapes.inside(c) || shapes.nearest(c).0 <= half_diag;
+        let centre = |i: usize, j: usize| {
+            Point2::new(origin.x + (i as f64 + 0.5) * res, origin.y + (j as f64 + 0.5) * res)
+        };
+        let mut mark_box = |lo: Point2, hi: Point2, hit: &dyn Fn(Point2) -> bool| {
+            for j in cell_range(lo.y, hi.y, origin.y, height) {
+                for i in cell_range(lo.x, hi.x, origin.x, width) {
+                    if !prior[j * width + i] && hit(centre(i, j)) {
+                        prior[j * width + i] = true;
+                    }
                 }
             }
+        };
+        let pad = nalgebra::Vector2::new(half_diag, half_diag);
+        for s in &mapped.segments {
+            let lo = Point2::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)) - pad;
+            let hi = Point2::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)) + pad;
+            mark_box(lo, hi, &|c| {
+                (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag
+            });
+        }
+        for poly in &mapped.polygons {
+            let lo = poly.iter().fold(Point2::new(f64::INFINITY, f64::INFINITY), |m, p| {
+                Point2::new(m.x.min(p.x), m.y.min(p.y))
+            });
+            let hi = poly
+                .iter()
+                .fold(Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, p| {
+                    Point2::new(m.x.max(p.x), m.y.max(p.y))
+                });
+            mark_box(lo, hi, &|c| crate::world::point_in_polygon(c, poly));
+        }
+        for d in &mapped.discs {
+            let r = nalgebra::Vector2::new(d.radius, d.radius) + pad;
+            mark_box(d.center - r, d.center + r, &|c| {
+                (c - d.center).norm() <= d.radius + half_diag
+            });
         }
         if let Some(g) = &mapped.grid {
             // Every costmap cell a forbidden grid cell overlaps (sampled at the grid's

@@ -157,23 +157,27 @@ impl LaserModel {
         let theta0 = heading - self.fov / 2.0;
         let tau = std::f64::consts::TAU;
         let u_of = |v: Vector2<f64>| (v.y.atan2(v.x) - theta0).rem_euclid(tau);
+        let inc = self.inc;
+        let last = (n - 1) as f64;
         // The beams k with u_k = k inc in [lo, lo + span] (mod 2 pi), one beam of margin
         // on each side: the exact intersection test decides.
-        let beams = |lo: f64, span: f64, f: &mut dyn FnMut(usize)| {
-            for shift in [0.0, -tau] {
-                let a = ((lo + shift) / self.inc).ceil() - 1.0;
-                let b = ((lo + span + shift) / self.inc).floor() + 1.0;
-                let a = a.max(0.0);
-                let b = b.min((n - 1) as f64);
-                if a <= b {
-                    for k in a as usize..=b as usize {
-                        f(k);
-                    }
-                }
-            }
+        let spans = |lo: f64, span: f64| {
+            [0.0, -tau].map(|shift| {
+                let a = (((lo + shift) / inc).ceil() - 1.0).max(0.0);
+                let b = (((lo + span + shift) / inc).floor() + 1.0).min(last);
+                if a <= b { a as usize..b as usize + 1 } else { 0..0 }
+            })
         };
         for seg in world.segments.iter().chain(&world.grid_segments) {
             let (pa, pb) = (seg.a - origin, seg.b - origin);
+            let e = seg.b - seg.a;
+            // Seen from behind (the scanner inside the half-plane behind an outward
+            // edge of a closed outline): another edge of the same outline is nearer.
+            if let Some(nrm) = seg.outward
+                && nrm.dot(&pa) >= 0.0
+            {
+                continue;
+            }
             let (ua, ub) = (u_of(pa), u_of(pb));
             let mut d = ub - ua;
             if d > std::f64::consts::PI {
@@ -182,14 +186,15 @@ impl LaserModel {
                 d += tau;
             }
             let (lo, span) = if d >= 0.0 { (ua, d) } else { (ub, -d) };
-            let e = seg.b - seg.a;
-            beams(lo, span, &mut |k| {
-                if let Some(t) = ray_segment(dirs[k], pa, e) {
-                    if t < ranges[k] {
+            for range in spans(lo, span) {
+                for k in range {
+                    if let Some(t) = ray_segment(dirs[k], pa, e)
+                        && t < ranges[k]
+                    {
                         ranges[k] = t;
                     }
                 }
-            });
+            }
         }
         for disc in world.discs.iter().chain(people) {
             let rel = disc.center - origin;
@@ -201,13 +206,15 @@ impl LaserModel {
             }
             let half = (disc.radius / dist).asin();
             let mid = u_of(rel);
-            beams((mid - half).rem_euclid(tau), 2.0 * half, &mut |k| {
-                if let Some(t) = ray_disc(dirs[k], rel, disc.radius) {
-                    if t < ranges[k] {
+            for range in spans((mid - half).rem_euclid(tau), 2.0 * half) {
+                for k in range {
+                    if let Some(t) = ray_disc(dirs[k], rel, disc.radius)
+                        && t < ranges[k]
+                    {
                         ranges[k] = t;
                     }
                 }
-            });
+            }
         }
         let (lo, hi) = (self.laser.range_min, self.laser.range_max);
         for r in &mut ranges {

@@ -30,10 +30,10 @@ pub struct Mapping {
     pub l_min: f64,
     /// Upper clamp.
     pub l_max: f64,
-    /// Beams are used up to this range, m (gmapping's `maxUrange`); a beam with no return
-    /// clears up to it.
+    /// Beams are used up to this range, m (gmapping's `maxUrange`; 4 m, the tutorial's
+    /// clearing range); a longer beam or one with no return clears up to it.
     pub max_range: f64,
-    /// Seconds between map updates (gmapping updates on motion or time; 0.5 s here).
+    /// Seconds between map updates (gmapping updates on motion or time; 1 s here).
     pub period: f64,
 }
 
@@ -45,8 +45,8 @@ impl Default for Mapping {
             l_miss: -0.4,
             l_min: -2.0,
             l_max: 3.5,
-            max_range: 6.0,
-            period: 0.5,
+            max_range: 4.0,
+            period: 1.0,
         }
     }
 }
@@ -179,8 +179,18 @@ impl OccupancyGrid {
             f64::INFINITY
         };
         let steps = (ei - i).abs() + (ej - j).abs();
+        let (w, h) = (self.width as i64, self.height as i64);
+        let (miss, lo, hi) = (
+            self.params.l_miss as f32,
+            self.params.l_min as f32,
+            self.params.l_max as f32,
+        );
         for _ in 0..steps {
-            self.update(i, j, self.params.l_miss);
+            if i >= 0 && j >= 0 && i < w && j < h {
+                let k = (j * w + i) as usize;
+                self.seen[k] = true;
+                self.logodds[k] = (self.logodds[k] + miss).clamp(lo, hi);
+            }
             if t_x < t_y {
                 i += si;
                 t_x += t_dx;

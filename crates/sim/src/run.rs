@@ -141,7 +141,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
         // Distances and contacts at this instant.
         let here = Point2::new(pose.x, pose.y);
         let (d_wall, q_wall) = world.statics.nearest(here);
-        let d_wall = if world.statics.inside(here) {
+        let d_wall = if d_wall < robot.body_radius && world.statics.inside(here) {
             -d_wall
         } else {
             d_wall

@@ -141,39 +141,52 @@ impl Person {
     /// Where the person is at time `t` seconds: a pure function of `t`.
     #[must_use]
     pub fn position(&self, t: f64) -> Point2 {
-        let pts: Vec<Point2> = self.path.iter().copied().map(pt).collect();
-        let Some(&first) = pts.first() else {
+        let n = self.path.len();
+        if n == 0 {
             return Point2::origin();
-        };
-        let mut s = (t - self.start).max(0.0) * self.speed;
-        let mut legs: Vec<(Point2, Point2)> = pts.windows(2).map(|w| (w[0], w[1])).collect();
-        match self.walk {
-            Walk::Once => {}
-            Walk::Loop => legs.push((pts[pts.len() - 1], first)),
-            Walk::BackAndForth => {
-                let back: Vec<(Point2, Point2)> = legs.iter().rev().map(|&(a, b)| (b, a)).collect();
-                legs.extend(back);
-            }
         }
-        let total: f64 = legs.iter().map(|(a, b)| (b - a).norm()).sum();
+        let p = |k: usize| pt(self.path[k]);
+        // Legs in walking order: 0..n-1 forward, then (loop) the closing leg, or
+        // (back-and-forth) the forward legs reversed.
+        let legs = match self.walk {
+            Walk::Once => n - 1,
+            Walk::Loop => n,
+            Walk::BackAndForth => 2 * (n - 1),
+        };
+        let leg = |k: usize| -> (Point2, Point2) {
+            if k < n - 1 {
+                (p(k), p(k + 1))
+            } else if self.walk == Walk::Loop {
+                (p(n - 1), p(0))
+            } else {
+                let r = k - (n - 1);
+                (p(n - 1 - r), p(n - 2 - r))
+            }
+        };
+        let total: f64 = (0..legs).map(|k| {
+            let (a, b) = leg(k);
+            (b - a).norm()
+        }).sum();
+        let mut s = (t - self.start).max(0.0) * self.speed;
         if total <= 0.0 {
-            return first;
+            return p(0);
         }
         if self.walk == Walk::Once {
             if s >= total {
-                return pts[pts.len() - 1];
+                return p(n - 1);
             }
         } else {
             s = s.rem_euclid(total);
         }
-        for (a, b) in legs {
+        for k in 0..legs {
+            let (a, b) = leg(k);
             let len = (b - a).norm();
             if s <= len {
                 return if len > 0.0 { a + (b - a) * (s / len) } else { a };
             }
             s -= len;
         }
-        pts[pts.len() - 1]
+        leg(legs - 1).1
     }
 }
 
@@ -184,6 +197,9 @@ pub struct Segment {
     pub a: Point2,
     /// The other end.
     pub b: Point2,
+    /// For an edge of a closed outline, its outward normal (the laser skips edges seen
+    /// from behind); `None` for loose edges.
+    pub outward: Option<nalgebra::Vector2<f64>>,
 }
 
 /// A round static obstacle.
@@ -221,11 +237,27 @@ impl StaticWorld {
             return;
         }
         if let Some(poly) = shape.outline() {
-            for k in 0..poly.len() {
-                self.segments.push(Segment {
-                    a: poly[k],
-                    b: poly[(k + 1) % poly.len()],
-                });
+            // Shoelace: positive for counter-clockwise outlines.
+            let n = poly.len();
+            let area2: f64 = (0..n)
+                .map(|k| {
+                    let (a, b) = (poly[k], poly[(k + 1) % n]);
+                    a.x * b.y - b.x * a.y
+                })
+                .sum();
+            for k in 0..n {
+                let (a, b) = (poly[k], poly[(k + 1) % n]);
+                let e = b - a;
+                // Counter-clockwise: the outside is to the right of each edge.
+                let right = nalgebra::Vector2::new(e.y, -e.x);
+                let outward = if area2 > 0.0 {
+                    Some(right)
+                } else if area2 < 0.0 {
+                    Some(-right)
+                } else {
+                    None
+                };
+                self.segments.push(Segment { a, b, outward });
             }
             self.polygons.push(poly);
         }
@@ -252,7 +284,11 @@ impl StaticWorld {
                 match (edge, run) {
                     (true, None) => run = Some(i),
                     (false, Some(s)) => {
-                        self.grid_segments.push(Segment { a: at(s, j), b: at(i, j) });
+                        self.grid_segments.push(Segment {
+                            a: at(s, j),
+                            b: at(i, j),
+                            outward: None,
+                        });
                         run = None;
                     }
                     _ => {}
@@ -266,7 +302,11 @@ impl StaticWorld {
                 match (edge, run) {
                     (true, None) => run = Some(j),
                     (false, Some(s)) => {
-                        self.grid_segments.push(Segment { a: at(i, s), b: at(i, j) });
+                        self.grid_segments.push(Segment {
+                            a: at(i, s),
+                            b: at(i, j),
+                            outward: None,
+                        });
                         run = None;
                     }
                     _ => {}
