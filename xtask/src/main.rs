@@ -12,6 +12,7 @@ use clap::{Parser, Subcommand};
 mod bench_peers;
 mod reproduce;
 mod rooms;
+mod sim004;
 
 #[derive(Parser)]
 #[command(name = "xtask", about = "hyplan project tasks")]

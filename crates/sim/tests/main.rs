@@ -1,1 +1,5 @@
-mod basics;
+//! Public-API tests of `sim`, one module per area.
+
+mod kinematics;
+mod laser;
+mod navigation;

@@ -12,3 +12,4 @@ macro_rules! outln {
 pub mod map;
 pub mod plan;
 pub mod scen;
+pub mod sim;
