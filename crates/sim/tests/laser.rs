@@ -76,7 +76,15 @@ proptest! {
                 (got.is_infinite() && best.is_infinite()) || (got - best).abs() <= 1e-9 * best.max(1.0),
                 "beam {} of {}: laser {} reference {}", k, beams, got, best
             );
-            // parry2d (f32) agrees to its precision.
+            // parry2d (f32) agrees to its precision, except for beams that graze a
+            // corner, where rounding the geometry to f32 can move the hit to the next edge.
+            let grazing = w.segments.iter().any(|s| {
+                let v = s.a - o;
+                d.perp(&v).abs() < 1e-4 * v.norm()
+            });
+            if grazing {
+                continue;
+            }
             let ray = Ray::new(parry2d::math::Point::new(o.x as f32, o.y as f32), parry2d::math::Vector::new(d.x as f32, d.y as f32));
             let mut p = f32::INFINITY;
             for s in &w.segments {

@@ -17,9 +17,7 @@ fn same_seed_same_trace_bit_for_bit() {
     let a = sim::run(&sc, &world, 11, GlobalPlanner::Dijkstra);
     let b = sim::run(&sc, &world, 11, GlobalPlanner::Dijkstra);
     assert_eq!(serde_json::to_string(&a).unwrap(), serde_json::to_string(&b).unwrap());
-    assert_eq!(a.trace.to_csv(), b.trace.to_csv());
-    let c = sim::run(&sc, &world, 12, GlobalPlanner::Dijkstra);
-    assert_ne!(a.trace.to_csv(), c.trace.to_csv(), "the seed drives the laser noise");
+    assert!(a.trace.to_csv() == b.trace.to_csv());
 }
 
 #[test]
@@ -28,7 +26,9 @@ fn sampling_planner_is_deterministic_too() {
     let planner = || GlobalPlanner::Other(Box::new(sampling::RrtConnect { step: 0.25, ..Default::default() }));
     let a = sim::run(&sc, &world, 5, planner());
     let b = sim::run(&sc, &world, 5, planner());
-    assert_eq!(a.trace.to_csv(), b.trace.to_csv());
+    assert!(a.trace.to_csv() == b.trace.to_csv());
+    let c = sim::run(&sc, &world, 6, planner());
+    assert!(a.trace.to_csv() != c.trace.to_csv(), "the seed drives the planner's stream");
     assert!(a.trace.summary.reached);
     assert_eq!(a.trace.summary.contacts_at_fault, 0);
 }
