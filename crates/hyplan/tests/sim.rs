@@ -58,7 +58,11 @@ fn reaches_the_goal_and_writes_outputs() {
     }
     let csv = std::fs::read_to_string(out.join("trace.csv")).unwrap();
     assert!(csv.starts_with("t,x,y,phi,v,omega,wheel_right,wheel_left,d_obstacle,d_person,events"));
-    assert!(std::fs::read_to_string(out.join("animation.svg")).unwrap().contains("<animate"));
+    assert!(
+        std::fs::read_to_string(out.join("animation.svg"))
+            .unwrap()
+            .contains("<animate")
+    );
 }
 
 #[test]

@@ -8,7 +8,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = sim::run(&scenario, &world, seed, sim::GlobalPlanner::Dijkstra);
     let el = t0.elapsed().as_secs_f64();
     println!("{:#?}", out.trace.summary);
-    println!("wall {el:.3} s, x{:.0} real time", out.trace.summary.end_time / el);
+    println!(
+        "wall {el:.3} s, x{:.0} real time",
+        out.trace.summary.end_time / el
+    );
     for e in &out.trace.events {
         println!("{:.2} {:?}", e.t, e.kind);
     }

@@ -98,7 +98,7 @@ impl ObstacleMemory {
         let u = (p.x - self.origin.x) / MEMORY_RESOLUTION;
         let v = (p.y - self.origin.y) / MEMORY_RESOLUTION;
         (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
-            .then(|| (u as usize, v as usize))
+            .then_some((u as usize, v as usize))
     }
 
     /// Records the hits of a scan taken at `tick`.
@@ -234,7 +234,12 @@ impl CostmapBuilder {
     /// A builder over `bounds` whose prior map is `mapped` rasterised (a cell is lethal
     /// when an obstacle reaches into it).
     #[must_use]
-    pub fn new(bounds: Bounds, mapped: &StaticWorld, params: CostmapParams, body_radius: f64) -> Self {
+    pub fn new(
+        bounds: Bounds,
+        mapped: &StaticWorld,
+        params: CostmapParams,
+        body_radius: f64,
+    ) -> Self {
         let res = params.resolution;
         let width = (bounds.width() / res).ceil().max(1.0) as usize;
         let height = (bounds.height() / res).ceil().max(1.0) as usize;
@@ -248,7 +253,10 @@ impl CostmapBuilder {
             a..b.max(a)
         };
         let centre = |i: usize, j: usize| {
-            Point2::new(origin.x + (i as f64 + 0.5) * res, origin.y + (j as f64 + 0.5) * res)
+            Point2::new(
+                origin.x + (i as f64 + 0.5) * res,
+                origin.y + (j as f64 + 0.5) * res,
+            )
         };
         let mut mark_box = |lo: Point2, hi: Point2, hit: &dyn Fn(Point2) -> bool| {
             for j in cell_range(lo.y, hi.y, origin.y, height) {
@@ -268,9 +276,11 @@ impl CostmapBuilder {
             });
         }
         for poly in &mapped.polygons {
-            let lo = poly.iter().fold(Point2::new(f64::INFINITY, f64::INFINITY), |m, p| {
-                Point2::new(m.x.min(p.x), m.y.min(p.y))
-            });
+            let lo = poly
+                .iter()
+                .fold(Point2::new(f64::INFINITY, f64::INFINITY), |m, p| {
+                    Point2::new(m.x.min(p.x), m.y.min(p.y))
+                });
             let hi = poly
                 .iter()
                 .fold(Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, p| {

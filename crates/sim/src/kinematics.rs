@@ -201,10 +201,7 @@ mod tests {
     fn quarter_circle() {
         let p = integrate(
             Pose::default(),
-            Twist {
-                v: 1.0,
-                omega: 1.0,
-            },
+            Twist { v: 1.0, omega: 1.0 },
             std::f64::consts::FRAC_PI_2,
         );
         assert!((p.x - 1.0).abs() < 1e-12 && (p.y - 1.0).abs() < 1e-12);

@@ -139,13 +139,7 @@ impl LaserModel {
     /// Exact ranges from `origin` looking along `heading`: the distance to the first
     /// obstacle on each beam, `INFINITY` when that is outside `[range_min, range_max]`.
     #[must_use]
-    pub fn cast(
-        &self,
-        world: &StaticWorld,
-        people: &[Disc],
-        origin: Point2,
-        heading: f64,
-    ) -> Scan {
+    pub fn cast(&self, world: &StaticWorld, people: &[Disc], origin: Point2, heading: f64) -> Scan {
         let n = self.local.len();
         let mut ranges = vec![f64::INFINITY; n];
         let (s, c) = heading.sin_cos();
@@ -165,7 +159,11 @@ impl LaserModel {
             [0.0, -tau].map(|shift| {
                 let a = (((lo + shift) / inc).ceil() - 1.0).max(0.0);
                 let b = (((lo + span + shift) / inc).floor() + 1.0).min(last);
-                if a <= b { a as usize..b as usize + 1 } else { 0..0 }
+                if a <= b {
+                    a as usize..b as usize + 1
+                } else {
+                    0..0
+                }
             })
         };
         for seg in world.segments.iter().chain(&world.grid_segments) {

@@ -133,7 +133,7 @@ impl OccupancyGrid {
         let u = (p.x - self.origin.x) / self.params.resolution;
         let v = (p.y - self.origin.y) / self.params.resolution;
         (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
-            .then(|| (u as usize, v as usize))
+            .then_some((u as usize, v as usize))
     }
 
     /// Updates the grid from one scan.
@@ -162,8 +162,16 @@ impl OccupancyGrid {
         let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
         let (dx, dy) = (bx - ax, by - ay);
         let (si, sj) = (dx.signum() as i64, dy.signum() as i64);
-        let t_dx = if dx != 0.0 { (1.0 / dx).abs() } else { f64::INFINITY };
-        let t_dy = if dy != 0.0 { (1.0 / dy).abs() } else { f64::INFINITY };
+        let t_dx = if dx != 0.0 {
+            (1.0 / dx).abs()
+        } else {
+            f64::INFINITY
+        };
+        let t_dy = if dy != 0.0 {
+            (1.0 / dy).abs()
+        } else {
+            f64::INFINITY
+        };
         let mut t_x = if dx > 0.0 {
             (ax.floor() + 1.0 - ax) * t_dx
         } else if dx < 0.0 {
@@ -253,6 +261,7 @@ impl OccupancyGrid {
     /// Whether the cell holding `p` is occupied.
     #[must_use]
     pub fn occupied_at(&self, p: Point2) -> bool {
-        self.cell_of(p).is_some_and(|(i, j)| self.value(i, j) == OCCUPIED)
+        self.cell_of(p)
+            .is_some_and(|(i, j)| self.value(i, j) == OCCUPIED)
     }
 }

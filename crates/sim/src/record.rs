@@ -132,9 +132,8 @@ impl Trace {
     /// column (`;`-separated).
     #[must_use]
     pub fn to_csv(&self) -> String {
-        let mut s = String::from(
-            "t,x,y,phi,v,omega,wheel_right,wheel_left,d_obstacle,d_person,events\n",
-        );
+        let mut s =
+            String::from("t,x,y,phi,v,omega,wheel_right,wheel_left,d_obstacle,d_person,events\n");
         let mut e = 0;
         for (k, r) in self.rows.iter().enumerate() {
             let until = self.rows.get(k + 1).map_or(f64::INFINITY, |n| n.t);
@@ -213,7 +212,14 @@ fn world_svg(outcome: &Outcome, world: &World, s: &mut String) -> (f64, f64) {
         b.width(),
         b.height()
     );
-    let _ = writeln!(s, r##"<rect x="{}" y="{}" width="{}" height="{}" fill="#bbb"/>"##, b.min.x, -b.max.y, b.width(), b.height());
+    let _ = writeln!(
+        s,
+        r##"<rect x="{}" y="{}" width="{}" height="{}" fill="#bbb"/>"##,
+        b.min.x,
+        -b.max.y,
+        b.width(),
+        b.height()
+    );
     let _ = writeln!(s, r#"<g transform="scale(1,-1)">"#);
     if let Some(map) = &outcome.map {
         let r = map.params.resolution;
@@ -313,7 +319,8 @@ pub fn velocity_svg(trace: &Trace) -> String {
         2.0 * ph + 20.0
     );
     s.push('\n');
-    let panels: [(&str, fn(&Row) -> f64); 2] = [("v (m/s)", |r| r.v), ("omega (rad/s)", |r| r.omega)];
+    type Panel = (&'static str, fn(&Row) -> f64);
+    let panels: [Panel; 2] = [("v (m/s)", |r| r.v), ("omega (rad/s)", |r| r.omega)];
     for (k, (label, f)) in panels.iter().enumerate() {
         let y0 = k as f64 * (ph + 10.0) + 10.0;
         let vals: Vec<f64> = rows.iter().map(f).collect();
@@ -334,9 +341,23 @@ pub fn velocity_svg(trace: &Trace) -> String {
             y(0.0),
             y(0.0)
         );
-        let _ = writeln!(s, r#"<text x="5" y="{:.1}">{label}</text>"#, top - 2.0 + 12.0);
-        let _ = writeln!(s, r#"<text x="{}" y="{:.1}">{hi:.2}</text>"#, left - 40.0, top + 10.0);
-        let _ = writeln!(s, r#"<text x="{}" y="{:.1}">{lo:.2}</text>"#, left - 40.0, bottom);
+        let _ = writeln!(
+            s,
+            r#"<text x="5" y="{:.1}">{label}</text>"#,
+            top - 2.0 + 12.0
+        );
+        let _ = writeln!(
+            s,
+            r#"<text x="{}" y="{:.1}">{hi:.2}</text>"#,
+            left - 40.0,
+            top + 10.0
+        );
+        let _ = writeln!(
+            s,
+            r#"<text x="{}" y="{:.1}">{lo:.2}</text>"#,
+            left - 40.0,
+            bottom
+        );
         for tick in 0..=(t_end / 5.0).floor() as usize {
             let t = tick as f64 * 5.0;
             let _ = writeln!(
@@ -376,7 +397,9 @@ pub fn animation_svg(outcome: &Outcome, world: &World) -> String {
     let frames = (end * 10.0).ceil() as usize;
     let at = |k: usize| {
         let t = k as f64 / 10.0;
-        let i = rows.partition_point(|r| r.t < t).min(rows.len().saturating_sub(1));
+        let i = rows
+            .partition_point(|r| r.t < t)
+            .min(rows.len().saturating_sub(1));
         rows.get(i).copied()
     };
     let key_times = (0..=frames)
@@ -394,8 +417,14 @@ pub fn animation_svg(outcome: &Outcome, world: &World) -> String {
         polyline(rows.iter().map(|r| (r.x, r.y)))
     );
     for p in &world.people {
-        let xs = (0..=frames).map(|k| format!("{:.3}", p.position(k as f64 / 10.0).x)).collect::<Vec<_>>().join(";");
-        let ys = (0..=frames).map(|k| format!("{:.3}", p.position(k as f64 / 10.0).y)).collect::<Vec<_>>().join(";");
+        let xs = (0..=frames)
+            .map(|k| format!("{:.3}", p.position(k as f64 / 10.0).x))
+            .collect::<Vec<_>>()
+            .join(";");
+        let ys = (0..=frames)
+            .map(|k| format!("{:.3}", p.position(k as f64 / 10.0).y))
+            .collect::<Vec<_>>()
+            .join(";");
         let _ = writeln!(
             s,
             r##"<circle r="{}" fill="#e80">{}{}</circle>"##,

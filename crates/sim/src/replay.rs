@@ -76,8 +76,8 @@ fn episodes(rows: &[Row], f: impl Fn(&Row) -> bool) -> Vec<(usize, usize)> {
 }
 
 /// Start times of abrupt changes of v: maximal runs of samples from which v changes by
-/// >= 0.1 m/s within the next 0.5 s, each run counted once, between 2 s after the start
-/// and 2 s before the end.
+/// at least 0.1 m/s within the next 0.5 s, each run counted once, between 2 s after the
+/// start and 2 s before the end.
 #[must_use]
 pub fn abrupt_v_changes(rows: &[Row]) -> Vec<f64> {
     let end = rows.last().map_or(0.0, |r| r.t);
@@ -156,7 +156,9 @@ pub fn seed004(dir: &Path, seed: u64) -> Result<Seed004, ScenarioError> {
         .collect();
     let (vmin, vmax) = mid
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| (a.min(r.v), b.max(r.v)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+            (a.min(r.v), b.max(r.v))
+        });
     let wmax = mid.iter().map(|r| r.omega.abs()).fold(0.0, f64::max);
     claims.push(Claim {
         text: "scenario 1: stable linear and angular velocity".into(),
@@ -308,7 +310,8 @@ impl Seed004 {
                 m.stops,
                 m.replans,
                 m.min_obstacle_distance,
-                m.min_person_distance.map_or("-".into(), |d| format!("{d:.3}")),
+                m.min_person_distance
+                    .map_or("-".into(), |d| format!("{d:.3}")),
                 m.contacts_at_fault,
                 m.contacts_robot_stopped,
                 m.contacts_not_approaching

@@ -70,7 +70,12 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
     let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
     let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
     let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range);
-    let costmaps = CostmapBuilder::new(world.bounds, &world.mapped, scenario.costmap, robot.body_radius);
+    let costmaps = CostmapBuilder::new(
+        world.bounds,
+        &world.mapped,
+        scenario.costmap,
+        robot.body_radius,
+    );
     let planner_name = planner.name();
     let goal = Point2::new(scenario.goal.0, scenario.goal.1);
     let mut nav = Navigator::new(
@@ -235,12 +240,18 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
         replans: count(NavEvent::Replan),
         stops: count(NavEvent::Stop),
         failures: count(NavEvent::Failure),
-        min_obstacle_distance: rows.iter().map(|r| r.d_obstacle).fold(f64::INFINITY, f64::min),
+        min_obstacle_distance: rows
+            .iter()
+            .map(|r| r.d_obstacle)
+            .fold(f64::INFINITY, f64::min),
         min_person_distance: rows
             .iter()
             .filter_map(|r| r.d_person)
             .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.min(d)))),
-        contacts_at_fault: contacts.iter().filter(|c| c.class == ContactClass::AtFault).count(),
+        contacts_at_fault: contacts
+            .iter()
+            .filter(|c| c.class == ContactClass::AtFault)
+            .count(),
         contacts_robot_stopped: contacts
             .iter()
             .filter(|c| c.class == ContactClass::RobotStopped)

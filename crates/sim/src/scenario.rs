@@ -255,13 +255,8 @@ impl Scenario {
             let o = pt(self.world.origin);
             bounds = Some(Bounds::new(o, Point2::new(o.x + w, o.y + h)));
         }
-        let bounds = bounds.ok_or_else(|| {
-            field(
-                "world.size",
-                "missing".into(),
-                "give a size or a map",
-            )
-        })?;
+        let bounds =
+            bounds.ok_or_else(|| field("world.size", "missing".into(), "give a size or a map"))?;
         for s in &self.world.shapes {
             statics.add_shape(s);
             mapped.add_shape(s);
@@ -351,10 +346,18 @@ impl Scenario {
         let l = &self.laser;
         positive("laser.fov_deg", l.fov_deg)?;
         if l.fov_deg > 360.0 {
-            return Err(err("laser.fov_deg".into(), l.fov_deg, "must be at most 360"));
+            return Err(err(
+                "laser.fov_deg".into(),
+                l.fov_deg,
+                "must be at most 360",
+            ));
         }
         if l.beams < 2 {
-            return Err(err("laser.beams".into(), l.beams as f64, "must be at least 2"));
+            return Err(err(
+                "laser.beams".into(),
+                l.beams as f64,
+                "must be at least 2",
+            ));
         }
         non_negative("laser.range_min", l.range_min)?;
         positive("laser.range_max", l.range_max)?;
@@ -375,10 +378,18 @@ impl Scenario {
         positive("mapping.max_range", m.max_range)?;
         positive("mapping.period", m.period)?;
         if !(m.l_miss.is_finite() && m.l_miss < 0.0) {
-            return Err(err("mapping.l_miss".into(), m.l_miss, "must be finite and < 0"));
+            return Err(err(
+                "mapping.l_miss".into(),
+                m.l_miss,
+                "must be finite and < 0",
+            ));
         }
         if !(m.l_min.is_finite() && m.l_min < 0.0) {
-            return Err(err("mapping.l_min".into(), m.l_min, "must be finite and < 0"));
+            return Err(err(
+                "mapping.l_min".into(),
+                m.l_min,
+                "must be finite and < 0",
+            ));
         }
         let c = &self.costmap;
         positive("costmap.resolution", c.resolution)?;
@@ -403,7 +414,11 @@ impl Scenario {
         non_negative("navigation.retry_period", n.retry_period)?;
         non_negative("navigation.progress_reset", n.progress_reset)?;
         if n.max_failures == 0 {
-            return Err(err("navigation.max_failures".into(), 0.0, "must be at least 1"));
+            return Err(err(
+                "navigation.max_failures".into(),
+                0.0,
+                "must be at least 1",
+            ));
         }
         positive("time_limit", self.time_limit)?;
         point("start", self.start)?;

@@ -29,10 +29,26 @@ pub fn room(seed: u64, index: u64) -> Scenario {
     let h: f64 = rng.random_range(6.0..10.0);
     let t = 0.2;
     let mut shapes = vec![
-        Shape::Wall { from: (0.1, 0.1), to: (w - 0.1, 0.1), thickness: t },
-        Shape::Wall { from: (w - 0.1, 0.1), to: (w - 0.1, h - 0.1), thickness: t },
-        Shape::Wall { from: (w - 0.1, h - 0.1), to: (0.1, h - 0.1), thickness: t },
-        Shape::Wall { from: (0.1, h - 0.1), to: (0.1, 0.1), thickness: t },
+        Shape::Wall {
+            from: (0.1, 0.1),
+            to: (w - 0.1, 0.1),
+            thickness: t,
+        },
+        Shape::Wall {
+            from: (w - 0.1, 0.1),
+            to: (w - 0.1, h - 0.1),
+            thickness: t,
+        },
+        Shape::Wall {
+            from: (w - 0.1, h - 0.1),
+            to: (0.1, h - 0.1),
+            thickness: t,
+        },
+        Shape::Wall {
+            from: (0.1, h - 0.1),
+            to: (0.1, 0.1),
+            thickness: t,
+        },
     ];
     let start = (1.0, rng.random_range(1.0..h - 1.0));
     let goal = (w - 1.0, rng.random_range(1.0..h - 1.0));
@@ -42,16 +58,28 @@ pub fn room(seed: u64, index: u64) -> Scenario {
         if placed == n_obstacles {
             break;
         }
-        let c: (f64, f64) = (rng.random_range(1.5..w - 1.5), rng.random_range(0.8..h - 0.8));
+        let c: (f64, f64) = (
+            rng.random_range(1.5..w - 1.5),
+            rng.random_range(0.8..h - 0.8),
+        );
         let size: (f64, f64) = (rng.random_range(0.3..1.2), rng.random_range(0.3..1.2));
-        let far = |p: (f64, f64)| ((c.0 - p.0).powi(2) + (c.1 - p.1).powi(2)).sqrt() > 1.0 + size.0.max(size.1);
+        let far = |p: (f64, f64)| {
+            ((c.0 - p.0).powi(2) + (c.1 - p.1).powi(2)).sqrt() > 1.0 + size.0.max(size.1)
+        };
         if !(far(start) && far(goal)) {
             continue;
         }
         shapes.push(if rng.random_bool(0.3) {
-            Shape::Disc { center: c, radius: size.0 / 2.0 }
+            Shape::Disc {
+                center: c,
+                radius: size.0 / 2.0,
+            }
         } else {
-            Shape::Box { center: c, size, angle_deg: rng.random_range(0.0..90.0) }
+            Shape::Box {
+                center: c,
+                size,
+                angle_deg: rng.random_range(0.0..90.0),
+            }
         });
         placed += 1;
     }
@@ -60,13 +88,21 @@ pub fn room(seed: u64, index: u64) -> Scenario {
         .map(|_| {
             let x = rng.random_range(2.5..w - 2.5);
             let (a, b) = ((x, 0.5), (x, h - 0.5));
-            let path = if rng.random_bool(0.5) { vec![a, b] } else { vec![b, a] };
+            let path = if rng.random_bool(0.5) {
+                vec![a, b]
+            } else {
+                vec![b, a]
+            };
             Person {
                 path,
                 speed: rng.random_range(0.1..=v_max),
                 start: rng.random_range(0.0..20.0),
                 radius: 0.25,
-                walk: if rng.random_bool(0.5) { Walk::Once } else { Walk::BackAndForth },
+                walk: if rng.random_bool(0.5) {
+                    Walk::Once
+                } else {
+                    Walk::BackAndForth
+                },
             }
         })
         .collect();

@@ -81,7 +81,8 @@ impl Shape {
                 let c = pt(*center);
                 let (s, co) = angle_deg.to_radians().sin_cos();
                 let (hw, hh) = (size.0 / 2.0, size.1 / 2.0);
-                let corner = |x: f64, y: f64| Point2::new(c.x + co * x - s * y, c.y + s * x + co * y);
+                let corner =
+                    |x: f64, y: f64| Point2::new(c.x + co * x - s * y, c.y + s * x + co * y);
                 Some(vec![
                     corner(-hw, -hh),
                     corner(hw, -hh),
@@ -163,10 +164,12 @@ impl Person {
                 (p(n - 1 - r), p(n - 2 - r))
             }
         };
-        let total: f64 = (0..legs).map(|k| {
-            let (a, b) = leg(k);
-            (b - a).norm()
-        }).sum();
+        let total: f64 = (0..legs)
+            .map(|k| {
+                let (a, b) = leg(k);
+                (b - a).norm()
+            })
+            .sum();
         let mut s = (t - self.start).max(0.0) * self.speed;
         if total <= 0.0 {
             return p(0);
@@ -182,7 +185,11 @@ impl Person {
             let (a, b) = leg(k);
             let len = (b - a).norm();
             if s <= len {
-                return if len > 0.0 { a + (b - a) * (s / len) } else { a };
+                return if len > 0.0 {
+                    a + (b - a) * (s / len)
+                } else {
+                    a
+                };
             }
             s -= len;
         }

@@ -1,7 +1,10 @@
 //! Eqs. (2)-(4): round trips, the Jacobian and its inverse, exact arcs, limits.
 
 use proptest::prelude::*;
-use sim::{Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, saturate, twist_of, wheel_speeds};
+use sim::{
+    Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, saturate, twist_of,
+    wheel_speeds,
+};
 
 proptest! {
     /// Wheel speeds -> body velocity -> wheel speeds, and eq. (3) then eq. (4).

@@ -37,10 +37,42 @@ fn ref_disc(o: Point2, d: Vector2<f64>, c: Point2, r: f64) -> Option<f64> {
 
 fn shape_strategy() -> impl Strategy<Value = Shape> {
     prop_oneof![
-        (0.0..10.0f64, 0.0..10.0f64, 0.1..2.0f64, 0.1..2.0f64, 0.0..180.0f64).prop_map(|(x, y, w, h, a)| Shape::Box { center: (x, y), size: (w, h), angle_deg: a }),
-        (0.0..10.0f64, 0.0..10.0f64, 0.05..1.0f64).prop_map(|(x, y, r)| Shape::Disc { center: (x, y), radius: r }),
-        (0.0..10.0f64, 0.0..10.0f64, 0.0..10.0f64, 0.0..10.0f64, 0.05..0.3f64).prop_map(|(a, b, c, d, t)| Shape::Wall { from: (a, b), to: (c, d), thickness: t }),
-        (0.0..10.0f64, 0.0..10.0f64, 0.3..1.5f64).prop_map(|(x, y, s)| Shape::Polygon { points: vec![(x, y), (x + s, y + 0.2), (x + 0.4 * s, y + s), (x - 0.3 * s, y + 0.6 * s)] }),
+        (
+            0.0..10.0f64,
+            0.0..10.0f64,
+            0.1..2.0f64,
+            0.1..2.0f64,
+            0.0..180.0f64
+        )
+            .prop_map(|(x, y, w, h, a)| Shape::Box {
+                center: (x, y),
+                size: (w, h),
+                angle_deg: a
+            }),
+        (0.0..10.0f64, 0.0..10.0f64, 0.05..1.0f64).prop_map(|(x, y, r)| Shape::Disc {
+            center: (x, y),
+            radius: r
+        }),
+        (
+            0.0..10.0f64,
+            0.0..10.0f64,
+            0.0..10.0f64,
+            0.0..10.0f64,
+            0.05..0.3f64
+        )
+            .prop_map(|(a, b, c, d, t)| Shape::Wall {
+                from: (a, b),
+                to: (c, d),
+                thickness: t
+            }),
+        (0.0..10.0f64, 0.0..10.0f64, 0.3..1.5f64).prop_map(|(x, y, s)| Shape::Polygon {
+            points: vec![
+                (x, y),
+                (x + s, y + 0.2),
+                (x + 0.4 * s, y + s),
+                (x - 0.3 * s, y + 0.6 * s)
+            ]
+        }),
     ]
 }
 
@@ -109,7 +141,11 @@ proptest! {
 #[test]
 fn noise_is_seeded_and_bounded() {
     use rand::SeedableRng;
-    let w = world(&[Shape::Box { center: (5.0, 0.0), size: (1.0, 20.0), angle_deg: 0.0 }]);
+    let w = world(&[Shape::Box {
+        center: (5.0, 0.0),
+        size: (1.0, 20.0),
+        angle_deg: 0.0,
+    }]);
     let model = LaserModel::new(Laser::default());
     let clean = model.cast(&w, &[], Point2::new(0.0, 0.0), 0.0);
     let noisy = |seed| {
@@ -120,7 +156,10 @@ fn noise_is_seeded_and_bounded() {
     assert_eq!(noisy(1), noisy(1));
     assert_ne!(noisy(1), noisy(2));
     let n = noisy(1);
-    let hits: Vec<f64> = (0..720).filter(|&k| clean.ranges[k].is_finite()).map(|k| n.ranges[k] - clean.ranges[k]).collect();
+    let hits: Vec<f64> = (0..720)
+        .filter(|&k| clean.ranges[k].is_finite())
+        .map(|k| n.ranges[k] - clean.ranges[k])
+        .collect();
     let sd = (hits.iter().map(|e| e * e).sum::<f64>() / hits.len() as f64).sqrt();
     assert!((sd - 0.01).abs() < 0.002, "noise sd {sd}");
 }

@@ -36,7 +36,9 @@ fn global_planner(name: &str) -> anyhow::Result<sim::GlobalPlanner> {
         goal_radius: 0.0,
         budget: hyplan_core::Budget::iterations(20_000),
     };
-    Ok(sim::GlobalPlanner::Other(crate::planners::build(name, &flags)?))
+    Ok(sim::GlobalPlanner::Other(crate::planners::build(
+        name, &flags,
+    )?))
 }
 
 /// Runs `hyplan sim`: a summary on stdout; exit 0 goal reached, 1 not reached, 2 bad input.
