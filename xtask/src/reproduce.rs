@@ -289,7 +289,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     let series = series_claims(&results);
     let seconds = started.elapsed().as_secs_f64();
-    let report = crate::report::report(&results, &series, args.quick, seconds);
+    let mut report = crate::report::report(&results, &series, args.quick, seconds);
+    // Seed 004 runs in the `sim` crate (scenarios/sim/), with claims of its own.
+    report.push_str(&crate::sim004::section(&root, &figures)?.0);
     let report_path = out.join("report.md");
     std::fs::write(&report_path, &report)
         .with_context(|| format!("writing {}", report_path.display()))?;

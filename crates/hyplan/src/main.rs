@@ -35,6 +35,9 @@ enum Command {
     Plan(cmd::plan::Args),
     /// Run a MovingAI scenario file (.map + .scen) and compare with its optimal lengths.
     Scen(cmd::scen::Args),
+    /// Drive the simulated robot of seed 004 through a scenario with people (exit 1: goal
+    /// not reached).
+    Sim(cmd::sim::Args),
 }
 
 fn main() -> ExitCode {
@@ -51,6 +54,7 @@ fn main() -> ExitCode {
         Command::Map(args) => cmd::map::run(&args),
         Command::Plan(args) => cmd::plan::run(&args),
         Command::Scen(args) => cmd::scen::run(&args),
+        Command::Sim(args) => cmd::sim::run(&args),
     };
     match result {
         Ok(code) => code,

@@ -3,3 +3,4 @@
 mod map;
 mod plan;
 mod scen;
+mod sim;

@@ -27,3 +27,4 @@ pub fn load_map(
 pub mod map;
 pub mod plan;
 pub mod scen;
+pub mod sim;

@@ -1,0 +1,39 @@
+//! Seed 004's scenario 3 (a person crossing) in `sim`, laser at its full rate (720 beams,
+//! 40 Hz): the real-time factor is the simulated time divided by the time per run.
+
+use std::path::Path;
+
+use criterion::{Criterion, criterion_main};
+use sim::{GlobalPlanner, Scenario};
+
+fn scenario3(c: &mut Criterion) {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/3-person.ron");
+    let (scenario, world) = Scenario::load(&file).expect("scenario 3 loads");
+    // Checked once outside the timed loop: a broken run must not look fast.
+    let out = sim::run(&scenario, &world, 0, GlobalPlanner::Dijkstra);
+    let m = &out.trace.summary;
+    assert!(m.reached && m.contacts_at_fault == 0, "{m:?}");
+    assert_eq!(scenario.laser.beams, 720);
+    assert_eq!(scenario.laser.rate_hz, 40.0);
+    eprintln!(
+        "scenario 3 simulates {:.1} s: real-time factor = {:.1} / (time per run in s)",
+        m.end_time, m.end_time
+    );
+    c.bench_function(
+        &format!("sim/004-nav-3-person/{:.1}s_simulated", m.end_time),
+        |b| {
+            b.iter(|| sim::run(&scenario, &world, 0, GlobalPlanner::Dijkstra));
+        },
+    );
+}
+
+/// The criterion entry points (the macro's generated function carries no doc).
+#[allow(missing_docs)]
+mod entry {
+    criterion::criterion_group! {
+        name = benches;
+        config = criterion::Criterion::default().sample_size(10);
+        targets = super::scenario3
+    }
+}
+criterion_main!(entry::benches);

@@ -1,0 +1,221 @@
+//! Path following: regulated pure pursuit (Nav2's `RegulatedPurePursuitController`,
+//! simplified), under the robot's speed, turn-rate and acceleration limits, with a
+//! collision check that never lets the robot drive into anything it can see.
+//!
+//! Our choice over the trajectory roll-out the paper's `move_base` ran
+//! (`base_local_planner`): pure pursuit follows the global path closely, has few
+//! parameters, and its commands are easy to reason about. Each control step:
+//! 1. carrot: the first path point at least `lookahead` ahead of the robot's projection
+//!    on the path (the goal when closer);
+//! 2. if the carrot is more than `rotate_above_deg` off the heading: turn in place at
+//!    `rotate_speed`;
+//! 3. else curvature `k = 2 y / L^2` to the carrot, speed `v_max` slowed on tight curves
+//!    (radius below `regulate_radius`) and near the goal (`approach_distance`);
+//! 4. limits: `|omega| <= omega_max` (keeping the curvature), acceleration limits against
+//!    the previous command, wheel saturation through eq. (4);
+//! 5. safety: the arc the command drives, out to the distance needed to stop plus one
+//!    control period, must keep `body_radius + margin` from every remembered laser hit;
+//!    otherwise the robot brakes as hard as it may (turning in place is always allowed:
+//!    the body is round).
+
+use hyplan_core::Point2;
+use serde::{Deserialize, Serialize};
+
+use crate::costmap::ObstacleMemory;
+use crate::kinematics::{self, Pose, Robot, Twist};
+
+/// Controller parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Controller {
+    /// Control rate, Hz (10).
+    pub rate_hz: f64,
+    /// Carrot distance, m (0.6, Nav2's default lookahead).
+    pub lookahead: f64,
+    /// Turn in place when the carrot is further off the heading than this, degrees (45).
+    pub rotate_above_deg: f64,
+    /// Turn rate of in-place turns, rad/s (0.8: the tutorial turns in place at 0.7 to 1.0).
+    pub rotate_speed: f64,
+    /// Curves tighter than this radius slow the robot proportionally, m (0.9, Nav2).
+    pub regulate_radius: f64,
+    /// Within this distance of the goal the speed scales down linearly, m (0.6).
+    pub approach_distance: f64,
+    /// Slowest forward speed while following, m/s (0.05, the tutorial's `min_vel_x`).
+    pub v_min: f64,
+    /// Clearance kept between the body and any laser hit on the arc ahead, m (0.02).
+    pub margin: f64,
+}
+
+impl Default for Controller {
+    fn default() -> Self {
+        Self {
+            rate_hz: 10.0,
+            lookahead: 0.6,
+            rotate_above_deg: 45.0,
+            rotate_speed: 0.8,
+            regulate_radius: 0.9,
+            approach_distance: 0.6,
+            v_min: 0.05,
+            margin: 0.02,
+        }
+    }
+}
+
+/// What a control step decided.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Command {
+    /// The command, within every limit.
+    pub twist: Twist,
+    /// The wanted arc ran into a laser hit, so the robot is braking.
+    pub obstructed: bool,
+}
+
+/// The point of `path` (from segment `from` on) nearest to `p`: (segment index, point).
+#[must_use]
+pub fn project(path: &[Point2], from: usize, p: Point2) -> (usize, Point2) {
+    let mut best = (from, path[from.min(path.len() - 1)], f64::INFINITY);
+    for k in from..path.len().saturating_sub(1) {
+        let q = crate::world::closest_on_segment(p, path[k], path[k + 1]);
+        let d = (q - p).norm_squared();
+        if d < best.2 {
+            best = (k, q, d);
+        }
+    }
+    (best.0, best.1)
+}
+
+/// The point `dist` metres along `path` from `q` on segment `k` (the end if shorter).
+#[must_use]
+pub fn along(path: &[Point2], k: usize, q: Point2, dist: f64) -> Point2 {
+    let mut left = dist;
+    let mut a = q;
+    for seg in k..path.len().saturating_sub(1) {
+        let b = path[seg + 1];
+        let len = (b - a).norm();
+        if len >= left {
+            return a + (b - a) * (left / len.max(f64::MIN_POSITIVE));
+        }
+        left -= len;
+        a = b;
+    }
+    *path.last().unwrap_or(&q)
+}
+
+impl Controller {
+    /// Seconds per control step.
+    #[must_use]
+    pub fn period(&self) -> f64 {
+        1.0 / self.rate_hz
+    }
+
+    /// The limited command toward `want` from the previous command `prev`.
+    #[must_use]
+    pub fn limit(&self, robot: &Robot, prev: Twist, want: Twist) -> Twist {
+        let dt = self.period();
+        let mut w = want;
+        w.v = w.v.clamp(0.0, robot.v_max);
+        if w.omega.abs() > robot.omega_max {
+            let k = robot.omega_max / w.omega.abs();
+            w.omega *= k;
+            w.v *= k;
+        }
+        let dv = robot.acc_v * dt;
+        let dw = robot.acc_omega * dt;
+        w.v = w.v.clamp(prev.v - dv, prev.v + dv).clamp(0.0, robot.v_max);
+        w.omega = w
+            .omega
+            .clamp(prev.omega - dw, prev.omega + dw)
+            .clamp(-robot.omega_max, robot.omega_max);
+        kinematics::saturate(robot, w)
+    }
+
+    /// Whether driving `twist` from `pose` keeps the body `margin` clear of every
+    /// remembered hit, out to the stopping distance plus one period.
+    #[must_use]
+    pub fn arc_clear(
+        &self,
+        robot: &Robot,
+        pose: Pose,
+        twist: Twist,
+        memory: &ObstacleMemory,
+        tick: u64,
+    ) -> bool {
+        let dt = self.period();
+        let stop = twist.v * twist.v / (2.0 * robot.acc_v);
+        let dist = twist.v * dt + stop + robot.acc_v * dt * dt + 0.02;
+        if twist.v <= 0.0 {
+            return true;
+        }
+        let radius = robot.body_radius + self.margin;
+        let step = 0.025;
+        let n = (dist / step).ceil() as usize;
+        let time = dist / twist.v;
+        for s in 1..=n {
+            let p = kinematics::integrate(pose, twist, time * s as f64 / n as f64);
+            if memory.any_within(Point2::new(p.x, p.y), radius, tick) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// One control step toward the end of `path` (at least two points), from segment
+    /// `progress` on. Returns the command and the new progress index.
+    #[allow(clippy::too_many_arguments)]
+    #[must_use]
+    pub fn step(
+        &self,
+        robot: &Robot,
+        pose: Pose,
+        prev: Twist,
+        path: &[Point2],
+        progress: usize,
+        memory: &ObstacleMemory,
+        tick: u64,
+    ) -> (Command, usize) {
+        let here = Point2::new(pose.x, pose.y);
+        let (k, q) = project(path, progress, here);
+        let goal = *path.last().unwrap_or(&here);
+        let carrot = along(path, k, q, self.lookahead);
+        let d = carrot - here;
+        let (s, c) = pose.phi.sin_cos();
+        let (x, y) = (c * d.x + s * d.y, -s * d.x + c * d.y);
+        let angle = y.atan2(x);
+        let want = if angle.abs() > self.rotate_above_deg.to_radians() {
+            Twist {
+                v: 0.0,
+                omega: self.rotate_speed.copysign(angle),
+            }
+        } else {
+            let l_sq = (x * x + y * y).max(1e-9);
+            let kappa = 2.0 * y / l_sq;
+            let mut v = robot.v_max;
+            if kappa.abs() > 1e-9 && 1.0 / kappa.abs() < self.regulate_radius {
+                v *= (1.0 / kappa.abs()) / self.regulate_radius;
+            }
+            let to_goal = (goal - here).norm();
+            if to_goal < self.approach_distance {
+                v *= to_goal / self.approach_distance;
+            }
+            let v = v.max(self.v_min);
+            Twist {
+                v,
+                omega: v * kappa,
+            }
+        };
+        let mut twist = self.limit(robot, prev, want);
+        let mut obstructed = false;
+        if !self.arc_clear(robot, pose, twist, memory, tick) {
+            obstructed = true;
+            // Brake as hard as allowed, keep turning toward the carrot.
+            let v = (prev.v - robot.acc_v * self.period()).max(0.0);
+            let omega = if v > 0.0 && prev.v > 0.0 {
+                prev.omega * v / prev.v
+            } else {
+                0.0
+            };
+            twist = self.limit(robot, prev, Twist { v, omega });
+        }
+        (Command { twist, obstructed }, k)
+    }
+}

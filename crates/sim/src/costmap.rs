@@ -1,0 +1,396 @@
+//! What the robot plans and steers with: the known map plus what the laser sees now,
+//! inflated by the robot's radius with envmap's (Nav2's) inflation costs.
+//!
+//! Two pieces:
+//! - [`ObstacleMemory`]: the latest laser hits, one exact point per 5 cm cell with the tick
+//!   it was seen, forgotten after a while or as soon as a newer beam passes through it.
+//!   The controller and the blocked-path test read it.
+//! - [`Costmap`]: lethal cells (prior map, occupied cells of the built map, remembered
+//!   hits) inflated through [`envmap::Inflation`], as a [`GridMap`] whose zones the
+//!   planner uses: `Forbidden` within the inscribed radius, `Risk` within the preferred
+//!   clearance, `Free` beyond.
+
+use envmap::{GridMap, INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE, Mask};
+use hyplan_core::{Bounds, Point2, Zone};
+use serde::{Deserialize, Serialize};
+
+use crate::laser::Scan;
+use crate::mapping::OccupancyGrid;
+use crate::world::StaticWorld;
+
+/// Costmap parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CostmapParams {
+    /// Cell side, m (0.1: coarser than the 0.05 m map, so that a plan takes a millisecond
+    /// or two).
+    pub resolution: f64,
+    /// Footprint padding added to the body radius, m (0.03, as the tutorial's costmap).
+    pub padding: f64,
+    /// Cells within this distance of an obstacle, beyond the inscribed radius, are
+    /// avoided when a path exists without them, m.
+    pub preferred_clearance: f64,
+    /// Nav2 inflation radius, m (0.55 in the tutorial).
+    pub inflation_radius: f64,
+    /// Nav2 cost scaling factor, 1/m (10 in the tutorial).
+    pub cost_scaling_factor: f64,
+    /// Laser hits farther than this from the scanner are not marked, m (3.5).
+    pub obstacle_range: f64,
+    /// Laser hits are remembered this long unless a newer beam passes through them, s.
+    pub memory: f64,
+}
+
+impl Default for CostmapParams {
+    fn default() -> Self {
+        Self {
+            resolution: 0.1,
+            padding: 0.03,
+            preferred_clearance: 0.5,
+            inflation_radius: 0.55,
+            cost_scaling_factor: 10.0,
+            obstacle_range: 3.5,
+            memory: 1.0,
+        }
+    }
+}
+
+/// Side of an [`ObstacleMemory`] cell, m.
+pub const MEMORY_RESOLUTION: f64 = 0.05;
+
+/// Recent laser hits: per 5 cm cell, the last hit point and when it was seen.
+#[derive(Debug, Clone)]
+pub struct ObstacleMemory {
+    width: usize,
+    height: usize,
+    origin: Point2,
+    /// Tick of the last hit plus one (0: never).
+    stamp: Vec<u64>,
+    point: Vec<[f32; 2]>,
+    /// Cells written by the latest scans, to scan without visiting the whole grid.
+    recent: Vec<u32>,
+    /// The latest scan, for clearing by newer beams.
+    latest: Option<Scan>,
+    /// Memory length, ticks.
+    keep: u64,
+    obstacle_range: f64,
+}
+
+impl ObstacleMemory {
+    /// An empty memory over `bounds`, forgetting after `keep_ticks`.
+    #[must_use]
+    pub fn new(bounds: Bounds, keep_ticks: u64, obstacle_range: f64) -> Self {
+        let width = (bounds.width() / MEMORY_RESOLUTION).ceil().max(1.0) as usize;
+        let height = (bounds.height() / MEMORY_RESOLUTION).ceil().max(1.0) as usize;
+        Self {
+            width,
+            height,
+            origin: bounds.min,
+            stamp: vec![0; width * height],
+            point: vec![[0.0; 2]; width * height],
+            recent: Vec::new(),
+            latest: None,
+            keep: keep_ticks,
+            obstacle_range,
+        }
+    }
+
+    fn cell(&self, p: Point2) -> Option<(usize, usize)> {
+        let u = (p.x - self.origin.x) / MEMORY_RESOLUTION;
+        let v = (p.y - self.origin.y) / MEMORY_RESOLUTION;
+        (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
+            .then_some((u as usize, v as usize))
+    }
+
+    /// Records the hits of a scan taken at `tick`.
+    pub fn insert(&mut self, scan: Scan, tick: u64) {
+        let now = tick + 1;
+        let keep = self.keep;
+        // Drop cells whose stamp expired from the recent list.
+        let stamp = &self.stamp;
+        self.recent
+            .retain(|&k| stamp[k as usize] + keep >= now && stamp[k as usize] != 0);
+        for k in 0..scan.ranges.len() {
+            if scan.ranges[k] > self.obstacle_range {
+                continue;
+            }
+            let Some(p) = scan.hit(k) else { continue };
+            let Some((i, j)) = self.cell(p) else { continue };
+            let c = j * self.width + i;
+            if self.stamp[c] != now {
+                if self.stamp[c] == 0 || self.stamp[c] + keep < now {
+                    self.recent.push(c as u32);
+                }
+                self.stamp[c] = now;
+            }
+            self.point[c] = [p.x as f32, p.y as f32];
+        }
+        self.latest = Some(scan);
+    }
+
+    /// The remembered point in cell `c` if still valid at `tick`.
+    fn valid(&self, c: usize, tick: u64) -> Option<Point2> {
+        let s = self.stamp[c];
+        let now = tick + 1;
+        if s == 0 || s + self.keep < now {
+            return None;
+        }
+        let p = Point2::new(f64::from(self.point[c][0]), f64::from(self.point[c][1]));
+        if s != now
+            && let Some(scan) = &self.latest
+        {
+            // A newer beam that went past the point clears it (people move on).
+            let v = p - scan.origin;
+            let d = v.norm();
+            if let Some(k) = scan.beam_toward(v.y.atan2(v.x))
+                && scan.ranges[k] > d + 2.0 * MEMORY_RESOLUTION
+                && d > 0.0
+            {
+                return None;
+            }
+        }
+        Some(p)
+    }
+
+    /// Whether any remembered obstacle lies within `radius` of `p` at `tick`.
+    #[must_use]
+    pub fn any_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
+        self.nearest_within(p, radius, tick).is_some()
+    }
+
+    /// The nearest remembered obstacle within `radius` of `p` at `tick`.
+    #[must_use]
+    pub fn nearest_within(&self, p: Point2, radius: f64, tick: u64) -> Option<(f64, Point2)> {
+        let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
+        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
+        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
+        let mut best: Option<(f64, Point2)> = None;
+        for j in (cj - r).max(0)..=(cj + r).min(self.height as i64 - 1) {
+            for i in (ci - r).max(0)..=(ci + r).min(self.width as i64 - 1) {
+                let c = j as usize * self.width + i as usize;
+                if self.stamp[c] == 0 {
+                    continue;
+                }
+                if let Some(q) = self.valid(c, tick) {
+                    let d = (q - p).norm();
+                    if d <= radius && best.is_none_or(|b| d < b.0) {
+                        best = Some((d, q));
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Every valid remembered point at `tick`.
+    #[must_use]
+    pub fn points(&self, tick: u64) -> Vec<Point2> {
+        self.recent
+            .iter()
+            .filter_map(|&c| self.valid(c as usize, tick))
+            .collect()
+    }
+}
+
+/// The planner's map: Nav2 costs and the zones derived from them.
+#[derive(Debug, Clone)]
+pub struct Costmap {
+    /// Nav2 cost per cell (0..=254), row-major from the bottom row.
+    pub costs: Vec<u8>,
+    /// Zones for the planner (see the module doc).
+    pub map: GridMap,
+}
+
+impl Costmap {
+    /// The costmap ROS would publish: 254 -> 100, 253 -> 99, 1..=252 -> 1..=98, 0 -> 0.
+    #[must_use]
+    pub fn ros_values(&self) -> Vec<i8> {
+        self.costs
+            .iter()
+            .map(|&c| match c {
+                LETHAL_OBSTACLE => 100,
+                INSCRIBED_INFLATED_OBSTACLE => 99,
+                0 => 0,
+                c => (1 + (u32::from(c) - 1) * 97 / 251) as i8,
+            })
+            .collect()
+    }
+}
+
+/// Builds costmaps on one grid.
+#[derive(Debug, Clone)]
+pub struct CostmapBuilder {
+    /// Parameters.
+    pub params: CostmapParams,
+    /// Robot body radius, m.
+    pub body_radius: f64,
+    width: usize,
+    height: usize,
+    origin: Point2,
+    /// Lethal cells of the prior map.
+    prior: Vec<bool>,
+}
+
+impl CostmapBuilder {
+    /// A builder over `bounds` whose prior map is `mapped` rasterised (a cell is lethal
+    /// when an obstacle reaches into it).
+    #[must_use]
+    pub fn new(
+        bounds: Bounds,
+        mapped: &StaticWorld,
+        params: CostmapParams,
+        body_radius: f64,
+    ) -> Self {
+        let res = params.resolution;
+        let width = (bounds.width() / res).ceil().max(1.0) as usize;
+        let height = (bounds.height() / res).ceil().max(1.0) as usize;
+        let origin = bounds.min;
+        let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
+        let mut prior = vec![false; width * height];
+        // Each shape marks the cells of its bounding box that it reaches into.
+        let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
+            let a = ((lo - o) / res).floor().max(0.0) as usize;
+            let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
+            a..b.max(a)
+        };
+        let centre = |i: usize, j: usize| {
+            Point2::new(
+                origin.x + (i as f64 + 0.5) * res,
+                origin.y + (j as f64 + 0.5) * res,
+            )
+        };
+        let mut mark_box = |lo: Point2, hi: Point2, hit: &dyn Fn(Point2) -> bool| {
+            for j in cell_range(lo.y, hi.y, origin.y, height) {
+                for i in cell_range(lo.x, hi.x, origin.x, width) {
+                    if !prior[j * width + i] && hit(centre(i, j)) {
+                        prior[j * width + i] = true;
+                    }
+                }
+            }
+        };
+        let pad = nalgebra::Vector2::new(half_diag, half_diag);
+        for s in &mapped.segments {
+            let lo = Point2::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)) - pad;
+            let hi = Point2::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)) + pad;
+            mark_box(lo, hi, &|c| {
+                (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag
+            });
+        }
+        for poly in &mapped.polygons {
+            let lo = poly
+                .iter()
+                .fold(Point2::new(f64::INFINITY, f64::INFINITY), |m, p| {
+                    Point2::new(m.x.min(p.x), m.y.min(p.y))
+                });
+            let hi = poly
+                .iter()
+                .fold(Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, p| {
+                    Point2::new(m.x.max(p.x), m.y.max(p.y))
+                });
+            mark_box(lo, hi, &|c| crate::world::point_in_polygon(c, poly));
+        }
+        for d in &mapped.discs {
+            let r = nalgebra::Vector2::new(d.radius, d.radius) + pad;
+            mark_box(d.center - r, d.center + r, &|c| {
+                (c - d.center).norm() <= d.radius + half_diag
+            });
+        }
+        if let Some(g) = &mapped.grid {
+            // Every costmap cell a forbidden grid cell overlaps (sampled at the grid's
+            // corners and centre) is lethal.
+            for gj in 0..g.height() {
+                for gi in 0..g.width() {
+                    if g.cell_zone(gi, gj) != Zone::Forbidden {
+                        continue;
+                    }
+                    let c = g.cell_center(gi, gj);
+                    let h = g.resolution() / 2.0 * 0.999;
+                    for (dx, dy) in [(0.0, 0.0), (-h, -h), (h, -h), (-h, h), (h, h)] {
+                        let u = (c.x + dx - origin.x) / res;
+                        let v = (c.y + dy - origin.y) / res;
+                        if u >= 0.0 && v >= 0.0 && (u as usize) < width && (v as usize) < height {
+                            prior[v as usize * width + u as usize] = true;
+                        }
+                    }
+                }
+            }
+        }
+        Self {
+            params,
+            body_radius,
+            width,
+            height,
+            origin,
+            prior,
+        }
+    }
+
+    /// The inflation used: inscribed radius = body + padding + one cell diagonal, so that
+    /// every point of a free cell is at least body + padding from every obstacle point
+    /// (both the point and the obstacle may sit half a diagonal off their cell centres).
+    #[must_use]
+    pub fn inflation(&self) -> Inflation {
+        let inscribed = self.body_radius
+            + self.params.padding
+            + self.params.resolution * std::f64::consts::SQRT_2;
+        Inflation {
+            inscribed_radius: inscribed,
+            inflation_radius: self.params.inflation_radius.max(inscribed),
+            cost_scaling_factor: self.params.cost_scaling_factor,
+        }
+    }
+
+    /// The costmap of the prior map, the built map's occupied cells and `hits`.
+    #[must_use]
+    pub fn build(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Costmap {
+        let res = self.params.resolution;
+        let mut mask = Mask::new(self.width, self.height);
+        for (m, &p) in mask.cells_mut().iter_mut().zip(&self.prior) {
+            *m = p;
+        }
+        let mut mark = |p: Point2| {
+            let u = (p.x - self.origin.x) / res;
+            let v = (p.y - self.origin.y) / res;
+            if u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height {
+                mask.set(u as usize, v as usize, true);
+            }
+        };
+        if let Some(g) = built {
+            let gr = g.params.resolution;
+            for j in 0..g.height() {
+                for i in 0..g.width() {
+                    if g.value(i, j) == crate::mapping::OCCUPIED {
+                        let o = g.origin();
+                        mark(Point2::new(
+                            o.x + (i as f64 + 0.5) * gr,
+                            o.y + (j as f64 + 0.5) * gr,
+                        ));
+                    }
+                }
+            }
+        }
+        for &p in hits {
+            mark(p);
+        }
+        let field = envmap::distance_transform(&mask);
+        let inflation = self.inflation();
+        let costs = inflation
+            .costs(&field, res)
+            .expect("the builder's own parameters are valid");
+        let risk_from = inflation.cost(self.params.preferred_clearance).max(1);
+        let zones = costs
+            .iter()
+            .map(|&c| {
+                if c >= INSCRIBED_INFLATED_OBSTACLE {
+                    Zone::Forbidden
+                } else if c >= risk_from {
+                    Zone::Risk
+                } else {
+                    Zone::Free
+                }
+            })
+            .collect();
+        let map = GridMap::from_zones(self.width, self.height, res, self.origin, zones)
+            .expect("the builder's own size and frame are valid");
+        Costmap { costs, map }
+    }
+}

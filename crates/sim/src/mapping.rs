@@ -1,0 +1,267 @@
+//! The occupancy grid the robot builds from its scans.
+//!
+//! Rule (our choice, documented in `docs/papers/004-dynamic-obstacles.md`): clamped
+//! log-odds, as OctoMap does. Every cell a beam crosses before its hit gets `l_miss`, the
+//! hit cell gets `l_hit`, and the sum is clamped to `[l_min, l_max]`. A cell never crossed
+//! by a beam is unknown (ROS -1); a crossed cell is occupied (100) when its log-odds is
+//! above 0 (probability above 0.5), else free (0). gmapping's hit / visit counting was the
+//! paper's likely rule; we clamp because counting never forgets: a cell where a person
+//! stood for a minute would stay occupied long after they left. With the defaults, a
+//! cell at `l_max` is free again after `ceil(l_max / -l_miss) = 9` later beams pass
+//! through it, so people leave no permanent marks.
+
+use envmap::GridMap;
+use hyplan_core::{Bounds, Point2, Zone};
+use serde::{Deserialize, Serialize};
+
+use crate::laser::Scan;
+
+/// Mapping parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Mapping {
+    /// Cell side, m (gmapping's `delta`, 0.05).
+    pub resolution: f64,
+    /// Log-odds added to a hit cell.
+    pub l_hit: f64,
+    /// Log-odds added to a crossed cell (negative).
+    pub l_miss: f64,
+    /// Lower clamp.
+    pub l_min: f64,
+    /// Upper clamp.
+    pub l_max: f64,
+    /// Beams are used up to this range, m (gmapping's `maxUrange`; 4 m, the tutorial's
+    /// clearing range); a longer beam or one with no return clears up to it.
+    pub max_range: f64,
+    /// Seconds between map updates (gmapping updates on motion or time; 1 s here).
+    pub period: f64,
+}
+
+impl Default for Mapping {
+    fn default() -> Self {
+        Self {
+            resolution: 0.05,
+            l_hit: 0.85,
+            l_miss: -0.4,
+            l_min: -2.0,
+            l_max: 3.5,
+            max_range: 4.0,
+            period: 1.0,
+        }
+    }
+}
+
+/// ROS value of an unknown cell.
+pub const UNKNOWN: i8 = -1;
+/// ROS value of a free cell.
+pub const FREE: i8 = 0;
+/// ROS value of an occupied cell.
+pub const OCCUPIED: i8 = 100;
+
+/// An occupancy grid in the ROS frame (origin at the lower-left corner, rows from the
+/// bottom), updated from scans.
+#[derive(Debug, Clone)]
+pub struct OccupancyGrid {
+    /// Parameters.
+    pub params: Mapping,
+    width: usize,
+    height: usize,
+    origin: Point2,
+    logodds: Vec<f32>,
+    seen: Vec<bool>,
+}
+
+impl OccupancyGrid {
+    /// An all-unknown grid covering `bounds`.
+    #[must_use]
+    pub fn new(bounds: Bounds, params: Mapping) -> Self {
+        let width = (bounds.width() / params.resolution).ceil().max(1.0) as usize;
+        let height = (bounds.height() / params.resolution).ceil().max(1.0) as usize;
+        Self {
+            params,
+            width,
+            height,
+            origin: bounds.min,
+            logodds: vec![0.0; width * height],
+            seen: vec![false; width * height],
+        }
+    }
+
+    /// Columns.
+    #[must_use]
+    pub const fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Rows.
+    #[must_use]
+    pub const fn height(&self) -> usize {
+        self.height
+    }
+
+    /// Lower-left corner, m.
+    #[must_use]
+    pub const fn origin(&self) -> Point2 {
+        self.origin
+    }
+
+    /// The ROS value of cell `(i, j)`: -1, 0 or 100.
+    #[must_use]
+    pub fn value(&self, i: usize, j: usize) -> i8 {
+        let k = j * self.width + i;
+        if !self.seen[k] {
+            UNKNOWN
+        } else if self.logodds[k] > 0.0 {
+            OCCUPIED
+        } else {
+            FREE
+        }
+    }
+
+    /// Every cell's ROS value, row-major from the bottom row.
+    #[must_use]
+    pub fn ros_values(&self) -> Vec<i8> {
+        (0..self.height)
+            .flat_map(|j| (0..self.width).map(move |i| (i, j)))
+            .map(|(i, j)| self.value(i, j))
+            .collect()
+    }
+
+    /// The cell holding `p`, if inside.
+    #[must_use]
+    pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
+        let u = (p.x - self.origin.x) / self.params.resolution;
+        let v = (p.y - self.origin.y) / self.params.resolution;
+        (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
+            .then_some((u as usize, v as usize))
+    }
+
+    /// Updates the grid from one scan.
+    pub fn integrate(&mut self, scan: &Scan) {
+        let max = self.params.max_range;
+        for k in 0..scan.ranges.len() {
+            let r = scan.ranges[k];
+            let a = scan.angle_min + k as f64 * scan.angle_increment;
+            let (hit, len) = if r.is_finite() && r <= max {
+                (true, r)
+            } else {
+                (false, max)
+            };
+            let end = scan.origin + nalgebra::Vector2::new(a.cos(), a.sin()) * len;
+            self.trace(scan.origin, end, hit);
+        }
+    }
+
+    /// Walks the cells from `a` to `b` (Amanatides-Woo): misses before the last cell, a
+    /// hit (or a miss) in the last.
+    fn trace(&mut self, a: Point2, b: Point2, hit: bool) {
+        let res = self.params.resolution;
+        let (ax, ay) = ((a.x - self.origin.x) / res, (a.y - self.origin.y) / res);
+        let (bx, by) = ((b.x - self.origin.x) / res, (b.y - self.origin.y) / res);
+        let (mut i, mut j) = (ax.floor() as i64, ay.floor() as i64);
+        let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
+        let (dx, dy) = (bx - ax, by - ay);
+        let (si, sj) = (dx.signum() as i64, dy.signum() as i64);
+        let t_dx = if dx != 0.0 {
+            (1.0 / dx).abs()
+        } else {
+            f64::INFINITY
+        };
+        let t_dy = if dy != 0.0 {
+            (1.0 / dy).abs()
+        } else {
+            f64::INFINITY
+        };
+        let mut t_x = if dx > 0.0 {
+            (ax.floor() + 1.0 - ax) * t_dx
+        } else if dx < 0.0 {
+            (ax - ax.floor()) * t_dx
+        } else {
+            f64::INFINITY
+        };
+        let mut t_y = if dy > 0.0 {
+            (ay.floor() + 1.0 - ay) * t_dy
+        } else if dy < 0.0 {
+            (ay - ay.floor()) * t_dy
+        } else {
+            f64::INFINITY
+        };
+        let steps = (ei - i).abs() + (ej - j).abs();
+        let (w, h) = (self.width as i64, self.height as i64);
+        let (miss, lo, hi) = (
+            self.params.l_miss as f32,
+            self.params.l_min as f32,
+            self.params.l_max as f32,
+        );
+        for _ in 0..steps {
+            if i >= 0 && j >= 0 && i < w && j < h {
+                let k = (j * w + i) as usize;
+                self.seen[k] = true;
+                self.logodds[k] = (self.logodds[k] + miss).clamp(lo, hi);
+            }
+            if t_x < t_y {
+                i += si;
+                t_x += t_dx;
+            } else {
+                j += sj;
+                t_y += t_dy;
+            }
+        }
+        let last = if hit {
+            self.params.l_hit
+        } else {
+            self.params.l_miss
+        };
+        self.update(i, j, last);
+    }
+
+    fn update(&mut self, i: i64, j: i64, dl: f64) {
+        if i < 0 || j < 0 || i as usize >= self.width || j as usize >= self.height {
+            return;
+        }
+        let k = j as usize * self.width + i as usize;
+        self.seen[k] = true;
+        let l = f64::from(self.logodds[k]) + dl;
+        self.logodds[k] = l.clamp(self.params.l_min, self.params.l_max) as f32;
+    }
+
+    /// The grid as a [`GridMap`]: free -> `Free`, occupied -> `Forbidden`, unknown ->
+    /// `Risk` (so [`envmap::write_ros`] writes unknown as its middle grey).
+    #[must_use]
+    pub fn to_grid_map(&self) -> GridMap {
+        let zones = self
+            .ros_values()
+            .into_iter()
+            .map(|v| match v {
+                FREE => Zone::Free,
+                OCCUPIED => Zone::Forbidden,
+                _ => Zone::Risk,
+            })
+            .collect();
+        GridMap::from_zones(
+            self.width,
+            self.height,
+            self.params.resolution,
+            self.origin,
+            zones,
+        )
+        .expect("the grid's own size and frame are valid")
+    }
+
+    /// Writes the grid as a ROS map (YAML + PGM beside it) through
+    /// [`envmap::write_ros`]: free 254, occupied 0, unknown 128.
+    ///
+    /// # Errors
+    ///
+    /// The writer's [`envmap::MapError`].
+    pub fn write_ros(&self, yaml_path: &std::path::Path) -> Result<(), envmap::MapError> {
+        envmap::write_ros(&self.to_grid_map(), yaml_path)
+    }
+
+    /// Whether the cell holding `p` is occupied.
+    #[must_use]
+    pub fn occupied_at(&self, p: Point2) -> bool {
+        self.cell_of(p)
+            .is_some_and(|(i, j)| self.value(i, j) == OCCUPIED)
+    }
+}

@@ -1,0 +1,299 @@
+//! The navigator: plan, follow, notice a blocked path, stop, re-plan, give up.
+//!
+//! At every control step:
+//! - within `goal_tolerance` of the goal: stop, goal reached;
+//! - following: if a remembered laser hit lies within `body_radius + margin` of the path
+//!   ahead (from 0.2 m to `blocked_lookahead` along it), or the controller had to brake
+//!   for something on its arc, the path is blocked: stop (`move_base` publishes zero
+//!   velocity while it re-plans);
+//! - stopped after a block: re-plan on a fresh costmap (known map, built map and what
+//!   the laser sees now);
+//! - a failed plan, or a new block before the robot made `progress_reset` metres on the
+//!   last plan, counts as a failure; after one the navigator waits `retry_period` before
+//!   planning again, and after `max_failures` failures in a row it gives up.
+//!
+//! The navigator owns nothing of the world: an explorer can hand it goals one after the
+//! other ([`Navigator::set_goal`]) and read its state.
+
+use hyplan_core::Point2;
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+
+use crate::control::{Controller, along, project};
+use crate::costmap::{CostmapBuilder, ObstacleMemory};
+use crate::kinematics::{Pose, Robot, Twist};
+use crate::mapping::OccupancyGrid;
+use crate::planner::GlobalPlanner;
+
+/// Navigator parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Navigation {
+    /// The goal is reached within this distance, m (0.3).
+    pub goal_tolerance: f64,
+    /// How far along the path a block is looked for, m (1.5).
+    pub blocked_lookahead: f64,
+    /// Failures in a row before giving up (8).
+    pub max_failures: u32,
+    /// Wait after a failure before planning again, s (1.0).
+    pub retry_period: f64,
+    /// Progress on a plan that resets the failure count, m (0.5).
+    pub progress_reset: f64,
+}
+
+impl Default for Navigation {
+    fn default() -> Self {
+        Self {
+            goal_tolerance: 0.3,
+            blocked_lookahead: 1.5,
+            max_failures: 8,
+            retry_period: 1.0,
+            progress_reset: 0.5,
+        }
+    }
+}
+
+/// Something the navigator did, for the trace.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum NavEvent {
+    /// A first path was planned.
+    Plan,
+    /// The path ahead is blocked by something sensed: the robot stops.
+    Stop,
+    /// A new path was planned after a stop.
+    Replan,
+    /// No path was found (or the new one was blocked at once).
+    Failure,
+    /// The goal was reached.
+    GoalReached,
+    /// Too many failures in a row.
+    GaveUp,
+}
+
+/// Where the navigator is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum NavState {
+    /// Needs a plan (at once, or after `retry_period`).
+    Planning,
+    /// Following a path.
+    Following,
+    /// Braking to a stop before re-planning.
+    Stopping,
+    /// Goal reached.
+    Reached,
+    /// Gave up.
+    Failed,
+}
+
+/// The navigator.
+#[derive(Debug)]
+pub struct Navigator {
+    /// Parameters.
+    pub params: Navigation,
+    /// Path follower.
+    pub controller: Controller,
+    /// Global planner.
+    pub planner: GlobalPlanner,
+    /// Costmap builder.
+    pub costmaps: CostmapBuilder,
+    /// The robot.
+    pub robot: Robot,
+    goal: Point2,
+    path: Vec<Point2>,
+    progress: usize,
+    state: NavState,
+    failures: u32,
+    retry_at: u64,
+    planned_at: Point2,
+    plans: u32,
+    rng: ChaCha8Rng,
+}
+
+impl Navigator {
+    /// A navigator toward `goal`; `rng` is the planner's own stream.
+    #[must_use]
+    pub fn new(
+        params: Navigation,
+        controller: Controller,
+        planner: GlobalPlanner,
+        costmaps: CostmapBuilder,
+        robot: Robot,
+        goal: Point2,
+        rng: ChaCha8Rng,
+    ) -> Self {
+        Self {
+            params,
+            controller,
+            planner,
+            costmaps,
+            robot,
+            goal,
+            path: Vec::new(),
+            progress: 0,
+            state: NavState::Planning,
+            failures: 0,
+            retry_at: 0,
+            planned_at: Point2::origin(),
+            plans: 0,
+            rng,
+        }
+    }
+
+    /// A new goal: plan afresh.
+    pub fn set_goal(&mut self, goal: Point2) {
+        self.goal = goal;
+        self.state = NavState::Planning;
+        self.failures = 0;
+        self.path.clear();
+    }
+
+    /// The current state.
+    #[must_use]
+    pub const fn state(&self) -> NavState {
+        self.state
+    }
+
+    /// The path being followed (empty before the first plan).
+    #[must_use]
+    pub fn path(&self) -> &[Point2] {
+        &self.path
+    }
+
+    fn brake(&self, prev: Twist) -> Twist {
+        self.controller.limit(&self.robot, prev, Twist::default())
+    }
+
+    /// Whether a remembered hit touches the path ahead of the robot.
+    fn path_blocked(&self, here: Point2, memory: &ObstacleMemory, tick: u64) -> bool {
+        let (k, q) = project(&self.path, self.progress, here);
+        let radius = self.robot.body_radius + self.controller.margin;
+        let step = 0.05;
+        let mut s = 0.2;
+        while s <= self.params.blocked_lookahead {
+            let p = along(&self.path, k, q, s);
+            if memory.any_within(p, radius, tick) {
+                return true;
+            }
+            if p == *self.path.last().unwrap_or(&p) {
+                break;
+            }
+            s += step;
+        }
+        false
+    }
+
+    fn fail(&mut self, tick: u64, ticks_per_s: f64, events: &mut Vec<NavEvent>) {
+        self.failures += 1;
+        events.push(NavEvent::Failure);
+        if self.failures >= self.params.max_failures {
+            self.state = NavState::Failed;
+            events.push(NavEvent::GaveUp);
+        } else {
+            self.state = NavState::Planning;
+            self.retry_at = tick + (self.params.retry_period * ticks_per_s).round() as u64;
+        }
+    }
+
+    /// One control step at `tick`. `prev` is the command in force; `ticks_per_s`
+    /// converts durations. Returns the new command; events are appended to `events`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn step(
+        &mut self,
+        pose: Pose,
+        prev: Twist,
+        memory: &ObstacleMemory,
+        built: Option<&OccupancyGrid>,
+        tick: u64,
+        ticks_per_s: f64,
+        events: &mut Vec<NavEvent>,
+    ) -> Twist {
+        let here = Point2::new(pose.x, pose.y);
+        if matches!(self.state, NavState::Reached | NavState::Failed) {
+            return self.brake(prev);
+        }
+        if (self.goal - here).norm() <= self.params.goal_tolerance {
+            self.state = NavState::Reached;
+            events.push(NavEvent::GoalReached);
+            return self.brake(prev);
+        }
+        if self.state == NavState::Stopping {
+            if prev.v == 0.0 && prev.omega == 0.0 {
+                self.state = NavState::Planning;
+            } else {
+                return self.brake(prev);
+            }
+        }
+        if self.state == NavState::Planning {
+            if tick < self.retry_at {
+                return self.brake(prev);
+            }
+            let costmap = self.costmaps.build(built, &memory.points(tick));
+            let found = self.planner.plan(
+                &costmap.map,
+                here,
+                self.goal,
+                self.params.goal_tolerance,
+                &mut self.rng,
+            );
+            match found {
+                Some(path) => {
+                    events.push(if self.plans == 0 {
+                        NavEvent::Plan
+                    } else {
+                        NavEvent::Replan
+                    });
+                    self.plans += 1;
+                    self.path = path;
+                    self.progress = 0;
+                    self.planned_at = here;
+                    self.state = NavState::Following;
+                }
+                None => {
+                    self.fail(tick, ticks_per_s, events);
+                    return self.brake(prev);
+                }
+            }
+        }
+        // Following.
+        if (here - self.planned_at).norm() >= self.params.progress_reset {
+            self.failures = 0;
+        }
+        if self.path_blocked(here, memory, tick) {
+            return self.blocked(here, prev, tick, ticks_per_s, events);
+        }
+        let (cmd, k) = self.controller.step(
+            &self.robot,
+            pose,
+            prev,
+            &self.path,
+            self.progress,
+            memory,
+            tick,
+        );
+        self.progress = k;
+        if cmd.obstructed {
+            return self.blocked(here, prev, tick, ticks_per_s, events);
+        }
+        cmd.twist
+    }
+
+    fn blocked(
+        &mut self,
+        here: Point2,
+        prev: Twist,
+        tick: u64,
+        ticks_per_s: f64,
+        events: &mut Vec<NavEvent>,
+    ) -> Twist {
+        events.push(NavEvent::Stop);
+        if (here - self.planned_at).norm() < self.params.progress_reset && self.plans > 1 {
+            // Blocked again before getting anywhere on the new plan.
+            self.fail(tick, ticks_per_s, events);
+            if self.state == NavState::Failed {
+                return self.brake(prev);
+            }
+        }
+        self.state = NavState::Stopping;
+        self.brake(prev)
+    }
+}

@@ -1,0 +1,147 @@
+//! Global planning on the costmap: Dijkstra (the paper's Algorithm 3) through `search`'s
+//! grid Dijkstra, or any [`Planner`] of the workspace in its place.
+//!
+//! Both plan first in the cells away from obstacles (the costmap's `Free` zone) and, when
+//! that fails, through the inflation band too (`Free` and `Risk`): a plain Dijkstra on a
+//! two-level costmap, where NavFn weighs every cell by its cost. A robot whose own cell
+//! is blocked (it stopped close to a person) plans from the nearest passable cell.
+//! Grid paths are shortened with `postproc`'s greedy shortcut under the map's exact
+//! `segment_free`, so straight stretches come out straight.
+
+use envmap::GridMap;
+use hyplan_core::{Goal, Planner, Point2, Query, Workspace, Zone};
+use rand_chacha::ChaCha8Rng;
+use search::{GridOptions, GridSearch, GridSearchError};
+
+/// Which planner the navigator calls.
+pub enum GlobalPlanner {
+    /// Dijkstra on the costmap cells (Algorithm 3), 8-connected, no corner cutting.
+    Dijkstra,
+    /// Any planner of the workspace, run on the costmap as a [`GridMap`] workspace with
+    /// the goal as a disc of the goal tolerance.
+    Other(Box<dyn Planner>),
+}
+
+impl std::fmt::Debug for GlobalPlanner {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.name())
+    }
+}
+
+impl GlobalPlanner {
+    /// The planner's name ("dijkstra" for Algorithm 3).
+    #[must_use]
+    pub fn name(&self) -> String {
+        match self {
+            Self::Dijkstra => "dijkstra".into(),
+            Self::Other(p) => p.info().name.to_string(),
+        }
+    }
+
+    /// A path from `start` to within `tolerance` of `goal` on `map` (the costmap's zones),
+    /// start first, ending at the goal; `None` when neither zone level has one.
+    pub fn plan(
+        &self,
+        map: &GridMap,
+        start: Point2,
+        goal: Point2,
+        tolerance: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<Vec<Point2>> {
+        for blocked in [Zone::Risk, Zone::Forbidden] {
+            let mut m = map.clone();
+            m.blocked_from = blocked;
+            let found = match self {
+                Self::Dijkstra => dijkstra(&m, start, goal),
+                Self::Other(p) => other(p.as_ref(), &m, start, goal, tolerance, rng),
+            };
+            if let Some(path) = found {
+                return Some(path);
+            }
+        }
+        None
+    }
+}
+
+/// The nearest passable cell to `(i, j)` within `max_r` cells (ring by ring).
+fn nearest_passable(map: &GridMap, cell: (usize, usize), max_r: usize) -> Option<(usize, usize)> {
+    if map.cell_free(cell.0, cell.1) {
+        return Some(cell);
+    }
+    let (ci, cj) = (cell.0 as i64, cell.1 as i64);
+    for r in 1..=max_r as i64 {
+        let mut best: Option<((usize, usize), i64)> = None;
+        for dj in -r..=r {
+            for di in -r..=r {
+                if di.abs().max(dj.abs()) != r {
+                    continue;
+                }
+                let (i, j) = (ci + di, cj + dj);
+                if i < 0 || j < 0 || !map.cell_free(i as usize, j as usize) {
+                    continue;
+                }
+                let d = di * di + dj * dj;
+                if best.is_none_or(|b| d < b.1) {
+                    best = Some(((i as usize, j as usize), d));
+                }
+            }
+        }
+        if let Some((c, _)) = best {
+            return Some(c);
+        }
+    }
+    None
+}
+
+fn dijkstra(map: &GridMap, start: Point2, goal: Point2) -> Option<Vec<Point2>> {
+    let s = nearest_passable(map, map.world_to_cell(start)?, 5)?;
+    let g = map.world_to_cell(goal)?;
+    if !map.cell_free(g.0, g.1) {
+        return None;
+    }
+    let mut search = GridSearch::new(map, GridOptions::default()).ok()?;
+    let found = match search.dijkstra(s, g) {
+        Ok(p) => p,
+        Err(GridSearchError::NoPath { .. }) => return None,
+        Err(_) => return None,
+    };
+    let mut cells: Vec<Point2> = found
+        .cells
+        .iter()
+        .map(|&(i, j)| map.cell_center(i, j))
+        .collect();
+    // The goal replaces the goal cell's centre (same cell, so the segment is free).
+    if let Some(last) = cells.last_mut() {
+        *last = goal;
+    }
+    let pruned = postproc::shortcut_greedy(&cells, |a, b| map.segment_free(a, b));
+    let mut path = Vec::with_capacity(pruned.len() + 1);
+    path.push(start);
+    path.extend(pruned.into_iter().filter(|&p| p != start));
+    Some(path)
+}
+
+fn other(
+    planner: &dyn Planner,
+    map: &GridMap,
+    start: Point2,
+    goal: Point2,
+    tolerance: f64,
+    rng: &mut ChaCha8Rng,
+) -> Option<Vec<Point2>> {
+    let s = nearest_passable(map, map.world_to_cell(start)?, 5)?;
+    let s_pt = if s == map.world_to_cell(start)? {
+        start
+    } else {
+        map.cell_center(s.0, s.1)
+    };
+    let query = Query::new(s_pt, Goal::disc(goal, tolerance.max(0.0)));
+    let plan = planner.plan(map, &query, rng).ok()?;
+    let mut path = Vec::with_capacity(plan.path.len() + 2);
+    path.push(start);
+    path.extend(plan.path.into_iter().filter(|&p| p != start));
+    if path.last().is_some_and(|&p| p != goal) && map.segment_free(*path.last()?, goal) {
+        path.push(goal);
+    }
+    Some(path)
+}

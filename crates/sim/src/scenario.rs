@@ -1,0 +1,502 @@
+//! Scenario files (RON): the world, the people, the robot's task and every parameter.
+//!
+//! Unknown keys are refused (`deny_unknown_fields`); every value is checked by
+//! [`Scenario::validate`], and errors name the file, the field and the value.
+//!
+//! ```ron
+//! SimScenario(
+//!     name: "corridor",
+//!     world: (size: (10.0, 4.0), shapes: [Wall(from: (0.0, 0.0), to: (10.0, 0.0), thickness: 0.1)]),
+//!     people: [(path: [(8.0, 3.5), (8.0, 0.5)], speed: 0.5, start: 2.0)],
+//!     start: (1.0, 2.0), start_heading_deg: 0.0, goal: (9.0, 2.0),
+//! )
+//! ```
+
+use std::path::{Path, PathBuf};
+
+use hyplan_core::{Bounds, Point2};
+use serde::{Deserialize, Serialize};
+
+use crate::control::Controller;
+use crate::costmap::CostmapParams;
+use crate::kinematics::Robot;
+use crate::laser::Laser;
+use crate::mapping::Mapping;
+use crate::navigator::Navigation;
+use crate::world::{Person, Shape, StaticWorld, World, pt};
+
+/// A map file as the static world (instead of, or beside, shapes).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum MapSpec {
+    /// A ROS `map_server` YAML file (its image beside it), metres; path relative to the
+    /// scenario file.
+    Ros(String),
+    /// A picture (PNG / PGM / PPM), dark pixels are obstacles, with its scale.
+    Picture {
+        /// Image file, relative to the scenario file.
+        path: String,
+        /// Metres per pixel.
+        resolution: f64,
+        /// World position of the picture's lower-left corner, m (default (0, 0)).
+        #[serde(default)]
+        origin: (f64, f64),
+    },
+}
+
+/// The static world.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldSpec {
+    /// Width and height of the world, m (from the map when absent and a map is given).
+    #[serde(default)]
+    pub size: Option<(f64, f64)>,
+    /// Lower-left corner of the world, m (default (0, 0)).
+    #[serde(default)]
+    pub origin: (f64, f64),
+    /// Obstacles on the robot's prior map.
+    #[serde(default)]
+    pub shapes: Vec<Shape>,
+    /// Obstacles placed after the map was made: the robot meets them with its laser.
+    #[serde(default)]
+    pub unmapped: Vec<Shape>,
+    /// A map file, on the prior map.
+    #[serde(default)]
+    pub map: Option<MapSpec>,
+}
+
+fn default_time_limit() -> f64 {
+    120.0
+}
+
+fn default_true() -> bool {
+    true
+}
+
+/// A simulation scenario.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename = "SimScenario", deny_unknown_fields)]
+pub struct Scenario {
+    /// Short name (used in reports and file names).
+    pub name: String,
+    /// What the scenario is.
+    #[serde(default)]
+    pub description: String,
+    /// Which values come from the paper and which are reconstructions.
+    #[serde(default)]
+    pub notes: Vec<String>,
+    /// The static world.
+    pub world: WorldSpec,
+    /// People.
+    #[serde(default)]
+    pub people: Vec<Person>,
+    /// Start position, m.
+    pub start: (f64, f64),
+    /// Start heading, degrees counter-clockwise from +x.
+    #[serde(default)]
+    pub start_heading_deg: f64,
+    /// Goal position, m.
+    pub goal: (f64, f64),
+    /// Whether the robot knows `world.shapes` and `world.map` in advance (default true);
+    /// when false it starts from an empty map and relies on its laser.
+    #[serde(default = "default_true")]
+    pub known_map: bool,
+    /// Simulated seconds before the run is stopped (default 120).
+    #[serde(default = "default_time_limit")]
+    pub time_limit: f64,
+    /// Robot geometry and limits.
+    #[serde(default)]
+    pub robot: Robot,
+    /// Laser.
+    #[serde(default)]
+    pub laser: Laser,
+    /// Map building.
+    #[serde(default)]
+    pub mapping: Mapping,
+    /// Costmap.
+    #[serde(default)]
+    pub costmap: CostmapParams,
+    /// Path follower.
+    #[serde(default)]
+    pub controller: Controller,
+    /// Navigator.
+    #[serde(default)]
+    pub navigation: Navigation,
+}
+
+/// Why a scenario was refused.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ScenarioError {
+    /// The file could not be read.
+    #[error("cannot read {path}: {source}")]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// The io error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// Malformed RON, an unknown key, a missing key or a wrong type.
+    #[error("{path}: {message}")]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// RON's message with line and column (it names an unknown key and the keys
+        /// expected).
+        message: String,
+    },
+    /// A value out of range.
+    #[error("{path}: field `{field}` = {value}: {reason}")]
+    Field {
+        /// The file.
+        path: PathBuf,
+        /// The field, as a path (`people[1].speed`).
+        field: String,
+        /// The value given.
+        value: String,
+        /// What it must be.
+        reason: String,
+    },
+    /// The map file could not be loaded.
+    #[error("{path}: world.map: {source}")]
+    Map {
+        /// The scenario file.
+        path: PathBuf,
+        /// The loader's error (it names the map file).
+        #[source]
+        source: envmap::MapError,
+    },
+}
+
+impl Scenario {
+    /// Reads, parses and validates a scenario file, and builds its world.
+    ///
+    /// # Errors
+    ///
+    /// Any [`ScenarioError`].
+    pub fn load(path: &Path) -> Result<(Self, World), ScenarioError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let scenario = Self::parse(&text, path)?;
+        let world = scenario.build_world(path)?;
+        Ok((scenario, world))
+    }
+
+    /// Parses RON text; `path` names the file in errors.
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError::Parse`].
+    pub fn parse(text: &str, path: &Path) -> Result<Self, ScenarioError> {
+        ron::Options::default()
+            .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
+            .from_str(text)
+            .map_err(|e| ScenarioError::Parse {
+                path: path.to_path_buf(),
+                message: e.to_string(),
+            })
+    }
+
+    /// Checks every value and builds the world; `path` names the file in errors and
+    /// anchors relative map paths.
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError::Field`] or [`ScenarioError::Map`].
+    pub fn build_world(&self, path: &Path) -> Result<World, ScenarioError> {
+        self.validate_values(path)?;
+        let field = |f: &str, v: String, r: &str| ScenarioError::Field {
+            path: path.to_path_buf(),
+            field: f.to_string(),
+            value: v,
+            reason: r.to_string(),
+        };
+        let mut statics = StaticWorld::default();
+        let mut mapped = StaticWorld::default();
+        let mut bounds = None;
+        if let Some(map) = &self.world.map {
+            let base = path.parent().unwrap_or(Path::new(""));
+            let grid = match map {
+                MapSpec::Ros(file) => {
+                    envmap::load_map(&base.join(file), &envmap::LoadOptions::default())
+                        .map_err(|source| ScenarioError::Map {
+                            path: path.to_path_buf(),
+                            source,
+                        })?
+                        .map
+                }
+                MapSpec::Picture {
+                    path: file,
+                    resolution,
+                    origin,
+                } => envmap::load_map(&base.join(file), &envmap::LoadOptions::default())
+                    .map_err(|source| ScenarioError::Map {
+                        path: path.to_path_buf(),
+                        source,
+                    })?
+                    .map
+                    .with_frame(*resolution, pt(*origin))
+                    .map_err(|e| {
+                        field(
+                            "world.map.resolution",
+                            resolution.to_string(),
+                            &e.to_string(),
+                        )
+                    })?,
+            };
+            bounds = Some(grid.bounds());
+            statics.add_grid(grid.clone());
+            mapped.add_grid(grid);
+        }
+        if let Some((w, h)) = self.world.size {
+            let o = pt(self.world.origin);
+            bounds = Some(Bounds::new(o, Point2::new(o.x + w, o.y + h)));
+        }
+        let bounds =
+            bounds.ok_or_else(|| field("world.size", "missing".into(), "give a size or a map"))?;
+        for s in &self.world.shapes {
+            statics.add_shape(s);
+            mapped.add_shape(s);
+        }
+        for s in &self.world.unmapped {
+            statics.add_shape(s);
+        }
+        if !self.known_map {
+            mapped = StaticWorld::default();
+        }
+        let r = self.robot.body_radius;
+        for (name, p) in [("start", self.start), ("goal", self.goal)] {
+            let q = pt(p);
+            let show = format!("({}, {})", p.0, p.1);
+            if !(q.x - r >= bounds.min.x
+                && q.x + r <= bounds.max.x
+                && q.y - r >= bounds.min.y
+                && q.y + r <= bounds.max.y)
+            {
+                return Err(field(
+                    name,
+                    show,
+                    &format!(
+                        "outside the world [{}, {}] x [{}, {}] (with the robot's radius {r})",
+                        bounds.min.x, bounds.max.x, bounds.min.y, bounds.max.y
+                    ),
+                ));
+            }
+            if statics.inside(q) || statics.nearest(q).0 < r {
+                return Err(field(
+                    name,
+                    show,
+                    &format!("inside an obstacle (the robot's radius is {r} m)"),
+                ));
+            }
+        }
+        Ok(World {
+            bounds,
+            statics,
+            mapped,
+            people: self.people.clone(),
+        })
+    }
+
+    /// Range checks of every number.
+    fn validate_values(&self, path: &Path) -> Result<(), ScenarioError> {
+        let err = |f: String, v: f64, r: &str| ScenarioError::Field {
+            path: path.to_path_buf(),
+            field: f,
+            value: v.to_string(),
+            reason: r.to_string(),
+        };
+        let positive = |f: &str, v: f64| {
+            if v.is_finite() && v > 0.0 {
+                Ok(())
+            } else {
+                Err(err(f.to_string(), v, "must be finite and > 0"))
+            }
+        };
+        let non_negative = |f: &str, v: f64| {
+            if v.is_finite() && v >= 0.0 {
+                Ok(())
+            } else {
+                Err(err(f.to_string(), v, "must be finite and >= 0"))
+            }
+        };
+        let finite = |f: &str, v: f64| {
+            if v.is_finite() {
+                Ok(())
+            } else {
+                Err(err(f.to_string(), v, "must be finite"))
+            }
+        };
+        let point = |f: &str, p: (f64, f64)| {
+            finite(&format!("{f}.x"), p.0)?;
+            finite(&format!("{f}.y"), p.1)
+        };
+        let rb = &self.robot;
+        positive("robot.wheel_radius", rb.wheel_radius)?;
+        positive("robot.half_track", rb.half_track)?;
+        positive("robot.body_radius", rb.body_radius)?;
+        positive("robot.max_wheel_speed", rb.max_wheel_speed)?;
+        positive("robot.v_max", rb.v_max)?;
+        positive("robot.omega_max", rb.omega_max)?;
+        positive("robot.acc_v", rb.acc_v)?;
+        positive("robot.acc_omega", rb.acc_omega)?;
+        let l = &self.laser;
+        positive("laser.fov_deg", l.fov_deg)?;
+        if l.fov_deg > 360.0 {
+            return Err(err(
+                "laser.fov_deg".into(),
+                l.fov_deg,
+                "must be at most 360",
+            ));
+        }
+        if l.beams < 2 {
+            return Err(err(
+                "laser.beams".into(),
+                l.beams as f64,
+                "must be at least 2",
+            ));
+        }
+        non_negative("laser.range_min", l.range_min)?;
+        positive("laser.range_max", l.range_max)?;
+        if l.range_max <= l.range_min {
+            return Err(err(
+                "laser.range_max".into(),
+                l.range_max,
+                "must exceed range_min",
+            ));
+        }
+        positive("laser.rate_hz", l.rate_hz)?;
+        finite("laser.mount_offset", l.mount_offset)?;
+        non_negative("laser.noise_sd", l.noise_sd)?;
+        let m = &self.mapping;
+        positive("mapping.resolution", m.resolution)?;
+        positive("mapping.l_hit", m.l_hit)?;
+        positive("mapping.l_max", m.l_max)?;
+        positive("mapping.max_range", m.max_range)?;
+        positive("mapping.period", m.period)?;
+        if !(m.l_miss.is_finite() && m.l_miss < 0.0) {
+            return Err(err(
+                "mapping.l_miss".into(),
+                m.l_miss,
+                "must be finite and < 0",
+            ));
+        }
+        if !(m.l_min.is_finite() && m.l_min < 0.0) {
+            return Err(err(
+                "mapping.l_min".into(),
+                m.l_min,
+                "must be finite and < 0",
+            ));
+        }
+        let c = &self.costmap;
+        positive("costmap.resolution", c.resolution)?;
+        non_negative("costmap.padding", c.padding)?;
+        non_negative("costmap.preferred_clearance", c.preferred_clearance)?;
+        non_negative("costmap.inflation_radius", c.inflation_radius)?;
+        non_negative("costmap.cost_scaling_factor", c.cost_scaling_factor)?;
+        positive("costmap.obstacle_range", c.obstacle_range)?;
+        positive("costmap.memory", c.memory)?;
+        let k = &self.controller;
+        positive("controller.rate_hz", k.rate_hz)?;
+        positive("controller.lookahead", k.lookahead)?;
+        positive("controller.rotate_above_deg", k.rotate_above_deg)?;
+        positive("controller.rotate_speed", k.rotate_speed)?;
+        non_negative("controller.regulate_radius", k.regulate_radius)?;
+        non_negative("controller.approach_distance", k.approach_distance)?;
+        non_negative("controller.v_min", k.v_min)?;
+        non_negative("controller.margin", k.margin)?;
+        let n = &self.navigation;
+        positive("navigation.goal_tolerance", n.goal_tolerance)?;
+        positive("navigation.blocked_lookahead", n.blocked_lookahead)?;
+        non_negative("navigation.retry_period", n.retry_period)?;
+        non_negative("navigation.progress_reset", n.progress_reset)?;
+        if n.max_failures == 0 {
+            return Err(err(
+                "navigation.max_failures".into(),
+                0.0,
+                "must be at least 1",
+            ));
+        }
+        positive("time_limit", self.time_limit)?;
+        point("start", self.start)?;
+        point("goal", self.goal)?;
+        finite("start_heading_deg", self.start_heading_deg)?;
+        if let Some((w, h)) = self.world.size {
+            positive("world.size.width", w)?;
+            positive("world.size.height", h)?;
+        }
+        point("world.origin", self.world.origin)?;
+        let shapes = self
+            .world
+            .shapes
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (format!("world.shapes[{i}]"), s))
+            .chain(
+                self.world
+                    .unmapped
+                    .iter()
+                    .enumerate()
+                    .map(|(i, s)| (format!("world.unmapped[{i}]"), s)),
+            );
+        for (f, s) in shapes {
+            match s {
+                Shape::Wall {
+                    from,
+                    to,
+                    thickness,
+                } => {
+                    point(&format!("{f}.from"), *from)?;
+                    point(&format!("{f}.to"), *to)?;
+                    positive(&format!("{f}.thickness"), *thickness)?;
+                }
+                Shape::Box {
+                    center,
+                    size,
+                    angle_deg,
+                } => {
+                    point(&format!("{f}.center"), *center)?;
+                    positive(&format!("{f}.size.width"), size.0)?;
+                    positive(&format!("{f}.size.height"), size.1)?;
+                    finite(&format!("{f}.angle_deg"), *angle_deg)?;
+                }
+                Shape::Polygon { points } => {
+                    if points.len() < 3 {
+                        return Err(err(
+                            format!("{f}.points"),
+                            points.len() as f64,
+                            "a polygon needs at least 3 points",
+                        ));
+                    }
+                    for (k, p) in points.iter().enumerate() {
+                        point(&format!("{f}.points[{k}]"), *p)?;
+                    }
+                }
+                Shape::Disc { center, radius } => {
+                    point(&format!("{f}.center"), *center)?;
+                    positive(&format!("{f}.radius"), *radius)?;
+                }
+            }
+        }
+        for (i, p) in self.people.iter().enumerate() {
+            let f = format!("people[{i}]");
+            if p.path.len() < 2 {
+                return Err(err(
+                    format!("{f}.path"),
+                    p.path.len() as f64,
+                    "a person's path needs at least 2 points",
+                ));
+            }
+            for (k, q) in p.path.iter().enumerate() {
+                point(&format!("{f}.path[{k}]"), *q)?;
+            }
+            non_negative(&format!("{f}.speed"), p.speed)?;
+            positive(&format!("{f}.radius"), p.radius)?;
+            non_negative(&format!("{f}.start"), p.start)?;
+        }
+        Ok(())
+    }
+}

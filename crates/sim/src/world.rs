@@ -1,0 +1,461 @@
+//! The simulated world: static geometry in metres and people walking scripted routes.
+//!
+//! Static geometry is kept as what a laser and a contact test need: line segments (the
+//! edges of walls, boxes, polygons and of the occupied cells of a loaded map) and discs.
+//! People are discs whose position is a pure function of time ([`Person::position`]).
+
+use envmap::GridMap;
+use hyplan_core::{Bounds, Point2, Zone};
+use serde::{Deserialize, Serialize};
+
+/// A static obstacle, in metres (scenario syntax).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Shape {
+    /// A straight wall from `from` to `to`, `thickness` wide (a rectangle around the
+    /// centre line).
+    Wall {
+        /// One end of the centre line.
+        from: (f64, f64),
+        /// The other end.
+        to: (f64, f64),
+        /// Width, m.
+        thickness: f64,
+    },
+    /// A rectangle, `size` = (width, height), rotated by `angle_deg` about its centre.
+    Box {
+        /// Centre.
+        center: (f64, f64),
+        /// Width and height, m.
+        size: (f64, f64),
+        /// Rotation, degrees counter-clockwise (default 0).
+        #[serde(default)]
+        angle_deg: f64,
+    },
+    /// A simple polygon (not self-intersecting), vertices in order.
+    Polygon {
+        /// Vertices, m.
+        points: Vec<(f64, f64)>,
+    },
+    /// A round obstacle (a pillar, a bin).
+    Disc {
+        /// Centre.
+        center: (f64, f64),
+        /// Radius, m.
+        radius: f64,
+    },
+}
+
+impl Shape {
+    /// The outline as a closed polygon (`None` for a disc).
+    #[must_use]
+    pub fn outline(&self) -> Option<Vec<Point2>> {
+        match self {
+            Self::Wall {
+                from,
+                to,
+                thickness,
+            } => {
+                let (a, b) = (pt(*from), pt(*to));
+                let d = b - a;
+                let len = d.norm();
+                let n = if len > 0.0 {
+                    nalgebra::Vector2::new(-d.y, d.x) / len * (thickness / 2.0)
+                } else {
+                    nalgebra::Vector2::new(0.0, thickness / 2.0)
+                };
+                let t = if len > 0.0 {
+                    d / len * (thickness / 2.0)
+                } else {
+                    nalgebra::Vector2::new(thickness / 2.0, 0.0)
+                };
+                // Square ends reaching half the thickness past each end, so walls that
+                // meet at a corner close it.
+                Some(vec![a - t - n, b + t - n, b + t + n, a - t + n])
+            }
+            Self::Box {
+                center,
+                size,
+                angle_deg,
+            } => {
+                let c = pt(*center);
+                let (s, co) = angle_deg.to_radians().sin_cos();
+                let (hw, hh) = (size.0 / 2.0, size.1 / 2.0);
+                let corner =
+                    |x: f64, y: f64| Point2::new(c.x + co * x - s * y, c.y + s * x + co * y);
+                Some(vec![
+                    corner(-hw, -hh),
+                    corner(hw, -hh),
+                    corner(hw, hh),
+                    corner(-hw, hh),
+                ])
+            }
+            Self::Polygon { points } => Some(points.iter().copied().map(pt).collect()),
+            Self::Disc { .. } => None,
+        }
+    }
+}
+
+/// A point from a scenario pair.
+#[must_use]
+pub fn pt(p: (f64, f64)) -> Point2 {
+    Point2::new(p.0, p.1)
+}
+
+/// How a person walks their way-points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum Walk {
+    /// First to last way-point, then stands still there.
+    #[default]
+    Once,
+    /// Around and around, back from the last way-point to the first.
+    Loop,
+    /// First to last, then back to the first, and again.
+    BackAndForth,
+}
+
+/// A person: a disc on scripted way-points who does not react to the robot (as the
+/// paper's Gazebo 7 actors did not).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Person {
+    /// Way-points, m (at least two).
+    pub path: Vec<(f64, f64)>,
+    /// Walking speed, m/s.
+    pub speed: f64,
+    /// When the person sets off, s (standing at the first way-point before).
+    #[serde(default)]
+    pub start: f64,
+    /// Body radius, m (default 0.25).
+    #[serde(default = "default_person_radius")]
+    pub radius: f64,
+    /// Once, loop or back-and-forth (default once).
+    #[serde(default)]
+    pub walk: Walk,
+}
+
+fn default_person_radius() -> f64 {
+    0.25
+}
+
+impl Person {
+    /// Where the person is at time `t` seconds: a pure function of `t`.
+    #[must_use]
+    pub fn position(&self, t: f64) -> Point2 {
+        let n = self.path.len();
+        if n == 0 {
+            return Point2::origin();
+        }
+        let p = |k: usize| pt(self.path[k]);
+        // Legs in walking order: 0..n-1 forward, then (loop) the closing leg, or
+        // (back-and-forth) the forward legs reversed.
+        let legs = match self.walk {
+            Walk::Once => n - 1,
+            Walk::Loop => n,
+            Walk::BackAndForth => 2 * (n - 1),
+        };
+        let leg = |k: usize| -> (Point2, Point2) {
+            if k < n - 1 {
+                (p(k), p(k + 1))
+            } else if self.walk == Walk::Loop {
+                (p(n - 1), p(0))
+            } else {
+                let r = k - (n - 1);
+                (p(n - 1 - r), p(n - 2 - r))
+            }
+        };
+        let total: f64 = (0..legs)
+            .map(|k| {
+                let (a, b) = leg(k);
+                (b - a).norm()
+            })
+            .sum();
+        let mut s = (t - self.start).max(0.0) * self.speed;
+        if total <= 0.0 {
+            return p(0);
+        }
+        if self.walk == Walk::Once {
+            if s >= total {
+                return p(n - 1);
+            }
+        } else {
+            s = s.rem_euclid(total);
+        }
+        for k in 0..legs {
+            let (a, b) = leg(k);
+            let len = (b - a).norm();
+            if s <= len {
+                return if len > 0.0 {
+                    a + (b - a) * (s / len)
+                } else {
+                    a
+                };
+            }
+            s -= len;
+        }
+        leg(legs - 1).1
+    }
+}
+
+/// A line segment of the static world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// One end.
+    pub a: Point2,
+    /// The other end.
+    pub b: Point2,
+    /// For an edge of a closed outline, its outward normal (the laser skips edges seen
+    /// from behind); `None` for loose edges.
+    pub outward: Option<nalgebra::Vector2<f64>>,
+}
+
+/// A round static obstacle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Disc {
+    /// Centre.
+    pub center: Point2,
+    /// Radius, m.
+    pub radius: f64,
+}
+
+/// The static world as the laser and the contact test see it.
+#[derive(Debug, Clone, Default)]
+pub struct StaticWorld {
+    /// Edges of every polygonal obstacle.
+    pub segments: Vec<Segment>,
+    /// Edges of the occupied cells of a loaded map, merged into straight runs.
+    pub grid_segments: Vec<Segment>,
+    /// Round obstacles.
+    pub discs: Vec<Disc>,
+    /// Closed outlines, for inside tests.
+    pub polygons: Vec<Vec<Point2>>,
+    /// A loaded map's grid (its forbidden cells are obstacles).
+    pub grid: Option<GridMap>,
+}
+
+impl StaticWorld {
+    /// Adds a shape.
+    pub fn add_shape(&mut self, shape: &Shape) {
+        if let Shape::Disc { center, radius } = shape {
+            self.discs.push(Disc {
+                center: pt(*center),
+                radius: *radius,
+            });
+            return;
+        }
+        if let Some(poly) = shape.outline() {
+            // Shoelace: positive for counter-clockwise outlines.
+            let n = poly.len();
+            let area2: f64 = (0..n)
+                .map(|k| {
+                    let (a, b) = (poly[k], poly[(k + 1) % n]);
+                    a.x * b.y - b.x * a.y
+                })
+                .sum();
+            for k in 0..n {
+                let (a, b) = (poly[k], poly[(k + 1) % n]);
+                let e = b - a;
+                // Counter-clockwise: the outside is to the right of each edge.
+                let right = nalgebra::Vector2::new(e.y, -e.x);
+                let outward = if area2 > 0.0 {
+                    Some(right)
+                } else if area2 < 0.0 {
+                    Some(-right)
+                } else {
+                    None
+                };
+                self.segments.push(Segment { a, b, outward });
+            }
+            self.polygons.push(poly);
+        }
+    }
+
+    /// Adds the occupied (forbidden) cells of a grid map: the boundary between occupied
+    /// and other cells, merged into maximal straight runs.
+    pub fn add_grid(&mut self, map: GridMap) {
+        let (w, h) = (map.width(), map.height());
+        let occ = |i: isize, j: isize| {
+            i >= 0
+                && j >= 0
+                && (i as usize) < w
+                && (j as usize) < h
+                && map.cell_zone(i as usize, j as usize) == Zone::Forbidden
+        };
+        let (o, r) = (map.origin(), map.resolution());
+        let at = |i: usize, j: usize| Point2::new(o.x + i as f64 * r, o.y + j as f64 * r);
+        // Horizontal edges: between rows j-1 and j, for j in 0..=h.
+        for j in 0..=h {
+            let mut run: Option<usize> = None;
+            for i in 0..=w {
+                let edge = i < w && occ(i as isize, j as isize - 1) != occ(i as isize, j as isize);
+                match (edge, run) {
+                    (true, None) => run = Some(i),
+                    (false, Some(s)) => {
+                        self.grid_segments.push(Segment {
+                            a: at(s, j),
+                            b: at(i, j),
+                            outward: None,
+                        });
+                        run = None;
+                    }
+                    _ => {}
+                }
+            }
+        }
+        for i in 0..=w {
+            let mut run: Option<usize> = None;
+            for j in 0..=h {
+                let edge = j < h && occ(i as isize - 1, j as isize) != occ(i as isize, j as isize);
+                match (edge, run) {
+                    (true, None) => run = Some(j),
+                    (false, Some(s)) => {
+                        self.grid_segments.push(Segment {
+                            a: at(i, s),
+                            b: at(i, j),
+                            outward: None,
+                        });
+                        run = None;
+                    }
+                    _ => {}
+                }
+            }
+        }
+        self.grid = Some(map);
+    }
+
+    /// Whether `p` lies inside (or on) an obstacle.
+    #[must_use]
+    pub fn inside(&self, p: Point2) -> bool {
+        if self.discs.iter().any(|d| (p - d.center).norm() <= d.radius) {
+            return true;
+        }
+        if self.polygons.iter().any(|poly| point_in_polygon(p, poly)) {
+            return true;
+        }
+        if let Some(g) = &self.grid
+            && let Some((i, j)) = g.world_to_cell(p)
+        {
+            return g.cell_zone(i, j) == Zone::Forbidden;
+        }
+        false
+    }
+
+    /// Distance from `p` to the nearest obstacle boundary and the nearest boundary point
+    /// (`(inf, p)` in an empty world). Inside an obstacle it is still the distance to the
+    /// boundary: use [`inside`](Self::inside) to tell.
+    #[must_use]
+    pub fn nearest(&self, p: Point2) -> (f64, Point2) {
+        let mut best = (f64::INFINITY, p);
+        for s in self.segments.iter().chain(&self.grid_segments) {
+            let q = closest_on_segment(p, s.a, s.b);
+            let d = (p - q).norm();
+            if d < best.0 {
+                best = (d, q);
+            }
+        }
+        for d in &self.discs {
+            let v = p - d.center;
+            let n = v.norm();
+            let dist = (n - d.radius).abs();
+            if dist < best.0 {
+                let q = if n > 0.0 {
+                    d.center + v * (d.radius / n)
+                } else {
+                    d.center + nalgebra::Vector2::new(d.radius, 0.0)
+                };
+                best = (dist, q);
+            }
+        }
+        best
+    }
+}
+
+/// The point of segment `ab` closest to `p`.
+#[must_use]
+pub fn closest_on_segment(p: Point2, a: Point2, b: Point2) -> Point2 {
+    let ab = b - a;
+    let len_sq = ab.norm_squared();
+    if len_sq == 0.0 {
+        return a;
+    }
+    let t = ((p - a).dot(&ab) / len_sq).clamp(0.0, 1.0);
+    a + ab * t
+}
+
+/// Even-odd rule; points on the boundary may go either way.
+#[must_use]
+pub fn point_in_polygon(p: Point2, poly: &[Point2]) -> bool {
+    let mut inside = false;
+    let n = poly.len();
+    for k in 0..n {
+        let (a, b) = (poly[k], poly[(k + n - 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) {
+            let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+            if p.x < x {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// The whole world: bounds, static geometry (all of it, and the part on the robot's
+/// prior map) and people.
+#[derive(Debug, Clone)]
+pub struct World {
+    /// The box the robot must stay in.
+    pub bounds: Bounds,
+    /// Everything static the laser sees and the robot can touch.
+    pub statics: StaticWorld,
+    /// The static part the robot knows in advance (its prior map); items placed after the
+    /// map was made are in `statics` only.
+    pub mapped: StaticWorld,
+    /// People.
+    pub people: Vec<Person>,
+}
+
+impl World {
+    /// People's positions and radii at time `t`, s.
+    #[must_use]
+    pub fn people_at(&self, t: f64) -> Vec<Disc> {
+        self.people
+            .iter()
+            .map(|p| Disc {
+                center: p.position(t),
+                radius: p.radius,
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn person_modes() {
+        let mut p = Person {
+            path: vec![(0.0, 0.0), (2.0, 0.0)],
+            speed: 1.0,
+            start: 1.0,
+            radius: 0.25,
+            walk: Walk::Once,
+        };
+        assert_eq!(p.position(0.5), Point2::new(0.0, 0.0));
+        assert_eq!(p.position(2.0), Point2::new(1.0, 0.0));
+        assert_eq!(p.position(9.0), Point2::new(2.0, 0.0));
+        p.walk = Walk::BackAndForth;
+        assert_eq!(p.position(4.0), Point2::new(1.0, 0.0));
+        p.walk = Walk::Loop;
+        assert_eq!(p.position(4.0), Point2::new(1.0, 0.0));
+    }
+
+    #[test]
+    fn grid_edges_merge() {
+        let map = GridMap::from_ascii("...\n.##\n...").unwrap();
+        let mut w = StaticWorld::default();
+        w.add_grid(map);
+        assert_eq!(w.grid_segments.len(), 4);
+        assert!(w.inside(Point2::new(1.5, 1.5)));
+    }
+}

@@ -1,0 +1,5 @@
+//! Public-API tests of `sim`, one module per area.
+
+mod kinematics;
+mod laser;
+mod navigation;
