@@ -1,7 +1,7 @@
 //! Scenario files (RON): the world, the people, the robot's task and every parameter.
 //!
 //! Unknown keys are refused (`deny_unknown_fields`); every value is checked by
-//! [`Scenario::validate`], and errors name the file, the field and the value.
+//! [`Scenario::build_world`], and errors name the file, the field and the value.
 //!
 //! ```ron
 //! SimScenario(
