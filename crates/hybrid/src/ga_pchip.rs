@@ -1,14 +1,14 @@
 //! GA-PCHIP: a genetic algorithm over via-points on the binary safe map, then PCHIP.
 //!
-//! Seed `000_9b224721fe327833.txt` compares RRT-A*-BT with GA-PCHIP, its reference [4]:
+//! Seed `000_9b224721fe327833.txt` compares RRT-A*-BT with GA-PCHIP, its reference \[4\]:
 //! Bakdi, Hentout, Boutami, Maoudj, Hachour and Bouzouia, "Optimal path planning and
 //! execution for mobile robots using genetic algorithm and adaptive fuzzy-logic control",
 //! Robotics and Autonomous Systems 89 (2017) 95-109. What seed 000 says of it: the same
-//! room, the same binary safe map ("the same validation scenarios as considered in [4]"),
-//! a GA that finds the path, PCHIP that smooths it ("As in our previous works ([4] and
-//! [3]), this paper adopted PCHIP"); Table 2 gives 7 s, 6020 mm, 18 nodes and 41.50 s of
+//! room, the same binary safe map ("the same validation scenarios as considered in \[4\]"),
+//! a GA that finds the path, PCHIP that smooths it ("As in our previous works (\[4\] and
+//! \[3\]), this paper adopted PCHIP"); Table 2 gives 7 s, 6020 mm, 18 nodes and 41.50 s of
 //! transfer time, Table 4 5.60-11.26 s. The GA itself is not described in seed 000, and
-//! [4] is not in our seeds, so every choice below that is not "a GA over via-points, then
+//! \[4\] is not in our seeds, so every choice below that is not "a GA over via-points, then
 //! PCHIP" is **ours**, chosen as a plain, textbook real-coded GA:
 //!
 //! | choice | ours |
@@ -37,11 +37,11 @@ use sampling::CountingChecker;
 use crate::common;
 use crate::smooth;
 
-/// GA-PCHIP (seed 000's reference [4]): a genetic algorithm over via-points, then PCHIP.
+/// GA-PCHIP (seed 000's reference \[4\]): a genetic algorithm over via-points, then PCHIP.
 ///
 /// Avoids what the workspace's `segment_free` and `is_free` reject: pass a safe map
 /// (`GridMap::avoiding_risk`) as seed 000 does. The choices the citation leaves open are
-/// listed in the [module docs](self) and in `docs/papers/000-rrt-astar-bt.md`.
+/// listed in the [module docs](crate::ga_pchip) and in `docs/papers/000-rrt-astar-bt.md`.
 ///
 /// # Result
 ///

@@ -15,7 +15,7 @@
 //! | [`RrtAstarRefine`] | `rrt-astar-refine` | `001_7c0427b868de6fdd.txt`, 2.3 | an `envmap::GridMap` | the map's blocked cells |
 //! | [`HybridRrtAstar`] | `hybrid-rrt-astar` | `002_6cddcbbe62b23f10.txt`, III, Fig. 2 | an `envmap::GridMap` | the map's blocked cells |
 //! | [`SafeRrtStar`] | `safe-rrt-star` | `003_19d461d9f3ced1b0.txt`, 2.2-2.3 | any workspace (exact zones on a `GridMap`) | Forbidden; pays for Risk, read through `Workspace::zone` |
-//! | [`GaPchip`] | `ga-pchip` | seed 000's baseline, its reference [4] (Bakdi et al. 2017) | any workspace | what `segment_free` rejects: pass a safe map |
+//! | [`GaPchip`] | `ga-pchip` | seed 000's baseline, its reference \[4\] (Bakdi et al. 2017) | any workspace | what `segment_free` rejects: pass a safe map |
 //!
 //! - [`Staged`]: a plan with each stage's path (raw, reduced, smoothed) and counters,
 //!   from each planner's `plan_detailed`.
@@ -79,7 +79,7 @@
 //! None.
 
 mod common;
-mod ga_pchip;
+pub mod ga_pchip;
 mod hybrid_rrt_astar;
 mod outcome;
 mod rrt_astar_bt;

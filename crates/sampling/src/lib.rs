@@ -1,10 +1,10 @@
 //! Sampling planners for hyplan: RRT, RRT*, Bi-RRT and RRT-Connect on any
-//! [`Workspace`](hyplan_core::Workspace).
+//! [`Workspace`].
 //!
 //! Every planner is a plain parameter struct with documented defaults and one entry point,
-//! `plan(&self, workspace, query, rng)`, returning a [`Plan`](hyplan_core::Plan) (path,
-//! tree(s), statistics) or a typed [`PlanError`](hyplan_core::PlanError). Each also
-//! implements [`Planner`](hyplan_core::Planner) for use as `Box<dyn Planner>`.
+//! `plan(&self, workspace, query, rng)`, returning a [`Plan`] (path,
+//! tree(s), statistics) or a typed [`PlanError`]. Each also
+//! implements [`Planner`] for use as `Box<dyn Planner>`.
 //!
 //! # Contents
 //!
@@ -22,21 +22,21 @@
 //!
 //! # Guarantees
 //!
-//! - Every edge is checked with [`Workspace::segment_free`](hyplan_core::Workspace::segment_free),
+//! - Every edge is checked with [`Workspace::segment_free`],
 //!   which is exact for the workspace's own model (a grid map checks every cell a segment
 //!   touches): a returned path never crosses a blocked cell, not even at a corner. Checks are
 //!   counted in [`PlanStats::collision_checks`](hyplan_core::PlanStats::collision_checks).
 //! - `path[0]` is the query's start bit for bit and the last point lies in the goal region
-//!   (exactly on the goal for [`Goal::Point`](hyplan_core::Goal::Point)).
+//!   (exactly on the goal for [`Goal::Point`]).
 //! - The only randomness is the RNG passed in: the same seed gives the same tree, bit for bit,
 //!   with an iteration budget (a time limit depends on the machine).
 //! - Bad input (step <= 0 or NaN, goal bias outside [0, 1], zero budget, start or goal
 //!   outside the map or blocked) is a typed error, never a panic; a spent budget is
-//!   [`PlanError::BudgetExhausted`](hyplan_core::PlanError::BudgetExhausted) with the
+//!   [`PlanError::BudgetExhausted`] with the
 //!   statistics of the attempt.
 //! - Probabilistically complete: a planner stops before its budget only with a path or a
-//!   proof that none exists ([`PlanError::Disconnected`](hyplan_core::PlanError::Disconnected),
-//!   from [`Workspace::disconnection`](hyplan_core::Workspace::disconnection): on a grid map, start and goal
+//!   proof that none exists ([`PlanError::Disconnected`],
+//!   from [`Workspace::disconnection`]: on a grid map, start and goal
 //!   not connected through passable cells, with the cause).
 //!
 //! # Conventions
