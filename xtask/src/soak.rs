@@ -39,20 +39,8 @@ pub struct Args {
     pub only_map: Option<u64>,
 }
 
-/// The planners of the soak: name and parameters (the step follows the map's).
-const PLANNERS: &[&str] = &[
-    "rrt",
-    "rrt-star",
-    "bi-rrt",
-    "rrt-connect",
-    "astar",
-    "dijkstra",
-    "theta-star",
-    "rrt-astar-bt",
-    "rrt-astar-refine",
-    "hybrid-rrt-astar",
-    "safe-rrt-star",
-];
+/// The planners of the soak: every planner the harness builds.
+const PLANNERS: &[&str] = harness::PLANNER_NAMES;
 
 /// Map kinds of the soak: the generators' kinds (the 2000 x 2000 floor plan left out:
 /// one map would take the time of hundreds of small ones), each also with a risk band,
@@ -251,8 +239,11 @@ fn soak_map(
 /// iterations and 200 ms.
 fn spec_for(name: &str, step: f64) -> PlannerSpec {
     let mut params = BTreeMap::new();
+    // Grid searches take no parameters; GA-PCHIP has no step (its genes are via-points).
     if !matches!(name, "astar" | "dijkstra" | "theta-star") {
-        params.insert("step".to_string(), step);
+        if name != "ga-pchip" {
+            params.insert("step".to_string(), step);
+        }
         params.insert("max_iterations".to_string(), 3000.0);
         params.insert("time_limit_s".to_string(), 0.2);
     }

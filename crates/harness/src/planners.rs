@@ -23,6 +23,11 @@ pub const PLANNER_NAMES: &[&str] = &[
     "astar",
     "dijkstra",
     "theta-star",
+    "rrt-astar-bt",
+    "rrt-astar-refine",
+    "hybrid-rrt-astar",
+    "safe-rrt-star",
+    "ga-pchip",
 ];
 
 /// Reads numeric parameters, remembering which were used so unknown ones are reported.

@@ -29,19 +29,7 @@ fn parallel_runs_equal_serial_runs() {
 #[test]
 fn every_planner_gives_the_same_bits_on_threads() {
     let (s, w) = scenario();
-    let names = [
-        "rrt",
-        "rrt-star",
-        "bi-rrt",
-        "rrt-connect",
-        "astar",
-        "dijkstra",
-        "theta-star",
-        "rrt-astar-bt",
-        "rrt-astar-refine",
-        "hybrid-rrt-astar",
-        "safe-rrt-star",
-    ];
+    let names = harness::PLANNER_NAMES;
     let smoothings = ["none", "prune", "pchip", "bspline", "bspline-interp"];
     let specs = names
         .iter()
