@@ -15,10 +15,10 @@ fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let Ok(scenario) = ron::from_str::<Scenario>(text) else {
+    let path = Path::new("fuzz/scenario.ron");
+    let Ok(scenario) = Scenario::parse(text, path) else {
         return;
     };
-    let path = Path::new("fuzz/scenario.ron");
     if scenario.validate(path).is_err() {
         return;
     }

@@ -226,7 +226,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             figure(scenario, world, spec, &metrics, &figures)?;
             planners.push(PlannerResult {
                 label: spec.label().to_string(),
-                name: spec.name.clone(),
+                name: spec.planner.name().to_string(),
                 summary: Summary::of(&metrics),
                 runs: metrics,
             });
@@ -330,13 +330,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 /// The shortest path to the goal region on the planning map by Theta* (any-angle, on the
 /// grid's cells), and the straight start-goal distance: the yardstick for lengths.
 fn shortest_path(world: &World) -> Option<(f64, f64)> {
-    let spec = PlannerSpec {
-        name: "theta-star".into(),
-        label: None,
-        params: Default::default(),
-        smoothing: None,
-    };
-    let planner = harness::build_planner(&spec).ok()?;
+    let planner = search::ThetaStar::default();
     let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(0);
     let plan = planner.plan(&world.map, &world.query, &mut rng).ok()?;
     let straight = (world.query.goal.center() - world.query.start).norm();

@@ -13,8 +13,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use harness::{
-    Claim, ClaimKind, Furniture, Limits, MapSpec, PlannerSpec, Published, Scenario, Source,
-    draw_room,
+    Claim, ClaimKind, Furniture, Limits, MapSpec, PlannerConfig, PlannerSpec, Published, Scenario,
+    Source, draw_room,
 };
 use rand::{Rng, SeedableRng};
 
@@ -96,13 +96,7 @@ pub fn shortest_safe(
     let s = hyplan_core::Point2::new(start.0, h - start.1);
     let g = hyplan_core::Point2::new(goal.0, h - goal.1);
     let query = hyplan_core::Query::new(s, hyplan_core::Goal::Point(g));
-    let theta = harness::build_planner(&PlannerSpec {
-        name: "theta-star".into(),
-        label: None,
-        params: Default::default(),
-        smoothing: None,
-    })
-    .map_err(|e| anyhow::anyhow!(e))?;
+    let theta = search::ThetaStar::default();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
     let plan = theta
         .plan(&map, &query, &mut rng)
@@ -190,7 +184,14 @@ const MM_PER_PX: f64 = 6.34;
 
 /// GA-PCHIP's parameters in mm on seed 000's rooms (defaults otherwise): violation probes
 /// every 4 px, curve samples every pixel.
-pub const GA_PARAMS_MM: [(&str, f64); 2] = [("probe_spacing", 25.36), ("curve_spacing", 6.34)];
+/// GA-PCHIP's spacings for the Table 4 rooms, in millimetres.
+fn ga_pchip_mm() -> hybrid::GaPchip {
+    hybrid::GaPchip {
+        probe_spacing: 25.36,
+        curve_spacing: 6.34,
+        ..hybrid::GaPchip::default()
+    }
+}
 
 /// How a_max was fitted (the report marks it).
 pub const FITTED_A_MAX: &str = "a_max = 115 mm/s^2, fitted so that the trapezoid profile T = L / v_max + v_max / a_max gives the paper's Table 2 transfer time 41.37 s for its 6009.30 mm at v_max 150 mm/s (150^2 / (150 x 41.37 - 6009.30) = 114.7); transfer times are therefore a function of length, not an independent measurement";
@@ -332,8 +333,8 @@ pub fn write_table4(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
                     ga_paper,
                     claims,
                 );
-                let text =
-                    ron::ser::to_string_pretty(&scenario, ron::ser::PrettyConfig::default())?;
+                let text = harness::ron_options()
+                    .to_string_pretty(&scenario, ron::ser::PrettyConfig::default())?;
                 let header = format!(
                     "// Seed 000 Table 4: a generated {w} x {h} px workspace with {n} obstacles, layout {letter}.\n\
                      // Written by `cargo xtask table4` (layout seed {seed}); nested: the first {n} pieces \
@@ -408,27 +409,19 @@ fn table4_scenario(
         base_seed: seed,
         planners: vec![
             PlannerSpec {
-                name: "rrt-astar-bt".into(),
                 label: Some("RRT-A*-BT".into()),
-                params: [
-                    ("step".to_string(), 253.6),
-                    ("goal_radius".to_string(), 126.8),
-                    ("closed_radius".to_string(), 63.4),
-                    ("curve_spacing".to_string(), 6.34),
-                    ("max_iterations".to_string(), 10000.0),
-                ]
-                .into_iter()
-                .collect(),
-                smoothing: None,
+                ..PlannerSpec::new(PlannerConfig::RrtAstarBt(hybrid::RrtAstarBt {
+                    step: 253.6,
+                    goal_radius: 126.8,
+                    closed_radius: Some(63.4),
+                    curve_spacing: 6.34,
+                    budget: hyplan_core::Budget::iterations(10_000),
+                    ..hybrid::RrtAstarBt::default()
+                }))
             },
             PlannerSpec {
-                name: "ga-pchip".into(),
                 label: Some("GA-PCHIP".into()),
-                params: GA_PARAMS_MM
-                    .iter()
-                    .map(|(k, v)| ((*k).to_string(), *v))
-                    .collect(),
-                smoothing: None,
+                ..PlannerSpec::new(PlannerConfig::GaPchip(ga_pchip_mm()))
             },
         ],
         published: vec![

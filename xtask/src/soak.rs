@@ -16,8 +16,8 @@ use std::time::{Duration, Instant};
 use anyhow::bail;
 use envmap::GridMap;
 use envmap::generate::{self, HardMap};
-use harness::PlannerSpec;
-use hyplan_core::{Goal, Point2, Query, Workspace};
+use harness::PlannerConfig;
+use hyplan_core::{Budget, Goal, Point2, Query, Workspace};
 use postproc::Smoothing;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -38,9 +38,6 @@ pub struct Args {
     #[arg(long)]
     pub only_map: Option<u64>,
 }
-
-/// The planners of the soak: every planner the harness builds.
-const PLANNERS: &[&str] = harness::PLANNER_NAMES;
 
 /// Map kinds of the soak: the generators' kinds (the 2000 x 2000 floor plan left out:
 /// one map would take the time of hundreds of small ones), each also with a risk band,
@@ -176,9 +173,10 @@ fn soak_map(
         let Some(query) = draw_query(&map, step, &mut rng) else {
             continue;
         };
-        for &name in PLANNERS {
-            let spec = spec_for(name, step);
-            let planner = harness::build_planner(&spec).expect("known planner");
+        // Every planner of the registry.
+        for config in PlannerConfig::all() {
+            let name = config.name();
+            let planner = soak_config(config, step).build();
             let plan_seed = seed.wrapping_mul(1000).wrapping_add(qi as u64);
             let mut prng = ChaCha8Rng::seed_from_u64(plan_seed);
             let outcome = catch_unwind(AssertUnwindSafe(|| planner.plan(&map, &query, &mut prng)));
@@ -235,24 +233,12 @@ fn soak_map(
     }
 }
 
-/// A planner spec with small budgets so the soak sees many plans: the map's step, 3000
-/// iterations and 200 ms.
-fn spec_for(name: &str, step: f64) -> PlannerSpec {
-    let mut params = BTreeMap::new();
-    // Grid searches take no parameters; GA-PCHIP has no step (its genes are via-points).
-    if !matches!(name, "astar" | "dijkstra" | "theta-star") {
-        if name != "ga-pchip" {
-            params.insert("step".to_string(), step);
-        }
-        params.insert("max_iterations".to_string(), 3000.0);
-        params.insert("time_limit_s".to_string(), 0.2);
-    }
-    PlannerSpec {
-        name: name.to_string(),
-        label: None,
-        params,
-        smoothing: None,
-    }
+/// A planner with small budgets so the soak sees many plans: the map's step (for the
+/// planners that have one), 3000 iterations and 200 ms (for those that take a budget).
+fn soak_config(config: PlannerConfig, step: f64) -> PlannerConfig {
+    config
+        .with_step(step)
+        .with_budget(Budget::iterations(3000).with_time(Duration::from_millis(200)))
 }
 
 /// A random query on free points joined through free cells: cell centres, cell corners

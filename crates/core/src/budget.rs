@@ -15,13 +15,46 @@ use std::time::{Duration, Instant};
 /// assert_eq!(b.max_iterations, 10_000);
 /// assert!(b.validate().is_ok());
 /// ```
+///
+/// With the `serde` feature a budget reads and writes as `(max_iterations: N,
+/// time_limit_s: Some(S))`, the time in seconds; a missing field keeps its default.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct Budget {
     /// Maximum number of iterations (planner-specific: samples drawn, nodes expanded).
     pub max_iterations: u64,
     /// Optional wall-clock limit.
+    #[cfg_attr(feature = "serde", serde(rename = "time_limit_s", with = "seconds"))]
     pub max_time: Option<Duration>,
+}
+
+/// A time limit as seconds (`f64`), so scenario files say `time_limit_s: Some(0.5)`.
+#[cfg(feature = "serde")]
+mod seconds {
+    use std::time::Duration;
+
+    use serde::{Deserialize, Deserializer, Serializer, de::Error};
+
+    #[allow(clippy::ref_option)] // serde's `with` hands the field by reference
+    pub fn serialize<S: Serializer>(t: &Option<Duration>, s: S) -> Result<S::Ok, S::Error> {
+        match t {
+            Some(t) => s.serialize_some(&t.as_secs_f64()),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Duration>, D::Error> {
+        match Option::<f64>::deserialize(d)? {
+            None => Ok(None),
+            Some(s) => Duration::try_from_secs_f64(s).map(Some).map_err(|_| {
+                D::Error::custom(format!("time_limit_s = {s}: must be finite and >= 0"))
+            }),
+        }
+    }
 }
 
 impl Default for Budget {

@@ -14,7 +14,9 @@
 //!   file, line and field of a problem.
 //! - [`World`]: a scenario's map built and its query placed; [`Scenario::build_world`].
 //! - [`Furniture`], [`draw_room`]: room pictures drawn in code from their furniture.
-//! - [`build_planner`]: a planner by name with its parameters, as `Box<dyn Planner>`.
+//! - [`PlannerConfig`]: the planner registry, one typed configuration per planner, by
+//!   name; [`PlannerConfig::build`] makes the planner, `"rrt:step=2".parse()` reads the
+//!   command line's form.
 //! - [`RunMetrics`], [`measure`]: what one run is scored on; [`post_process`]: smoothing,
 //!   node metrics and transfer time of one plan, shared with `hyplan plan`.
 //! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
@@ -41,7 +43,7 @@ pub mod stats;
 #[cfg(feature = "plot")]
 pub use figure::{chart_metrics, draw_world};
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
-pub use planners::{PLANNER_NAMES, build_planner};
+pub use planners::{Explored, PlannerConfig, RegistryError, ron_options};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{

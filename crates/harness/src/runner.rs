@@ -4,7 +4,7 @@ use postproc::{Limits, Smoothing};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::{PlannerSpec, RunMetrics, Scenario, Scoring, World, build_planner, measure};
+use crate::{Explored, PlannerSpec, RunMetrics, Scenario, Scoring, World, measure};
 
 /// The seed of run `run` for base seed `base`: output number `run + 1` of a SplitMix64
 /// generator started at `base`, i.e. `mix(base + (run + 1) * 0x9E3779B97F4A7C15)` with
@@ -33,8 +33,8 @@ pub fn run_seed(base: u64, run: u64) -> u64 {
 ///
 /// # Errors
 ///
-/// A message for a planner spec that cannot be built (scenarios are validated on load, so
-/// this only happens for specs made in code).
+/// [`postproc::PostprocError`] for a smoothing method or robot limits that cannot be used
+/// (scenarios are validated on load, so this only happens for specs made in code).
 pub fn run_planner(
     scenario: &Scenario,
     world: &World,
@@ -42,15 +42,14 @@ pub fn run_planner(
     runs: u32,
     parallel: bool,
     progress: &(dyn Fn() + Sync),
-) -> Result<Vec<RunMetrics>, String> {
-    let planner = build_planner(spec)?;
+) -> Result<Vec<RunMetrics>, postproc::PostprocError> {
+    let planner = spec.planner.build();
     let smoothing = spec
         .smoothing
         .as_deref()
-        .map_or(Ok(Smoothing::None), str::parse);
-    let smoothing = smoothing.map_err(|e: postproc::PostprocError| e.to_string())?;
+        .map_or(Ok(Smoothing::None), str::parse)?;
     let limits = match scenario.limits {
-        Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max).map_err(|e| e.to_string())?),
+        Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max)?),
         None => None,
     };
     // Clearance is measured to obstacles, whatever zone the planner avoided.
@@ -59,7 +58,7 @@ pub fn run_planner(
     let scoring = Scoring {
         ws: &world.map,
         obstacles: &obstacles,
-        explored_by_expansions: matches!(planner.info().name, "astar" | "dijkstra" | "theta-star"),
+        explored_by_expansions: spec.planner.explored() == Explored::Expansions,
         smoothing,
         limits,
         // Curves are checked at most a quarter cell apart.

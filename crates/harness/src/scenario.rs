@@ -1,6 +1,5 @@
 //! The scenario format: one RON file per experiment.
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use envmap::{GridMap, LoadOptions, Mask, Pipeline};
@@ -213,19 +212,19 @@ pub struct Limits {
     pub a_max: f64,
 }
 
-/// A planner to run, by name, with a display label and its parameters.
+/// A planner to run: its configuration, a display label and the smoothing applied after.
+///
+/// In a scenario file: `(label: Some("RRT"), planner: (name: "rrt", step: 2.0), smoothing:
+/// Some("pchip"))`.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PlannerSpec {
-    /// Planner name, one of [`PLANNER_NAMES`](crate::PLANNER_NAMES).
-    pub name: String,
-    /// Label in the report (defaults to the name).
+    /// The planner and its parameters (fields of the planner's struct, missing ones at
+    /// their defaults).
+    pub planner: crate::PlannerConfig,
+    /// Label in the report (defaults to the planner's name).
     #[serde(default)]
     pub label: Option<String>,
-    /// Numeric parameters by name (`step`, `goal_bias`, `max_iterations`, ...), scenario
-    /// units; unknown names are an error.
-    #[serde(default)]
-    pub params: BTreeMap<String, f64>,
     /// Post-processing by `postproc`'s method names: `none` (default), `prune`, `pchip`,
     /// `bspline`, `bspline-interp`.
     #[serde(default)]
@@ -233,10 +232,20 @@ pub struct PlannerSpec {
 }
 
 impl PlannerSpec {
+    /// A spec running `planner` under its own name, without smoothing.
+    #[must_use]
+    pub fn new(planner: crate::PlannerConfig) -> Self {
+        Self {
+            planner,
+            label: None,
+            smoothing: None,
+        }
+    }
+
     /// The label used in reports.
     #[must_use]
     pub fn label(&self) -> &str {
-        self.label.as_deref().unwrap_or(&self.name)
+        self.label.as_deref().unwrap_or(self.planner.name())
     }
 }
 
@@ -402,15 +411,27 @@ impl Scenario {
             path: path.to_path_buf(),
             source,
         })?;
-        let scenario: Scenario = ron::from_str(&text).map_err(|e| ScenarioError::Parse {
-            path: path.to_path_buf(),
-            line: e.position.line,
-            col: e.position.col,
-            message: e.code.to_string(),
-        })?;
+        let scenario = Self::parse(&text, path)?;
         scenario.validate(path)?;
         let world = scenario.build_world(path.parent().unwrap_or(Path::new(".")), path)?;
         Ok((scenario, world))
+    }
+
+    /// Reads a scenario from RON text (with [`ron_options`](crate::ron_options)), without
+    /// validating it; `path` names the file in errors.
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError::Parse`] with the line and column.
+    pub fn parse(text: &str, path: &Path) -> Result<Self, ScenarioError> {
+        crate::ron_options()
+            .from_str(text)
+            .map_err(|e| ScenarioError::Parse {
+                path: path.to_path_buf(),
+                line: e.position.line,
+                col: e.position.col,
+                message: e.code.to_string(),
+            })
     }
 
     fn invalid(path: &Path, field: &str, value: impl ToString, reason: &str) -> ScenarioError {
@@ -460,9 +481,8 @@ impl Scenario {
             }
         }
         for (i, p) in self.planners.iter().enumerate() {
-            crate::build_planner(p).map_err(|reason| {
-                Self::invalid(path, &format!("planners[{i}]"), &p.name, &reason)
-            })?;
+            // The planner's name and fields were checked by deserialisation; their values
+            // are checked by the planner itself when it runs (typed errors).
             if let Some(s) = &p.smoothing
                 && s.parse::<postproc::Smoothing>().is_err()
             {

@@ -1,27 +1,13 @@
 //! Budgets honoured: a tiny time limit on a large map stops every budgeted planner within
 //! 10 ms of the limit.
 
-use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
 use envmap::generate;
-use harness::{PlannerSpec, build_planner};
-use hyplan_core::{Goal, Query};
+use harness::PlannerConfig;
+use hyplan_core::{Budget, Goal, Query};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
-
-/// The planners with a [`hyplan_core::Budget`]; the grid searches have none (they end
-/// when the grid is exhausted, see docs/reliability.md).
-const BUDGETED: &[&str] = &[
-    "rrt",
-    "rrt-star",
-    "bi-rrt",
-    "rrt-connect",
-    "rrt-astar-bt",
-    "rrt-astar-refine",
-    "hybrid-rrt-astar",
-    "safe-rrt-star",
-];
 
 #[test]
 #[ignore = "known defect (issue 16): rrt overshoots a 20 ms limit by about 50 ms on this \
@@ -32,18 +18,13 @@ fn a_tiny_time_limit_stops_every_planner_within_10_ms() {
     let query = Query::new(g.start, Goal::Point(g.goal));
     let limit = Duration::from_millis(20);
     let mut report = Vec::new();
-    for &name in BUDGETED {
-        let spec = PlannerSpec {
-            name: name.to_string(),
-            label: None,
-            params: BTreeMap::from([
-                ("step".to_string(), 10.0),
-                ("max_iterations".to_string(), 1e12),
-                ("time_limit_s".to_string(), limit.as_secs_f64()),
-            ]),
-            smoothing: None,
-        };
-        let planner = build_planner(&spec).unwrap();
+    // Every planner with a budget (see docs/reliability.md for those without).
+    for config in PlannerConfig::all().filter(|c| c.budget().is_some()) {
+        let name = config.name();
+        let planner = config
+            .with_step(10.0)
+            .with_budget(Budget::iterations(u64::MAX).with_time(limit))
+            .build();
         // The least overshoot of three calls: a machine busy with other work can delay
         // one call's return; a planner that ignores its budget overshoots every time.
         let overshoot = (0..3)

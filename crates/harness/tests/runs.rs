@@ -29,7 +29,7 @@ fn parallel_runs_equal_serial_runs() {
 #[test]
 fn every_planner_gives_the_same_bits_on_threads() {
     let (s, w) = scenario();
-    let names = harness::PLANNER_NAMES;
+    let names = harness::PlannerConfig::names();
     let smoothings = ["none", "prune", "pchip", "bspline", "bspline-interp"];
     let specs = names
         .iter()
@@ -37,10 +37,8 @@ fn every_planner_gives_the_same_bits_on_threads() {
         .chain(smoothings.iter().map(|m| (&"rrt-connect", *m)));
     for (name, smoothing) in specs {
         let spec = harness::PlannerSpec {
-            name: (*name).to_string(),
-            label: None,
-            params: Default::default(),
             smoothing: Some(smoothing.to_string()),
+            ..harness::PlannerSpec::new(harness::PlannerConfig::by_name(name).unwrap())
         };
         let serial = run_planner(&s, &w, &spec, 4, false, &|| {}).unwrap();
         let parallel = run_planner(&s, &w, &spec, 4, true, &|| {}).unwrap();

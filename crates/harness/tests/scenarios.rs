@@ -29,7 +29,7 @@ const GOOD: &str = r#"Scenario(
     goal_radius: 1.0,
     runs: 4,
     base_seed: 1,
-    planners: [PlannerSpec(name: "rrt", params: {"step": 1.0})],
+    planners: [PlannerSpec(planner: Rrt(step: 1.0))],
 )"#;
 
 #[test]
@@ -58,17 +58,20 @@ fn message(name: &str, text: &str) -> String {
 
 #[test]
 fn unknown_planner_is_named() {
-    let m = message("planner", &GOOD.replace("\"rrt\"", "\"rrt-turbo\""));
+    let m = message("planner", &GOOD.replace("Rrt(", "RrtTurbo("));
     assert!(
-        m.contains("planner.ron") && m.contains("planners[0]") && m.contains("rrt-turbo"),
+        m.contains("planner.ron") && m.contains("RrtTurbo") && m.contains("RrtConnect"),
         "{m}"
     );
 }
 
 #[test]
 fn unknown_parameter_is_named() {
-    let m = message("param", &GOOD.replace("\"step\"", "\"stride\""));
-    assert!(m.contains("stride"), "{m}");
+    let m = message("param", &GOOD.replace("step:", "stride:"));
+    assert!(
+        m.contains("param.ron:") && m.contains("stride") && m.contains("step"),
+        "{m}"
+    );
 }
 
 #[test]

@@ -71,6 +71,11 @@ use crate::smooth;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct GaPchip {
     /// Via-points per chromosome, >= 1. Default 6 (ours).
     pub via_points: usize,

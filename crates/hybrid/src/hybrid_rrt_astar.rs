@@ -27,6 +27,7 @@ use crate::common;
 
 /// Which earlier sub-search starts the A* threshold is measured against.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum SpacingRule {
     /// Every earlier start (default, our reading: a failed search is not relaunched from
     /// the same place when the goal bias drives the tree back and forth).
@@ -78,6 +79,11 @@ pub enum SpacingRule {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct HybridRrtAstar {
     /// RRT step size, world units, finite and > 0. Default 1 (the paper's).
     pub step: f64,

@@ -109,6 +109,11 @@ use crate::smooth;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct RrtAstarBt {
     /// delta, the maximum length of an edge, world units, finite and > 0. Default 40 (the
     /// paper's 40 px).

@@ -66,6 +66,11 @@ use crate::common;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct RrtAstarRefine {
     /// RRT step, world units, finite and > 0. Default 3 (ours: 3 % of the paper's 100-cell
     /// map side).

@@ -71,6 +71,11 @@ use crate::smooth;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct SafeRrtStar {
     /// "A constant distance": the steering step, world units, finite and > 0. Default 2
     /// (ours; the paper gives none).

@@ -31,8 +31,10 @@ pub(crate) struct Cli {
 enum Command {
     /// Turn a picture, ROS map or MovingAI map into a three-zone safe map.
     Map(cmd::map::Args),
-    /// Plan a path with a sampling planner (RRT, RRT*, Bi-RRT, RRT-Connect).
+    /// Plan a path with any planner of the registry (`hyplan planners` lists them).
     Plan(cmd::plan::Args),
+    /// List the planners with their parameters and defaults.
+    Planners(cmd::planners::Args),
     /// Run a MovingAI scenario file (.map + .scen) and compare with its optimal lengths.
     Scen(cmd::scen::Args),
     /// Drive the simulated robot of seed 004 through a scenario with people (exit 1: goal
@@ -53,6 +55,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Map(args) => cmd::map::run(&args),
         Command::Plan(args) => cmd::plan::run(&args),
+        Command::Planners(args) => cmd::planners::run(&args),
         Command::Scen(args) => cmd::scen::run(&args),
         Command::Sim(args) => cmd::sim::run(&args),
     };

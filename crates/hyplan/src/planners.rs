@@ -1,10 +1,12 @@
-//! `--planner NAME` and the shared flags -> a planner from `harness`'s registry.
+//! `--planner NAME[:key=value,...]` and the shared flags -> a planner from `harness`'s
+//! registry.
 //!
-//! The command line and the scenario files share one registry,
-//! [`harness::build_planner`]: here the flags become a [`harness::PlannerSpec`], passing
-//! each planner only the parameters it has (the grid searches take none; the papers'
-//! hybrids keep their papers' defaults unless `--step` is given).
+//! The command line and the scenario files share one registry, [`harness::PlannerConfig`]:
+//! here the shared flags (`--step`, `--goal-bias`, `--goal-radius`, the budget) are applied
+//! to the planners that have those fields, then the `key=value` pairs of `--planner` set any
+//! field of the planner's struct (a pair wins over a flag).
 
+use harness::PlannerConfig;
 use hyplan_core::{Budget, Planner};
 
 /// The planner flags shared by every planner; each planner takes what it uses.
@@ -21,71 +23,48 @@ pub struct PlannerFlags {
     pub budget: Budget,
 }
 
-/// Whether `name` is a grid search (no step, bias or budget).
-fn is_grid_search(name: &str) -> bool {
-    matches!(name, "astar" | "dijkstra" | "theta-star")
-}
-
-/// Whether the planner called `name` uses `--goal-bias`.
-#[must_use]
-pub fn uses_goal_bias(name: &str) -> bool {
-    matches!(
-        name,
-        "rrt" | "rrt-star" | "rrt-astar-refine" | "hybrid-rrt-astar" | "safe-rrt-star"
-    )
-}
-
-/// The planner called `name`, configured from `flags`.
-///
-/// RRT* runs to its first solution (OMPL's default without `--optimize`). Parameter values
-/// are validated by the planner itself on its first `plan` call (typed errors).
+/// The planner `spec` names with its defaults and its own `key=value` pairs, before any
+/// flag: what the command line asks about capabilities.
 ///
 /// # Errors
 ///
-/// An unknown name, listing the known ones.
-pub fn build(name: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner>> {
-    let mut params = std::collections::BTreeMap::new();
-    if !is_grid_search(name) {
-        // GA-PCHIP has no step: its segments join via-points anywhere on the map.
-        if let Some(step) = flags.step.filter(|_| name != "ga-pchip") {
-            params.insert("step".to_string(), step);
-            // RRT-A*-BT's closed list is a radius around grown nodes, a quarter step by
-            // default (10 px for 40 px steps): keep that ratio for another step.
-            if name == "rrt-astar-bt" {
-                params.insert("closed_radius".to_string(), step / 4.0);
-            }
-        }
-        if uses_goal_bias(name) {
-            params.insert("goal_bias".to_string(), flags.goal_bias);
-        }
-        // The planners whose own goal region is a parameter get the query's radius.
-        if matches!(name, "rrt-astar-bt" | "safe-rrt-star") && flags.goal_radius > 0.0 {
-            params.insert("goal_radius".to_string(), flags.goal_radius);
-        }
-        // u64::MAX stands for "no iteration cap" (a time limit ends the run); as f64 it
-        // rounds up, and the conversion back saturates to u64::MAX.
-        params.insert(
-            "max_iterations".to_string(),
-            flags.budget.max_iterations as f64,
-        );
-        if let Some(t) = flags.budget.max_time {
-            params.insert("time_limit_s".to_string(), t.as_secs_f64());
-        }
-    }
-    let spec = harness::PlannerSpec {
-        name: name.to_string(),
-        label: None,
-        params,
-        smoothing: None,
-    };
-    harness::build_planner(&spec).map_err(|e| anyhow::anyhow!("--planner {name}: {e}"))
+/// An unknown name (listing the known ones), key or value.
+pub fn named(spec: &str) -> anyhow::Result<PlannerConfig> {
+    spec.parse()
+        .map_err(|e| anyhow::anyhow!("--planner {spec}: {e}"))
 }
 
-/// Whether the plain sampling planners (whose library default step is 1 world unit) should
-/// get the CLI's map-sized default step.
-#[must_use]
-pub fn wants_default_step(name: &str) -> bool {
-    matches!(name, "rrt" | "rrt-star" | "bi-rrt" | "rrt-connect")
+/// The planner `spec` names, configured from `flags` and then from its `key=value` pairs.
+///
+/// RRT* runs to its first solution (OMPL's default without `--optimize`; set
+/// `rrt-star:stop_at_first_solution=false` for the whole budget). Parameter values are
+/// validated by the planner itself on its first `plan` call (typed errors).
+///
+/// # Errors
+///
+/// An unknown name (listing the known ones), key or value.
+pub fn configure(spec: &str, flags: &PlannerFlags) -> anyhow::Result<PlannerConfig> {
+    PlannerConfig::from_spec(spec, |mut c| {
+        if let Some(step) = flags.step {
+            c = c.with_step(step);
+        }
+        c = c.with_goal_bias(flags.goal_bias).with_budget(flags.budget);
+        // The planners whose own goal region is a parameter get the query's radius.
+        if flags.goal_radius > 0.0 {
+            c = c.with_goal_radius(flags.goal_radius);
+        }
+        c
+    })
+    .map_err(|e| anyhow::anyhow!("--planner {spec}: {e}"))
+}
+
+/// The planner `spec` names, configured as [`configure`] does, ready to run.
+///
+/// # Errors
+///
+/// As [`configure`].
+pub fn build(spec: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner>> {
+    Ok(configure(spec, flags)?.build())
 }
 
 #[cfg(test)]
@@ -93,16 +72,21 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_name_builds() {
+    fn every_name_builds_and_pairs_beat_flags() {
         let flags = PlannerFlags {
             step: Some(1.0),
             goal_bias: 0.05,
             goal_radius: 1.0,
             budget: Budget::default(),
         };
-        for name in harness::PLANNER_NAMES {
-            assert_eq!(build(name, &flags).unwrap().info().name, *name);
+        for name in PlannerConfig::names() {
+            assert_eq!(build(name, &flags).unwrap().info().name, name);
         }
         assert!(build("nope", &flags).is_err());
+        let c = configure("rrt:step=3.5", &flags).unwrap();
+        assert_eq!(c.step(), Some(3.5));
+        let c = configure("rrt-connect", &flags).unwrap();
+        assert_eq!(c.step(), Some(1.0));
+        assert_eq!(c.budget(), Some(Budget::default()));
     }
 }

@@ -39,6 +39,11 @@ use crate::toolkit::{self, CountingChecker};
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct BiRrt {
     /// Maximum length of a new edge (and of the joining edge), world units, finite and > 0.
     /// Default 1.0.

@@ -48,6 +48,11 @@ use crate::toolkit::{self, CountingChecker};
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct Rrt {
     /// Maximum length of a new edge, world units, finite and > 0. Default 1.0.
     pub step: f64,

@@ -50,6 +50,11 @@ enum ExtendStatus {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct RrtConnect {
     /// Maximum length of one edge, world units, finite and > 0. Default 1.0.
     pub step: f64,

@@ -14,6 +14,7 @@ use crate::toolkit::{self, CountingChecker, StarTree};
 
 /// How RRT* picks the neighbours it considers as parents and rewires.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum RewireRadius {
     /// The ball of radius `gamma * sqrt(ln n / n)` (n = nodes in the tree), capped by the
     /// step, with `gamma = 1.1 * 2 * sqrt(1.5 * area / pi)` computed from the workspace
@@ -65,6 +66,11 @@ pub enum RewireRadius {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct RrtStar {
     /// Maximum length of a new edge, world units, finite and > 0. Default 1.0.
     pub step: f64,

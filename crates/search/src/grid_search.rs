@@ -23,6 +23,7 @@ const G_MASK: u64 = (1 << (GEN_SHIFT - G_SHIFT)) - 1;
 
 /// Which moves a grid search may make.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Connectivity {
     /// Up, down, left, right; cost 1 each.
     Four,
@@ -36,6 +37,11 @@ pub enum Connectivity {
 /// Which cells are passable is the map's [`GridMap::blocked_from`]: by default only
 /// `Forbidden` cells block; [`GridMap::avoiding_risk`] makes the high-risk band block too.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct GridOptions {
     /// 4- or 8-connected moves (default 8).
     pub connectivity: Connectivity,

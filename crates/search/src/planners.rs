@@ -47,6 +47,11 @@ enum Algo {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct GridAstar {
     /// Move rules (8-connected, no corner cutting by default).
     pub options: GridOptions,
@@ -55,6 +60,11 @@ pub struct GridAstar {
 /// Grid Dijkstra as a planner: the same paths as [`GridAstar`] (equal costs), without a
 /// heuristic. Same conventions as [`GridAstar`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct GridDijkstra {
     /// Move rules (8-connected, no corner cutting by default).
     pub options: GridOptions,
@@ -64,6 +74,11 @@ pub struct GridDijkstra {
 /// map's exact `segment_free`. Same conventions as [`GridAstar`];
 /// see [`GridSearch::theta_star`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default, deny_unknown_fields)
+)]
 pub struct ThetaStar {
     /// Connectivity of the underlying grid moves (corner cutting is never used).
     pub options: GridOptions,

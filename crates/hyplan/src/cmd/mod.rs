@@ -26,5 +26,6 @@ pub fn load_map(
 
 pub mod map;
 pub mod plan;
+pub mod planners;
 pub mod scen;
 pub mod sim;

@@ -32,9 +32,11 @@ pub struct Args {
     /// Goal `X,Y` in the input's frame.
     #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
     pub goal: (f64, f64),
-    /// Planner: rrt, rrt-star (to its first solution), bi-rrt, rrt-connect; the grid
-    /// searches astar, dijkstra, theta-star; the papers' hybrids rrt-astar-bt (seed 000),
-    /// rrt-astar-refine (001), hybrid-rrt-astar (002), safe-rrt-star (003).
+    /// Planner `NAME[:key=value,...]`: rrt, rrt-star (to its first solution), bi-rrt,
+    /// rrt-connect; the grid searches astar, dijkstra, theta-star; the papers' hybrids
+    /// rrt-astar-bt (seed 000), rrt-astar-refine (001), hybrid-rrt-astar (002),
+    /// safe-rrt-star (003), ga-pchip. The pairs set any field of the planner (`hyplan
+    /// planners` lists them with their defaults), over the flags below.
     #[arg(long, default_value = "rrt")]
     pub planner: String,
     /// Maximum edge length in the input's units [default: 5% of the map's diagonal].
@@ -100,7 +102,7 @@ pub struct Args {
 /// What one run produced; one CSV row, one JSON line, one human line.
 #[derive(Debug, Clone, Serialize)]
 pub struct RunRecord {
-    /// Planner name as given to `--planner`.
+    /// Planner name (without the `key=value` pairs given to `--planner`).
     pub planner: String,
     /// Run index, from 0.
     pub run: u64,
@@ -259,7 +261,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     }
     let step = match args.step {
         Some(s) => Some(s * scale),
-        None if planners::wants_default_step(&args.planner) => Some(0.05 * map.bounds().diagonal()),
+        None if planners::named(&args.planner)?.wants_default_step() => {
+            Some(0.05 * map.bounds().diagonal())
+        }
         None => None,
     };
     let flags = PlannerFlags {
@@ -281,12 +285,12 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             args.goal_bias
         );
     }
-    let planner = planners::build(&args.planner, &flags)?;
-    if !planners::uses_goal_bias(&args.planner) && args.goal_bias != 0.05 && !args.csv && !args.json
-    {
+    let config = planners::configure(&args.planner, &flags)?;
+    let planner = config.build();
+    if !config.uses_goal_bias() && args.goal_bias != 0.05 && !args.csv && !args.json {
         eprintln!(
             "note: {} has no goal bias; --goal-bias is ignored",
-            args.planner
+            config.name()
         );
     }
 
@@ -344,7 +348,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                 )
                 .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", args.smooth.name()))?;
                 RunRecord {
-                    planner: args.planner.clone(),
+                    planner: config.name().to_string(),
                     run,
                     seed,
                     solved: true,
@@ -366,7 +370,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             Err(e) if e.is_no_path() => {
                 let stats = e.stats().copied().unwrap_or_default();
                 RunRecord {
-                    planner: args.planner.clone(),
+                    planner: config.name().to_string(),
                     run,
                     seed,
                     solved: false,
