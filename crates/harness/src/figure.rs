@@ -2,7 +2,7 @@
 //! obstacles, blue rectangles, red path, the tree faint; and charts of metric
 //! distributions.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use hyplan_core::{Point2, Tree, Zone};
 use plotters::prelude::*;
@@ -17,19 +17,23 @@ const MIN_SIDE_PX: f64 = 600.0;
 ///
 /// # Errors
 ///
-/// A message when the picture cannot be allocated or written.
+/// [`FigureError`] naming the file when the picture cannot be allocated or written.
 pub fn draw_world(
     world: &World,
     trees: &[Tree],
     path: &[Point2],
     out: &Path,
-) -> Result<(), String> {
+) -> Result<(), FigureError> {
     let map = &world.map;
     let (w, h) = (map.width(), map.height());
     // Pixels per cell: at least 1, more for small grids.
     let scale = (MIN_SIDE_PX / w.max(h) as f64).max(1.0).floor();
     let (pw, ph) = ((w as f64 * scale) as u32, (h as f64 * scale) as u32);
-    let mut pixmap = Pixmap::new(pw, ph).ok_or("figure too large")?;
+    let mut pixmap = Pixmap::new(pw, ph).ok_or_else(|| FigureError::TooLarge {
+        path: out.to_path_buf(),
+        width: pw,
+        height: ph,
+    })?;
     let data = pixmap.data_mut();
     for py in 0..ph as usize {
         let j = h - 1 - ((py as f64 / scale) as usize).min(h - 1);
@@ -142,9 +146,39 @@ pub fn draw_world(
         [220, 20, 20, 255],
         false,
     );
-    pixmap
-        .save_png(out)
-        .map_err(|e| format!("{}: {e}", out.display()))
+    pixmap.save_png(out).map_err(|e| FigureError::draw(out, &e))
+}
+
+/// A figure that could not be drawn or written.
+#[derive(Debug, thiserror::Error)]
+pub enum FigureError {
+    /// The picture is too large to allocate.
+    #[error("{}: a {width} x {height} px picture cannot be allocated", path.display())]
+    TooLarge {
+        /// The file the figure was for.
+        path: PathBuf,
+        /// Width, pixels.
+        width: u32,
+        /// Height, pixels.
+        height: u32,
+    },
+    /// Drawing or writing the file failed.
+    #[error("{}: {message}", path.display())]
+    Draw {
+        /// The file.
+        path: PathBuf,
+        /// What the drawing library or the file system said.
+        message: String,
+    },
+}
+
+impl FigureError {
+    fn draw(path: &Path, e: &dyn std::fmt::Display) -> Self {
+        Self::Draw {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        }
+    }
 }
 
 /// Draws box plots of some metrics, one panel per metric and one box per planner, into
@@ -152,14 +186,14 @@ pub fn draw_world(
 ///
 /// # Errors
 ///
-/// A message when drawing or writing fails.
+/// [`FigureError`] naming the file when drawing or writing fails.
 pub fn chart_metrics(
     title: &str,
     planners: &[(String, Vec<RunMetrics>)],
     metrics: &[&str],
     out: &Path,
-) -> Result<(), String> {
-    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
+) -> Result<(), FigureError> {
+    let err = |e: &dyn std::fmt::Display| FigureError::draw(out, e);
     let width = 320 * metrics.len().max(1) as u32;
     let root = SVGBackend::new(out, (width, 360)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
@@ -201,6 +235,11 @@ pub fn chart_metrics(
         chart
             .configure_mesh()
             .light_line_style(WHITE)
+            // The planner's label as written, not its Debug form with quotes.
+            .x_label_formatter(&|v| match v {
+                SegmentValue::Exact(l) | SegmentValue::CenterOf(l) => (*l).clone(),
+                SegmentValue::Last => String::new(),
+            })
             .draw()
             .map_err(|e| err(&e))?;
         chart

@@ -41,16 +41,18 @@ mod scenario;
 pub mod stats;
 
 #[cfg(feature = "plot")]
-pub use figure::{chart_metrics, draw_world};
+pub use figure::{FigureError, chart_metrics, draw_world};
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
 pub use planners::{Explored, PlannerConfig, RegistryError, ron_options};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
-    Claim, ClaimKind, Limits, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape,
+    Claim, ClaimKind, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape,
     Source, World,
 };
 pub use stats::{Stat, Summary};
+/// Robot limits of a scenario (speed, turn rate, acceleration): `postproc`'s type.
+pub use postproc::Limits;
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

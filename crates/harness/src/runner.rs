@@ -1,6 +1,6 @@
 //! Monte-Carlo runs with per-run seeds.
 
-use postproc::{Limits, Smoothing};
+use postproc::Smoothing;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -49,7 +49,10 @@ pub fn run_planner(
         .as_deref()
         .map_or(Ok(Smoothing::None), str::parse)?;
     let limits = match scenario.limits {
-        Some(l) => Some(Limits::new(l.v_max, l.omega_max, l.a_max)?),
+        Some(l) => {
+            l.validate()?;
+            Some(l)
+        }
         None => None,
     };
     // Clearance is measured to obstacles, whatever zone the planner avoided.

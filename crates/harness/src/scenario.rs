@@ -39,7 +39,7 @@ pub struct Scenario {
     pub avoid_risk: bool,
     /// Robot limits for the transfer time, scenario units per second.
     #[serde(default)]
-    pub limits: Option<Limits>,
+    pub limits: Option<postproc::Limits>,
     /// Runs per planner (the paper's count).
     pub runs: u32,
     /// Runs per planner with `--quick`.
@@ -198,18 +198,6 @@ pub enum Shape {
         /// Radius.
         r: f64,
     },
-}
-
-/// Robot limits, scenario units.
-#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Limits {
-    /// Maximum speed, units per second.
-    pub v_max: f64,
-    /// Maximum turning rate, rad/s.
-    pub omega_max: f64,
-    /// Maximum acceleration, units per second squared.
-    pub a_max: f64,
 }
 
 /// A planner to run: its configuration, a display label and the smoothing applied after.
@@ -478,6 +466,10 @@ impl Scenario {
                 if !(v.is_finite() && v > 0.0) {
                     return bad(k, &v, "must be finite and > 0");
                 }
+            }
+            // postproc's own rule is the one that counts; the loop above names the field.
+            if let Err(e) = l.validate() {
+                return bad("limits", &format!("{l:?}"), &e.to_string());
             }
         }
         for (i, p) in self.planners.iter().enumerate() {
