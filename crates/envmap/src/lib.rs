@@ -85,6 +85,8 @@ mod mask;
 mod picture;
 mod pipeline;
 mod rectangles;
+#[cfg(feature = "shapes")]
+pub mod shapes;
 mod workspace;
 mod zones;
 

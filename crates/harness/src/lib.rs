@@ -40,19 +40,20 @@ mod runner;
 mod scenario;
 pub mod stats;
 
+/// An obstacle of a scenario's drawn grid: `envmap`'s shapes.
+pub use envmap::shapes::Shape;
 #[cfg(feature = "plot")]
 pub use figure::{FigureError, chart_metrics, draw_world};
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
 pub use planners::{Explored, PlannerConfig, RegistryError, ron_options};
+/// Robot limits of a scenario (speed, turn rate, acceleration): `postproc`'s type.
+pub use postproc::Limits;
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
-    Claim, ClaimKind, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Shape,
-    Source, World,
+    Claim, ClaimKind, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Source, World,
 };
 pub use stats::{Stat, Summary};
-/// Robot limits of a scenario (speed, turn rate, acceleration): `postproc`'s type.
-pub use postproc::Limits;
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]
