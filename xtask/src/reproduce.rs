@@ -5,10 +5,11 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::Context as _;
-use harness::stats::{Decision, Verdict, decide_less};
-use harness::{ClaimKind, PlannerSpec, RunMetrics, Scenario, Summary, World, run_planner};
+use harness::report::{
+    ALPHA, ExperimentResult, PlannerResult, experiment_claims, markdown, series_claims, slug,
+};
+use harness::{PlannerSpec, RunMetrics, Scenario, Summary, World, run_planner};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
-use serde::Serialize;
 
 /// Options of `cargo xtask reproduce`.
 #[derive(clap::Args)]
@@ -29,120 +30,6 @@ pub struct Args {
     /// `<!-- reproduce:begin -->` and `<!-- reproduce:end -->` markers) from this run.
     #[arg(long)]
     pub update_docs: bool,
-}
-
-/// The level at which every ordering claim is decided (two one-sided Mann-Whitney U
-/// tests, see [`harness::stats::decide_less`]).
-pub const ALPHA: f64 = 0.01;
-
-/// The metrics shown in the tables, with their headings.
-pub(crate) const COLUMNS: &[(&str, &str)] = &[
-    ("cpu_time_s", "CPU (ms)"),
-    ("time_s", "wall (ms)"),
-    ("length", "length"),
-    ("nodes", "nodes"),
-    ("segments", "segments"),
-    ("turns", "turns > 10°"),
-    ("explored", "explored"),
-    ("transfer_time_s", "transfer (s)"),
-    ("min_clearance", "min clearance"),
-];
-
-#[derive(Serialize)]
-pub(crate) struct PlannerResult {
-    pub label: String,
-    pub name: String,
-    pub summary: Summary,
-    pub runs: Vec<RunMetrics>,
-}
-
-/// One step of a claimed order: `smaller` < `larger`, decided on the runs.
-#[derive(Serialize)]
-pub(crate) struct Step {
-    pub smaller: String,
-    pub larger: String,
-    pub means: (f64, f64),
-    pub decision: Decision,
-}
-
-#[derive(Serialize)]
-pub(crate) struct ClaimResult {
-    pub text: String,
-    pub metric: String,
-    pub kind: ClaimKind,
-    pub means: Vec<(String, f64)>,
-    pub steps: Vec<Step>,
-    pub verdict: Verdict,
-}
-
-#[derive(Serialize)]
-pub(crate) struct ExperimentResult {
-    pub name: String,
-    pub seed_file: String,
-    pub experiment: String,
-    pub file: String,
-    pub runs: u32,
-    pub planners: Vec<PlannerResult>,
-    pub claims: Vec<ClaimResult>,
-    /// The shortest path to the goal region on the planning map (Theta*), and the
-    /// straight start-goal distance, scenario units.
-    pub shortest: Option<(f64, f64)>,
-}
-
-/// The values of `metric` over runs: every run for times and explored nodes, the
-/// successful ones for path measures (as [`Summary`] counts them).
-fn values(runs: &[RunMetrics], metric: &str) -> Vec<f64> {
-    let all = matches!(metric, "time_s" | "cpu_time_s" | "explored");
-    runs.iter()
-        .filter(|r| all || r.success)
-        .filter_map(|r| r.get(metric))
-        .filter(|v| v.is_finite())
-        .collect()
-}
-
-fn mean(v: &[f64]) -> f64 {
-    if v.is_empty() {
-        f64::NAN
-    } else {
-        v.iter().sum::<f64>() / v.len() as f64
-    }
-}
-
-/// Decides a claimed increasing order over labelled samples, step by step.
-fn decide_order(
-    text: String,
-    metric: &str,
-    kind: ClaimKind,
-    samples: Vec<(String, Vec<f64>)>,
-) -> ClaimResult {
-    let means = samples.iter().map(|(l, v)| (l.clone(), mean(v))).collect();
-    let steps: Vec<Step> = samples
-        .windows(2)
-        .map(|w| Step {
-            smaller: w[0].0.clone(),
-            larger: w[1].0.clone(),
-            means: (mean(&w[0].1), mean(&w[1].1)),
-            decision: decide_less(&w[0].1, &w[1].1, ALPHA),
-        })
-        .collect();
-    let verdicts: Vec<Verdict> = steps.iter().map(|s| s.decision.verdict).collect();
-    let verdict = if verdicts.contains(&Verdict::NoData) {
-        Verdict::NoData
-    } else if verdicts.contains(&Verdict::NotHeld) {
-        Verdict::NotHeld
-    } else if verdicts.iter().all(|v| *v == Verdict::Held) {
-        Verdict::Held
-    } else {
-        Verdict::NotSignificant
-    };
-    ClaimResult {
-        text,
-        metric: metric.to_string(),
-        kind,
-        means,
-        steps,
-        verdict,
-    }
 }
 
 fn workspace_root() -> PathBuf {
@@ -242,25 +129,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             &figures.join(format!("{}_metrics.svg", scenario.name)),
         )
         .map_err(|e| anyhow::anyhow!(e))?;
-        let claims = scenario
-            .claims
-            .iter()
-            .filter(|c| c.across.is_empty())
-            .map(|c| {
-                let samples = c
-                    .order
-                    .iter()
-                    .map(|label| {
-                        let v = planners
-                            .iter()
-                            .find(|p| &p.label == label)
-                            .map_or_else(Vec::new, |p| values(&p.runs, &c.metric));
-                        (label.clone(), v)
-                    })
-                    .collect();
-                decide_order(c.text.clone(), &c.metric, c.kind.clone(), samples)
-            })
-            .collect();
+        let claims = experiment_claims(scenario, &planners);
         // The yardstick for the papers' lengths, where they publish one (Theta* on a large
         // room takes seconds, so not for the time-only tables).
         let shortest = scenario
@@ -289,7 +158,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     let series = series_claims(&results);
     let seconds = started.elapsed().as_secs_f64();
-    let mut report = crate::report::report(&results, &series, args.quick, seconds);
+    let mut report = markdown::report(&results, &series, args.quick, seconds);
     // Seed 004 runs in the `sim` crate (scenarios/sim/), with claims of its own.
     report.push_str(&crate::sim004::section(&root, &figures)?.0);
     let report_path = out.join("report.md");
@@ -310,7 +179,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             println!("updated {}", page.display());
         }
     }
-    let tally = crate::report::Tally::of(&results, &series);
+    let tally = harness::report::Tally::of(&results, &series);
     println!(
         "done in {seconds:.1} s: {} experiment(s); measured claims: {} held, {} not held, {} not significant, {} without data (alpha {ALPHA}); {} by construction and {} not comparable, shown apart\nreport:  {}\nresults: {}\nfigures: {}",
         results.len(),
@@ -337,87 +206,6 @@ fn shortest_path(world: &World) -> Option<(f64, f64)> {
     Some((plan.length(), straight))
 }
 
-/// A claim over a series of experiments, with the experiment it is written in.
-#[derive(Serialize)]
-pub(crate) struct SeriesClaim {
-    pub seed_file: String,
-    pub experiment: String,
-    pub claim: ClaimResult,
-}
-
-/// Whether the scenario `name` belongs to the entry `entry` of a claim's `across`: the
-/// same name, or the name followed by `-` and a layout suffix.
-fn in_group(name: &str, entry: &str) -> bool {
-    name == entry
-        || name
-            .strip_prefix(entry)
-            .is_some_and(|rest| rest.starts_with('-'))
-}
-
-/// Evaluates the claims that span several experiments (`across`), pooling the runs of
-/// every layout of a group; those whose experiments did not all run (`--only`) are left
-/// out.
-fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesClaim> {
-    let mut out = Vec::new();
-    for (scenario, r) in results {
-        for c in scenario.claims.iter().filter(|c| !c.across.is_empty()) {
-            if c.order.len() > 1 {
-                // Planners compared on one group of scenarios, runs pooled.
-                let group = &c.across[0];
-                if !results.iter().any(|(_, o)| in_group(&o.name, group)) {
-                    continue;
-                }
-                let samples = c
-                    .order
-                    .iter()
-                    .map(|label| {
-                        let pooled: Vec<f64> = results
-                            .iter()
-                            .filter(|(_, o)| in_group(&o.name, group))
-                            .filter_map(|(_, o)| o.planners.iter().find(|p| &p.label == label))
-                            .flat_map(|p| values(&p.runs, &c.metric))
-                            .collect();
-                        (label.clone(), pooled)
-                    })
-                    .collect();
-                out.push(SeriesClaim {
-                    seed_file: r.seed_file.clone(),
-                    experiment: r.experiment.clone(),
-                    claim: decide_order(c.text.clone(), &c.metric, c.kind.clone(), samples),
-                });
-                continue;
-            }
-            let label = &c.order[0];
-            let samples: Option<Vec<(String, Vec<f64>)>> = c
-                .across
-                .iter()
-                .map(|entry| {
-                    let pooled: Vec<f64> = results
-                        .iter()
-                        .filter(|(_, o)| in_group(&o.name, entry))
-                        .filter_map(|(_, o)| o.planners.iter().find(|p| &p.label == label))
-                        .flat_map(|p| values(&p.runs, &c.metric))
-                        .collect();
-                    let any = results.iter().any(|(_, o)| in_group(&o.name, entry));
-                    any.then(|| (entry.clone(), pooled))
-                })
-                .collect();
-            let Some(samples) = samples else { continue };
-            out.push(SeriesClaim {
-                seed_file: r.seed_file.clone(),
-                experiment: r.experiment.clone(),
-                claim: decide_order(
-                    format!("{} ({label})", c.text),
-                    &c.metric,
-                    c.kind.clone(),
-                    samples,
-                ),
-            });
-        }
-    }
-    out
-}
-
 /// Draws run 0 of a planner: its trees and the path the harness scored for it.
 fn figure(
     scenario: &Scenario,
@@ -431,16 +219,4 @@ fn figure(
         .map_or((&[][..], &[][..]), |r| (&r.trees[..], &r.path[..]));
     let file = dir.join(format!("{}_{}.png", scenario.name, slug(spec.label())));
     harness::draw_world(world, trees, path, &file).map_err(|e| anyhow::anyhow!(e))
-}
-
-pub(crate) fn slug(s: &str) -> String {
-    s.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() {
-                c.to_ascii_lowercase()
-            } else {
-                '-'
-            }
-        })
-        .collect()
 }

@@ -23,6 +23,7 @@
 //! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate;
 //!   [`stats::mann_whitney_u`] and [`stats::decide_less`]: the rank test that decides a
 //!   paper's ordering claim on our runs, with its p-value and effect size.
+//! - [`report`]: the replay's claims decided on the runs, and its Markdown report.
 //! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
 //!   box plots of the metrics.
 //!
@@ -35,6 +36,7 @@
 mod figure;
 mod metrics;
 mod planners;
+pub mod report;
 mod room;
 mod runner;
 mod scenario;
