@@ -100,7 +100,7 @@ pub use grid_map::{GridError, GridMap};
 pub use inflation::{INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE};
 pub use io::image::{
     FORBIDDEN_COLOUR, RECTANGLE_COLOUR, RISK_COLOUR, SAFE_COLOUR, decode_picture, read_picture,
-    render_mask, render_zones, write_picture,
+    render_mask, render_zones, write_picture, zone_colour,
 };
 pub use io::movingai::{parse_movingai, read_movingai};
 pub use io::ros::{

@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use hyplan_core::{Point2, Tree, Zone};
+use hyplan_core::{Point2, Tree};
 use plotters::prelude::*;
 use tiny_skia::{Color, FillRule, Paint, PathBuilder, Pixmap, Stroke, Transform};
 
@@ -39,13 +39,9 @@ pub fn draw_world(
         let j = h - 1 - ((py as f64 / scale) as usize).min(h - 1);
         for px in 0..pw as usize {
             let i = ((px as f64 / scale) as usize).min(w - 1);
-            let v = match map.cell_zone(i, j) {
-                Zone::Free => 255,
-                Zone::Risk => 170,
-                Zone::Forbidden => 0,
-            };
+            let [r, g, b] = envmap::zone_colour(map.cell_zone(i, j));
             let k = 4 * (py * pw as usize + px);
-            data[k..k + 4].copy_from_slice(&[v, v, v, 255]);
+            data[k..k + 4].copy_from_slice(&[r, g, b, 255]);
         }
     }
     // World -> pixel: cells are `scale` pixels, y flipped.
@@ -87,7 +83,8 @@ pub fn draw_world(
     }
     if let Some(p) = pb.finish() {
         let mut paint = Paint::default();
-        paint.set_color_rgba8(30, 80, 230, 255);
+        let [r, g, b] = envmap::RECTANGLE_COLOUR;
+        paint.set_color_rgba8(r, g, b, 255);
         pixmap.stroke_path(
             &p,
             &paint,

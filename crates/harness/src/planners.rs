@@ -325,6 +325,32 @@ impl PlannerConfig {
         self
     }
 
+    /// The planner's fields as `key=value` pairs in the form [`with_params`](Self::with_params)
+    /// takes (values in RON syntax; the budget's fields as `budget.max_iterations`, ...).
+    ///
+    /// ```
+    /// let c = harness::PlannerConfig::by_name("bi-rrt").unwrap();
+    /// let p = c.params();
+    /// assert!(p.contains(&("step".to_string(), "1.0".to_string())));
+    /// assert!(p.iter().any(|(k, _)| k == "budget.max_iterations"));
+    /// ```
+    #[must_use]
+    pub fn params(&self) -> Vec<(String, String)> {
+        let text = ron_options().to_string(self).unwrap_or_default();
+        let inner = text.find('(').map_or("()", |i| &text[i..]);
+        let mut out = Vec::new();
+        for (k, v) in struct_fields(inner) {
+            if k == "budget" {
+                for (bk, bv) in struct_fields(&v) {
+                    out.push((format!("budget.{bk}"), bv));
+                }
+            } else {
+                out.push((k, v));
+            }
+        }
+        out
+    }
+
     /// Overrides fields by `key=value` pairs, values in RON syntax; `budget.key` reaches
     /// into the budget. Unknown keys and values of the wrong type are errors naming them.
     ///

@@ -30,8 +30,7 @@ pub struct PlannerFlags {
 ///
 /// An unknown name (listing the known ones), key or value.
 pub fn named(spec: &str) -> anyhow::Result<PlannerConfig> {
-    spec.parse()
-        .map_err(|e| anyhow::anyhow!("--planner {spec}: {e}"))
+    spec.parse().map_err(|e| anyhow::anyhow!("--planner: {e}"))
 }
 
 /// The planner `spec` names, configured from `flags` and then from its `key=value` pairs.
@@ -55,7 +54,7 @@ pub fn configure(spec: &str, flags: &PlannerFlags) -> anyhow::Result<PlannerConf
         }
         c
     })
-    .map_err(|e| anyhow::anyhow!("--planner {spec}: {e}"))
+    .map_err(|e| anyhow::anyhow!("--planner: {e}"))
 }
 
 /// The planner `spec` names, configured as [`configure`] does, ready to run.

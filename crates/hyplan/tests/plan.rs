@@ -237,6 +237,76 @@ fn svg_draws_map_tree_and_path() {
     assert!(stdout(&o).contains("path of length"));
 }
 
+/// The zones are one path per zone (no seams between rows), in envmap's colours, and a
+/// smoothed curve is drawn and reported with its transfer time.
+#[test]
+fn svg_zones_are_seamless_and_the_curve_is_drawn() {
+    let map = walled("svg_zones_are_seamless");
+    let svg = tmp_path("walled_curve.svg");
+    let o = hyplan_plan(&[
+        "--map",
+        &map,
+        "--start",
+        "2.5,2.5",
+        "--goal",
+        "17.5,2.5",
+        "--planner",
+        "rrt-connect",
+        "--smooth",
+        "pchip",
+        "--vmax",
+        "1",
+        "--wmax",
+        "1",
+        "--amax",
+        "1",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    // Only the white background is a rectangle; the wall is one path in black.
+    assert_eq!(text.matches("<rect").count(), 1, "{text}");
+    assert_eq!(text.matches(r##"fill="#000000""##).count(), 1, "{text}");
+    assert!(text.contains("#2ca02c"), "the smoothed curve");
+    let out = stdout(&o);
+    assert!(
+        out.contains("pchip curve") && out.contains("transfer time"),
+        "{out}"
+    );
+}
+
+/// `--planner NAME:key=value` sets any field of the planner; an unknown key is named.
+#[test]
+fn planner_pairs_set_fields_and_bad_keys_are_named() {
+    let map = walled("planner_pairs");
+    let common = [
+        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--json",
+    ];
+    let o = hyplan_plan(
+        &[
+            &common[..],
+            &["--planner", "rrt:step=2.5,budget.max_iterations=50000"],
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let line: serde_json::Value = serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
+    assert_eq!(line["planner"], "rrt");
+    // Steps of 2.5 cells: no path segment is longer.
+    let path = line["path"].as_array().unwrap();
+    for w in path.windows(2) {
+        let d = ((w[1][0].as_f64().unwrap() - w[0][0].as_f64().unwrap()).powi(2)
+            + (w[1][1].as_f64().unwrap() - w[0][1].as_f64().unwrap()).powi(2))
+        .sqrt();
+        assert!(d <= 2.5 + 1e-9, "segment {d}");
+    }
+    let o = hyplan_plan(&[&common[..], &["--planner", "rrt:stepp=2"]].concat());
+    assert_error(&o, &["--planner", "stepp", "goal_bias"]);
+    let o = hyplan_plan(&[&common[..], &["--planner", "rrt-turbo"]].concat());
+    assert_error(&o, &["rrt-turbo", "ga-pchip"]);
+}
+
 #[test]
 fn unreachable_goal_is_no_path_with_exit_1() {
     let map = closed("unreachable_goal_is_no_path_with_exit_1");

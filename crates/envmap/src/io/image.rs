@@ -143,6 +143,17 @@ pub const FORBIDDEN_COLOUR: [u8; 3] = [0, 0, 0];
 /// Colour of rectangle outlines in [`render_zones`]: blue.
 pub const RECTANGLE_COLOUR: [u8; 3] = [0, 0, 255];
 
+/// The colour of a zone in every figure of the workspace (seed 000's scheme): the one
+/// place the scheme is written.
+#[must_use]
+pub const fn zone_colour(zone: Zone) -> [u8; 3] {
+    match zone {
+        Zone::Free => SAFE_COLOUR,
+        Zone::Risk => RISK_COLOUR,
+        Zone::Forbidden => FORBIDDEN_COLOUR,
+    }
+}
+
 /// The zones of `map` drawn in seed 000's colours (Fig. 6(d)): white safe, grey high-risk,
 /// black forbidden, with `rectangles` outlined in blue; one pixel per cell, top row first.
 ///
@@ -162,12 +173,10 @@ pub fn render_zones(map: &GridMap, rectangles: &[CellRect]) -> Picture {
     let mut pic = Picture::filled_rgb(w, h, SAFE_COLOUR);
     for j in 0..h {
         for i in 0..w {
-            let c = match map.cell_zone(i, j) {
-                Zone::Free => continue,
-                Zone::Risk => RISK_COLOUR,
-                Zone::Forbidden => FORBIDDEN_COLOUR,
-            };
-            pic.set_rgb(i, h - 1 - j, c);
+            let zone = map.cell_zone(i, j);
+            if zone != Zone::Free {
+                pic.set_rgb(i, h - 1 - j, zone_colour(zone));
+            }
         }
     }
     for r in rectangles {

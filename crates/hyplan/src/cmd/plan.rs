@@ -215,13 +215,73 @@ fn input_scale(frame: &InputFrame) -> f64 {
     }
 }
 
-/// Runs `hyplan plan`.
+/// What the flags resolve to before any run: the map, its frame, the query and the
+/// planner, all checked.
+struct Setup {
+    map: GridMap,
+    frame: InputFrame,
+    /// World units per input unit.
+    scale: f64,
+    query: Query,
+    config: harness::PlannerConfig,
+    planner: Box<dyn hyplan_core::Planner>,
+    limits: Option<postproc::Limits>,
+}
+
+/// One run's record, its plan and, when smoothed, its curve (world frame).
+struct Outcome {
+    record: RunRecord,
+    plan: Option<Plan>,
+    curve: Option<Vec<Point2>>,
+    error: Option<PlanError>,
+}
+
+/// Runs `hyplan plan`: checks the flags, runs, prints each record, then the summary and
+/// the SVG.
 ///
 /// # Errors
 ///
 /// Unreadable maps, bad flags, a start or goal outside the map or blocked, bad planner
 /// parameters.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    let setup = check_args(args)?;
+    if args.csv {
+        outln!("planner,run,solved,exact,time_s,length,states_in_path,graph_vertices")?;
+    }
+    let mut records = Vec::with_capacity(args.runs as usize);
+    let mut first: Option<Outcome> = None;
+    for run in 0..args.runs {
+        let outcome = run_once(args, &setup, run)?;
+        print_record(args, &outcome.record, outcome.error.as_ref())?;
+        records.push(outcome.record.clone());
+        if run == 0 {
+            first = Some(outcome);
+        }
+    }
+    let solved = records.iter().filter(|r| r.solved).count();
+    if !args.csv && !args.json && args.runs > 1 {
+        print_summary(&records)?;
+    }
+    if let Some(svg_path) = &args.svg {
+        let first = first.as_ref();
+        write_svg(
+            svg_path,
+            &setup.map,
+            &setup.query,
+            first.and_then(|o| o.plan.as_ref()),
+            first.and_then(|o| o.curve.as_deref()),
+        )
+        .with_context(|| format!("writing {}", svg_path.display()))?;
+    }
+    Ok(if solved == records.len() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(crate::EXIT_NO_PATH)
+    })
+}
+
+/// Loads the map and turns the flags into a checked query and planner, before any run.
+fn check_args(args: &Args) -> anyhow::Result<Setup> {
     let opts = LoadOptions {
         threshold: args.threshold,
         safety_radius: args.safety_radius,
@@ -314,101 +374,108 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         ),
         other => anyhow::Error::new(other),
     })?;
+    Ok(Setup {
+        map,
+        frame,
+        scale,
+        query,
+        config,
+        planner,
+        limits,
+    })
+}
 
-    if args.csv {
-        outln!("planner,run,solved,exact,time_s,length,states_in_path,graph_vertices")?;
-    }
-    let mut records = Vec::with_capacity(args.runs as usize);
-    let mut first_plan: Option<Plan> = None;
-    for run in 0..args.runs {
-        let seed = harness::run_seed(args.seed, run);
-        let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let started = Instant::now();
-        let outcome = planner.plan(&map, &query, &mut rng);
-        let time_s = started.elapsed().as_secs_f64();
-        let record = match &outcome {
-            Ok(plan) => {
-                let to_input = |pts: &[hyplan_core::Point2]| -> Vec<[f64; 2]> {
-                    pts.iter()
-                        .map(|&p| {
-                            let (x, y) = frame.from_world(p);
-                            [x, y]
-                        })
-                        .collect()
-                };
-                let path = to_input(&plan.path);
-                // Curves are checked at most a quarter cell apart against the zones the
-                // planner avoided (the map's `blocked_from`).
-                let post = harness::post_process(
-                    plan,
-                    args.smooth,
-                    0.25 * map.resolution(),
-                    limits.as_ref(),
-                    |a, b| map.segment_free_cells(a, b),
-                )
-                .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", args.smooth.name()))?;
-                RunRecord {
-                    planner: config.name().to_string(),
-                    run,
-                    seed,
-                    solved: true,
-                    exact: true,
-                    time_s,
-                    length: Some(plan.length() / scale),
-                    states_in_path: Some(path.len()),
-                    nodes: plan.stats.nodes,
-                    iterations: plan.stats.iterations,
-                    collision_checks: plan.stats.collision_checks,
-                    path,
-                    smoothed: (args.smooth != postproc::Smoothing::None)
-                        .then(|| to_input(&post.smoothed.points)),
-                    turns: Some(post.metrics.turns),
-                    transfer_time_s: post.transfer_time_s,
-                    no_path: None,
-                }
+/// Run `run`: plan with its seed, score and smooth the plan, and make its record.
+fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
+    let Setup {
+        map,
+        frame,
+        scale,
+        query,
+        config,
+        planner,
+        limits,
+    } = setup;
+    let scale = *scale;
+    let seed = harness::run_seed(args.seed, run);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let started = Instant::now();
+    let outcome = planner.plan(map, query, &mut rng);
+    let time_s = started.elapsed().as_secs_f64();
+    let mut curve = None;
+    let record = match &outcome {
+        Ok(plan) => {
+            let to_input = |pts: &[hyplan_core::Point2]| -> Vec<[f64; 2]> {
+                pts.iter()
+                    .map(|&p| {
+                        let (x, y) = frame.from_world(p);
+                        [x, y]
+                    })
+                    .collect()
+            };
+            let path = to_input(&plan.path);
+            // Curves are checked at most a quarter cell apart against the zones the
+            // planner avoided (the map's `blocked_from`).
+            let post = harness::post_process(
+                plan,
+                args.smooth,
+                0.25 * map.resolution(),
+                limits.as_ref(),
+                |a, b| map.segment_free_cells(a, b),
+            )
+            .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", args.smooth.name()))?;
+            if args.smooth != postproc::Smoothing::None {
+                curve = Some(post.smoothed.points.clone());
             }
-            Err(e) if e.is_no_path() => {
-                let stats = e.stats().copied().unwrap_or_default();
-                RunRecord {
-                    planner: config.name().to_string(),
-                    run,
-                    seed,
-                    solved: false,
-                    exact: false,
-                    time_s,
-                    length: None,
-                    states_in_path: None,
-                    nodes: stats.nodes,
-                    iterations: stats.iterations,
-                    collision_checks: stats.collision_checks,
-                    path: Vec::new(),
-                    smoothed: None,
-                    turns: None,
-                    transfer_time_s: None,
-                    no_path: Some(NoPathRecord::new(e, scale)),
-                }
+            RunRecord {
+                planner: config.name().to_string(),
+                run,
+                seed,
+                solved: true,
+                exact: true,
+                time_s,
+                length: Some(plan.length() / scale),
+                states_in_path: Some(path.len()),
+                nodes: plan.stats.nodes,
+                iterations: plan.stats.iterations,
+                collision_checks: plan.stats.collision_checks,
+                path,
+                smoothed: (args.smooth != postproc::Smoothing::None)
+                    .then(|| to_input(&post.smoothed.points)),
+                turns: Some(post.metrics.turns),
+                transfer_time_s: post.transfer_time_s,
+                no_path: None,
             }
-            Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
-        };
-        print_record(args, &record, outcome.as_ref().err())?;
-        if run == 0 {
-            first_plan = outcome.ok();
         }
-        records.push(record);
-    }
-
-    let solved = records.iter().filter(|r| r.solved).count();
-    if !args.csv && !args.json && args.runs > 1 {
-        print_summary(&records)?;
-    }
-    if let Some(svg_path) = &args.svg {
-        write_svg(svg_path, &map, &query, first_plan.as_ref())
-            .with_context(|| format!("writing {}", svg_path.display()))?;
-    }
-    Ok(if solved == records.len() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(crate::EXIT_NO_PATH)
+        Err(e) if e.is_no_path() => {
+            let stats = e.stats().copied().unwrap_or_default();
+            RunRecord {
+                planner: config.name().to_string(),
+                run,
+                seed,
+                solved: false,
+                exact: false,
+                time_s,
+                length: None,
+                states_in_path: None,
+                nodes: stats.nodes,
+                iterations: stats.iterations,
+                collision_checks: stats.collision_checks,
+                path: Vec::new(),
+                smoothed: None,
+                turns: None,
+                transfer_time_s: None,
+                no_path: Some(NoPathRecord::new(e, scale)),
+            }
+        }
+        Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
+    };
+    let error = outcome.as_ref().err().cloned();
+    Ok(Outcome {
+        record,
+        plan: outcome.ok(),
+        curve,
+        error,
     })
 }
 
@@ -429,8 +496,17 @@ fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::
     } else if args.json {
         outln!("{}", serde_json::to_string(r)?)?;
     } else if r.solved {
+        // What was computed beyond the path: turns always, the curve and the transfer
+        // time when asked for.
+        let mut extra = format!(", {} turns > 10 deg", r.turns.unwrap_or(0));
+        if let Some(c) = &r.smoothed {
+            extra += &format!(", {} curve ({} points)", args.smooth.name(), c.len());
+        }
+        if let Some(t) = r.transfer_time_s {
+            extra += &format!(", transfer time {t:.3} s");
+        }
         outln!(
-            "run {} (seed {}): path of length {:.3} ({} points), {} nodes, {} iterations, {} edge checks, {:.3} ms",
+            "run {} (seed {}): path of length {:.3} ({} points){extra}, {} nodes, {} iterations, {} edge checks, {:.3} ms",
             r.run,
             r.seed,
             r.length.unwrap_or(f64::NAN),
@@ -480,9 +556,17 @@ fn print_summary(records: &[RunRecord]) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Draws zones (one rectangle per horizontal run of non-free cells), trees and path, in
-/// cell units with y down (SVG's frame), one cell = 1 user unit.
-fn write_svg(path: &Path, map: &GridMap, query: &Query, plan: Option<&Plan>) -> anyhow::Result<()> {
+/// Draws zones, trees, the raw path and the smoothed curve, in cell units with y down
+/// (SVG's frame), one cell = 1 user unit. Each zone is one path of all its cell runs, so
+/// the renderer fills it in one pass with no seams between rows; colours are
+/// [`envmap::zone_colour`]'s, the scheme of every figure.
+fn write_svg(
+    path: &Path,
+    map: &GridMap,
+    query: &Query,
+    plan: Option<&Plan>,
+    curve: Option<&[Point2]>,
+) -> anyhow::Result<()> {
     use svg::Document;
     use svg::node::element::path::Data;
     use svg::node::element::{Circle, Path as SvgPath, Rectangle};
@@ -504,31 +588,39 @@ fn write_svg(path: &Path, map: &GridMap, query: &Query, plan: Option<&Plan>) -> 
                 .set("height", h)
                 .set("fill", "white"),
         );
-    for j in 0..h {
-        let row = h - 1 - j;
-        let mut i = 0;
-        while i < w {
-            let zone = map.cell_zone(i, j);
-            let mut end = i + 1;
-            while end < w && map.cell_zone(end, j) == zone {
-                end += 1;
+    let hex = |c: [u8; 3]| format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
+    for zone in [Zone::Risk, Zone::Forbidden] {
+        let mut data = Data::new();
+        let mut any = false;
+        for j in 0..h {
+            let row = h - 1 - j;
+            let mut i = 0;
+            while i < w {
+                if map.cell_zone(i, j) != zone {
+                    i += 1;
+                    continue;
+                }
+                let mut end = i + 1;
+                while end < w && map.cell_zone(end, j) == zone {
+                    end += 1;
+                }
+                data = data
+                    .move_to((i, row))
+                    .horizontal_line_by((end - i) as f64)
+                    .vertical_line_by(1)
+                    .horizontal_line_by(-((end - i) as f64))
+                    .close();
+                any = true;
+                i = end;
             }
-            if zone != Zone::Free {
-                let fill = if zone == Zone::Forbidden {
-                    "#222"
-                } else {
-                    "#f4c27a"
-                };
-                doc = doc.add(
-                    Rectangle::new()
-                        .set("x", i)
-                        .set("y", row)
-                        .set("width", end - i)
-                        .set("height", 1)
-                        .set("fill", fill),
-                );
-            }
-            i = end;
+        }
+        if any {
+            doc = doc.add(
+                SvgPath::new()
+                    .set("d", data)
+                    .set("fill", hex(envmap::zone_colour(zone)))
+                    .set("shape-rendering", "crispEdges"),
+            );
         }
     }
     if let Some(plan) = plan {
@@ -559,6 +651,19 @@ fn write_svg(path: &Path, map: &GridMap, query: &Query, plan: Option<&Plan>) -> 
                     .set("stroke-width", 3.0 * stroke),
             );
         }
+    }
+    if let Some(curve) = curve.filter(|c| c.len() >= 2) {
+        let mut data = Data::new().move_to(to_svg(curve[0]));
+        for &p in &curve[1..] {
+            data = data.line_to(to_svg(p));
+        }
+        doc = doc.add(
+            SvgPath::new()
+                .set("d", data)
+                .set("fill", "none")
+                .set("stroke", "#2ca02c")
+                .set("stroke-width", 2.0 * stroke),
+        );
     }
     let (sx, sy) = to_svg(query.start);
     let (gx, gy) = to_svg(query.goal.center());

@@ -21,17 +21,8 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     };
     for c in configs {
         outln!("{:<18} {}", c.name(), c.help())?;
-        let fields = harness::ron_options().to_string(&c)?;
-        // `Rrt(step:1.0,...)` -> `step=1.0, ...`: the pairs `--planner` takes.
-        let inner = fields
-            .split_once('(')
-            .and_then(|(_, rest)| rest.strip_suffix(')'))
-            .unwrap_or("");
-        outln!(
-            "{:<18} defaults: {}",
-            "",
-            inner.replace(':', "=").replace(",", ", ")
-        )?;
+        let pairs: Vec<String> = c.params().iter().map(|(k, v)| format!("{k}={v}")).collect();
+        outln!("{:<18} defaults: {}", "", pairs.join(", "))?;
     }
     Ok(ExitCode::SUCCESS)
 }
