@@ -331,7 +331,7 @@ impl GaPchip {
         nodes.push(goal);
         common::dedup(&mut nodes);
         let path = if self.smoothing && nodes.len() >= 3 {
-            smooth::pchip_checked(&nodes, self.curve_spacing, |a, b| {
+            smooth::fit_checked(&nodes, postproc::Fit::Pchip, self.curve_spacing, |a, b| {
                 checker.segment_free(a, b)
             })
             .points

@@ -373,25 +373,21 @@ impl RrtAstarBt {
         raw.extend(end);
         common::dedup(&mut raw);
         // Node reduction (4.5): pairwise, one pass by default.
-        let reduced = if self.reduction_passes == 0 {
-            postproc::prune_pairwise(&raw, |a, b| checker.segment_free(a, b))
-        } else {
-            let mut r = raw.clone();
-            for _ in 0..self.reduction_passes {
-                let next = reduce_once(&r, |a, b| checker.segment_free(a, b));
-                let done = next.len() == r.len();
-                r = next;
-                if done {
-                    break;
-                }
-            }
-            r
+        // 0 passes means "to stability".
+        let passes = match self.reduction_passes {
+            0 => usize::MAX,
+            n => n,
         };
+        let reduced =
+            postproc::prune_pairwise_passes(&raw, passes, |a, b| checker.segment_free(a, b));
         // PCHIP (4.6), sampled and checked against the same zones.
         let (path, repairs, refused) = if self.smoothing && reduced.len() >= 3 {
-            let c = smooth::pchip_checked(&reduced, self.curve_spacing, |a, b| {
-                checker.segment_free(a, b)
-            });
+            let c = smooth::fit_checked(
+                &reduced,
+                postproc::Fit::Pchip,
+                self.curve_spacing,
+                |a, b| checker.segment_free(a, b),
+            );
             (c.points, c.repairs, c.refused)
         } else {
             (reduced.clone(), 0, false)
@@ -577,30 +573,6 @@ impl Ord for Candidate {
     }
 }
 
-/// One pass of seed 000's node reduction (4.5): from node i, if segment i-(i+2) is free,
-/// emit i+2 and continue from it; otherwise emit i+1 and continue from i+1.
-pub(crate) fn reduce_once(
-    path: &[Point2],
-    mut free: impl FnMut(Point2, Point2) -> bool,
-) -> Vec<Point2> {
-    let n = path.len();
-    if n < 3 {
-        return path.to_vec();
-    }
-    let mut out = vec![path[0]];
-    let mut i = 0;
-    while i + 1 < n {
-        if i + 2 < n && free(path[i], path[i + 2]) {
-            out.push(path[i + 2]);
-            i += 2;
-        } else {
-            out.push(path[i + 1]);
-            i += 1;
-        }
-    }
-    out
-}
-
 impl Planner for RrtAstarBt {
     fn info(&self) -> PlannerInfo {
         PlannerInfo {
@@ -628,7 +600,8 @@ mod tests {
     #[test]
     fn one_pass_merges_pairs() {
         let p: Vec<Point2> = (0..6).map(|i| Point2::new(f64::from(i), 0.0)).collect();
-        assert_eq!(reduce_once(&p, |_, _| true), vec![p[0], p[2], p[4], p[5]]);
-        assert_eq!(reduce_once(&p, |_, _| false), p);
+        let once = |p: &[Point2], free: bool| postproc::prune_pairwise_passes(p, 1, |_, _| free);
+        assert_eq!(once(&p, true), vec![p[0], p[2], p[4], p[5]]);
+        assert_eq!(once(&p, false), p);
     }
 }

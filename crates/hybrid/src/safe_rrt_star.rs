@@ -335,10 +335,13 @@ impl SafeRrtStar {
         });
         // B-spline (2.3) over the densified control polygon, checked against Forbidden.
         let (path, repairs, refused) = if self.smoothing && reduced.len() >= 3 {
-            let control = smooth::densify(&reduced, self.spline_max_spacing);
-            let c = smooth::bspline_checked(&control, self.curve_spacing, |a, b| {
-                checker.segment_free(a, b)
-            });
+            let control = postproc::densify(&reduced, self.spline_max_spacing);
+            let c = smooth::fit_checked(
+                &control,
+                postproc::Fit::BSpline,
+                self.curve_spacing,
+                |a, b| checker.segment_free(a, b),
+            );
             (c.points, c.repairs, c.refused)
         } else {
             (reduced.clone(), 0, false)

@@ -92,9 +92,12 @@ pub use curvature::{curvature, discrete_curvature, turning_angles};
 pub use error::PostprocError;
 pub use metrics::{DEFAULT_TURN_THRESHOLD_DEG, PathMetrics, count_turns};
 pub use pchip::Pchip;
-pub use prune::{prune_pairwise, shortcut_farthest, shortcut_greedy};
-pub use resample::{Curve, MAX_SAMPLES};
-pub use smooth::{Repair, Smoothed, Smoothing, smooth_checked};
+pub use prune::{prune_pairwise, prune_pairwise_passes, shortcut_farthest, shortcut_greedy};
+pub use resample::{Curve, MAX_SAMPLES, densify};
+pub use smooth::{
+    Fit, FitOptions, INSERT_ROUNDS, OnFailure, Repair, Smoothed, Smoothing, fit_checked,
+    smooth_checked,
+};
 pub use timing::{Limits, ProfilePoint, Timing, straight_time, time_curve, time_polyline};
 
 /// The README's examples, compiled and run as doctests.

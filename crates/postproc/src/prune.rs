@@ -40,10 +40,30 @@ use hyplan_core::Point2;
 #[must_use]
 pub fn prune_pairwise(
     path: &[Point2],
+    segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Vec<Point2> {
+    prune_pairwise_passes(path, usize::MAX, segment_free)
+}
+
+/// [`prune_pairwise`] for at most `passes` passes (fewer when a pass removes nothing):
+/// seed 000's node reduction (4.5) is one pass.
+///
+/// ```
+/// use hyplan_core::Point2;
+/// use postproc::prune_pairwise_passes;
+/// let zigzag: Vec<Point2> = (0..5).map(|i| Point2::new(f64::from(i), 0.1 * f64::from(i % 2))).collect();
+/// // One pass joins every other node; the second pass joins the ends.
+/// assert_eq!(prune_pairwise_passes(&zigzag, 1, |_, _| true).len(), 3);
+/// assert_eq!(prune_pairwise_passes(&zigzag, 2, |_, _| true).len(), 2);
+/// ```
+#[must_use]
+pub fn prune_pairwise_passes(
+    path: &[Point2],
+    passes: usize,
     mut segment_free: impl FnMut(Point2, Point2) -> bool,
 ) -> Vec<Point2> {
     let mut current = path.to_vec();
-    loop {
+    for _ in 0..passes {
         let n = current.len();
         if n < 3 {
             return current;
@@ -66,6 +86,7 @@ pub fn prune_pairwise(
         }
         current = next;
     }
+    current
 }
 
 /// Drops redundant nodes greedily from the start (seed 003, section 2.3; seed 001,

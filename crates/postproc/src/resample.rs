@@ -200,6 +200,25 @@ fn polyline_locate(p: &[Point2], t: f64) -> Option<(usize, f64)> {
         .map(|k| (k, 1.0))
 }
 
+/// The polyline `nodes` with every segment split evenly into pieces shorter than
+/// `spacing` (the nodes kept): seed 003's densified control polygon, for instance.
+///
+/// ```
+/// use hyplan_core::Point2;
+/// let d = postproc::densify(&[Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)], 0.3);
+/// assert_eq!(d.len(), 5); // pieces of 0.25
+/// ```
+#[must_use]
+pub fn densify(nodes: &[Point2], spacing: f64) -> Vec<Point2> {
+    let mut out = Vec::with_capacity(nodes.len());
+    for w in nodes.windows(2) {
+        out.push(w[0]);
+        densify_line(w[0], w[1], spacing, &mut out);
+    }
+    out.extend(nodes.last());
+    out
+}
+
 /// Pushes the points strictly between `a` and `b` on the segment, evenly spaced less than
 /// `spacing` apart.
 pub(crate) fn densify_line(a: Point2, b: Point2, spacing: f64, out: &mut Vec<Point2>) {

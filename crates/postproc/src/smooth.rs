@@ -151,6 +151,9 @@ pub struct Smoothed {
     pub repairs: Vec<Repair>,
     /// Number of oracle calls made (input check, pruning, sample checks).
     pub oracle_calls: usize,
+    /// Whether the curve was refused and the nodes returned as a polyline
+    /// ([`OnFailure::Polyline`]); always `false` from [`smooth_checked`].
+    pub refused: bool,
 }
 
 impl Smoothed {
@@ -196,8 +199,50 @@ impl Smoothed {
     }
 }
 
-/// Rounds of node insertion before colliding pieces are straightened.
-const INSERT_ROUNDS: usize = 4;
+/// Rounds of node insertion before colliding pieces are straightened, in
+/// [`smooth_checked`] (and [`FitOptions::default`]).
+pub const INSERT_ROUNDS: usize = 4;
+
+/// The curve [`fit_checked`] makes over given nodes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fit {
+    /// PCHIP through the nodes (seed 000, 4.6).
+    Pchip,
+    /// Interpolating cubic B-spline through the nodes.
+    BSplineInterpolating,
+    /// Clamped cubic B-spline with the nodes as control points (seed 003, 2.3).
+    BSpline,
+}
+
+/// What [`fit_checked`] does when its repairs run out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OnFailure {
+    /// Return [`PostprocError::CannotRepair`] ([`smooth_checked`]'s rule).
+    Error,
+    /// Refuse the curve and return the nodes as a polyline, sampled and checked, with
+    /// [`Smoothed::refused`] set: the rule of the planners whose nodes are free by
+    /// construction (a planner's result must be a path, not an error).
+    Polyline,
+}
+
+/// The repair rounds and the failure rule of [`fit_checked`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FitOptions {
+    /// Rounds of midpoint insertion before a colliding piece of a curve through the nodes
+    /// is straightened ([`INSERT_ROUNDS`] by default).
+    pub insert_rounds: usize,
+    /// What to do when the repairs run out ([`OnFailure::Error`] by default).
+    pub on_failure: OnFailure,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        Self {
+            insert_rounds: INSERT_ROUNDS,
+            on_failure: OnFailure::Error,
+        }
+    }
+}
 
 /// Smooths `path` with `method` and returns the curve sampled at most `spacing` apart,
 /// with every sample pair accepted by `segment_free`.
@@ -288,27 +333,36 @@ pub fn smooth_checked(
         }
         Smoothing::Pchip => {
             let nodes = prune_pairwise(path, &mut oracle);
-            through_nodes(
+            fit(
                 nodes,
-                |n| Pchip::new(n).map(Curve::Pchip),
+                Fit::Pchip,
                 spacing,
+                INSERT_ROUNDS,
                 &mut oracle,
                 &mut repairs,
             )?
         }
         Smoothing::BSplineInterpolating => {
             let nodes = shortcut_greedy(path, &mut oracle);
-            through_nodes(
+            fit(
                 nodes,
-                |n| BSpline::interpolating(n).map(Curve::BSpline),
+                Fit::BSplineInterpolating,
                 spacing,
+                INSERT_ROUNDS,
                 &mut oracle,
                 &mut repairs,
             )?
         }
         Smoothing::BSpline => {
             let nodes = shortcut_greedy(path, &mut oracle);
-            control_points(nodes, spacing, &mut oracle, &mut repairs)?
+            fit(
+                nodes,
+                Fit::BSpline,
+                spacing,
+                INSERT_ROUNDS,
+                &mut oracle,
+                &mut repairs,
+            )?
         }
     };
     // A curve that stalls (zero speed at a node) could repeat a sample bit for bit; a
@@ -321,7 +375,119 @@ pub fn smooth_checked(
         curve,
         repairs,
         oracle_calls: calls,
+        refused: false,
     })
+}
+
+/// Fits `fit` to `nodes` as given (no pruning: the caller has its own, as the papers'
+/// planners do), samples it at most `spacing` apart, checks every sample pair with
+/// `segment_free` and repairs locally as [`smooth_checked`] does, with the rounds and the
+/// failure rule of `options`. `nodes` must be a polyline the oracle accepts (it is not
+/// re-checked).
+///
+/// # Errors
+///
+/// Bad nodes or spacing as for [`smooth_checked`]; [`PostprocError::CannotRepair`] when
+/// the repairs run out and `options.on_failure` is [`OnFailure::Error`].
+///
+/// ```
+/// use hyplan_core::Point2;
+/// use postproc::{Fit, FitOptions, OnFailure, fit_checked};
+/// let nodes = [Point2::new(0.0, 0.0), Point2::new(4.0, 1.0), Point2::new(5.0, 5.0)];
+/// // An oracle that accepts nothing off the polyline: the curve is refused.
+/// let on = |p: Point2| {
+///     nodes.windows(2).any(|w| {
+///         let d = w[1] - w[0];
+///         let t = ((p - w[0]).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+///         (p - (w[0] + d * t)).norm() < 1e-9
+///     })
+/// };
+/// let options = FitOptions { insert_rounds: 0, on_failure: OnFailure::Polyline };
+/// let s = fit_checked(&nodes, Fit::BSpline, 0.25, options, |a, b| on(a) && on(b))?;
+/// assert!(s.refused && s.points.iter().all(|&p| on(p)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn fit_checked(
+    nodes: &[Point2],
+    fit_with: Fit,
+    spacing: f64,
+    options: FitOptions,
+    mut segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Result<Smoothed, PostprocError> {
+    validate_path(nodes)?;
+    check_spacing(spacing, hyplan_core::path_length(nodes))?;
+    let mut calls = 0usize;
+    let mut oracle = |a: Point2, b: Point2| {
+        calls += 1;
+        segment_free(a, b)
+    };
+    let mut repairs = Vec::new();
+    let method = match fit_with {
+        Fit::Pchip => Smoothing::Pchip,
+        Fit::BSplineInterpolating => Smoothing::BSplineInterpolating,
+        Fit::BSpline => Smoothing::BSpline,
+    };
+    let fitted = fit(
+        nodes.to_vec(),
+        fit_with,
+        spacing,
+        options.insert_rounds,
+        &mut oracle,
+        &mut repairs,
+    );
+    let (kept, mut points, curve, refused) = match fitted {
+        Ok((kept, points, curve)) => (kept, points, curve, false),
+        Err(PostprocError::CannotRepair { .. }) if options.on_failure == OnFailure::Polyline => {
+            let points = sample_polyline(nodes, spacing, &mut oracle)?;
+            (
+                nodes.to_vec(),
+                points,
+                Curve::Polyline(nodes.to_vec()),
+                true,
+            )
+        }
+        Err(e) => return Err(e),
+    };
+    points.dedup();
+    Ok(Smoothed {
+        method,
+        nodes: kept,
+        points,
+        curve,
+        repairs,
+        oracle_calls: calls,
+        refused,
+    })
+}
+
+/// The checked fit of one curve kind (see [`fit_checked`]).
+fn fit(
+    nodes: Vec<Point2>,
+    fit_with: Fit,
+    spacing: f64,
+    insert_rounds: usize,
+    oracle: &mut impl FnMut(Point2, Point2) -> bool,
+    repairs: &mut Vec<Repair>,
+) -> Result<Fitted, PostprocError> {
+    match fit_with {
+        Fit::Pchip => through_nodes(
+            nodes,
+            |n| Pchip::new(n).map(Curve::Pchip),
+            spacing,
+            insert_rounds,
+            oracle,
+            repairs,
+        ),
+        Fit::BSplineInterpolating => through_nodes(
+            nodes,
+            |n| BSpline::interpolating(n).map(Curve::BSpline),
+            spacing,
+            insert_rounds,
+            oracle,
+            repairs,
+        ),
+        Fit::BSpline => control_points(nodes, spacing, oracle, repairs),
+    }
 }
 
 /// Checks the pairs `points[start..]` (in order) and then `(last, end)`; returns the first
@@ -368,6 +534,7 @@ fn through_nodes(
     mut nodes: Vec<Point2>,
     build: impl Fn(&[Point2]) -> Result<Curve, PostprocError>,
     spacing: f64,
+    insert_rounds: usize,
     oracle: &mut impl FnMut(Point2, Point2) -> bool,
     repairs: &mut Vec<Repair>,
 ) -> Result<Fitted, PostprocError> {
@@ -406,13 +573,13 @@ fn through_nodes(
             // A straight piece lies on a segment the oracle accepted: nothing is left to try.
             return Err(PostprocError::CannotRepair { at });
         }
-        if round > INSERT_ROUNDS + 1 {
+        if round > insert_rounds + 1 {
             return Err(PostprocError::CannotRepair { at: first_at });
         }
         // Repair from the back so that earlier indices stay valid while inserting.
         for &(k, _) in bad.iter().rev() {
             let (a, b) = (nodes[k], nodes[k + 1]);
-            if round < INSERT_ROUNDS && nalgebra::distance(&a, &b) > 2.0 * spacing {
+            if round < insert_rounds && nalgebra::distance(&a, &b) > 2.0 * spacing {
                 let mid = nalgebra::center(&a, &b);
                 nodes.insert(k + 1, mid);
                 straight.insert(k + 1, false);
@@ -423,7 +590,7 @@ fn through_nodes(
             }
         }
     }
-    unreachable!("the repair loop returns within INSERT_ROUNDS + 2 rounds")
+    unreachable!("the repair loop returns within insert_rounds + 2 rounds")
 }
 
 /// Smoothing with a control-point B-spline (seed 003): span `j` depends on control points
