@@ -195,7 +195,9 @@ pub struct Processed {
 /// A planner that returns a dense curve names the nodes it is built on
 /// ([`Plan::waypoints`]); left as it is (`Smoothing::None`), such a path is counted on those
 /// nodes, as the papers count, and timed as a curve rather than as a polyline that stops
-/// at every sample.
+/// at every sample. Asked for another smoothing, such a planner's nodes are fitted with
+/// `method` in place of its own curve: a plan is smoothed once, never a curve smoothed
+/// again.
 ///
 /// # Errors
 ///
@@ -207,8 +209,14 @@ pub fn post_process(
     limits: Option<&Limits>,
     segment_free: impl FnMut(Point2, Point2) -> bool,
 ) -> Result<Processed, postproc::PostprocError> {
-    let smoothed = postproc::smooth_checked(&plan.path, method, spacing, segment_free)?;
-    let as_curve = !plan.waypoints.is_empty() && method == Smoothing::None;
+    let curve_plan = !plan.waypoints.is_empty();
+    let input = if curve_plan && method != Smoothing::None {
+        &plan.waypoints
+    } else {
+        &plan.path
+    };
+    let smoothed = postproc::smooth_checked(input, method, spacing, segment_free)?;
+    let as_curve = curve_plan && method == Smoothing::None;
     let metrics = if as_curve {
         PathMetrics::of(&plan.waypoints)
     } else {
@@ -246,4 +254,47 @@ fn min_clearance(ws: &dyn Workspace, samples: &[Point2]) -> f64 {
         }
     }
     if best.is_finite() { best } else { f64::NAN }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A plan that is already a curve is smoothed from its nodes, not smoothed again.
+    #[test]
+    fn a_curve_plan_is_smoothed_from_its_nodes_once() {
+        let waypoints = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(4.0, 0.0),
+            Point2::new(4.0, 4.0),
+        ];
+        // The planner's own "curve", here with a bump off the L that the oracle below
+        // refuses: smoothing it again would fail, smoothing the nodes does not.
+        let mut path = postproc::densify(&waypoints, 0.1);
+        path.insert(20, Point2::new(2.0, 0.5));
+        let plan = Plan {
+            cost: hyplan_core::path_length(&path),
+            path,
+            trees: Vec::new(),
+            waypoints: waypoints.clone(),
+            stats: hyplan_core::PlanStats::default(),
+        };
+        // Nothing but the L's own segments is free, so pruning keeps the corner.
+        let leg = |p: Point2, horizontal: bool| {
+            let span = -1e-6..=4.0 + 1e-6;
+            if horizontal {
+                p.y.abs() < 1e-6 && span.contains(&p.x)
+            } else {
+                (p.x - 4.0).abs() < 1e-6 && span.contains(&p.y)
+            }
+        };
+        let free = |a: Point2, b: Point2| {
+            (leg(a, true) && leg(b, true)) || (leg(a, false) && leg(b, false))
+        };
+        let p = post_process(&plan, Smoothing::Pchip, 0.25, None, free).unwrap();
+        assert_eq!(p.smoothed.nodes, waypoints);
+        // Left as it is, it is counted on its nodes.
+        let p = post_process(&plan, Smoothing::None, 0.25, None, |_, _| true).unwrap();
+        assert_eq!(p.metrics.nodes, 3);
+    }
 }
