@@ -5,6 +5,7 @@ mod data;
 mod errors;
 #[cfg(feature = "image")]
 mod limits;
+mod connectivity;
 mod pipeline;
 mod properties;
 #[cfg(feature = "image")]

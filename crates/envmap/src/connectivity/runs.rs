@@ -1,0 +1,335 @@
+//! Cell sets as horizontal runs, their connected components, and exact Euclidean
+//! dilations: the pieces of the connectivity proof.
+//!
+//! A map of a few megapixels has only thousands to a few hundred thousand runs, so working
+//! on runs instead of cells makes a flood fill or a thresholded distance test cost what
+//! the map's shapes cost, not what its pixels cost.
+
+use hyplan_core::Zone;
+
+use super::{Moves, Target};
+use crate::GridMap;
+
+/// A set of cells: per row, sorted disjoint runs `[i0, i1)` of columns that do not touch
+/// (a gap of at least one cell between runs of a row).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Runs {
+    width: usize,
+    /// `row_start[j]..row_start[j + 1]` are the runs of row `j`.
+    row_start: Vec<u32>,
+    runs: Vec<(u32, u32)>,
+}
+
+impl Runs {
+    fn empty(width: usize) -> Self {
+        Self {
+            width,
+            row_start: vec![0],
+            runs: Vec::new(),
+        }
+    }
+
+    /// The cells of `map` whose zone passes `keep`.
+    pub(crate) fn of_zones(map: &GridMap, keep: impl Fn(Zone) -> bool) -> Self {
+        let w = map.width();
+        let mut out = Self::empty(w);
+        out.row_start.reserve(map.height());
+        for row in map.zones().chunks_exact(w) {
+            let mut i = 0;
+            while i < w {
+                match row[i..].iter().position(|&z| keep(z)) {
+                    Some(k) => i += k,
+                    None => break,
+                }
+                let i0 = i;
+                i = row[i..].iter().position(|&z| !keep(z)).map_or(w, |k| i + k);
+                out.runs.push((i0 as u32, i as u32));
+            }
+            out.row_start.push(out.runs.len() as u32);
+        }
+        out
+    }
+
+    /// Rows.
+    pub(crate) fn height(&self) -> usize {
+        self.row_start.len() - 1
+    }
+
+    /// Whether the set has no cell.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.runs.is_empty()
+    }
+
+    /// The runs of row `j`.
+    pub(crate) fn row(&self, j: usize) -> &[(u32, u32)] {
+        &self.runs[self.row_start[j] as usize..self.row_start[j + 1] as usize]
+    }
+
+    /// Index (into the whole run list) of the run of row `j` holding column `i`.
+    fn run_at(&self, i: usize, j: usize) -> Option<usize> {
+        if j >= self.height() {
+            return None;
+        }
+        let row = self.row(j);
+        let k = row.partition_point(|&(_, i1)| i1 as usize <= i);
+        (k < row.len() && row[k].0 as usize <= i).then_some(self.row_start[j] as usize + k)
+    }
+
+    /// Builds a set row by row from `row_runs(j, &mut buffer)`, which appends the row's
+    /// intervals `[i0, i1)` in any order, overlapping or not; they are sorted and merged.
+    fn from_rows(
+        width: usize,
+        height: usize,
+        mut row_runs: impl FnMut(usize, &mut Vec<(u32, u32)>),
+    ) -> Self {
+        let mut out = Self::empty(width);
+        out.row_start.reserve(height);
+        let mut buf = Vec::new();
+        for j in 0..height {
+            buf.clear();
+            row_runs(j, &mut buf);
+            buf.sort_unstable();
+            let mut cur: Option<(u32, u32)> = None;
+            for &(a, b) in &buf {
+                if a >= b {
+                    continue;
+                }
+                cur = match cur {
+                    Some((c0, c1)) if a <= c1 => Some((c0, c1.max(b))),
+                    Some(done) => {
+                        out.runs.push(done);
+                        Some((a, b))
+                    }
+                    None => Some((a, b)),
+                };
+            }
+            out.runs.extend(cur);
+            out.row_start.push(out.runs.len() as u32);
+        }
+        out
+    }
+
+    /// The cells whose centre lies within squared distance `t` (cells^2, inclusive) of a
+    /// cell of the set: the exact Euclidean dilation by a disc. Row `j` of the result is
+    /// the union, over `dy` with `dy^2 <= t`, of the runs of row `j + dy` widened by the
+    /// largest `dx` with `dx^2 <= t - dy^2`, so the cost is the number of runs times the
+    /// disc's diameter (plus sorting), independent of the runs' lengths.
+    pub(crate) fn dilate(&self, t: u64) -> Self {
+        let h = self.height();
+        let r = isqrt(t);
+        let w = self.width as u64;
+        let half: Vec<u64> = (0..=r).map(|dy| isqrt(t - dy * dy)).collect();
+        Self::from_rows(self.width, h, |j, buf| {
+            let lo = (j as u64).saturating_sub(r) as usize;
+            let hi = (j as u64 + r).min(h as u64 - 1) as usize;
+            for y in lo..=hi {
+                let dx = half[y.abs_diff(j)];
+                buf.extend(self.row(y).iter().map(|&(a, b)| {
+                    let a = u64::from(a).saturating_sub(dx);
+                    let b = (u64::from(b) + dx).min(w);
+                    (a as u32, b as u32)
+                }));
+            }
+        })
+    }
+
+    /// The cells of `self` that are not in `other`.
+    pub(crate) fn minus(&self, other: &Self) -> Self {
+        Self::from_rows(self.width, self.height(), |j, buf| {
+            let cut = other.row(j);
+            let mut k = 0;
+            for &(a, b) in self.row(j) {
+                let mut a = a;
+                while k < cut.len() && cut[k].1 <= a {
+                    k += 1;
+                }
+                let mut m = k;
+                while a < b && m < cut.len() && cut[m].0 < b {
+                    if cut[m].0 > a {
+                        buf.push((a, cut[m].0));
+                    }
+                    a = a.max(cut[m].1);
+                    m += 1;
+                }
+                if a < b {
+                    buf.push((a, b));
+                }
+            }
+        })
+    }
+
+    /// The cells in both sets.
+    pub(crate) fn and(&self, other: &Self) -> Self {
+        Self::from_rows(self.width, self.height(), |j, buf| {
+            let (x, y) = (self.row(j), other.row(j));
+            let (mut p, mut q) = (0, 0);
+            while p < x.len() && q < y.len() {
+                let (a, b) = (x[p].0.max(y[q].0), x[p].1.min(y[q].1));
+                if a < b {
+                    buf.push((a, b));
+                }
+                if x[p].1 < y[q].1 {
+                    p += 1;
+                } else {
+                    q += 1;
+                }
+            }
+        })
+    }
+
+    /// Whether every cell of `self` is in `other`.
+    pub(crate) fn within(&self, other: &Self) -> bool {
+        (0..self.height()).all(|j| {
+            let cover = other.row(j);
+            self.row(j).iter().all(|&(a, b)| {
+                // Runs of a row never touch, so one run of `other` must hold all of [a, b).
+                let k = cover.partition_point(|&(_, c1)| c1 <= a);
+                k < cover.len() && cover[k].0 <= a && b <= cover[k].1
+            })
+        })
+    }
+}
+
+/// A set of cells with the connected component of each run.
+#[derive(Clone, Debug)]
+pub(crate) struct Components {
+    runs: Runs,
+    /// Per run, a component id (the index of the component's first run).
+    label: Vec<u32>,
+}
+
+impl Components {
+    /// The components of `runs` under `moves`: runs of consecutive rows join when they
+    /// share a column (`Four`) or a column or a corner (`Eight`). Union-find over the runs.
+    pub(crate) fn of(runs: Runs, moves: Moves) -> Self {
+        let reach = u32::from(moves == Moves::Eight);
+        let mut parent: Vec<u32> = (0..runs.runs.len() as u32).collect();
+        for j in 1..runs.height() {
+            let (below, here) = (runs.row(j - 1), runs.row(j));
+            let (b0, h0) = (runs.row_start[j - 1], runs.row_start[j]);
+            let mut k = 0;
+            for (m, &(a0, a1)) in here.iter().enumerate() {
+                while k < below.len() && below[k].1 + reach <= a0 {
+                    k += 1;
+                }
+                let mut n = k;
+                while n < below.len() && below[n].0 < a1 + reach {
+                    union(&mut parent, h0 + m as u32, b0 + n as u32);
+                    n += 1;
+                }
+            }
+        }
+        for k in 0..parent.len() {
+            parent[k] = find(&mut parent, k as u32);
+        }
+        Self {
+            runs,
+            label: parent,
+        }
+    }
+
+    /// The set.
+    pub(crate) fn runs(&self) -> &Runs {
+        &self.runs
+    }
+
+    /// Whether cell `start` lies in the set and a cell of the target lies in its component.
+    pub(crate) fn joins(&self, start: (usize, usize), target: &Target) -> bool {
+        let Some(s) = self.runs.run_at(start.0, start.1) else {
+            return false;
+        };
+        let s = self.label[s];
+        let (t_lo, t_hi) = target.rows();
+        (t_lo..=t_hi.min(self.runs.height().saturating_sub(1))).any(|j| {
+            let Some((lo, hi)) = target.row(j) else {
+                return false;
+            };
+            let row = self.runs.row(j);
+            let base = self.runs.row_start[j] as usize;
+            let first = row.partition_point(|&(_, i1)| (i1 as usize) <= lo);
+            row[first..]
+                .iter()
+                .take_while(|&&(i0, _)| i0 as usize <= hi)
+                .enumerate()
+                .any(|(m, _)| self.label[base + first + m] == s)
+        })
+    }
+}
+
+/// Floor of the square root of `n`, exactly.
+pub(crate) fn isqrt(n: u64) -> u64 {
+    n.isqrt()
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let up = parent[parent[x as usize] as usize];
+        parent[x as usize] = up; // path halving
+        x = up;
+    }
+    x
+}
+
+fn union(parent: &mut [u32], a: u32, b: u32) {
+    let (ra, rb) = (find(parent, a), find(parent, b));
+    if ra < rb {
+        parent[rb as usize] = ra;
+    } else if rb < ra {
+        parent[ra as usize] = rb;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(w: usize, rows: &[&[(u32, u32)]]) -> Runs {
+        Runs::from_rows(w, rows.len(), |j, buf| buf.extend_from_slice(rows[j]))
+    }
+
+    fn cells(r: &Runs) -> Vec<(usize, usize)> {
+        (0..r.height())
+            .flat_map(|j| {
+                r.row(j)
+                    .iter()
+                    .flat_map(move |&(a, b)| (a as usize..b as usize).map(move |i| (i, j)))
+            })
+            .collect()
+    }
+
+    #[test]
+    fn dilation_is_the_disc() {
+        let src = set(9, &[&[], &[], &[], &[], &[(4, 5)], &[], &[], &[], &[]]);
+        for t in 0..20 {
+            let d = cells(&src.dilate(t));
+            let want: Vec<(usize, usize)> = (0..9)
+                .flat_map(|j| (0..9).map(move |i| (i, j)))
+                .filter(|&(i, j)| ((i as i64 - 4).pow(2) + (j as i64 - 4).pow(2)) as u64 <= t)
+                .map(|(i, j)| (i, j))
+                .collect::<Vec<_>>();
+            let mut want = want;
+            want.sort_by_key(|&(i, j)| (j, i));
+            assert_eq!(d, want, "t = {t}");
+        }
+    }
+
+    #[test]
+    fn set_operations() {
+        let a = set(10, &[&[(0, 4), (6, 10)]]);
+        let b = set(10, &[&[(2, 7)]]);
+        assert_eq!(a.minus(&b).row(0), &[(0, 2), (7, 10)]);
+        assert_eq!(a.and(&b).row(0), &[(2, 4), (6, 7)]);
+        assert!(set(10, &[&[(1, 3)]]).within(&a));
+        assert!(!b.within(&a));
+    }
+
+    #[test]
+    fn components_four_and_eight() {
+        // Two runs touching at a corner only.
+        let r = set(4, &[&[(0, 2)], &[(2, 4)]]);
+        let four = Components::of(r.clone(), Moves::Four);
+        assert_ne!(four.label[0], four.label[1]);
+        let eight = Components::of(r, Moves::Eight);
+        assert_eq!(eight.label[0], eight.label[1]);
+    }
+}
