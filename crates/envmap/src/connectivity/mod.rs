@@ -137,39 +137,28 @@ pub fn disconnection_hopping(map: &GridMap, query: &Query, hop: f64) -> Option<N
 
 /// The cause on a map that blocks the band, once the obstacles are known to leave a
 /// passage: the band's radius and the widest path's bottleneck, both exact (see the
-/// module docs for the search).
+/// module docs for the search). The band's radius and every thresholded component set
+/// the search builds are cached in the map, so a second query on the same map costs a
+/// few binary searches.
 fn band_cause(map: &GridMap, start: (usize, usize), target: &Target, moves: Moves) -> NoPathCause {
     let cache = map.connectivity_cache();
-    let obstacles = cache.obstacles(map);
-    if obstacles.is_empty() {
+    let Some(max_risk) = cache.max_risk(map) else {
         // High-risk cells drawn on a map without obstacles: no distance to measure them
         // by, and any band recomputed from the (absent) obstacles would be empty.
         return NoPathCause::RiskBand {
             band_radius: f64::INFINITY,
             max_radius: f64::INFINITY,
         };
-    }
-    let passable = cache.below(map, Zone::Forbidden, moves).runs();
-    let risk = cache.risk(map);
-    let mut near = Dilations::new(obstacles);
-    // The band's radius: the least t whose dilation covers every high-risk cell.
-    let max_risk = if risk.is_empty() {
-        0
-    } else {
-        least(|t| risk.within(near.get(t)))
     };
     // The bottleneck b: start and goal stay joined once the cells with d^2 <= t are gone
     // exactly for t < b. Joined at t = 0 (the obstacles leave a passage); capped at the
     // band's radius + 1 like the reference's distances.
     let cap = max_risk + 1;
-    let cut = least(|t| {
-        t >= cap || !Components::of(passable.minus(near.get(t)), moves).joins(start, target)
-    });
-    let bottleneck = cut.min(cap);
+    let cut = least(|t| t >= cap || !cache.beyond(map, t, moves).joins(start, target));
     let res = map.resolution();
     NoPathCause::RiskBand {
         band_radius: (max_risk as f64).sqrt() * res,
-        max_radius: (bottleneck as f64).sqrt() * res,
+        max_radius: (cut.min(cap) as f64).sqrt() * res,
     }
 }
 
@@ -196,106 +185,122 @@ fn least(mut holds: impl FnMut(u64) -> bool) -> u64 {
     hi
 }
 
-/// Dilations of one set, each computed once.
-struct Dilations<'a> {
-    source: &'a Runs,
-    done: Vec<(u64, Runs)>,
-}
+/// How many values a [`Memo`] keeps (the oldest goes first).
+const MEMO_KEPT: usize = 64;
 
-impl<'a> Dilations<'a> {
-    fn new(source: &'a Runs) -> Self {
-        Self {
-            source,
-            done: Vec::new(),
+/// A small map-keyed store behind a mutex: values computed outside the lock (two threads
+/// may compute the same one; both get a correct value).
+struct Memo<K, V>(Mutex<Vec<(K, Arc<V>)>>);
+
+impl<K: PartialEq + Copy, V> Memo<K, V> {
+    fn get_or(&self, key: K, make: impl FnOnce() -> V) -> Arc<V> {
+        let lock = || self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some((_, v)) = lock().iter().find(|(k, _)| *k == key) {
+            return Arc::clone(v);
         }
-    }
-
-    /// The cells within squared distance `t` of the source.
-    fn get(&mut self, t: u64) -> &Runs {
-        let k = match self.done.iter().position(|(s, _)| *s == t) {
-            Some(k) => k,
-            None => {
-                self.done.push((t, self.source.dilate(t)));
-                self.done.len() - 1
-            }
-        };
-        &self.done[k].1
+        let v = Arc::new(make());
+        let mut kept = lock();
+        if kept.len() >= MEMO_KEPT {
+            kept.remove(0);
+        }
+        kept.push((key, Arc::clone(&v)));
+        v
     }
 }
 
-/// What a [`GridMap`] remembers of its connectivity between checks: the components of
-/// its passable cells per set of passable zones and kind of move, the obstacle and
-/// high-risk runs, and the cells near its Free zone for the last reaches asked. Emptied
-/// whenever the zones change.
-#[derive(Default)]
+impl<K, V> Default for Memo<K, V> {
+    fn default() -> Self {
+        Self(Mutex::new(Vec::new()))
+    }
+}
+
+impl<K: Clone, V> Clone for Memo<K, V> {
+    fn clone(&self) -> Self {
+        Self(Mutex::new(
+            self.0
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+                .clone(),
+        ))
+    }
+}
+
+/// What a [`GridMap`] remembers of its connectivity between checks: the zone runs, the
+/// components of its passable cells per set of passable zones and kind of move, and what
+/// the band's cause needs (the band's radius, dilations of the obstacles, components of
+/// the cells beyond a distance, cells near the Free zone). Emptied whenever the zones
+/// change. A few dozen run sets at most: each test of the searches is one set.
+#[derive(Default, Clone)]
 pub(crate) struct Cache {
+    zones: OnceLock<runs::ZoneRuns>,
     /// Indexed by [`Cache::slot`]: cells below Risk / below Forbidden, Four / Eight.
     below: [OnceLock<Components>; 4],
-    obstacles: OnceLock<Runs>,
-    risk: OnceLock<Runs>,
-    near_free: Mutex<Vec<(u64, Arc<Components>)>>,
+    /// The largest squared distance of a high-risk cell to the obstacles (`None` without
+    /// obstacles).
+    max_risk: OnceLock<Option<u64>>,
+    /// The cells within squared distance `t` of an obstacle, by `t`.
+    dilated: Memo<u64, Runs>,
+    /// The components of the non-Forbidden cells beyond squared distance `t`, by `(t,
+    /// moves)`.
+    beyond: Memo<(u64, Moves), Components>,
+    /// The components (Four) of the non-Forbidden cells within squared distance `t` of
+    /// a Free cell, by `t`.
+    near_free: Memo<u64, Components>,
 }
-
-/// How many reaches [`Cache::near_free`] keeps.
-const NEAR_FREE_KEPT: usize = 4;
 
 impl Cache {
     fn slot(zone: Zone, moves: Moves) -> usize {
         usize::from(zone == Zone::Forbidden) * 2 + usize::from(moves == Moves::Eight)
     }
 
+    fn zones(&self, map: &GridMap) -> &runs::ZoneRuns {
+        self.zones.get_or_init(|| runs::ZoneRuns::of(map))
+    }
+
     /// The components of the cells whose zone is below `zone` (Risk or Forbidden).
     fn below(&self, map: &GridMap, zone: Zone, moves: Moves) -> &Components {
-        self.below[Self::slot(zone, moves)]
-            .get_or_init(|| Components::of(Runs::of_zones(map, |z| z < zone), moves))
+        self.below[Self::slot(zone, moves)].get_or_init(|| {
+            let z = self.zones(map);
+            let set = if zone == Zone::Forbidden {
+                z.passable.clone()
+            } else {
+                z.free.clone()
+            };
+            Components::of(set, moves)
+        })
     }
 
-    fn obstacles(&self, map: &GridMap) -> &Runs {
-        self.obstacles
-            .get_or_init(|| Runs::of_zones(map, |z| z == Zone::Forbidden))
+    fn dilated(&self, map: &GridMap, t: u64) -> Arc<Runs> {
+        self.dilated
+            .get_or(t, || self.zones(map).obstacles.dilate(t))
     }
 
-    fn risk(&self, map: &GridMap) -> &Runs {
-        self.risk.get_or_init(|| Runs::of_zones(map, |z| z == Zone::Risk))
+    fn max_risk(&self, map: &GridMap) -> Option<u64> {
+        *self.max_risk.get_or_init(|| {
+            let z = self.zones(map);
+            if z.obstacles.is_empty() {
+                None
+            } else if z.risk.is_empty() {
+                Some(0)
+            } else {
+                // The least t whose dilation covers every high-risk cell.
+                Some(least(|t| z.risk.within(&self.dilated(map, t))))
+            }
+        })
     }
 
-    /// The components (4-connected) of the non-Forbidden cells within squared distance
-    /// `t` of a Free cell.
+    fn beyond(&self, map: &GridMap, t: u64, moves: Moves) -> Arc<Components> {
+        self.beyond.get_or((t, moves), || {
+            let passable = &self.zones(map).passable;
+            Components::of(passable.minus(&self.dilated(map, t)), moves)
+        })
+    }
+
     fn near_free(&self, map: &GridMap, t: u64) -> Arc<Components> {
-        let lock = |m: &Mutex<Vec<(u64, Arc<Components>)>>| {
-            m.lock().unwrap_or_else(std::sync::PoisonError::into_inner).clone()
-        };
-        if let Some((_, c)) = lock(&self.near_free).into_iter().find(|(s, _)| *s == t) {
-            return c;
-        }
-        let free = self.below(map, Zone::Risk, Moves::Four).runs();
-        let passable = self.below(map, Zone::Forbidden, Moves::Four).runs();
-        let near = Arc::new(Components::of(free.dilate(t).and(passable), Moves::Four));
-        let mut kept = self
-            .near_free
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner);
-        if kept.len() >= NEAR_FREE_KEPT {
-            kept.remove(0);
-        }
-        kept.push((t, Arc::clone(&near)));
-        near
-    }
-}
-
-impl Clone for Cache {
-    fn clone(&self) -> Self {
-        Self {
-            below: self.below.clone(),
-            obstacles: self.obstacles.clone(),
-            risk: self.risk.clone(),
-            near_free: Mutex::new(
-                self.near_free
-                    .lock()
-                    .unwrap_or_else(std::sync::PoisonError::into_inner)
-                    .clone(),
-            ),
-        }
+        self.near_free.get_or(t, || {
+            let z = self.zones(map);
+            Components::of(z.free.dilate(t).and(&z.passable), Moves::Four)
+        })
     }
 }
 

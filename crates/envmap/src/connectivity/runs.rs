@@ -29,27 +29,6 @@ impl Runs {
         }
     }
 
-    /// The cells of `map` whose zone passes `keep`.
-    pub(crate) fn of_zones(map: &GridMap, keep: impl Fn(Zone) -> bool) -> Self {
-        let w = map.width();
-        let mut out = Self::empty(w);
-        out.row_start.reserve(map.height());
-        for row in map.zones().chunks_exact(w) {
-            let mut i = 0;
-            while i < w {
-                match row[i..].iter().position(|&z| keep(z)) {
-                    Some(k) => i += k,
-                    None => break,
-                }
-                let i0 = i;
-                i = row[i..].iter().position(|&z| !keep(z)).map_or(w, |k| i + k);
-                out.runs.push((i0 as u32, i as u32));
-            }
-            out.row_start.push(out.runs.len() as u32);
-        }
-        out
-    }
-
     /// Rows.
     pub(crate) fn height(&self) -> usize {
         self.row_start.len() - 1
@@ -88,49 +67,103 @@ impl Runs {
         for j in 0..height {
             buf.clear();
             row_runs(j, &mut buf);
-            buf.sort_unstable();
-            let mut cur: Option<(u32, u32)> = None;
-            for &(a, b) in &buf {
-                if a >= b {
-                    continue;
-                }
-                cur = match cur {
-                    Some((c0, c1)) if a <= c1 => Some((c0, c1.max(b))),
-                    Some(done) => {
-                        out.runs.push(done);
-                        Some((a, b))
-                    }
-                    None => Some((a, b)),
-                };
-            }
-            out.runs.extend(cur);
+            out.push_merged(&mut buf);
             out.row_start.push(out.runs.len() as u32);
         }
         out
     }
 
+    /// Appends the union of the intervals `buf` (any order, overlapping or not) as the
+    /// runs of the row being built.
+    fn push_merged(&mut self, buf: &mut [(u32, u32)]) {
+        buf.sort_unstable();
+        let mut cur: Option<(u32, u32)> = None;
+        for &(a, b) in buf.iter() {
+            if a >= b {
+                continue;
+            }
+            cur = match cur {
+                Some((c0, c1)) if a <= c1 => Some((c0, c1.max(b))),
+                Some(done) => {
+                    self.runs.push(done);
+                    Some((a, b))
+                }
+                None => Some((a, b)),
+            };
+        }
+        self.runs.extend(cur);
+    }
+
     /// The cells whose centre lies within squared distance `t` (cells^2, inclusive) of a
     /// cell of the set: the exact Euclidean dilation by a disc. Row `j` of the result is
     /// the union, over `dy` with `dy^2 <= t`, of the runs of row `j + dy` widened by the
-    /// largest `dx` with `dx^2 <= t - dy^2`, so the cost is the number of runs times the
-    /// disc's diameter (plus sorting), independent of the runs' lengths.
+    /// largest `dx` with `dx^2 <= t - dy^2`.
+    ///
+    /// Maps repeat rows (a wall crossing a room is the same run for hundreds of rows), so
+    /// the rows are grouped into blocks of equal rows, and a block contributes once, with
+    /// the widening of its row nearest `j`; and a result row whose window meets the same
+    /// blocks at the same distances as the row before is a copy of it. The cost is the
+    /// number of runs near block boundaries times the disc's diameter, not the map's area.
     pub(crate) fn dilate(&self, t: u64) -> Self {
         let h = self.height();
-        let r = isqrt(t);
+        let r = t.isqrt().min(h as u64) as usize;
         let w = self.width as u64;
-        let half: Vec<u64> = (0..=r).map(|dy| isqrt(t - dy * dy)).collect();
-        Self::from_rows(self.width, h, |j, buf| {
-            let lo = (j as u64).saturating_sub(r) as usize;
-            let hi = (j as u64 + r).min(h as u64 - 1) as usize;
-            for y in lo..=hi {
-                let dx = half[y.abs_diff(j)];
-                buf.extend(self.row(y).iter().map(|&(a, b)| {
-                    let a = u64::from(a).saturating_sub(dx);
-                    let b = (u64::from(b) + dx).min(w);
-                    (a as u32, b as u32)
-                }));
+        let half: Vec<u64> = (0..=r as u64).map(|dy| (t - dy * dy).isqrt()).collect();
+        // block_start[b]..block_start[b + 1]: rows equal to row block_start[b].
+        let mut block_start = vec![0];
+        for j in 1..h {
+            if self.row(j) != self.row(j - 1) {
+                block_start.push(j);
             }
-        })
+        }
+        block_start.push(h);
+        let mut out = Self::empty(self.width);
+        out.row_start.reserve(h);
+        let mut buf = Vec::new();
+        // (first row of the block, widening) of the blocks in the window of the last row.
+        let mut window: Vec<(usize, u64)> = Vec::new();
+        let mut last: Vec<(usize, u64)> = Vec::new();
+        let mut first_block = 0;
+        for j in 0..h {
+            let (lo, hi) = (j.saturating_sub(r), (j + r).min(h - 1));
+            while block_start[first_block + 1] <= lo {
+                first_block += 1;
+            }
+            window.clear();
+            let mut b = first_block;
+            while block_start[b] <= hi {
+                let (b0, b1) = (block_start[b].max(lo), (block_start[b + 1] - 1).min(hi));
+                // The block's row nearest j widens most.
+                let near = if j < b0 {
+                    b0 - j
+                } else if j > b1 {
+                    j - b1
+                } else {
+                    0
+                };
+                if !self.row(b0).is_empty() {
+                    window.push((block_start[b], half[near]));
+                }
+                b += 1;
+            }
+            if j > 0 && window == last {
+                let (a, z) = (out.row_start[j - 1] as usize, out.row_start[j] as usize);
+                out.runs.extend_from_within(a..z);
+            } else {
+                buf.clear();
+                for &(y, dx) in &window {
+                    buf.extend(self.row(y).iter().map(|&(a, b)| {
+                        let a = u64::from(a).saturating_sub(dx);
+                        let b = (u64::from(b) + dx).min(w);
+                        (a as u32, b as u32)
+                    }));
+                }
+                out.push_merged(&mut buf);
+            }
+            std::mem::swap(&mut window, &mut last);
+            out.row_start.push(out.runs.len() as u32);
+        }
+        out
     }
 
     /// The cells of `self` that are not in `other`.
@@ -190,6 +223,81 @@ impl Runs {
     }
 }
 
+/// The runs of a map's zones, from one pass over its cells.
+#[derive(Clone, Debug)]
+pub(crate) struct ZoneRuns {
+    /// Free cells.
+    pub(crate) free: Runs,
+    /// High-risk cells.
+    pub(crate) risk: Runs,
+    /// Forbidden cells.
+    pub(crate) obstacles: Runs,
+    /// Free or high-risk cells.
+    pub(crate) passable: Runs,
+}
+
+impl ZoneRuns {
+    pub(crate) fn of(map: &GridMap) -> Self {
+        let w = map.width();
+        // Indexed by zone discriminant, then PASSABLE.
+        let mut out: [Runs; 4] = std::array::from_fn(|_| Runs::empty(w));
+        for row in map.zones().chunks_exact(w) {
+            let mut passable_from: Option<usize> = None;
+            let mut i = 0;
+            while i < w {
+                let zone = row[i];
+                let end = run_end(row, i);
+                out[zone as usize].runs.push((i as u32, end as u32));
+                match (zone, passable_from) {
+                    (Zone::Forbidden, Some(a)) => {
+                        out[PASSABLE].runs.push((a as u32, i as u32));
+                        passable_from = None;
+                    }
+                    (Zone::Free | Zone::Risk, None) => passable_from = Some(i),
+                    _ => {}
+                }
+                i = end;
+            }
+            if let Some(a) = passable_from {
+                out[PASSABLE].runs.push((a as u32, w as u32));
+            }
+            for set in &mut out {
+                set.row_start.push(set.runs.len() as u32);
+            }
+        }
+        let [free, risk, obstacles, passable] = out;
+        Self {
+            free,
+            risk,
+            obstacles,
+            passable,
+        }
+    }
+}
+
+/// The index of the passable cells among [`ZoneRuns::of`]'s sets (the zones' own sets
+/// are at their discriminants).
+const PASSABLE: usize = 3;
+
+/// The end of the run of equal zones that starts at `i`: skips 32 cells at a time with a
+/// comparison the compiler vectorises, then cell by cell.
+fn run_end(row: &[Zone], i: usize) -> usize {
+    const CHUNK: usize = 32;
+    let zone = row[i];
+    let mut k = i + 1;
+    while k + CHUNK <= row.len()
+        && row[k..k + CHUNK]
+            .iter()
+            .fold(true, |same, &z| same & (z == zone))
+    {
+        k += CHUNK;
+    }
+    while k < row.len() && row[k] == zone {
+        k += 1;
+    }
+    k
+}
+
 /// A set of cells with the connected component of each run.
 #[derive(Clone, Debug)]
 pub(crate) struct Components {
@@ -228,11 +336,6 @@ impl Components {
         }
     }
 
-    /// The set.
-    pub(crate) fn runs(&self) -> &Runs {
-        &self.runs
-    }
-
     /// Whether cell `start` lies in the set and a cell of the target lies in its component.
     pub(crate) fn joins(&self, start: (usize, usize), target: &Target) -> bool {
         let Some(s) = self.runs.run_at(start.0, start.1) else {
@@ -254,11 +357,6 @@ impl Components {
                 .any(|(m, _)| self.label[base + first + m] == s)
         })
     }
-}
-
-/// Floor of the square root of `n`, exactly.
-pub(crate) fn isqrt(n: u64) -> u64 {
-    n.isqrt()
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -331,5 +429,31 @@ mod tests {
         assert_ne!(four.label[0], four.label[1]);
         let eight = Components::of(r, Moves::Eight);
         assert_eq!(eight.label[0], eight.label[1]);
+    }
+
+    proptest::proptest! {
+        /// Dilation against brute force, on sets whose rows repeat (a few patterns), as
+        /// the row blocks of `dilate` expect.
+        #[test]
+        fn dilation_matches_brute_force(
+            patterns in proptest::collection::vec(proptest::collection::vec(proptest::bool::weighted(0.2), 12), 1..4),
+            pick in proptest::collection::vec(0usize..4, 1..16),
+            t in 0u64..40,
+        ) {
+            let w = 12;
+            let h = pick.len();
+            let on = |i: usize, j: usize| patterns[pick[j] % patterns.len()][i];
+            let src = Runs::from_rows(w, h, |j, buf| {
+                buf.extend((0..w).filter(|&i| on(i, j)).map(|i| (i as u32, i as u32 + 1)));
+            });
+            let want: Vec<(usize, usize)> = (0..h)
+                .flat_map(|j| (0..w).map(move |i| (i, j)))
+                .filter(|&(i, j)| {
+                    (0..h).any(|b| (0..w).any(|a| on(a, b)
+                        && ((a as i64 - i as i64).pow(2) + (b as i64 - j as i64).pow(2)) as u64 <= t))
+                })
+                .collect();
+            proptest::prop_assert_eq!(cells(&src.dilate(t)), want);
+        }
     }
 }
