@@ -44,7 +44,10 @@ fn main() {
         let (cached, _) = time(|| warm.clone(), fast);
         let (refr, ref_cause) = time(|| map.clone(), slow);
         assert_eq!(cause, ref_cause, "{name}: fast and reference disagree");
-        println!("{name}: {}", cause.map_or("connected?".into(), |c| c.to_string()));
+        println!(
+            "{name}: {}",
+            cause.map_or("connected?".into(), |c| c.to_string())
+        );
         println!("  first check on a fresh map: {first}");
         println!("  cached (same map again):    {cached}");
         println!("  reference (per cell, EDT):  {refr}");

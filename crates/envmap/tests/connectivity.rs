@@ -11,8 +11,15 @@ use proptest::prelude::*;
 /// A map of up to `max` x `max` cells: obstacles of a random density, and either the
 /// band of a random radius or random high-risk cells.
 fn map_strategy(max: usize) -> impl Strategy<Value = GridMap> {
-    (1..=max, 1..=max, 0.0..0.5f64, 0.0..4.0f64, any::<bool>(), any::<u64>()).prop_flat_map(
-        |(w, h, density, radius, banded, _)| {
+    (
+        1..=max,
+        1..=max,
+        0.0..0.5f64,
+        0.0..4.0f64,
+        any::<bool>(),
+        any::<u64>(),
+    )
+        .prop_flat_map(|(w, h, density, radius, banded, _)| {
             (
                 proptest::collection::vec(proptest::bool::weighted(density.max(0.01)), w * h),
                 proptest::collection::vec(proptest::bool::weighted(0.3), w * h),
@@ -34,14 +41,19 @@ fn map_strategy(max: usize) -> impl Strategy<Value = GridMap> {
                     };
                     GridMap::from_zones(w, h, 0.5, Point2::new(-1.0, 2.0), z).unwrap()
                 })
-        },
-    )
+        })
 }
 
 /// A query with start and goal anywhere in the map (free or not: the check must agree
 /// with the reference either way) and a goal disc of radius 0 to 2.
 fn query_strategy() -> impl Strategy<Value = (f64, f64, f64, f64, f64)> {
-    (0.0..1.0f64, 0.0..1.0f64, 0.0..1.0f64, 0.0..1.0f64, 0.0..2.0f64)
+    (
+        0.0..1.0f64,
+        0.0..1.0f64,
+        0.0..1.0f64,
+        0.0..1.0f64,
+        0.0..2.0f64,
+    )
 }
 
 fn query(map: &GridMap, q: (f64, f64, f64, f64, f64)) -> Query {
@@ -92,7 +104,13 @@ fn large_band_case_matches_the_reference() {
     let map = envmap::generate::with_risk_band(&g.map, 5.0).avoiding_risk();
     let query = Query::new(g.start, Goal::disc(g.goal, 2.0));
     let fast = connectivity::disconnection(&map, &query, Moves::Four);
-    assert!(matches!(fast, Some(hyplan_core::NoPathCause::RiskBand { .. })), "{fast:?}");
+    assert!(
+        matches!(fast, Some(hyplan_core::NoPathCause::RiskBand { .. })),
+        "{fast:?}"
+    );
     assert_eq!(fast, reference::disconnection(&map, &query, Moves::Four));
-    assert_eq!(connectivity::disconnection(&map.clone(), &query, Moves::Four), fast);
+    assert_eq!(
+        connectivity::disconnection(&map.clone(), &query, Moves::Four),
+        fast
+    );
 }

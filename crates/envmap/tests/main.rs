@@ -1,11 +1,11 @@
 //! Public-API tests of envmap, one binary.
 
+mod connectivity;
 #[cfg(feature = "image")]
 mod data;
 mod errors;
 #[cfg(feature = "image")]
 mod limits;
-mod connectivity;
 mod pipeline;
 mod properties;
 #[cfg(feature = "image")]

@@ -92,7 +92,10 @@ pub fn disconnection(map: &GridMap, query: &Query, moves: Moves) -> Option<NoPat
     if blocked == Zone::Free || cache.below(map, blocked, moves).joins(start, &target) {
         return None;
     }
-    if blocked == Zone::Forbidden || !cache.below(map, Zone::Forbidden, moves).joins(start, &target)
+    if blocked == Zone::Forbidden
+        || !cache
+            .below(map, Zone::Forbidden, moves)
+            .joins(start, &target)
     {
         return Some(NoPathCause::Wall);
     }
@@ -117,12 +120,17 @@ pub fn disconnection_hopping(map: &GridMap, query: &Query, hop: f64) -> Option<N
     let start = map.world_to_cell(query.start)?;
     let target = Target::new(map, &query.goal)?;
     let cache = map.connectivity_cache();
-    if !cache.below(map, Zone::Forbidden, Moves::Four).joins(start, &target) {
+    if !cache
+        .below(map, Zone::Forbidden, Moves::Four)
+        .joins(start, &target)
+    {
         return Some(NoPathCause::Wall);
     }
     let free = |p: Point2| map.zone_at(p) == Zone::Free;
     if !(free(query.start) && free(query.goal.center()))
-        || cache.below(map, Zone::Risk, Moves::Four).joins(start, &target)
+        || cache
+            .below(map, Zone::Risk, Moves::Four)
+            .joins(start, &target)
     {
         return None;
     }
@@ -194,7 +202,11 @@ struct Memo<K, V>(Mutex<Vec<(K, Arc<V>)>>);
 
 impl<K: PartialEq + Copy, V> Memo<K, V> {
     fn get_or(&self, key: K, make: impl FnOnce() -> V) -> Arc<V> {
-        let lock = || self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let lock = || {
+            self.0
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+        };
         if let Some((_, v)) = lock().iter().find(|(k, _)| *k == key) {
             return Arc::clone(v);
         }
