@@ -28,7 +28,7 @@
 //! assert!(spiral.map.is_free(spiral.goal));
 //! ```
 
-use hyplan_core::{Point2, Zone};
+use hyplan_core::{Goal, Point2, Query, Zone};
 use rand::Rng;
 
 use crate::{GridMap, Mask, distance_transform, zones};
@@ -63,6 +63,12 @@ pub enum HardMap {
     Rooms,
 }
 
+/// The risk band of the hard-map suite's maps, cells (`--safety-radius 2`).
+pub const SUITE_BAND: f64 = 2.0;
+
+/// The goal disc's radius in the hard-map suite, cells (`--goal-radius 2`).
+pub const SUITE_GOAL_RADIUS: f64 = 2.0;
+
 impl HardMap {
     /// Every kind, in declaration order.
     pub const ALL: [HardMap; 7] = [
@@ -87,6 +93,30 @@ impl HardMap {
             HardMap::Clutter => "clutter",
             HardMap::Rooms => "rooms",
         }
+    }
+
+    /// The step the hard-map suite plans with on this kind: 40 cells on the 2000 x 2000
+    /// floor plan (the step of the report behind issue 13), `small` on the others.
+    #[must_use]
+    pub fn suite_step(self, small: f64) -> f64 {
+        if self == HardMap::FloorPlan {
+            40.0
+        } else {
+            small
+        }
+    }
+
+    /// The hard-map suite's planning problem on this kind, as `hyplan plan --step STEP
+    /// --safety-radius 2 --goal-radius 2` poses it: the [`generate`](HardMap::generate)d
+    /// map with a [`SUITE_BAND`]-cell risk band ([`with_risk_band`]; only Forbidden
+    /// blocks), and the query from its start to a goal disc of radius
+    /// [`SUITE_GOAL_RADIUS`] round its goal. Shared by the suite's test and its benchmark.
+    pub fn suite_problem<R: Rng + ?Sized>(self, step: f64, rng: &mut R) -> (GridMap, Query) {
+        let Generated { map, start, goal } = self.generate(step, rng);
+        (
+            with_risk_band(&map, SUITE_BAND),
+            Query::new(start, Goal::disc(goal, SUITE_GOAL_RADIUS)),
+        )
     }
 
     /// The kind's default map for a planner of step `step` (world units = cells, clamped

@@ -53,6 +53,9 @@ pub struct GridMap {
     /// Distance fields of the blocked cells for `blocked_from` = Risk and = Forbidden,
     /// computed on the first `clearance` query; reset when zones change.
     clearance_fields: [OnceLock<DistanceField>; 2],
+    /// Components of the passable cells and the runs the "no path" proof needs, computed
+    /// on the first check ([`crate::connectivity`]); reset when zones change.
+    connectivity: crate::connectivity::Cache,
 }
 
 impl PartialEq for GridMap {
@@ -122,6 +125,7 @@ impl GridMap {
             zones: vec![zone; n],
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
+            connectivity: Default::default(),
         })
     }
 
@@ -146,6 +150,7 @@ impl GridMap {
         }
         map.zones = zones;
         map.clearance_fields = Default::default();
+        map.connectivity = Default::default();
         map.with_frame(resolution, origin)
     }
 
@@ -240,6 +245,7 @@ impl GridMap {
     /// Mutable access to the zones (row-major from the bottom row).
     pub fn zones_mut(&mut self) -> &mut [Zone] {
         self.clearance_fields = Default::default();
+        self.connectivity = Default::default();
         &mut self.zones
     }
 
@@ -263,6 +269,7 @@ impl GridMap {
     pub fn set_cell_zone(&mut self, i: usize, j: usize, zone: Zone) {
         if i < self.width && j < self.height {
             self.clearance_fields = Default::default();
+            self.connectivity = Default::default();
             self.zones[j * self.width + i] = zone;
         }
     }
@@ -389,6 +396,11 @@ impl GridMap {
         let r = self.resolution;
         let bound = d * r - (p - c).norm() - r * std::f64::consts::FRAC_1_SQRT_2;
         bound.max(0.0)
+    }
+
+    /// The cached connectivity structures of this map.
+    pub(crate) fn connectivity_cache(&self) -> &crate::connectivity::Cache {
+        &self.connectivity
     }
 
     /// Number of cells in each zone: `[free, risk, forbidden]`.

@@ -1,5 +1,6 @@
 //! Public-API tests of envmap, one binary.
 
+mod connectivity;
 #[cfg(feature = "image")]
 mod data;
 mod errors;

@@ -252,7 +252,7 @@ impl PlannerConfig {
         }
     }
 
-    /// The budget, for the planners that take one.
+    /// The budget (every planner takes one; the grid searches' is unlimited by default).
     #[must_use]
     pub fn budget(&self) -> Option<Budget> {
         self.clone().budget_mut().map(|b| *b)
@@ -269,7 +269,9 @@ impl PlannerConfig {
             Self::HybridRrtAstar(p) => Some(&mut p.budget),
             Self::SafeRrtStar(p) => Some(&mut p.budget),
             Self::GaPchip(p) => Some(&mut p.budget),
-            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) => None,
+            Self::Astar(p) => Some(&mut p.budget),
+            Self::Dijkstra(p) => Some(&mut p.budget),
+            Self::ThetaStar(p) => Some(&mut p.budget),
         }
     }
 

@@ -178,7 +178,9 @@ impl GaPchip {
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget;
     /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or blocked; [`PlanError::BudgetExhausted`] when no individual is
+    /// workspace or blocked; [`PlanError::Disconnected`] (with the cause) when the
+    /// workspace proves start and goal unconnected ([`Workspace::disconnection`]);
+    /// [`PlanError::BudgetExhausted`] when no individual is
     /// feasible when the generations or the time run out.
     pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,
@@ -189,6 +191,9 @@ impl GaPchip {
         let started = Instant::now();
         self.validate_params()?;
         query.validate(ws)?;
+        // Like every planner of the workspace: "no path" at once, with its cause, when the
+        // workspace proves start and goal unconnected; otherwise the generations run.
+        sampling::check_connected(ws, query, started)?;
         let start = query.start;
         let goal = query.goal.center();
         let bounds = ws.bounds();

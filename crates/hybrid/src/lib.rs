@@ -94,6 +94,42 @@ pub use rrt_astar_bt::RrtAstarBt;
 pub use rrt_astar_refine::RrtAstarRefine;
 pub use safe_rrt_star::SafeRrtStar;
 
+/// The four hybrids with a common `step` and `budget`, as `hyplan plan --step STEP
+/// --goal-radius GOAL_RADIUS` builds them (the goal region is a parameter of RRT-A*-BT
+/// and safety-cost RRT* only), every other parameter at its default: the line-up of the
+/// hard-map suite (issue 13), its test and its benchmark.
+#[must_use]
+pub fn four_hybrids(
+    step: f64,
+    goal_radius: f64,
+    budget: hyplan_core::Budget,
+) -> Vec<Box<dyn hyplan_core::Planner>> {
+    vec![
+        Box::new(RrtAstarBt {
+            step,
+            goal_radius,
+            budget,
+            ..RrtAstarBt::default()
+        }),
+        Box::new(RrtAstarRefine {
+            step,
+            budget,
+            ..RrtAstarRefine::default()
+        }),
+        Box::new(HybridRrtAstar {
+            step,
+            budget,
+            ..HybridRrtAstar::default()
+        }),
+        Box::new(SafeRrtStar {
+            step,
+            goal_radius,
+            budget,
+            ..SafeRrtStar::default()
+        }),
+    ]
+}
+
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]

@@ -16,8 +16,8 @@
 use std::time::{Duration, Instant};
 
 use envmap::GridMap;
-use envmap::generate::{self, Generated, HardMap};
-use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
+use envmap::generate::{self, HardMap};
+use hybrid::SafeRrtStar;
 use hyplan_core::{Budget, Goal, NoPathCause, PlanError, Planner, Query, Workspace, Zone};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -26,36 +26,20 @@ use search::{GridAstar, GridDijkstra, ThetaStar};
 
 /// The query's goal disc and the band, cells (the report's `--goal-radius 2
 /// --safety-radius 2`).
-const GOAL_RADIUS: f64 = 2.0;
-const BAND: f64 = 2.0;
+const GOAL_RADIUS: f64 = generate::SUITE_GOAL_RADIUS;
+const BAND: f64 = generate::SUITE_BAND;
 
-/// The four hybrids with `step`, as `hyplan plan --step` builds them (goal radius 2 for
-/// the two whose goal region is a parameter).
+/// The four hybrids with `step`, as `hyplan plan --step` builds them.
 fn hybrids(step: f64, budget: Budget) -> Vec<Box<dyn Planner>> {
-    vec![
-        Box::new(RrtAstarBt {
-            step,
-            goal_radius: GOAL_RADIUS,
-            budget,
-            ..RrtAstarBt::default()
-        }),
-        Box::new(RrtAstarRefine {
-            step,
-            budget,
-            ..RrtAstarRefine::default()
-        }),
-        Box::new(HybridRrtAstar {
-            step,
-            budget,
-            ..HybridRrtAstar::default()
-        }),
-        Box::new(SafeRrtStar {
-            step,
-            goal_radius: GOAL_RADIUS,
-            budget,
-            ..SafeRrtStar::default()
-        }),
-    ]
+    hybrid::four_hybrids(step, GOAL_RADIUS, budget)
+}
+
+/// [`all_planners`] and GA-PCHIP (seed 000's baseline, which proves "no path" like the
+/// others but is not expected to solve the hard maps).
+fn every_planner(step: f64, budget: Budget) -> Vec<Box<dyn Planner>> {
+    let mut v = all_planners(step, budget);
+    v.push(Box::new(hybrid::GaPchip::default()));
+    v
 }
 
 /// Every planner: the hybrids, the RRT family and the grid searches.
@@ -79,22 +63,9 @@ fn all_planners(step: f64, budget: Budget) -> Vec<Box<dyn Planner>> {
     v
 }
 
-/// The map of `kind` for `seed` with the band, and its query.
+/// The suite's map of `kind` for `seed` with the band, and its query.
 fn suite_map(kind: HardMap, step: f64, seed: u64) -> (GridMap, Query) {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let Generated { map, start, goal } = kind.generate(step, &mut rng);
-    let map = generate::with_risk_band(&map, BAND);
-    (map, Query::new(start, Goal::disc(goal, GOAL_RADIUS)))
-}
-
-/// The step the suite uses on `kind` (the floor plan is planned with 40-cell steps, as
-/// in the report).
-fn suite_step(kind: HardMap, small: f64) -> f64 {
-    if kind == HardMap::FloorPlan {
-        40.0
-    } else {
-        small
-    }
+    kind.suite_problem(step, &mut ChaCha8Rng::seed_from_u64(seed))
 }
 
 /// Checks the path contract on the map the planner was given.
@@ -117,7 +88,7 @@ fn every_planner_solves_every_kind() {
         .into_iter()
         .filter(|&k| k != HardMap::FloorPlan)
     {
-        let step = suite_step(kind, 4.0);
+        let step = kind.suite_step(4.0);
         for seed in 0..1 {
             let (map, query) = suite_map(kind, step, seed);
             for planner in all_planners(step, budget) {
@@ -142,7 +113,7 @@ fn disconnected_maps_fail_at_once_with_the_cause() {
     let walled = generate::narrow_passage(400, 300, 0, 6, &mut rng);
     let query = Query::new(walled.start, Goal::disc(walled.goal, GOAL_RADIUS));
     let map = generate::with_risk_band(&walled.map, BAND);
-    for planner in all_planners(10.0, budget) {
+    for planner in every_planner(10.0, budget) {
         let name = planner.info().name;
         let err = planner
             .plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(1))
@@ -166,7 +137,7 @@ fn disconnected_maps_fail_at_once_with_the_cause() {
         }
         other => panic!("{name}: {other:?} ({err})"),
     };
-    for planner in all_planners(10.0, budget) {
+    for planner in every_planner(10.0, budget) {
         let name = planner.info().name;
         let err = planner
             .plan(&safe, &query, &mut ChaCha8Rng::seed_from_u64(1))
@@ -192,8 +163,7 @@ fn disconnected_maps_fail_at_once_with_the_cause() {
 }
 
 /// Measures, in a release build, the success rate of every hybrid on every kind (10 s
-/// per run) and the time to "no path" on a disconnected 2000 x 2000 map. Prints Markdown
-/// tables; asserts the issue's targets (99 % success, 20 ms).
+/// per run). Prints a Markdown table; asserts the issue's 99 % success.
 #[test]
 #[ignore = "measurement: run in release, see the module docs"]
 fn hard_map_success_rates() {
@@ -206,7 +176,7 @@ fn hard_map_success_rates() {
     println!("|---|---|---|---|---|");
     let mut worst = 1.0_f64;
     for kind in HardMap::ALL {
-        let step = suite_step(kind, 10.0);
+        let step = kind.suite_step(10.0);
         let maps: Vec<(GridMap, Query)> = (0..seeds).map(|s| suite_map(kind, step, s)).collect();
         for (k, name) in [
             "rrt-astar-bt",
@@ -240,6 +210,21 @@ fn hard_map_success_rates() {
             );
         }
     }
+    assert!(worst >= 0.99, "worst success rate {worst}");
+}
+
+/// Measures, in a release build, the time every planner takes to "no path" on
+/// disconnected 2000 x 2000 maps, each call on a fresh copy of the map (nothing cached
+/// by an earlier call): a closed wall, and a band that closes the tunnel. Prints a
+/// Markdown table; asserts the issue's 20 ms.
+///
+/// ```text
+/// cargo test --release -p hybrid --test main no_path_on_2000_maps -- --ignored --nocapture
+/// ```
+#[test]
+#[ignore = "measurement: run in release, see the module docs"]
+fn no_path_on_2000_maps() {
+    let budget = Budget::iterations(u64::MAX).with_time(Duration::from_secs(10));
     // Disconnected 2000 x 2000 maps: a closed wall, and a band that closes the tunnel.
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     let walled = generate::narrow_passage(2000, 2000, 0, 8, &mut rng);
@@ -258,7 +243,7 @@ fn hard_map_success_rates() {
     let mut slowest = 0.0_f64;
     for (what, map, g) in &cases {
         let query = Query::new(g.start, Goal::disc(g.goal, GOAL_RADIUS));
-        for planner in all_planners(40.0, budget) {
+        for planner in every_planner(40.0, budget) {
             let mut ms = 0.0_f64;
             let mut cause = String::new();
             for seed in 0..5 {
@@ -275,7 +260,6 @@ fn hard_map_success_rates() {
             println!("| {what} | {} | {ms:.1} | {cause} |", planner.info().name);
         }
     }
-    assert!(worst >= 0.99, "worst success rate {worst}");
     assert!(slowest < 20.0, "slowest no path {slowest} ms");
     // The zone bookkeeping of the suite itself.
     assert!(cases[0].1.zone_counts()[1] > 0 && Zone::Risk > Zone::Free);

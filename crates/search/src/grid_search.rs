@@ -1,6 +1,8 @@
 //! Flat-array A*, Dijkstra and Theta* on a [`GridMap`], with scratch memory reused across
 //! queries.
 
+use std::time::Instant;
+
 use envmap::GridMap;
 
 use crate::SearchStats;
@@ -139,6 +141,12 @@ pub enum GridSearchError {
         width: usize,
         /// Map rows.
         height: usize,
+    },
+    /// The expansion or time limit set by [`GridSearch::set_limit`] ran out first.
+    #[error("search limit reached after {} expansions", stats.expansions)]
+    LimitReached {
+        /// Counters up to the stop.
+        stats: SearchStats,
     },
 }
 
@@ -328,6 +336,45 @@ pub struct GridSearch {
     /// Where each cell's key sits in the A* / Dijkstra open list, if it is there (checked
     /// against the key before use, so stale values are harmless).
     slot: Vec<u32>,
+    /// When a search gives up (none by default).
+    limit: Limit,
+}
+
+/// An expansion cap and a deadline (see [`GridSearch::set_limit`]).
+#[derive(Debug, Clone, Copy)]
+struct Limit {
+    max_expansions: u64,
+    deadline: Option<Instant>,
+}
+
+impl Default for Limit {
+    fn default() -> Self {
+        Self {
+            max_expansions: u64::MAX,
+            deadline: None,
+        }
+    }
+}
+
+/// How many expansions pass between two readings of the clock: a few hundred
+/// microseconds of search at most, so a deadline is kept to well under a millisecond
+/// without a clock read per expansion.
+const CLOCK_EVERY: u64 = 1024;
+
+impl Limit {
+    /// The expansion count at which to look again: the cap, or the next clock reading.
+    fn next_check(&self, expansions: u64) -> u64 {
+        if self.deadline.is_some() {
+            (expansions + CLOCK_EVERY).min(self.max_expansions)
+        } else {
+            self.max_expansions
+        }
+    }
+
+    /// Whether a search with `expansions` expansions must stop.
+    fn spent(&self, expansions: u64) -> bool {
+        expansions >= self.max_expansions || self.deadline.is_some_and(|d| Instant::now() >= d)
+    }
 }
 
 impl GridSearch {
@@ -340,6 +387,23 @@ impl GridSearch {
     ///
     /// [`GridSearchError::MapTooLarge`] when the padded grid has `2^32 - 1` cells or more.
     pub fn new(map: &GridMap, options: GridOptions) -> Result<Self, GridSearchError> {
+        Self::new_until(map, options, None)
+    }
+
+    /// [`new`](GridSearch::new), giving up once `deadline` has passed: the preparation
+    /// reads every cell (a few milliseconds per million cells), so a planner with a time
+    /// limit builds its grid with this one, and the grid's deadline is also set as the
+    /// search's limit ([`set_limit`](GridSearch::set_limit)).
+    ///
+    /// # Errors
+    ///
+    /// As [`new`](GridSearch::new), and [`GridSearchError::LimitReached`] (no expansion)
+    /// when the deadline passes first.
+    pub fn new_until(
+        map: &GridMap,
+        options: GridOptions,
+        deadline: Option<Instant>,
+    ) -> Result<Self, GridSearchError> {
         let (width, height) = (map.width(), map.height());
         let pw = width + 2;
         let n = pw
@@ -353,7 +417,8 @@ impl GridSearch {
             options,
             passable: vec![false; n],
             moves: vec![0; n],
-            words: vec![u64::MAX; n],
+            // Zeroed pages cost nothing until written; `update` writes every word.
+            words: vec![0; n],
             generation: 0,
             theta_nodes: Vec::new(),
             theta_generation: 0,
@@ -364,6 +429,10 @@ impl GridSearch {
             theta_heap: MinHeap::default(),
             stack: Vec::new(),
             slot: vec![0; n],
+            limit: Limit {
+                max_expansions: u64::MAX,
+                deadline,
+            },
         };
         search.update(map)?;
         Ok(search)
@@ -384,8 +453,17 @@ impl GridSearch {
                 got_height: map.height(),
             });
         }
+        // The clock is read every 64 rows (a grid being built for a deadline).
+        let deadline = self.limit.deadline;
+        let late = |j: usize| j.is_multiple_of(64) && deadline.is_some_and(|d| Instant::now() >= d);
+        let stop = Err(GridSearchError::LimitReached {
+            stats: SearchStats::default(),
+        });
         let blocked = map.blocked_from;
         for (j, row) in map.zones().chunks_exact(self.width).enumerate() {
+            if late(j) {
+                return stop;
+            }
             let base = (j + 1) * self.pw + 1;
             for (cell, &zone) in self.passable[base..base + self.width].iter_mut().zip(row) {
                 *cell = zone < blocked;
@@ -395,6 +473,9 @@ impl GridSearch {
         let eight = self.options.connectivity == Connectivity::Eight;
         let cut = self.options.corner_cutting;
         for j in 1..=self.height {
+            if late(j) {
+                return stop;
+            }
             for i in 1..=self.width {
                 let p = j * pw + i;
                 let free = |dx: i32, dy: i32| {
@@ -446,6 +527,17 @@ impl GridSearch {
     #[must_use]
     pub const fn options(&self) -> GridOptions {
         self.options
+    }
+
+    /// Makes later searches (A*, Dijkstra, Theta*, cost-to-go) stop with
+    /// [`GridSearchError::LimitReached`] after `max_expansions` expansions or once
+    /// `deadline` has passed (the clock is read every 1024 expansions). `u64::MAX` and
+    /// `None` (the default) never stop a search early.
+    pub fn set_limit(&mut self, max_expansions: u64, deadline: Option<Instant>) {
+        self.limit = Limit {
+            max_expansions,
+            deadline,
+        };
     }
 
     /// Whether cell `(i, j)` is inside the map and passable.
@@ -749,11 +841,16 @@ impl GridSearch {
             ..
         } = self;
         let heap = K::heap(heap, wide_heap);
-        if let Some(g) = expand(&run, words, moves, heap, stack, slot, &mut stats) {
-            let cost = fx.to_cells(g);
-            return Ok(self.trace_words(t0, cost, stats));
+        match expand(
+            &run, words, moves, heap, stack, slot, &mut stats, self.limit,
+        ) {
+            Expanded::Target(g) => {
+                let cost = fx.to_cells(g);
+                Ok(self.trace_words(t0, cost, stats))
+            }
+            Expanded::Exhausted => Err(GridSearchError::NoPath { stats }),
+            Expanded::Limit => Err(GridSearchError::LimitReached { stats }),
         }
-        Err(GridSearchError::NoPath { stats })
     }
 
     /// The A* / Dijkstra / Theta* entry point.
@@ -791,6 +888,8 @@ impl GridSearch {
         self.begin_theta(s0, &mut stats);
         self.theta_heap.push(float_key(euclid(sx, sy), 0.0, s0));
         let closed = self.theta_generation | CLOSED;
+        let limit = self.limit;
+        let mut check_at = limit.next_check(0);
         while let Some(k) = self.theta_heap.pop() {
             let p = k as u32;
             if self.theta_nodes[p as usize].stamp == closed {
@@ -800,6 +899,12 @@ impl GridSearch {
             let g = f64::from_bits(self.theta_nodes[p as usize].g);
             if p == t0 {
                 return Ok(self.trace(t0, g, stats));
+            }
+            if stats.expansions >= check_at {
+                if limit.spent(stats.expansions) {
+                    return Err(GridSearchError::LimitReached { stats });
+                }
+                check_at = limit.next_check(stats.expansions);
             }
             stats.expansions += 1;
             self.theta_expand(map, p, g, &mut stats, euclid);
@@ -964,10 +1069,24 @@ struct Run<H> {
     h: H,
 }
 
+/// How [`expand`] ended.
+enum Expanded {
+    /// The target was taken from the open list with this g.
+    Target(u64),
+    /// The open list ran out.
+    Exhausted,
+    /// The search's limit was reached first.
+    Limit,
+}
+
 /// The loop of A* / Dijkstra (see [`GridSearch::grid_search`]) on the query's arrays,
 /// passed apart so that nothing else can alias them: expands cells until the target is
-/// taken from the open list (returns its g) or the open list runs out (`None`).
+/// taken from the open list (its g), the open list runs out, or the limit is reached.
 #[inline]
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the arrays are passed apart, see above"
+)]
 fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     run: &Run<H>,
     words: &mut [u64],
@@ -976,7 +1095,9 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     stack: &mut Vec<u32>,
     slot: &mut [u32],
     stats: &mut SearchStats,
-) -> Option<u64> {
+    limit: Limit,
+) -> Expanded {
+    let mut check_at = limit.next_check(stats.expansions);
     let Run {
         t0,
         base,
@@ -1027,7 +1148,13 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
         words[pu] = word | 1;
         let g = (word >> G_SHIFT) & G_MASK;
         if p == t0 {
-            return Some(g);
+            return Expanded::Target(g);
+        }
+        if stats.expansions >= check_at {
+            if limit.spent(stats.expansions) {
+                return Expanded::Limit;
+            }
+            check_at = limit.next_check(stats.expansions);
         }
         stats.expansions += 1;
         let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
@@ -1104,7 +1231,7 @@ fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
         relax!(illegal(6), south[2], 6, p - pw32 + 1, diag, 1, -1);
         relax!(illegal(7), south[0], 7, p - pw32 - 1, diag, -1, -1);
     }
-    None
+    Expanded::Exhausted
 }
 
 /// The open-list key of A* and Dijkstra: the order ([`Fixed::order`]: f, then the

@@ -4,7 +4,7 @@ use std::time::Instant;
 
 use envmap::GridMap;
 use hyplan_core::{
-    Goal, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
+    Budget, Goal, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
 };
 use rand_core::RngCore;
 
@@ -46,7 +46,7 @@ enum Algo {
 /// assert_eq!(plan.cost, 5.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(
     feature = "serde",
     derive(serde::Serialize, serde::Deserialize),
@@ -55,11 +55,24 @@ enum Algo {
 pub struct GridAstar {
     /// Move rules (8-connected, no corner cutting by default).
     pub options: GridOptions,
+    /// Expansions (`max_iterations`) and wall time the search may spend, the
+    /// connectivity check and the grid's preparation included; unlimited by default
+    /// (`u64::MAX` expansions, no time limit): the search ends when the grid is exhausted.
+    pub budget: Budget,
+}
+
+impl Default for GridAstar {
+    fn default() -> Self {
+        Self {
+            options: GridOptions::default(),
+            budget: UNLIMITED,
+        }
+    }
 }
 
 /// Grid Dijkstra as a planner: the same paths as [`GridAstar`] (equal costs), without a
 /// heuristic. Same conventions as [`GridAstar`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(
     feature = "serde",
     derive(serde::Serialize, serde::Deserialize),
@@ -68,12 +81,25 @@ pub struct GridAstar {
 pub struct GridDijkstra {
     /// Move rules (8-connected, no corner cutting by default).
     pub options: GridOptions,
+    /// Expansions (`max_iterations`) and wall time the search may spend, the
+    /// connectivity check and the grid's preparation included; unlimited by default
+    /// (`u64::MAX` expansions, no time limit): the search ends when the grid is exhausted.
+    pub budget: Budget,
+}
+
+impl Default for GridDijkstra {
+    fn default() -> Self {
+        Self {
+            options: GridOptions::default(),
+            budget: UNLIMITED,
+        }
+    }
 }
 
 /// Theta* as a planner: any-angle paths between cell centres, each segment free under the
 /// map's exact `segment_free`. Same conventions as [`GridAstar`];
 /// see [`GridSearch::theta_star`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(
     feature = "serde",
     derive(serde::Serialize, serde::Deserialize),
@@ -82,7 +108,23 @@ pub struct GridDijkstra {
 pub struct ThetaStar {
     /// Connectivity of the underlying grid moves (corner cutting is never used).
     pub options: GridOptions,
+    /// Expansions (`max_iterations`) and wall time the search may spend, the
+    /// connectivity check and the grid's preparation included; unlimited by default
+    /// (`u64::MAX` expansions, no time limit): the search ends when the grid is exhausted.
+    pub budget: Budget,
 }
+
+impl Default for ThetaStar {
+    fn default() -> Self {
+        Self {
+            options: GridOptions::default(),
+            budget: UNLIMITED,
+        }
+    }
+}
+
+/// The grid searches' default budget: no limit.
+const UNLIMITED: Budget = Budget::iterations(u64::MAX);
 
 macro_rules! grid_planner {
     ($ty:ident, $algo:expr, $name:literal) => {
@@ -97,7 +139,8 @@ macro_rules! grid_planner {
             /// outside the map, not finite or blocked; [`PlanError::Disconnected`] (with
             /// the cause: a wall, or the risk band) when a flood fill of the passable
             /// cells, run first, does not join start and goal; [`PlanError::NoPath`]
-            /// (with the expansion count) when every reachable cell was expanded.
+            /// (with the expansion count) when every reachable cell was expanded;
+            /// [`PlanError::BudgetExhausted`] when the budget ran out first.
             pub fn plan<W: Workspace + ?Sized, R: RngCore + ?Sized>(
                 &self,
                 ws: &W,
@@ -105,7 +148,7 @@ macro_rules! grid_planner {
                 rng: &mut R,
             ) -> Result<Plan, PlanError> {
                 let _ = rng;
-                plan_on_grid(ws, query, self.options, $algo)
+                plan_on_grid(ws, query, self.options, self.budget, $algo)
             }
         }
 
@@ -150,9 +193,11 @@ fn plan_on_grid<W: Workspace + ?Sized>(
     ws: &W,
     query: &Query,
     options: GridOptions,
+    budget: Budget,
     algo: Algo,
 ) -> Result<Plan, PlanError> {
     let started = Instant::now();
+    budget.validate()?;
     let map = as_grid(ws)?;
     query.validate(map)?;
     // A flood fill proves "no path", with its cause, faster than exhausting the search.
@@ -181,11 +226,26 @@ fn plan_on_grid<W: Workspace + ?Sized>(
         point: goal_point,
         reason: "outside the map",
     })?;
-    let mut search = GridSearch::new(map, options).map_err(|e| PlanError::InvalidParameter {
-        name: "workspace",
-        value: e.to_string(),
-        reason: "map too large for the grid search",
-    })?;
+    // The clock runs from the call: the check and the grid's preparation count.
+    let deadline = budget.max_time.map(|t| started + t);
+    let spent = |stats: PlanStats| PlanError::BudgetExhausted {
+        stats: PlanStats {
+            elapsed: started.elapsed(),
+            ..stats
+        },
+    };
+    let mut search = match GridSearch::new_until(map, options, deadline) {
+        Ok(search) => search,
+        Err(GridSearchError::LimitReached { .. }) => return Err(spent(PlanStats::default())),
+        Err(e) => {
+            return Err(PlanError::InvalidParameter {
+                name: "workspace",
+                value: e.to_string(),
+                reason: "map too large for the grid search",
+            });
+        }
+    };
+    search.set_limit(budget.max_iterations, deadline);
     let found = match algo {
         Algo::Astar => search.astar(start_cell, goal_cell),
         Algo::Dijkstra => search.dijkstra(start_cell, goal_cell),
@@ -200,6 +260,13 @@ fn plan_on_grid<W: Workspace + ?Sized>(
             stats.nodes = s.reached;
             stats.elapsed = started.elapsed();
             return Err(PlanError::NoPath { stats });
+        }
+        Err(GridSearchError::LimitReached { stats: s }) => {
+            stats.expansions = s.expansions;
+            stats.pushes = s.pushes;
+            stats.nodes = s.reached;
+            stats.iterations = s.expansions;
+            return Err(spent(stats));
         }
         // validate() accepted the points, so the cells are inside and free; anything else
         // is reported as what it is.

@@ -1,47 +1,13 @@
-//! Connectivity checks that prove "no path" before planning, and say why.
-//!
-//! A planner whose edges pass [`GridMap::segment_free_cells`] moves through cells that
-//! touch: a segment crossing a cell corner touches all four cells around it, so two free
-//! cells are joined by a free polyline exactly when they are joined by a chain of free
-//! cells sharing sides (4-connected). Grid searches move along the same chains (8-connected
-//! moves without corner cutting never need more), or along 8-connected chains when they
-//! cut corners. So a flood fill over the passable cells decides, exactly and in time
-//! linear in the cells it visits, whether any planner of the workspace can succeed.
-//!
-//! When start and goal are not connected, the cause is named ([`NoPathCause`]): the
-//! obstacles themselves (a wall), or, for a planner that keeps out of the high-risk band,
-//! the band, with the largest safety radius that would leave a passage: the bottleneck of
-//! the widest path, over the exact distance transform of the obstacles, found by a
-//! bucketed max-min search.
-//!
-//! ```
-//! use envmap::{GridMap, connectivity::{self, Moves}};
-//! use hyplan_core::{Goal, NoPathCause, Point2, Query};
-//! let map = GridMap::from_ascii("
-//!     ..#..
-//!     ..#..
-//!     ..#..
-//! ")?;
-//! let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(4.5, 1.5)));
-//! assert_eq!(connectivity::disconnection(&map, &query, Moves::Four), Some(NoPathCause::Wall));
-//! # Ok::<(), Box<dyn std::error::Error>>(())
-//! ```
+//! The slow exact reference of [`super::disconnection`] and
+//! [`super::disconnection_hopping`]: flood fills over every cell, the full distance
+//! transform of the obstacles, and a bucketed max-min (widest path) search. Kept to test
+//! the fast run-based version against and to time it (`examples/no_path_timing.rs`);
+//! planners do not call it.
 
-use hyplan_core::{Goal, NoPathCause, Point2, Query, Zone};
+use hyplan_core::{NoPathCause, Point2, Query, Zone};
 
+use super::{Moves, Target};
 use crate::{DistanceField, GridMap, Mask, distance_transform};
-
-/// How a planner moves between cells.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Moves {
-    /// Through shared sides only: planners checked by `segment_free` (the RRT family, the
-    /// hybrids), and grid searches without corner cutting.
-    #[default]
-    Four,
-    /// Also diagonally between cells that share only a corner: grid searches that cut
-    /// corners.
-    Eight,
-}
 
 /// Why no path can join the query's start to its goal on `map` for a planner that moves
 /// through the cells passable under the map's [`blocked_from`](GridMap::blocked_from)
@@ -116,6 +82,13 @@ fn band_cause(map: &GridMap, start: (usize, usize), target: &Target, moves: Move
     let Some(field) = map.distance_from(Zone::Forbidden) else {
         return NoPathCause::Wall;
     };
+    if map.zone_counts()[Zone::Forbidden as usize] == 0 {
+        // No obstacle to measure the band by (see the fast version).
+        return NoPathCause::RiskBand {
+            band_radius: f64::INFINITY,
+            max_radius: f64::INFINITY,
+        };
+    }
     let cap = max_risk_dist_sq(map, field).saturating_add(1);
     let bottleneck = widest(map, field, start, target, moves, cap).unwrap_or(0);
     NoPathCause::RiskBand {
@@ -139,59 +112,6 @@ fn max_risk_dist_sq(map: &GridMap, field: &DistanceField) -> u32 {
 /// the nearest obstacle cell centre.
 fn band_radius(map: &GridMap, field: &DistanceField) -> f64 {
     f64::from(max_risk_dist_sq(map, field)).sqrt() * map.resolution()
-}
-
-/// The cells that reach the goal: per row, the columns whose closed squares meet the goal
-/// disc.
-struct Target {
-    /// Centre and radius in cell units.
-    cu: f64,
-    cv: f64,
-    r: f64,
-    width: usize,
-    height: usize,
-}
-
-impl Target {
-    fn new(map: &GridMap, goal: &Goal) -> Option<Self> {
-        let c = goal.center();
-        let o = map.origin();
-        let res = map.resolution();
-        let (cu, cv, r) = ((c.x - o.x) / res, (c.y - o.y) / res, goal.radius() / res);
-        (cu.is_finite() && cv.is_finite() && r.is_finite() && r >= 0.0).then_some(Self {
-            cu,
-            cv,
-            r,
-            width: map.width(),
-            height: map.height(),
-        })
-    }
-
-    /// The columns `[lo, hi]` of row `j` that meet the disc, if any.
-    fn row(&self, j: usize) -> Option<(usize, usize)> {
-        let jf = j as f64;
-        let dy = (jf - self.cv).max(self.cv - (jf + 1.0)).max(0.0);
-        if dy > self.r {
-            return None;
-        }
-        let half = (self.r * self.r - dy * dy).sqrt();
-        let lo = (self.cu - half - 1.0).ceil().max(0.0);
-        let hi = (self.cu + half).floor().min(self.width as f64 - 1.0);
-        (lo <= hi && hi >= 0.0).then_some((lo as usize, hi as usize))
-    }
-
-    /// The rows that meet the disc.
-    fn rows(&self) -> (usize, usize) {
-        let lo = (self.cv - self.r - 1.0).ceil().max(0.0) as usize;
-        let hi = (self.cv + self.r)
-            .floor()
-            .clamp(0.0, self.height as f64 - 1.0) as usize;
-        (lo, hi)
-    }
-
-    fn contains(&self, i: usize, j: usize) -> bool {
-        self.row(j).is_some_and(|(lo, hi)| (lo..=hi).contains(&i))
-    }
 }
 
 /// Scan-line flood fill from `start` over the cells whose index passes `passable`; whether
@@ -319,104 +239,5 @@ fn widest(
             buckets[v].push(n as u32);
             top = top.max(v);
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::generate::{narrow_passage, with_risk_band};
-    use rand::SeedableRng;
-
-    fn q(a: (f64, f64), b: (f64, f64)) -> Query {
-        Query::new(Point2::new(a.0, a.1), Goal::Point(Point2::new(b.0, b.1)))
-    }
-
-    #[test]
-    fn corner_touch_does_not_connect_four_but_does_eight() {
-        let map = GridMap::from_ascii(
-            "
-            .#
-            #.
-        ",
-        )
-        .unwrap();
-        let query = q((0.5, 1.5), (1.5, 0.5));
-        assert_eq!(
-            disconnection(&map, &query, Moves::Four),
-            Some(NoPathCause::Wall)
-        );
-        assert_eq!(disconnection(&map, &query, Moves::Eight), None);
-    }
-
-    #[test]
-    fn goal_disc_across_a_wall_counts() {
-        let map = GridMap::from_ascii("..#..\n..#..").unwrap();
-        let point = q((0.5, 0.5), (4.5, 0.5));
-        assert!(disconnection(&map, &point, Moves::Four).is_some());
-        let disc = Query::new(
-            Point2::new(0.5, 0.5),
-            Goal::disc(Point2::new(4.5, 0.5), 2.6),
-        );
-        assert_eq!(disconnection(&map, &disc, Moves::Four), None);
-    }
-
-    #[test]
-    fn band_cause_names_the_bottleneck() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-        // A 6-cell tunnel: its middle cells are 3 cells from the walls... at most.
-        let g = narrow_passage(60, 40, 6, 4, &mut rng);
-        let query = Query::new(g.start, Goal::Point(g.goal));
-        let banded = with_risk_band(&g.map, 5.0).avoiding_risk();
-        let Some(NoPathCause::RiskBand {
-            band_radius,
-            max_radius,
-        }) = disconnection(&banded, &query, Moves::Four)
-        else {
-            panic!("expected the band as the cause");
-        };
-        assert!(band_radius <= 5.0 && band_radius > 4.0, "{band_radius}");
-        // The tunnel's widest cells are 3 cells from a wall (squared distance 9).
-        assert_eq!(max_radius, 3.0);
-        // A band just below the bottleneck connects, one at it does not.
-        let ok = with_risk_band(&g.map, 2.99).avoiding_risk();
-        assert_eq!(disconnection(&ok, &query, Moves::Four), None);
-        let not = with_risk_band(&g.map, 3.0).avoiding_risk();
-        assert!(disconnection(&not, &query, Moves::Four).is_some());
-        // Only obstacles blocking: connected.
-        assert_eq!(
-            disconnection(&with_risk_band(&g.map, 5.0), &query, Moves::Four),
-            None
-        );
-    }
-
-    #[test]
-    fn closed_wall_is_a_wall_even_for_safe_maps() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-        let g = narrow_passage(60, 40, 0, 4, &mut rng);
-        let query = Query::new(g.start, Goal::Point(g.goal));
-        let banded = with_risk_band(&g.map, 2.0).avoiding_risk();
-        assert_eq!(
-            disconnection(&banded, &query, Moves::Four),
-            Some(NoPathCause::Wall)
-        );
-        assert_eq!(
-            disconnection_hopping(&g.map, &query, 2.0),
-            Some(NoPathCause::Wall)
-        );
-    }
-
-    #[test]
-    fn hopping_crosses_thin_bands_only() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-        let g = narrow_passage(80, 40, 6, 20, &mut rng);
-        let query = Query::new(g.start, Goal::Point(g.goal));
-        let banded = with_risk_band(&g.map, 5.0);
-        // A 20-cell tunnel entirely in the band: hops of 2 cannot cross it, hops of 60 might.
-        assert!(matches!(
-            disconnection_hopping(&banded, &query, 2.0),
-            Some(NoPathCause::RiskBand { .. })
-        ));
-        assert_eq!(disconnection_hopping(&banded, &query, 60.0), None);
     }
 }

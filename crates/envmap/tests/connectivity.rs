@@ -1,0 +1,116 @@
+//! The run-based connectivity proof against its slow cell-by-cell reference
+//! (`connectivity::reference`): the same verdict and the same cause, to the bit, on small
+//! random maps with a consistent band (zones from the distance transform) and with
+//! high-risk cells drawn at random.
+
+use envmap::connectivity::{self, Moves, reference};
+use envmap::{GridMap, Mask, distance_transform, zones};
+use hyplan_core::{Goal, Point2, Query, Zone};
+use proptest::prelude::*;
+
+/// A map of up to `max` x `max` cells: obstacles of a random density, and either the
+/// band of a random radius or random high-risk cells.
+fn map_strategy(max: usize) -> impl Strategy<Value = GridMap> {
+    (
+        1..=max,
+        1..=max,
+        0.0..0.5f64,
+        0.0..4.0f64,
+        any::<bool>(),
+        any::<u64>(),
+    )
+        .prop_flat_map(|(w, h, density, radius, banded, _)| {
+            (
+                proptest::collection::vec(proptest::bool::weighted(density.max(0.01)), w * h),
+                proptest::collection::vec(proptest::bool::weighted(0.3), w * h),
+            )
+                .prop_map(move |(cells, risky)| {
+                    let mask = Mask::from_cells(w, h, cells).unwrap();
+                    let z = if banded {
+                        zones(&mask, &distance_transform(&mask), radius)
+                    } else {
+                        mask.cells()
+                            .iter()
+                            .zip(&risky)
+                            .map(|(&f, &r)| match (f, r) {
+                                (true, _) => Zone::Forbidden,
+                                (false, true) => Zone::Risk,
+                                _ => Zone::Free,
+                            })
+                            .collect()
+                    };
+                    GridMap::from_zones(w, h, 0.5, Point2::new(-1.0, 2.0), z).unwrap()
+                })
+        })
+}
+
+/// A query with start and goal anywhere in the map (free or not: the check must agree
+/// with the reference either way) and a goal disc of radius 0 to 2.
+fn query_strategy() -> impl Strategy<Value = (f64, f64, f64, f64, f64)> {
+    (
+        0.0..1.0f64,
+        0.0..1.0f64,
+        0.0..1.0f64,
+        0.0..1.0f64,
+        0.0..2.0f64,
+    )
+}
+
+fn query(map: &GridMap, q: (f64, f64, f64, f64, f64)) -> Query {
+    let b = hyplan_core::Workspace::bounds(map);
+    let at = |u: f64, v: f64| Point2::new(b.min.x + u * b.width(), b.min.y + v * b.height());
+    let goal = if q.4 < 0.5 {
+        Goal::Point(at(q.2, q.3))
+    } else {
+        Goal::disc(at(q.2, q.3), q.4 - 0.5)
+    };
+    Query::new(at(q.0, q.1), goal)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(512))]
+
+    #[test]
+    fn runs_agree_with_the_reference(
+        map in map_strategy(24),
+        q in query_strategy(),
+        safe in any::<bool>(),
+        eight in any::<bool>(),
+        hop in 0.1..12.0f64,
+    ) {
+        let map = if safe { map.avoiding_risk() } else { map };
+        let query = query(&map, q);
+        let moves = if eight { Moves::Eight } else { Moves::Four };
+        prop_assert_eq!(
+            connectivity::disconnection(&map, &query, moves),
+            reference::disconnection(&map, &query, moves)
+        );
+        let mut plain = map.clone();
+        plain.blocked_from = Zone::Forbidden;
+        prop_assert_eq!(
+            connectivity::disconnection_hopping(&plain, &query, hop),
+            reference::disconnection_hopping(&plain, &query, hop)
+        );
+    }
+}
+
+/// A 400 x 300 map whose tunnel the band closes: the same cause as the reference, and
+/// the cached components survive a clone.
+#[test]
+fn large_band_case_matches_the_reference() {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+    let g = envmap::generate::narrow_passage(400, 300, 6, 8, &mut rng);
+    let map = envmap::generate::with_risk_band(&g.map, 5.0).avoiding_risk();
+    let query = Query::new(g.start, Goal::disc(g.goal, 2.0));
+    let fast = connectivity::disconnection(&map, &query, Moves::Four);
+    assert!(
+        matches!(fast, Some(hyplan_core::NoPathCause::RiskBand { .. })),
+        "{fast:?}"
+    );
+    assert_eq!(fast, reference::disconnection(&map, &query, Moves::Four));
+    assert_eq!(
+        connectivity::disconnection(&map.clone(), &query, Moves::Four),
+        fast
+    );
+}
