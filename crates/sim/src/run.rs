@@ -19,6 +19,7 @@ use crate::navigator::{NavEvent, NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::record::{Contact, ContactClass, Event, EventKind, Row, Summary, Trace};
 use crate::scenario::Scenario;
+use crate::tracking::Tracker;
 use crate::world::World;
 
 /// Simulation ticks per second.
@@ -70,6 +71,12 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
     let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
     let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
     let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range);
+    let mut tracker = Tracker::new(
+        world.bounds,
+        &world.mapped,
+        scenario.costmap.obstacle_range,
+        TICKS_PER_SECOND as f64,
+    );
     let costmaps = CostmapBuilder::new(
         world.bounds,
         &world.mapped,
@@ -114,6 +121,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
             if tick % map_every == 0 {
                 map.integrate(&scan);
             }
+            tracker.update(&scan, tick);
             memory.insert(scan, tick);
         }
         let mut done = false;
@@ -124,6 +132,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
                 pose,
                 twist,
                 &memory,
+                &tracker.movers(tick),
                 Some(&map),
                 tick,
                 TICKS_PER_SECOND as f64,

@@ -1,0 +1,268 @@
+//! Moving obstacles from successive scans: the hits that the static prior map does not
+//! explain are grouped into clusters, clusters are associated scan to scan into tracks,
+//! and each track's velocity is the least-squares slope of its centroid over the last
+//! fraction of a second.
+//!
+//! This is what a ROS people tracker (`leg_detector`, `costmap_converter`'s dynamic
+//! obstacles) adds to a `move_base` stack so that a local planner can look ahead in time:
+//! without it, the controller checks its arc against where people are now, and a person
+//! walking at the robot's side toward it is seen but not anticipated.
+//!
+//! Choices (constants below): hits within about 5 cm of the prior map are static; beams
+//! next to each other whose hits are closer than [`CLUSTER_GAP`] form a cluster; clusters
+//! wider than [`MAX_EXTENT`] are not people and are left to the obstacle memory; a cluster
+//! joins the track whose predicted centroid is nearest within [`GATE`]; velocities come
+//! from the last [`WINDOW_S`] and need [`MIN_SPAN_S`] of history; a track not seen for
+//! [`FORGET_S`] is dropped, one slower than [`MIN_SPEED`] is no mover, and until then it is extrapolated (a person who leaves the
+//! field of view at the robot's side is still anticipated).
+
+use std::collections::VecDeque;
+
+use hyplan_core::{Bounds, Point2};
+use nalgebra::Vector2;
+
+use crate::costmap::rasterize;
+use crate::laser::Scan;
+use crate::world::StaticWorld;
+
+/// Neighbouring hits closer than this belong to one cluster, m.
+pub const CLUSTER_GAP: f64 = 0.15;
+/// Clusters wider than this (first to last hit) are not tracked, m.
+pub const MAX_EXTENT: f64 = 0.9;
+/// A cluster joins a track whose predicted centroid is within this distance, m.
+pub const GATE: f64 = 0.35;
+/// Velocity window, s.
+pub const WINDOW_S: f64 = 0.25;
+/// History needed before a track has a velocity, s.
+pub const MIN_SPAN_S: f64 = 0.1;
+/// A track unseen this long is dropped, s.
+pub const FORGET_S: f64 = 1.0;
+/// Estimated speeds are capped here (a wrong association must not teleport a track), m/s.
+pub const MAX_SPEED: f64 = 2.0;
+/// Tracks slower than this are left to the obstacle memory (a static thing off the prior
+/// map, whose centroid wanders a little as the robot moves), m/s.
+pub const MIN_SPEED: f64 = 0.05;
+/// Side of the static-prior grid, m.
+const STATIC_RES: f64 = 0.05;
+
+/// A moving obstacle as the controller sees it: a disc that covers the track's last
+/// hits, moving at the track's velocity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Mover {
+    /// Centre now (extrapolated to the query time), m.
+    pub center: Point2,
+    /// Radius covering the last hits around the centre, m.
+    pub radius: f64,
+    /// Velocity, m/s.
+    pub velocity: Vector2<f64>,
+}
+
+impl Mover {
+    /// The centre `tau` seconds from now.
+    #[must_use]
+    pub fn at(&self, tau: f64) -> Point2 {
+        self.center + self.velocity * tau
+    }
+}
+
+#[derive(Debug, Clone)]
+struct Track {
+    /// (tick, centroid) of the last observations, oldest first.
+    history: VecDeque<(u64, Point2)>,
+    radius: f64,
+    velocity: Option<Vector2<f64>>,
+}
+
+impl Track {
+    fn last(&self) -> (u64, Point2) {
+        *self
+            .history
+            .back()
+            .expect("a track has at least one observation")
+    }
+
+    fn predict(&self, tick: u64, ticks_per_s: f64) -> Point2 {
+        let (t0, p) = self.last();
+        let v = self.velocity.unwrap_or_else(Vector2::zeros);
+        p + v * ((tick.saturating_sub(t0)) as f64 / ticks_per_s)
+    }
+
+    /// Least-squares slope of the centroid over the window.
+    fn estimate(&mut self, ticks_per_s: f64) {
+        let (first, last) = (self.history[0].0, self.last().0);
+        if ((last - first) as f64) < MIN_SPAN_S * ticks_per_s {
+            self.velocity = None;
+            return;
+        }
+        let n = self.history.len() as f64;
+        let mean_t = self.history.iter().map(|h| h.0 as f64).sum::<f64>() / n;
+        let mean_p = self
+            .history
+            .iter()
+            .fold(Vector2::zeros(), |m, h| m + h.1.coords)
+            / n;
+        let (mut stt, mut stp) = (0.0, Vector2::zeros());
+        for &(t, p) in &self.history {
+            let dt = t as f64 - mean_t;
+            stt += dt * dt;
+            stp += (p.coords - mean_p) * dt;
+        }
+        let v = stp / stt * ticks_per_s;
+        self.velocity = Some(if v.norm() > MAX_SPEED {
+            v * (MAX_SPEED / v.norm())
+        } else {
+            v
+        });
+    }
+}
+
+/// The tracker: static prior, live tracks.
+#[derive(Debug, Clone)]
+pub struct Tracker {
+    width: usize,
+    height: usize,
+    origin: Point2,
+    prior: Vec<bool>,
+    tracks: Vec<Track>,
+    ticks_per_s: f64,
+    range: f64,
+}
+
+impl Tracker {
+    /// A tracker whose static prior is `mapped` over `bounds`; hits farther than `range`
+    /// from the scanner are ignored; time is counted in ticks of `1 / ticks_per_s` s.
+    #[must_use]
+    pub fn new(bounds: Bounds, mapped: &StaticWorld, range: f64, ticks_per_s: f64) -> Self {
+        let (width, height, prior) = rasterize(bounds, mapped, STATIC_RES);
+        Self {
+            width,
+            height,
+            origin: bounds.min,
+            prior,
+            tracks: Vec::new(),
+            ticks_per_s,
+            range,
+        }
+    }
+
+    /// Whether `p` is within about a cell of the static prior.
+    fn explained(&self, p: Point2) -> bool {
+        let ci = ((p.x - self.origin.x) / STATIC_RES).floor() as i64;
+        let cj = ((p.y - self.origin.y) / STATIC_RES).floor() as i64;
+        for j in cj - 1..=cj + 1 {
+            for i in ci - 1..=ci + 1 {
+                if i < 0 || j < 0 || i >= self.width as i64 || j >= self.height as i64 {
+                    // Outside the world counts as static: nothing walks there.
+                    return true;
+                }
+                if self.prior[j as usize * self.width + i as usize] {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// The clusters of a scan's unexplained hits: (centroid, covering radius).
+    fn clusters(&self, scan: &Scan) -> Vec<(Point2, f64)> {
+        let mut out = Vec::new();
+        let mut current: Vec<Point2> = Vec::new();
+        let mut flush = |c: &mut Vec<Point2>| {
+            if let (Some(&a), Some(&b)) = (c.first(), c.last())
+                && (b - a).norm() <= MAX_EXTENT
+            {
+                let mean = c.iter().fold(Vector2::zeros(), |m, p| m + p.coords) / c.len() as f64;
+                let centre = Point2::from(mean);
+                let radius = c.iter().map(|p| (p - centre).norm()).fold(0.05, f64::max);
+                out.push((centre, radius));
+            }
+            c.clear();
+        };
+        for k in 0..scan.ranges.len() {
+            let p = (scan.ranges[k] <= self.range)
+                .then(|| scan.hit(k))
+                .flatten()
+                .filter(|&p| !self.explained(p));
+            match p {
+                Some(p) => {
+                    if current
+                        .last()
+                        .is_some_and(|&q| (p - q).norm() > CLUSTER_GAP)
+                    {
+                        flush(&mut current);
+                    }
+                    current.push(p);
+                }
+                None => flush(&mut current),
+            }
+        }
+        flush(&mut current);
+        out
+    }
+
+    /// Takes in the scan seen at `tick`.
+    pub fn update(&mut self, scan: &Scan, tick: u64) {
+        let forget = (FORGET_S * self.ticks_per_s) as u64;
+        self.tracks
+            .retain(|t| tick.saturating_sub(t.last().0) <= forget);
+        let clusters = self.clusters(scan);
+        let predicted: Vec<Point2> = self
+            .tracks
+            .iter()
+            .map(|t| t.predict(tick, self.ticks_per_s))
+            .collect();
+        // Greedy association, nearest pairs first.
+        let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+        for (c, &(p, _)) in clusters.iter().enumerate() {
+            for (t, q) in predicted.iter().enumerate() {
+                let d = (p - q).norm();
+                if d <= GATE {
+                    pairs.push((d, c, t));
+                }
+            }
+        }
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut cluster_used = vec![false; clusters.len()];
+        let mut track_used = vec![false; self.tracks.len()];
+        let window = (WINDOW_S * self.ticks_per_s) as u64;
+        for (_, c, t) in pairs {
+            if cluster_used[c] || track_used[t] {
+                continue;
+            }
+            cluster_used[c] = true;
+            track_used[t] = true;
+            let track = &mut self.tracks[t];
+            track.history.push_back((tick, clusters[c].0));
+            track.radius = clusters[c].1;
+            while track.history.front().is_some_and(|h| tick - h.0 > window) {
+                track.history.pop_front();
+            }
+            track.estimate(self.ticks_per_s);
+        }
+        for (c, &(p, r)) in clusters.iter().enumerate() {
+            if !cluster_used[c] {
+                self.tracks.push(Track {
+                    history: VecDeque::from([(tick, p)]),
+                    radius: r,
+                    velocity: None,
+                });
+            }
+        }
+    }
+
+    /// The tracks with a velocity, as movers at `tick`.
+    #[must_use]
+    pub fn movers(&self, tick: u64) -> Vec<Mover> {
+        self.tracks
+            .iter()
+            .filter_map(|t| {
+                let v = t.velocity.filter(|v| v.norm() >= MIN_SPEED)?;
+                Some(Mover {
+                    center: t.predict(tick, self.ticks_per_s),
+                    radius: t.radius,
+                    velocity: v,
+                })
+            })
+            .collect()
+    }
+}
