@@ -113,7 +113,14 @@ impl ObstacleMemory {
             if scan.ranges[k] > self.obstacle_range {
                 continue;
             }
-            let Some(p) = scan.hit(k) else { continue };
+            // A beam too close to measure marks its shortest range: something is at
+            // the scanner.
+            let p = if scan.too_close(k) {
+                scan.origin + scan.directions[k] * scan.range_min
+            } else {
+                let Some(p) = scan.hit(k) else { continue };
+                p
+            };
             let Some((i, j)) = self.cell(p) else { continue };
             let c = j * self.width + i;
             if self.stamp[c] != now {

@@ -133,7 +133,17 @@ impl Tracker {
     /// from the scanner are ignored; time is counted in ticks of `1 / ticks_per_s` s.
     #[must_use]
     pub fn new(bounds: Bounds, mapped: &StaticWorld, range: f64, ticks_per_s: f64) -> Self {
-        let (width, height, prior) = rasterize(bounds, mapped, STATIC_RES);
+        let (width, height, cells) = rasterize(bounds, mapped, STATIC_RES);
+        // Dilated by one cell once here, so that a hit needs one look-up: a hit within a
+        // cell of the prior's cells, or on the grid's rim, is static.
+        let mut prior = vec![false; width * height];
+        for j in 0..height {
+            for i in 0..width {
+                let rim = i == 0 || j == 0 || i + 1 == width || j + 1 == height;
+                prior[j * width + i] = rim
+                    || (j - 1..=j + 1).any(|jj| (i - 1..=i + 1).any(|ii| cells[jj * width + ii]));
+            }
+        }
         Self {
             width,
             height,
@@ -145,22 +155,15 @@ impl Tracker {
         }
     }
 
-    /// Whether `p` is within about a cell of the static prior.
+    /// Whether `p` is within about a cell of the static prior (or outside the world:
+    /// nothing walks there).
     fn explained(&self, p: Point2) -> bool {
-        let ci = ((p.x - self.origin.x) / STATIC_RES).floor() as i64;
-        let cj = ((p.y - self.origin.y) / STATIC_RES).floor() as i64;
-        for j in cj - 1..=cj + 1 {
-            for i in ci - 1..=ci + 1 {
-                if i < 0 || j < 0 || i >= self.width as i64 || j >= self.height as i64 {
-                    // Outside the world counts as static: nothing walks there.
-                    return true;
-                }
-                if self.prior[j as usize * self.width + i as usize] {
-                    return true;
-                }
-            }
+        let u = (p.x - self.origin.x) / STATIC_RES;
+        let v = (p.y - self.origin.y) / STATIC_RES;
+        if !(u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height) {
+            return true;
         }
-        false
+        self.prior[v as usize * self.width + u as usize]
     }
 
     /// The clusters of a scan's unexplained hits: (centroid, covering radius).
