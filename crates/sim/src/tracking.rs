@@ -10,7 +10,9 @@
 //!
 //! Choices (constants below): hits within about 5 cm of the prior map are static; beams
 //! next to each other whose hits are closer than [`CLUSTER_GAP`] form a cluster; clusters
-//! wider than [`MAX_EXTENT`] are not people and are left to the obstacle memory; a cluster
+//! wider than [`MAX_EXTENT`], of fewer than [`MIN_POINTS`] hits, or cut by the edge of
+//! the field of view or of the tracked range are not used (their centroids slide with
+//! the view) and are left to the obstacle memory; a cluster
 //! joins the track whose predicted centroid is nearest within [`GATE`]; velocities come
 //! from the last [`WINDOW_S`] and need [`MIN_SPAN_S`] of history; a track not seen for
 //! [`FORGET_S`] is dropped, one slower than [`MIN_SPEED`] is no mover, and until then it is extrapolated (a person who leaves the
@@ -27,8 +29,14 @@ use crate::world::StaticWorld;
 
 /// Neighbouring hits closer than this belong to one cluster, m.
 pub const CLUSTER_GAP: f64 = 0.15;
-/// Clusters wider than this (first to last hit) are not tracked, m.
-pub const MAX_EXTENT: f64 = 0.9;
+/// Clusters wider than this (first to last hit) are not tracked: a person's visible side
+/// is at most their diameter (0.5 m for the default 0.25 m radius); the corner of a box
+/// off the prior map, whose centroid slides as the robot drives past, is wider, m.
+pub const MAX_EXTENT: f64 = 0.6;
+/// Clusters of fewer hits are not tracked: a surface seen at a grazing angle breaks into
+/// single hits that slide along it as the robot moves (a person 3.5 m away still
+/// returns about 30 beams of the default laser).
+pub const MIN_POINTS: usize = 4;
 /// A cluster joins a track whose predicted centroid is within this distance, m.
 pub const GATE: f64 = 0.35;
 /// Velocity window, s.
@@ -139,9 +147,15 @@ impl Tracker {
         let mut prior = vec![false; width * height];
         for j in 0..height {
             for i in 0..width {
-                let rim = i == 0 || j == 0 || i + 1 == width || j + 1 == height;
-                prior[j * width + i] = rim
-                    || (j - 1..=j + 1).any(|jj| (i - 1..=i + 1).any(|ii| cells[jj * width + ii]));
+                if i == 0 || j == 0 || i + 1 == width || j + 1 == height {
+                    prior[j * width + i] = true;
+                }
+                if cells[j * width + i] {
+                    for jj in j.saturating_sub(1)..(j + 2).min(height) {
+                        prior[jj * width + i.saturating_sub(1)..jj * width + (i + 2).min(width)]
+                            .fill(true);
+                    }
+                }
             }
         }
         Self {
@@ -168,38 +182,55 @@ impl Tracker {
 
     /// The clusters of a scan's unexplained hits: (centroid, covering radius).
     fn clusters(&self, scan: &Scan) -> Vec<(Point2, f64)> {
-        let mut out = Vec::new();
-        let mut current: Vec<Point2> = Vec::new();
-        let mut flush = |c: &mut Vec<Point2>| {
-            if let (Some(&a), Some(&b)) = (c.first(), c.last())
-                && (b - a).norm() <= MAX_EXTENT
-            {
-                let mean = c.iter().fold(Vector2::zeros(), |m, p| m + p.coords) / c.len() as f64;
-                let centre = Point2::from(mean);
-                let radius = c.iter().map(|p| (p - centre).norm()).fold(0.05, f64::max);
-                out.push((centre, radius));
-            }
-            c.clear();
-        };
-        for k in 0..scan.ranges.len() {
-            let p = (scan.ranges[k] <= self.range)
+        let n = scan.ranges.len();
+        let point = |k: usize| {
+            (scan.ranges[k] <= self.range)
                 .then(|| scan.hit(k))
                 .flatten()
-                .filter(|&p| !self.explained(p));
-            match p {
-                Some(p) => {
-                    if current
-                        .last()
-                        .is_some_and(|&q| (p - q).norm() > CLUSTER_GAP)
-                    {
-                        flush(&mut current);
-                    }
-                    current.push(p);
-                }
-                None => flush(&mut current),
+                .filter(|&p| !self.explained(p))
+        };
+        // Whether the object goes on past beam `k`'s end of a cluster that ends at `end`:
+        // out of the field of view, beyond the tracked range, or too close to measure.
+        let cut = |k: Option<usize>, end: Point2| match k {
+            None => true,
+            Some(k) => {
+                scan.too_close(k)
+                    || (scan.ranges[k] > self.range
+                        && scan.hit(k).is_some_and(|q| (q - end).norm() <= CLUSTER_GAP))
             }
+        };
+        let mut out = Vec::new();
+        let mut k = 0;
+        while k < n {
+            let Some(p) = point(k) else {
+                k += 1;
+                continue;
+            };
+            let first = k;
+            let mut c = vec![p];
+            k += 1;
+            while k < n
+                && let Some(q) = point(k)
+                && (q - c[c.len() - 1]).norm() <= CLUSTER_GAP
+            {
+                c.push(q);
+                k += 1;
+            }
+            let (a, b) = (c[0], c[c.len() - 1]);
+            // A cut cluster's centroid slides as more or less of the object shows: it
+            // says nothing of the object's motion.
+            if (b - a).norm() > MAX_EXTENT
+                || c.len() < MIN_POINTS
+                || cut(first.checked_sub(1), a)
+                || cut((k < n).then_some(k), b)
+            {
+                continue;
+            }
+            let mean = c.iter().fold(Vector2::zeros(), |m, p| m + p.coords) / c.len() as f64;
+            let centre = Point2::from(mean);
+            let radius = c.iter().map(|p| (p - centre).norm()).fold(0.05, f64::max);
+            out.push((centre, radius));
         }
-        flush(&mut current);
         out
     }
 
