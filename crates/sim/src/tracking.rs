@@ -10,9 +10,9 @@
 //!
 //! Choices (constants below): hits within about 5 cm of the prior map are static; beams
 //! next to each other whose hits are closer than [`CLUSTER_GAP`] form a cluster; clusters
-//! wider than [`MAX_EXTENT`], of fewer than [`MIN_POINTS`] hits, or cut by the edge of
-//! the field of view or of the tracked range are not used (their centroids slide with
-//! the view) and are left to the obstacle memory; a cluster
+//! wider than [`MAX_EXTENT`], of fewer than [`MIN_POINTS`] hits, or cut by the tracked
+//! range are not used (their centroids slide with the view); of a cluster cut by the edge
+//! of the field of view only the motion along that edge is used and are left to the obstacle memory; a cluster
 //! joins the track whose predicted centroid is nearest within [`GATE`]; velocities come
 //! from the last [`WINDOW_S`] and need [`MIN_SPAN_S`] of history; a track not seen for
 //! [`FORGET_S`] is dropped, one slower than [`MIN_SPEED`] is no mover, and until then it is extrapolated (a person who leaves the
@@ -73,12 +73,23 @@ impl Mover {
     }
 }
 
+/// One cluster of a scan.
+#[derive(Debug, Clone, Copy)]
+struct Cluster {
+    centre: Point2,
+    radius: f64,
+    /// Direction of the field-of-view edge that cuts the cluster, if one does.
+    edge: Option<Vector2<f64>>,
+}
+
 #[derive(Debug, Clone)]
 struct Track {
     /// (tick, centroid) of the last observations, oldest first.
     history: VecDeque<(u64, Point2)>,
     radius: f64,
     velocity: Option<Vector2<f64>>,
+    /// The field-of-view edge cutting the last observation, if one did.
+    edge: Option<Vector2<f64>>,
 }
 
 impl Track {
@@ -181,7 +192,7 @@ impl Tracker {
     }
 
     /// The clusters of a scan's unexplained hits: (centroid, covering radius).
-    fn clusters(&self, scan: &Scan) -> Vec<(Point2, f64)> {
+    fn clusters(&self, scan: &Scan) -> Vec<Cluster> {
         let n = scan.ranges.len();
         let point = |k: usize| {
             (scan.ranges[k] <= self.range)
@@ -189,15 +200,12 @@ impl Tracker {
                 .flatten()
                 .filter(|&p| !self.explained(p))
         };
-        // Whether the object goes on past beam `k`'s end of a cluster that ends at `end`:
-        // out of the field of view, beyond the tracked range, or too close to measure.
-        let cut = |k: Option<usize>, end: Point2| match k {
-            None => true,
-            Some(k) => {
-                scan.too_close(k)
-                    || (scan.ranges[k] > self.range
-                        && scan.hit(k).is_some_and(|q| (q - end).norm() <= CLUSTER_GAP))
-            }
+        // Whether the object goes on past beam `k` (next to a cluster's end `end`): beyond
+        // the tracked range, or too close to measure.
+        let cut = |k: usize, end: Point2| {
+            scan.too_close(k)
+                || (scan.ranges[k] > self.range
+                    && scan.hit(k).is_some_and(|q| (q - end).norm() <= CLUSTER_GAP))
         };
         let mut out = Vec::new();
         let mut k = 0;
@@ -217,19 +225,33 @@ impl Tracker {
                 k += 1;
             }
             let (a, b) = (c[0], c[c.len() - 1]);
-            // A cut cluster's centroid slides as more or less of the object shows: it
-            // says nothing of the object's motion.
+            // A cluster cut by the range or a too-close beam: its centroid slides as more
+            // or less of the object shows, and says nothing of the object's motion.
             if (b - a).norm() > MAX_EXTENT
                 || c.len() < MIN_POINTS
-                || cut(first.checked_sub(1), a)
-                || cut((k < n).then_some(k), b)
+                || first.checked_sub(1).is_some_and(|j| cut(j, a))
+                || (k < n && cut(k, b))
             {
                 continue;
             }
+            // Cut by the edge of the field of view: the centroid slides across the edge
+            // ray as the scanner moves, but not along it (a person walking at the robot's
+            // side toward it is half out of view and must still be anticipated).
+            let edge = if first == 0 {
+                Some(scan.directions[0])
+            } else if k == n {
+                Some(scan.directions[n - 1])
+            } else {
+                None
+            };
             let mean = c.iter().fold(Vector2::zeros(), |m, p| m + p.coords) / c.len() as f64;
             let centre = Point2::from(mean);
             let radius = c.iter().map(|p| (p - centre).norm()).fold(0.05, f64::max);
-            out.push((centre, radius));
+            out.push(Cluster {
+                centre,
+                radius,
+                edge,
+            });
         }
         out
     }
@@ -247,7 +269,8 @@ impl Tracker {
             .collect();
         // Greedy association, nearest pairs first.
         let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
-        for (c, &(p, _)) in clusters.iter().enumerate() {
+        for (c, cl) in clusters.iter().enumerate() {
+            let p = cl.centre;
             for (t, q) in predicted.iter().enumerate() {
                 let d = (p - q).norm();
                 if d <= GATE {
@@ -266,19 +289,21 @@ impl Tracker {
             cluster_used[c] = true;
             track_used[t] = true;
             let track = &mut self.tracks[t];
-            track.history.push_back((tick, clusters[c].0));
-            track.radius = clusters[c].1;
+            track.history.push_back((tick, clusters[c].centre));
+            track.radius = clusters[c].radius;
+            track.edge = clusters[c].edge;
             while track.history.front().is_some_and(|h| tick - h.0 > window) {
                 track.history.pop_front();
             }
             track.estimate(self.ticks_per_s);
         }
-        for (c, &(p, r)) in clusters.iter().enumerate() {
+        for (c, cl) in clusters.iter().enumerate() {
             if !cluster_used[c] {
                 self.tracks.push(Track {
-                    history: VecDeque::from([(tick, p)]),
-                    radius: r,
+                    history: VecDeque::from([(tick, cl.centre)]),
+                    radius: cl.radius,
                     velocity: None,
+                    edge: cl.edge,
                 });
             }
         }
@@ -290,7 +315,11 @@ impl Tracker {
         self.tracks
             .iter()
             .filter_map(|t| {
-                let v = t.velocity.filter(|v| v.norm() >= MIN_SPEED)?;
+                // Of a track cut by the field of view, only the motion along the edge.
+                let v = t
+                    .velocity
+                    .map(|v| t.edge.map_or(v, |e| e * v.dot(&e)))
+                    .filter(|v| v.norm() >= MIN_SPEED)?;
                 Some(Mover {
                     center: t.predict(tick, self.ticks_per_s),
                     radius: t.radius,
