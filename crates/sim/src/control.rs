@@ -20,6 +20,8 @@
 //!    instead of driving into their path;
 //! 6. safety: the arc the command drives, out to the distance needed to stop plus one
 //!    control period, must keep `body_radius + margin` from every remembered laser hit,
+//!    and that clearance plus `person_speed` times the time to get there from every
+//!    remembered hit the prior map does not explain (a person the tracker lost),
 //!    and the same motion (the command for one period, then braking to rest on its
 //!    curvature) must keep that clearance from every mover swept along its velocity
 //!    until the robot is at rest; otherwise the robot brakes as hard as it may, unless
@@ -57,6 +59,10 @@ pub struct Controller {
     /// How far ahead in time the robot looks for people crossing its way, s (2.0: about
     /// the 1.7 s roll-out of the tutorial's `base_local_planner`).
     pub predict_horizon: f64,
+    /// The fastest a person is assumed to walk, m/s (0.3, the robot's top speed): a
+    /// remembered hit off the prior map may be a person, untracked (out of view at the
+    /// robot's side, half hidden), who may reach this far while the robot comes to rest.
+    pub person_speed: f64,
 }
 
 impl Default for Controller {
@@ -71,6 +77,7 @@ impl Default for Controller {
             v_min: 0.05,
             margin: 0.02,
             predict_horizon: 2.0,
+            person_speed: 0.3,
         }
     }
 }
@@ -171,6 +178,51 @@ impl Controller {
             }
         }
         true
+    }
+
+    /// Whether driving `twist` for one period and then braking to rest keeps the body
+    /// `margin` clear of every remembered hit off the prior map grown by how far a person
+    /// could walk (`person_speed`) by then: the worst case of a person the tracker does
+    /// not follow.
+    #[must_use]
+    pub fn loose_clear(
+        &self,
+        robot: &Robot,
+        pose: Pose,
+        twist: Twist,
+        memory: &ObstacleMemory,
+        tick: u64,
+    ) -> bool {
+        if twist.v <= 0.0 {
+            return true;
+        }
+        let dt = self.period();
+        let rest = dt + twist.v / robot.acc_v;
+        let step = 0.05;
+        let n = (rest / step).ceil() as usize;
+        (0..=n).all(|s| {
+            let tau = (s as f64 * step).min(rest);
+            // Distance along the arc by tau: full speed, then braking.
+            let dist = if tau <= dt {
+                twist.v * tau
+            } else {
+                let b = tau - dt;
+                twist.v * dt + twist.v * b - robot.acc_v * b * b / 2.0
+            };
+            let p = kinematics::integrate(
+                pose,
+                Twist {
+                    v: 1.0,
+                    omega: twist.omega / twist.v,
+                },
+                dist,
+            );
+            !memory.loose_within(
+                Point2::new(p.x, p.y),
+                robot.body_radius + self.margin + self.person_speed * tau,
+                tick,
+            )
+        })
     }
 
     /// Seconds from now until the robot, driving `twist` for `hold` s and then braking to
@@ -325,6 +377,8 @@ impl Controller {
         let mut obstructed = false;
         if !self.arc_clear(robot, pose, twist, memory, tick) {
             obstructed = true;
+            twist = brake(self);
+        } else if !self.loose_clear(robot, pose, twist, memory, tick) {
             twist = brake(self);
         } else if self
             .mover_contact(robot, pose, twist, dt, f64::INFINITY, true, movers)

@@ -72,6 +72,8 @@ pub struct ObstacleMemory {
     latest: Option<Scan>,
     /// Memory length, ticks.
     keep: u64,
+    /// Cells the static prior map explains (see [`ObstacleMemory::with_prior`]).
+    explained: Vec<bool>,
     obstacle_range: f64,
 }
 
@@ -86,6 +88,7 @@ impl ObstacleMemory {
             height,
             origin: bounds.min,
             stamp: vec![0; width * height],
+            explained: vec![false; width * height],
             point: vec![[0.0; 2]; width * height],
             recent: Vec::new(),
             latest: None,
@@ -99,6 +102,41 @@ impl ObstacleMemory {
         let v = (p.y - self.origin.y) / MEMORY_RESOLUTION;
         (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
             .then_some((u as usize, v as usize))
+    }
+
+    /// The same memory, told which cells the static prior map `mapped` explains, so that
+    /// [`ObstacleMemory::loose_within`] can tell hits that may be people.
+    #[must_use]
+    pub fn with_prior(mut self, bounds: Bounds, mapped: &StaticWorld) -> Self {
+        let (w, h, explained) = crate::tracking::static_prior(bounds, mapped, MEMORY_RESOLUTION);
+        if (w, h) == (self.width, self.height) {
+            self.explained = explained;
+        }
+        self
+    }
+
+    /// Whether a remembered hit that the static prior does not explain (maybe a person)
+    /// lies within `radius` of `p` at `tick`.
+    #[must_use]
+    pub fn loose_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
+        let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
+        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
+        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
+        for j in (cj - r).max(0)..=(cj + r).min(self.height as i64 - 1) {
+            for i in (ci - r).max(0)..=(ci + r).min(self.width as i64 - 1) {
+                let c = j as usize * self.width + i as usize;
+                if self.stamp[c] == 0 || self.explained[c] {
+                    continue;
+                }
+                if self
+                    .valid(c, tick)
+                    .is_some_and(|q| (q - p).norm() <= radius)
+                {
+                    return true;
+                }
+            }
+        }
+        false
     }
 
     /// Records the hits of a scan taken at `tick`.

@@ -70,7 +70,8 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
     let mut noise_rng = stream(seed, NOISE_STREAM);
     let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
     let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
-    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range);
+    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
+        .with_prior(world.bounds, &world.mapped);
     let mut tracker = Tracker::new(
         world.bounds,
         &world.mapped,

@@ -50,8 +50,32 @@ pub const MAX_SPEED: f64 = 2.0;
 /// Tracks slower than this are left to the obstacle memory (a static thing off the prior
 /// map, whose centroid wanders a little as the robot moves), m/s.
 pub const MIN_SPEED: f64 = 0.05;
-/// Side of the static-prior grid, m.
-const STATIC_RES: f64 = 0.05;
+/// Side of the static-prior grid, m (the obstacle memory's cells).
+pub const STATIC_RES: f64 = crate::costmap::MEMORY_RESOLUTION;
+
+/// The cells of a `res`-sided grid over `bounds` within about a cell of the static
+/// geometry `mapped` (its rasterisation dilated by one cell), and the grid's rim (nothing
+/// walks there): (columns, rows, cells). A hit in such a cell is explained by the prior
+/// map.
+#[must_use]
+pub fn static_prior(bounds: Bounds, mapped: &StaticWorld, res: f64) -> (usize, usize, Vec<bool>) {
+    let (width, height, cells) = rasterize(bounds, mapped, res);
+    let mut prior = vec![false; width * height];
+    for j in 0..height {
+        for i in 0..width {
+            if i == 0 || j == 0 || i + 1 == width || j + 1 == height {
+                prior[j * width + i] = true;
+            }
+            if cells[j * width + i] {
+                for jj in j.saturating_sub(1)..(j + 2).min(height) {
+                    prior[jj * width + i.saturating_sub(1)..jj * width + (i + 2).min(width)]
+                        .fill(true);
+                }
+            }
+        }
+    }
+    (width, height, prior)
+}
 
 /// A moving obstacle as the controller sees it: a disc that covers the track's last
 /// hits, moving at the track's velocity.
@@ -152,23 +176,7 @@ impl Tracker {
     /// from the scanner are ignored; time is counted in ticks of `1 / ticks_per_s` s.
     #[must_use]
     pub fn new(bounds: Bounds, mapped: &StaticWorld, range: f64, ticks_per_s: f64) -> Self {
-        let (width, height, cells) = rasterize(bounds, mapped, STATIC_RES);
-        // Dilated by one cell once here, so that a hit needs one look-up: a hit within a
-        // cell of the prior's cells, or on the grid's rim, is static.
-        let mut prior = vec![false; width * height];
-        for j in 0..height {
-            for i in 0..width {
-                if i == 0 || j == 0 || i + 1 == width || j + 1 == height {
-                    prior[j * width + i] = true;
-                }
-                if cells[j * width + i] {
-                    for jj in j.saturating_sub(1)..(j + 2).min(height) {
-                        prior[jj * width + i.saturating_sub(1)..jj * width + (i + 2).min(width)]
-                            .fill(true);
-                    }
-                }
-            }
-        }
+        let (width, height, prior) = static_prior(bounds, mapped, STATIC_RES);
         Self {
             width,
             height,
