@@ -97,7 +97,7 @@ fn unreachable_goal_exits_1() {
 /// Each bad scenario, and what the message must name (file, field, value).
 #[test]
 fn bad_scenarios_exit_2_naming_field_and_value() {
-    let cases: [(&str, String, &[&str]); 6] = [
+    let cases: [(&str, String, &[&str]); 8] = [
         (
             "unknown.ron",
             hall("", "\n    colour: 3,", "(0.5, 1.5)"),
@@ -122,6 +122,16 @@ fn bad_scenarios_exit_2_naming_field_and_value() {
             "outside.ron",
             hall("", "", "(7.0, 1.5)"),
             &["outside.ron", "start", "(7, 1.5)", "outside the world"],
+        ),
+        (
+            "goal_inside.ron",
+            hall("", "", "(0.5, 1.5)").replace("goal: (5.5, 1.5)", "goal: (3.0, 0.6)"),
+            &["goal_inside.ron", "goal", "(3, 0.6)", "inside an obstacle"],
+        ),
+        (
+            "goal_outside.ron",
+            hall("", "", "(0.5, 1.5)").replace("goal: (5.5, 1.5)", "goal: (5.5, 4.0)"),
+            &["goal_outside.ron", "goal", "(5.5, 4)", "outside the world"],
         ),
         (
             "path.ron",

@@ -13,16 +13,28 @@
 //!    (radius below `regulate_radius`) and near the goal (`approach_distance`);
 //! 4. limits: `|omega| <= omega_max` (keeping the curvature), acceleration limits against
 //!    the previous command, wheel saturation through eq. (4);
-//! 5. safety: the arc the command drives, out to the distance needed to stop plus one
-//!    control period, must keep `body_radius + margin` from every remembered laser hit;
-//!    otherwise the robot brakes as hard as it may (turning in place is always allowed:
-//!    the body is round).
+//! 5. people: among the speeds `v, 3v/4, v/2, v/4, 0` on the same curvature, the fastest
+//!    whose constant roll-out over `predict_horizon` meets no tracked mover
+//!    ([`crate::tracking`]: people's velocities from successive scans) is wanted, else the
+//!    one that meets a mover latest: the robot yields to a person about to cross its way
+//!    instead of driving into their path;
+//! 6. safety: the arc the command drives, out to the distance needed to stop plus one
+//!    control period, must keep `body_radius + margin` from every remembered laser hit,
+//!    and that clearance plus `person_speed` times the time to get there from every
+//!    remembered hit the prior map does not explain (a person the tracker lost),
+//!    and the same motion (the command for one period, then braking to rest on its
+//!    curvature) must keep that clearance from every mover swept along its velocity
+//!    until the robot is at rest; otherwise the robot brakes as hard as it may, unless
+//!    braking itself would meet a mover while still moving and driving on at full speed
+//!    for `predict_horizon` would not (turning in place is always allowed: the body is
+//!    round).
 
 use hyplan_core::Point2;
 use serde::{Deserialize, Serialize};
 
 use crate::costmap::ObstacleMemory;
 use crate::kinematics::{self, Pose, Robot, Twist};
+use crate::tracking::Mover;
 
 /// Controller parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -44,6 +56,13 @@ pub struct Controller {
     pub v_min: f64,
     /// Clearance kept between the body and any laser hit on the arc ahead, m (0.02).
     pub margin: f64,
+    /// How far ahead in time the robot looks for people crossing its way, s (2.0: about
+    /// the 1.7 s roll-out of the tutorial's `base_local_planner`).
+    pub predict_horizon: f64,
+    /// The fastest a person is assumed to walk, m/s (0.3, the robot's top speed): a
+    /// remembered hit off the prior map may be a person, untracked (out of view at the
+    /// robot's side, half hidden), who may reach this far while the robot comes to rest.
+    pub person_speed: f64,
 }
 
 impl Default for Controller {
@@ -57,6 +76,8 @@ impl Default for Controller {
             approach_distance: 0.6,
             v_min: 0.05,
             margin: 0.02,
+            predict_horizon: 2.0,
+            person_speed: 0.3,
         }
     }
 }
@@ -159,6 +180,142 @@ impl Controller {
         true
     }
 
+    /// Whether driving `twist` for one period and then braking to rest keeps the body
+    /// `margin` clear of every remembered hit off the prior map grown by how far a person
+    /// could walk (`person_speed`) by then: the worst case of a person the tracker does
+    /// not follow.
+    #[must_use]
+    pub fn loose_clear(
+        &self,
+        robot: &Robot,
+        pose: Pose,
+        twist: Twist,
+        memory: &ObstacleMemory,
+        tick: u64,
+    ) -> bool {
+        if twist.v <= 0.0 {
+            return true;
+        }
+        let dt = self.period();
+        let rest = dt + twist.v / robot.acc_v;
+        let step = 0.05;
+        let n = (rest / step).ceil() as usize;
+        (0..=n).all(|s| {
+            let tau = (s as f64 * step).min(rest);
+            // Distance along the arc by tau: full speed, then braking.
+            let dist = if tau <= dt {
+                twist.v * tau
+            } else {
+                let b = tau - dt;
+                twist.v * dt + twist.v * b - robot.acc_v * b * b / 2.0
+            };
+            let p = kinematics::integrate(
+                pose,
+                Twist {
+                    v: 1.0,
+                    omega: twist.omega / twist.v,
+                },
+                dist,
+            );
+            !memory.loose_within(
+                Point2::new(p.x, p.y),
+                robot.body_radius + self.margin + self.person_speed * tau,
+                tick,
+            )
+        })
+    }
+
+    /// Seconds from now until the robot, driving `twist` for `hold` s and then braking to
+    /// rest on the same curvature, comes within `body_radius + margin` of a mover swept
+    /// along its velocity; only times within `horizon` are looked at, and with
+    /// `while_moving` only those before the robot is at rest.
+    #[allow(clippy::too_many_arguments)]
+    #[must_use]
+    pub fn mover_contact(
+        &self,
+        robot: &Robot,
+        pose: Pose,
+        twist: Twist,
+        hold: f64,
+        horizon: f64,
+        while_moving: bool,
+        movers: &[Mover],
+    ) -> Option<f64> {
+        if movers.is_empty() || (while_moving && twist.v <= 0.0) {
+            return None;
+        }
+        let stop = twist.v / robot.acc_v;
+        let rest = hold + stop;
+        let end = if while_moving {
+            horizon.min(rest)
+        } else {
+            horizon
+        };
+        let step = 0.025;
+        let n = (end / step).ceil().max(1.0) as usize;
+        let mut p = pose;
+        let mut t = 0.0;
+        for s in 0..=n {
+            let tau = (s as f64 * step).min(end);
+            // Advance from t to tau: hold, then decelerate (curvature kept), then rest.
+            while t < tau - 1e-12 {
+                let (v, dt) = if t < hold {
+                    (twist.v, (hold - t).min(tau - t))
+                } else if t < rest {
+                    // Exact over a short step: mean speed over the step.
+                    let dt = (rest - t).min(tau - t).min(step);
+                    let v0 = twist.v - robot.acc_v * (t - hold);
+                    (v0 - robot.acc_v * dt / 2.0, dt)
+                } else {
+                    (0.0, tau - t)
+                };
+                let omega = if twist.v > 0.0 {
+                    twist.omega * v / twist.v
+                } else {
+                    twist.omega
+                };
+                p = kinematics::integrate(p, Twist { v, omega }, dt);
+                t += dt;
+            }
+            let here = Point2::new(p.x, p.y);
+            let clear = robot.body_radius + self.margin;
+            if movers
+                .iter()
+                .any(|m| (m.at(tau) - here).norm() < clear + m.radius)
+            {
+                return Some(tau);
+            }
+        }
+        None
+    }
+
+    /// The wanted speed on `want`'s curvature that yields to movers: the fastest of
+    /// `v, 3v/4, v/2, v/4, 0` whose constant roll-out over `predict_horizon` meets no
+    /// mover, else the one that meets a mover latest.
+    fn yield_to(&self, robot: &Robot, pose: Pose, want: Twist, movers: &[Mover]) -> Twist {
+        if movers.is_empty() || want.v <= 0.0 {
+            return want;
+        }
+        let h = self.predict_horizon;
+        let mut best = (want, -1.0);
+        for f in [1.0, 0.75, 0.5, 0.25, 0.0] {
+            let c = Twist {
+                v: want.v * f,
+                omega: want.omega * f,
+            };
+            let meet = self
+                .mover_contact(robot, pose, c, h, h, false, movers)
+                .unwrap_or(f64::INFINITY);
+            if meet > best.1 {
+                best = (c, meet);
+            }
+            if meet.is_infinite() {
+                break;
+            }
+        }
+        best.0
+    }
+
     /// One control step toward the end of `path` (at least two points), from segment
     /// `progress` on. Returns the command and the new progress index.
     #[allow(clippy::too_many_arguments)]
@@ -171,6 +328,7 @@ impl Controller {
         path: &[Point2],
         progress: usize,
         memory: &ObstacleMemory,
+        movers: &[Mover],
         tick: u64,
     ) -> (Command, usize) {
         let here = Point2::new(pose.x, pose.y);
@@ -203,18 +361,57 @@ impl Controller {
                 omega: v * kappa,
             }
         };
+        let want = self.yield_to(robot, pose, want, movers);
         let mut twist = self.limit(robot, prev, want);
-        let mut obstructed = false;
-        if !self.arc_clear(robot, pose, twist, memory, tick) {
-            obstructed = true;
-            // Brake as hard as allowed, keep turning toward the carrot.
-            let v = (prev.v - robot.acc_v * self.period()).max(0.0);
+        let dt = self.period();
+        let brake = |this: &Self| {
+            // Brake as hard as allowed, keep the curvature.
+            let v = (prev.v - robot.acc_v * dt).max(0.0);
             let omega = if v > 0.0 && prev.v > 0.0 {
                 prev.omega * v / prev.v
             } else {
                 0.0
             };
-            twist = self.limit(robot, prev, Twist { v, omega });
+            this.limit(robot, prev, Twist { v, omega })
+        };
+        let mut obstructed = false;
+        if !self.arc_clear(robot, pose, twist, memory, tick) {
+            obstructed = true;
+            twist = brake(self);
+        } else if !self.loose_clear(robot, pose, twist, memory, tick) {
+            twist = brake(self);
+        } else if self
+            .mover_contact(robot, pose, twist, dt, f64::INFINITY, true, movers)
+            .is_some()
+        {
+            let stop = brake(self);
+            let h = self.predict_horizon;
+            let stop_meets = self
+                .mover_contact(robot, pose, stop, dt, f64::INFINITY, true, movers)
+                .is_some();
+            let on = self.limit(
+                robot,
+                prev,
+                Twist {
+                    v: robot.v_max,
+                    omega: if twist.v > 0.0 {
+                        twist.omega * robot.v_max / twist.v
+                    } else {
+                        0.0
+                    },
+                },
+            );
+            twist = if stop_meets
+                && on.v > 0.0
+                && self.arc_clear(robot, pose, on, memory, tick)
+                && self
+                    .mover_contact(robot, pose, on, h, h + on.v / robot.acc_v, true, movers)
+                    .is_none()
+            {
+                on
+            } else {
+                stop
+            };
         }
         (Command { twist, obstructed }, k)
     }

@@ -72,6 +72,8 @@ pub struct ObstacleMemory {
     latest: Option<Scan>,
     /// Memory length, ticks.
     keep: u64,
+    /// Cells the static prior map explains (see [`ObstacleMemory::with_prior`]).
+    explained: Vec<bool>,
     obstacle_range: f64,
 }
 
@@ -86,6 +88,7 @@ impl ObstacleMemory {
             height,
             origin: bounds.min,
             stamp: vec![0; width * height],
+            explained: vec![false; width * height],
             point: vec![[0.0; 2]; width * height],
             recent: Vec::new(),
             latest: None,
@@ -101,6 +104,41 @@ impl ObstacleMemory {
             .then_some((u as usize, v as usize))
     }
 
+    /// The same memory, told which cells the static prior map `mapped` explains, so that
+    /// [`ObstacleMemory::loose_within`] can tell hits that may be people.
+    #[must_use]
+    pub fn with_prior(mut self, bounds: Bounds, mapped: &StaticWorld) -> Self {
+        let (w, h, explained) = crate::tracking::static_prior(bounds, mapped, MEMORY_RESOLUTION);
+        if (w, h) == (self.width, self.height) {
+            self.explained = explained;
+        }
+        self
+    }
+
+    /// Whether a remembered hit that the static prior does not explain (maybe a person)
+    /// lies within `radius` of `p` at `tick`.
+    #[must_use]
+    pub fn loose_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
+        let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
+        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
+        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
+        for j in (cj - r).max(0)..=(cj + r).min(self.height as i64 - 1) {
+            for i in (ci - r).max(0)..=(ci + r).min(self.width as i64 - 1) {
+                let c = j as usize * self.width + i as usize;
+                if self.stamp[c] == 0 || self.explained[c] {
+                    continue;
+                }
+                if self
+                    .valid(c, tick)
+                    .is_some_and(|q| (q - p).norm() <= radius)
+                {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
     /// Records the hits of a scan taken at `tick`.
     pub fn insert(&mut self, scan: Scan, tick: u64) {
         let now = tick + 1;
@@ -113,7 +151,14 @@ impl ObstacleMemory {
             if scan.ranges[k] > self.obstacle_range {
                 continue;
             }
-            let Some(p) = scan.hit(k) else { continue };
+            // A beam too close to measure marks its shortest range: something is at
+            // the scanner.
+            let p = if scan.too_close(k) {
+                scan.origin + scan.directions[k] * scan.range_min
+            } else {
+                let Some(p) = scan.hit(k) else { continue };
+                p
+            };
             let Some((i, j)) = self.cell(p) else { continue };
             let c = j * self.width + i;
             if self.stamp[c] != now {
@@ -240,86 +285,13 @@ impl CostmapBuilder {
         params: CostmapParams,
         body_radius: f64,
     ) -> Self {
-        let res = params.resolution;
-        let width = (bounds.width() / res).ceil().max(1.0) as usize;
-        let height = (bounds.height() / res).ceil().max(1.0) as usize;
-        let origin = bounds.min;
-        let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
-        let mut prior = vec![false; width * height];
-        // Each shape marks the cells of its bounding box that it reaches into.
-        let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
-            let a = ((lo - o) / res).floor().max(0.0) as usize;
-            let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
-            a..b.max(a)
-        };
-        let centre = |i: usize, j: usize| {
-            Point2::new(
-                origin.x + (i as f64 + 0.5) * res,
-                origin.y + (j as f64 + 0.5) * res,
-            )
-        };
-        let mut mark_box = |lo: Point2, hi: Point2, hit: &dyn Fn(Point2) -> bool| {
-            for j in cell_range(lo.y, hi.y, origin.y, height) {
-                for i in cell_range(lo.x, hi.x, origin.x, width) {
-                    if !prior[j * width + i] && hit(centre(i, j)) {
-                        prior[j * width + i] = true;
-                    }
-                }
-            }
-        };
-        let pad = nalgebra::Vector2::new(half_diag, half_diag);
-        for s in &mapped.segments {
-            let lo = Point2::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)) - pad;
-            let hi = Point2::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)) + pad;
-            mark_box(lo, hi, &|c| {
-                (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag
-            });
-        }
-        for poly in &mapped.polygons {
-            let lo = poly
-                .iter()
-                .fold(Point2::new(f64::INFINITY, f64::INFINITY), |m, p| {
-                    Point2::new(m.x.min(p.x), m.y.min(p.y))
-                });
-            let hi = poly
-                .iter()
-                .fold(Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, p| {
-                    Point2::new(m.x.max(p.x), m.y.max(p.y))
-                });
-            mark_box(lo, hi, &|c| crate::world::point_in_polygon(c, poly));
-        }
-        for d in &mapped.discs {
-            let r = nalgebra::Vector2::new(d.radius, d.radius) + pad;
-            mark_box(d.center - r, d.center + r, &|c| {
-                (c - d.center).norm() <= d.radius + half_diag
-            });
-        }
-        if let Some(g) = &mapped.grid {
-            // Every costmap cell a forbidden grid cell overlaps (sampled at the grid's
-            // corners and centre) is lethal.
-            for gj in 0..g.height() {
-                for gi in 0..g.width() {
-                    if g.cell_zone(gi, gj) != Zone::Forbidden {
-                        continue;
-                    }
-                    let c = g.cell_center(gi, gj);
-                    let h = g.resolution() / 2.0 * 0.999;
-                    for (dx, dy) in [(0.0, 0.0), (-h, -h), (h, -h), (-h, h), (h, h)] {
-                        let u = (c.x + dx - origin.x) / res;
-                        let v = (c.y + dy - origin.y) / res;
-                        if u >= 0.0 && v >= 0.0 && (u as usize) < width && (v as usize) < height {
-                            prior[v as usize * width + u as usize] = true;
-                        }
-                    }
-                }
-            }
-        }
+        let (width, height, prior) = rasterize(bounds, mapped, params.resolution);
         Self {
             params,
             body_radius,
             width,
             height,
-            origin,
+            origin: bounds.min,
             prior,
         }
     }
@@ -393,4 +365,86 @@ impl CostmapBuilder {
             .expect("the builder's own size and frame are valid");
         Costmap { costs, map }
     }
+}
+
+/// The cells of a `res`-sided grid over `bounds` that the static geometry `mapped` reaches
+/// into (a cell whose centre lies within half a cell diagonal of an obstacle, or a cell a
+/// forbidden cell of a loaded map overlaps): (columns, rows, row-major cells from the
+/// bottom row).
+#[must_use]
+pub fn rasterize(bounds: Bounds, mapped: &StaticWorld, res: f64) -> (usize, usize, Vec<bool>) {
+    let width = (bounds.width() / res).ceil().max(1.0) as usize;
+    let height = (bounds.height() / res).ceil().max(1.0) as usize;
+    let origin = bounds.min;
+    let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
+    let mut prior = vec![false; width * height];
+    // Each shape marks the cells of its bounding box that it reaches into.
+    let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
+        let a = ((lo - o) / res).floor().max(0.0) as usize;
+        let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
+        a..b.max(a)
+    };
+    let centre = |i: usize, j: usize| {
+        Point2::new(
+            origin.x + (i as f64 + 0.5) * res,
+            origin.y + (j as f64 + 0.5) * res,
+        )
+    };
+    let mut mark_box = |lo: Point2, hi: Point2, hit: &dyn Fn(Point2) -> bool| {
+        for j in cell_range(lo.y, hi.y, origin.y, height) {
+            for i in cell_range(lo.x, hi.x, origin.x, width) {
+                if !prior[j * width + i] && hit(centre(i, j)) {
+                    prior[j * width + i] = true;
+                }
+            }
+        }
+    };
+    let pad = nalgebra::Vector2::new(half_diag, half_diag);
+    for s in &mapped.segments {
+        let lo = Point2::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)) - pad;
+        let hi = Point2::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)) + pad;
+        mark_box(lo, hi, &|c| {
+            (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag
+        });
+    }
+    for poly in &mapped.polygons {
+        let lo = poly
+            .iter()
+            .fold(Point2::new(f64::INFINITY, f64::INFINITY), |m, p| {
+                Point2::new(m.x.min(p.x), m.y.min(p.y))
+            });
+        let hi = poly
+            .iter()
+            .fold(Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, p| {
+                Point2::new(m.x.max(p.x), m.y.max(p.y))
+            });
+        mark_box(lo, hi, &|c| crate::world::point_in_polygon(c, poly));
+    }
+    for d in &mapped.discs {
+        let r = nalgebra::Vector2::new(d.radius, d.radius) + pad;
+        mark_box(d.center - r, d.center + r, &|c| {
+            (c - d.center).norm() <= d.radius + half_diag
+        });
+    }
+    if let Some(g) = &mapped.grid {
+        // Every costmap cell a forbidden grid cell overlaps (sampled at the grid's
+        // corners and centre) is lethal.
+        for gj in 0..g.height() {
+            for gi in 0..g.width() {
+                if g.cell_zone(gi, gj) != Zone::Forbidden {
+                    continue;
+                }
+                let c = g.cell_center(gi, gj);
+                let h = g.resolution() / 2.0 * 0.999;
+                for (dx, dy) in [(0.0, 0.0), (-h, -h), (h, -h), (-h, h), (h, h)] {
+                    let u = (c.x + dx - origin.x) / res;
+                    let v = (c.y + dy - origin.y) / res;
+                    if u >= 0.0 && v >= 0.0 && (u as usize) < width && (v as usize) < height {
+                        prior[v as usize * width + u as usize] = true;
+                    }
+                }
+            }
+        }
+    }
+    (width, height, prior)
 }

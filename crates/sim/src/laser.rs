@@ -62,19 +62,29 @@ pub struct Scan {
     pub angle_min: f64,
     /// Angle between neighbouring beams, rad.
     pub angle_increment: f64,
-    /// Range per beam, m; `f64::INFINITY` when nothing was hit within the valid range.
+    /// Range per beam, m, as ROS's REP 117 has it: `f64::INFINITY` when nothing was hit
+    /// within `range_max`, `f64::NEG_INFINITY` when the hit was closer than `range_min`
+    /// (something is at the scanner: a reader must not take the beam for a clear view).
     pub ranges: Vec<f64>,
+    /// The scanner's shortest valid range, m.
+    pub range_min: f64,
+    /// Unit direction of each beam in the world frame (beam `k` points at
+    /// `angle_min + k angle_increment`), kept so that readers need no trigonometry.
+    pub directions: Vec<Vector2<f64>>,
 }
 
 impl Scan {
-    /// The world point a beam hit, if it hit something.
+    /// Whether beam `k` met something closer than the scanner's shortest range.
+    #[must_use]
+    pub fn too_close(&self, k: usize) -> bool {
+        self.ranges[k] == f64::NEG_INFINITY
+    }
+
+    /// The world point a beam hit, if it hit something within the valid range.
     #[must_use]
     pub fn hit(&self, k: usize) -> Option<Point2> {
         let r = self.ranges[k];
-        r.is_finite().then(|| {
-            let a = self.angle_min + k as f64 * self.angle_increment;
-            self.origin + Vector2::new(a.cos(), a.sin()) * r
-        })
+        r.is_finite().then(|| self.origin + self.directions[k] * r)
     }
 
     /// The beam pointing nearest to world direction `angle`, if inside the field of view.
@@ -137,7 +147,8 @@ impl LaserModel {
     }
 
     /// Exact ranges from `origin` looking along `heading`: the distance to the first
-    /// obstacle on each beam, `INFINITY` when that is outside `[range_min, range_max]`.
+    /// obstacle on each beam; `INFINITY` beyond `range_max`, `NEG_INFINITY` below
+    /// `range_min` (REP 117).
     #[must_use]
     pub fn cast(&self, world: &StaticWorld, people: &[Disc], origin: Point2, heading: f64) -> Scan {
         let n = self.local.len();
@@ -216,7 +227,9 @@ impl LaserModel {
         }
         let (lo, hi) = (self.laser.range_min, self.laser.range_max);
         for r in &mut ranges {
-            if !(*r >= lo && *r <= hi) {
+            if *r < lo {
+                *r = f64::NEG_INFINITY;
+            } else if *r > hi {
                 *r = f64::INFINITY;
             }
         }
@@ -225,6 +238,8 @@ impl LaserModel {
             angle_min: theta0,
             angle_increment: self.inc,
             ranges,
+            range_min: lo,
+            directions: dirs,
         }
     }
 

@@ -19,6 +19,7 @@
 //! - [`costmap`]: [`CostmapParams`], [`CostmapBuilder`], [`Costmap`], [`ObstacleMemory`].
 //! - [`planner`]: [`GlobalPlanner`]: Dijkstra on the costmap, or any [`hyplan_core::Planner`].
 //! - [`control`]: [`Controller`]: regulated pure pursuit with a collision check.
+//! - [`tracking`]: [`Tracker`], [`Mover`]: people's velocities from successive scans.
 //! - [`navigator`]: [`Navigation`], [`Navigator`], [`NavEvent`], [`NavState`].
 //! - [`scenario`]: [`Scenario`] (RON files), [`ScenarioError`].
 //! - [`run()`]: the simulation loop, [`Outcome`], [`TICKS_PER_SECOND`].
@@ -68,6 +69,7 @@ pub mod replay;
 mod run;
 pub mod scenario;
 pub mod soak;
+pub mod tracking;
 pub mod world;
 
 pub use control::{Command, Controller};
@@ -83,4 +85,5 @@ pub use planner::GlobalPlanner;
 pub use record::{Contact, ContactClass, Event, EventKind, Row, Summary, Trace, write_all};
 pub use run::{NOISE_STREAM, Outcome, PLANNER_STREAM, TICKS_PER_SECOND, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
+pub use tracking::{Mover, Tracker};
 pub use world::{Person, Shape, StaticWorld, Walk, World};

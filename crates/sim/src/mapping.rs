@@ -67,8 +67,11 @@ pub struct OccupancyGrid {
     width: usize,
     height: usize,
     origin: Point2,
+    /// Log-odds per cell; `-0.0` marks a cell no beam has crossed yet. A crossed cell
+    /// can never hold `-0.0` (`l_hit > 0 > l_miss`, and a sum is `-0.0` only when both
+    /// terms are), and `-0.0 + x = x`, so the first update needs no special case and the
+    /// walk touches one array.
     logodds: Vec<f32>,
-    seen: Vec<bool>,
 }
 
 impl OccupancyGrid {
@@ -82,8 +85,7 @@ impl OccupancyGrid {
             width,
             height,
             origin: bounds.min,
-            logodds: vec![0.0; width * height],
-            seen: vec![false; width * height],
+            logodds: vec![-0.0; width * height],
         }
     }
 
@@ -109,9 +111,10 @@ impl OccupancyGrid {
     #[must_use]
     pub fn value(&self, i: usize, j: usize) -> i8 {
         let k = j * self.width + i;
-        if !self.seen[k] {
+        let l = self.logodds[k];
+        if l == 0.0 && l.is_sign_negative() {
             UNKNOWN
-        } else if self.logodds[k] > 0.0 {
+        } else if l > 0.0 {
             OCCUPIED
         } else {
             FREE
@@ -141,13 +144,16 @@ impl OccupancyGrid {
         let max = self.params.max_range;
         for k in 0..scan.ranges.len() {
             let r = scan.ranges[k];
-            let a = scan.angle_min + k as f64 * scan.angle_increment;
+            if r == f64::NEG_INFINITY {
+                // Too close to measure: the beam says nothing about the cells beyond.
+                continue;
+            }
             let (hit, len) = if r.is_finite() && r <= max {
                 (true, r)
             } else {
                 (false, max)
             };
-            let end = scan.origin + nalgebra::Vector2::new(a.cos(), a.sin()) * len;
+            let end = scan.origin + scan.directions[k] * len;
             self.trace(scan.origin, end, hit);
         }
     }
@@ -188,24 +194,23 @@ impl OccupancyGrid {
         };
         let steps = (ei - i).abs() + (ej - j).abs();
         let (w, h) = (self.width as i64, self.height as i64);
-        let (miss, lo, hi) = (
-            self.params.l_miss as f32,
-            self.params.l_min as f32,
-            self.params.l_max as f32,
-        );
+        let (miss, lo) = (self.params.l_miss as f32, self.params.l_min as f32);
+        // Both ends inside (the usual case): no bounds test per cell. Misses only lower a
+        // cell's log-odds, so only the lower clamp applies.
+        let inside = |i: i64, j: i64| i >= 0 && j >= 0 && i < w && j < h;
+        let checked = !(inside(i, j) && inside(ei, ej));
         for _ in 0..steps {
-            if i >= 0 && j >= 0 && i < w && j < h {
-                let k = (j * w + i) as usize;
-                self.seen[k] = true;
-                self.logodds[k] = (self.logodds[k] + miss).clamp(lo, hi);
+            if !checked || inside(i, j) {
+                let l = &mut self.logodds[(j * w + i) as usize];
+                *l = (*l + miss).max(lo);
             }
-            if t_x < t_y {
-                i += si;
-                t_x += t_dx;
-            } else {
-                j += sj;
-                t_y += t_dy;
-            }
+            // Written as selects: which axis steps next is a coin toss for the branch
+            // predictor.
+            let step_x = t_x < t_y;
+            i += if step_x { si } else { 0 };
+            j += if step_x { 0 } else { sj };
+            t_x = if step_x { t_x + t_dx } else { t_x };
+            t_y = if step_x { t_y } else { t_y + t_dy };
         }
         let last = if hit {
             self.params.l_hit
@@ -220,7 +225,6 @@ impl OccupancyGrid {
             return;
         }
         let k = j as usize * self.width + i as usize;
-        self.seen[k] = true;
         let l = f64::from(self.logodds[k]) + dl;
         self.logodds[k] = l.clamp(self.params.l_min, self.params.l_max) as f32;
     }

@@ -24,6 +24,7 @@ use crate::costmap::{CostmapBuilder, ObstacleMemory};
 use crate::kinematics::{Pose, Robot, Twist};
 use crate::mapping::OccupancyGrid;
 use crate::planner::GlobalPlanner;
+use crate::tracking::Mover;
 
 /// Navigator parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -194,14 +195,15 @@ impl Navigator {
         }
     }
 
-    /// One control step at `tick`. `prev` is the command in force; `ticks_per_s`
-    /// converts durations. Returns the new command; events are appended to `events`.
+    /// One control step at `tick`. `prev` is the command in force; `movers` are the
+    /// tracked moving obstacles; `ticks_per_s` converts durations. Returns the new command; events are appended to `events`.
     #[allow(clippy::too_many_arguments)]
     pub fn step(
         &mut self,
         pose: Pose,
         prev: Twist,
         memory: &ObstacleMemory,
+        movers: &[Mover],
         built: Option<&OccupancyGrid>,
         tick: u64,
         ticks_per_s: f64,
@@ -268,6 +270,7 @@ impl Navigator {
             &self.path,
             self.progress,
             memory,
+            movers,
             tick,
         );
         self.progress = k;

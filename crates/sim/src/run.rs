@@ -19,6 +19,7 @@ use crate::navigator::{NavEvent, NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::record::{Contact, ContactClass, Event, EventKind, Row, Summary, Trace};
 use crate::scenario::Scenario;
+use crate::tracking::Tracker;
 use crate::world::World;
 
 /// Simulation ticks per second.
@@ -69,7 +70,14 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
     let mut noise_rng = stream(seed, NOISE_STREAM);
     let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
     let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
-    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range);
+    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
+        .with_prior(world.bounds, &world.mapped);
+    let mut tracker = Tracker::new(
+        world.bounds,
+        &world.mapped,
+        scenario.costmap.obstacle_range,
+        TICKS_PER_SECOND as f64,
+    );
     let costmaps = CostmapBuilder::new(
         world.bounds,
         &world.mapped,
@@ -97,6 +105,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
     let mut events = Vec::new();
     let mut plans = Vec::new();
     let mut in_contact_static = false;
+    let mut near: Option<(Point2, f64)> = None;
     let mut in_contact_person = vec![false; world.people.len()];
     let mut contacts = Vec::new();
     let mut travel_time = None;
@@ -114,6 +123,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
             if tick % map_every == 0 {
                 map.integrate(&scan);
             }
+            tracker.update(&scan, tick);
             memory.insert(scan, tick);
         }
         let mut done = false;
@@ -124,6 +134,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
                 pose,
                 twist,
                 &memory,
+                &tracker.movers(tick),
                 Some(&map),
                 tick,
                 TICKS_PER_SECOND as f64,
@@ -145,7 +156,21 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
         }
         // Distances and contacts at this instant.
         let here = Point2::new(pose.x, pose.y);
-        let (d_wall, q_wall) = world.statics.nearest(here);
+        let record = tick % laser_every == 0 || done;
+        // The exact distance to the static world is needed on recorded ticks and when
+        // the robot may be touching: the last exact distance minus the distance moved
+        // since bounds it from below.
+        let exact = record
+            || near.is_none_or(|(p, d): (Point2, f64)| {
+                d - (here - p).norm() <= robot.body_radius + 0.01
+            });
+        let (d_wall, q_wall) = if exact {
+            let (d, q) = world.statics.nearest(here);
+            near = Some((here, d));
+            (d, q)
+        } else {
+            (f64::INFINITY, here)
+        };
         let d_wall = if d_wall < robot.body_radius && world.statics.inside(here) {
             -d_wall
         } else {
@@ -168,7 +193,12 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
                 ContactClass::NotApproaching
             }
         };
-        let touching = d_wall < 0.0;
+        // Off the exact ticks the state cannot have changed (see above).
+        let touching = if exact {
+            d_wall < 0.0
+        } else {
+            in_contact_static
+        };
         if touching && !in_contact_static {
             let c = Contact {
                 t,
@@ -201,7 +231,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
             }
             in_contact_person[k] = touching;
         }
-        if tick % laser_every == 0 || done {
+        if record {
             let w = kinematics::wheel_speeds(&robot, twist);
             rows.push(Row {
                 t,

@@ -3,3 +3,4 @@
 mod kinematics;
 mod laser;
 mod navigation;
+mod tracking;
