@@ -1,0 +1,501 @@
+//! Benchmarks of planners on a user's own problems: one record per run, the summary
+//! (success rate, median and inter-quartile range), the pairwise rank tests, and the
+//! runs as an OMPL benchmark log ([`ompl_log`]) that OMPL's `ompl_benchmark_statistics`
+//! loads into the same database as OMPL's own runs.
+//!
+//! A problem is a map and a query; an experiment is one problem and the planners run on
+//! it, as in OMPL. [`run_once`] plans and scores one run; [`summarise`] and [`compare`]
+//! reduce the runs; [`experiment_log`] writes them in OMPL's format.
+
+pub mod ompl_log;
+
+use std::collections::BTreeMap;
+use std::time::Instant;
+
+use hyplan_core::{Plan, PlanError, Planner, Query};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+
+use crate::stats::{Alternative, Verdict, decide_less, mann_whitney_u};
+use crate::{RunMetrics, Scoring, measure};
+use ompl_log::{Experiment, PlannerBlock, Property, PropertyType, Status, Value};
+
+/// One run of one planner on one problem, as the CSV, the JSON and the OMPL log hold it.
+#[derive(Debug, Clone, Serialize)]
+pub struct BenchRun {
+    /// Index of the problem (map and query) in the experiment list.
+    pub problem: usize,
+    /// The planner's label (its spec as given, e.g. `rrt-star:step=20`).
+    pub planner: String,
+    /// Run index, seed, success, times, final length, nodes, turns, explored nodes,
+    /// transfer time and minimum clearance, as the harness scores every run.
+    #[serde(flatten)]
+    pub metrics: RunMetrics,
+    /// Whether the planner returned a path reaching the goal region (before
+    /// post-processing; `metrics.success` also needs the post-processed curve free).
+    pub exact: bool,
+    /// How the planning call ended: `exact solution`, `timeout` (budget spent) or
+    /// `no path` (proved).
+    pub status: &'static str,
+    /// Wall time of the planning call alone, s (OMPL's `time`).
+    pub planning_time_s: f64,
+    /// Length of the planner's own path before post-processing (OMPL's `solution length`);
+    /// NaN without a path.
+    pub raw_length: f64,
+    /// Main-loop iterations of the planner.
+    pub iterations: u64,
+    /// Collision checks (`is_free` and `segment_free` calls) of the planner.
+    pub collision_checks: u64,
+    /// Largest discrete curvature of the final path, 1 / world unit (turning angle over
+    /// the mean of the two adjacent segment lengths); NaN without a path.
+    pub max_curvature: f64,
+}
+
+impl BenchRun {
+    /// The OMPL `status` enum value of the run.
+    #[must_use]
+    pub fn ompl_status(&self) -> Status {
+        match self.status {
+            "exact solution" => Status::ExactSolution,
+            "timeout" => Status::Timeout,
+            _ => Status::Unknown,
+        }
+    }
+}
+
+/// Plans one run with the RNG `ChaCha8Rng::seed_from_u64(seed)` and scores it.
+///
+/// Bad queries and parameters are the caller's to catch before the runs: here such an
+/// error is a failed run with status `no path`.
+#[must_use]
+pub fn run_once(
+    planner: &dyn Planner,
+    scoring: &Scoring<'_>,
+    query: &Query,
+    problem: usize,
+    label: &str,
+    run: u32,
+    seed: u64,
+) -> BenchRun {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let cpu = cpu_time::ThreadTime::try_now().ok();
+    let started = Instant::now();
+    let outcome: Result<Plan, PlanError> = planner.plan(scoring.ws, query, &mut rng);
+    let wall = started.elapsed().as_secs_f64();
+    let cpu_s = cpu.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+    let mut metrics = measure(scoring, &outcome, run, seed);
+    metrics.cpu_time_s = cpu_s;
+    let stats = match &outcome {
+        Ok(plan) => Some(plan.stats),
+        Err(e) => e.stats().copied(),
+    };
+    let status = match &outcome {
+        Ok(_) => "exact solution",
+        Err(PlanError::BudgetExhausted { .. }) => "timeout",
+        Err(_) => "no path",
+    };
+    let max_curvature = if metrics.path.len() >= 2 {
+        postproc::discrete_curvature(&metrics.path)
+            .into_iter()
+            .map(f64::abs)
+            .fold(0.0, f64::max)
+    } else {
+        f64::NAN
+    };
+    // `measure` leaves the time NaN for errors without statistics; the wall clock is the
+    // next best thing.
+    if metrics.time_s.is_nan() {
+        metrics.time_s = wall;
+    }
+    BenchRun {
+        problem,
+        planner: label.to_string(),
+        exact: outcome.is_ok(),
+        status,
+        planning_time_s: stats.map_or(wall, |s| s.elapsed.as_secs_f64()),
+        raw_length: outcome.as_ref().map_or(f64::NAN, Plan::length),
+        iterations: stats.map_or(0, |s| s.iterations),
+        collision_checks: stats.map_or(0, |s| s.collision_checks),
+        max_curvature,
+        metrics,
+    }
+}
+
+/// The `q`-quantile of sorted finite values, linearly interpolated (NumPy's default);
+/// NaN for no values.
+#[must_use]
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let pos = q.clamp(0.0, 1.0) * (sorted.len() - 1) as f64;
+    let lo = pos.floor() as usize;
+    let hi = pos.ceil() as usize;
+    sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)
+}
+
+/// Median and inter-quartile range of the finite values of a sample.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Spread {
+    /// Median (NaN for no values).
+    pub median: f64,
+    /// First quartile.
+    pub q1: f64,
+    /// Third quartile.
+    pub q3: f64,
+}
+
+impl Spread {
+    /// The spread of the finite values.
+    #[must_use]
+    pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
+        let mut v: Vec<f64> = values.into_iter().filter(|x| x.is_finite()).collect();
+        v.sort_by(f64::total_cmp);
+        Self {
+            median: quantile(&v, 0.5),
+            q1: quantile(&v, 0.25),
+            q3: quantile(&v, 0.75),
+        }
+    }
+
+    /// The inter-quartile range, q3 - q1.
+    #[must_use]
+    pub fn iqr(&self) -> f64 {
+        self.q3 - self.q1
+    }
+}
+
+/// One line of the summary table: a planner on a problem.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SummaryRow {
+    /// Problem index.
+    pub problem: usize,
+    /// Planner label.
+    pub planner: String,
+    /// Runs.
+    pub runs: usize,
+    /// Fraction of runs with a checked path.
+    pub success_rate: f64,
+    /// Time (planning and post-processing, wall clock) of every run, s.
+    pub time_s: Spread,
+    /// Final path length of the successful runs.
+    pub length: Spread,
+}
+
+/// The summary rows, in the order the (problem, planner) pairs first appear in `runs`.
+#[must_use]
+pub fn summarise(runs: &[BenchRun]) -> Vec<SummaryRow> {
+    groups(runs)
+        .into_iter()
+        .map(|((problem, planner), rs)| SummaryRow {
+            problem,
+            runs: rs.len(),
+            success_rate: rs.iter().filter(|r| r.metrics.success).count() as f64
+                / rs.len().max(1) as f64,
+            time_s: Spread::of(rs.iter().map(|r| r.metrics.time_s)),
+            length: Spread::of(
+                rs.iter()
+                    .filter(|r| r.metrics.success)
+                    .map(|r| r.metrics.length),
+            ),
+            planner,
+        })
+        .collect()
+}
+
+/// The runs grouped by (problem, planner label), groups in order of first appearance.
+#[must_use]
+pub fn groups(runs: &[BenchRun]) -> Vec<((usize, String), Vec<&BenchRun>)> {
+    let mut out: Vec<((usize, String), Vec<&BenchRun>)> = Vec::new();
+    for r in runs {
+        match out
+            .iter_mut()
+            .find(|((p, l), _)| *p == r.problem && *l == r.planner)
+        {
+            Some((_, v)) => v.push(r),
+            None => out.push(((r.problem, r.planner.clone()), vec![r])),
+        }
+    }
+    out
+}
+
+/// A two-sided Mann-Whitney U test of one metric between two planners, with the
+/// direction decided by [`decide_less`] (the test `cargo xtask reproduce` decides the
+/// papers' ordering claims with).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MetricTest {
+    /// Two-sided p-value; NaN when a side has no value.
+    pub p_value: f64,
+    /// Cliff's delta of the first planner against the second (negative: the first tends
+    /// to be smaller).
+    pub cliffs_delta: f64,
+    /// [`Verdict::Held`]: the first is significantly smaller; [`Verdict::NotHeld`]: the
+    /// second is; otherwise not significant or no data.
+    pub verdict: Verdict,
+}
+
+/// The comparison of two planners on one problem.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Comparison {
+    /// Problem index.
+    pub problem: usize,
+    /// First planner.
+    pub a: String,
+    /// Second planner.
+    pub b: String,
+    /// Time of every run (`time_s`).
+    pub time: MetricTest,
+    /// Final length of the successful runs.
+    pub length: MetricTest,
+}
+
+fn metric_test(x: &[f64], y: &[f64], alpha: f64) -> MetricTest {
+    let d = decide_less(x, y, alpha);
+    let two = mann_whitney_u(x, y, Alternative::TwoSided);
+    MetricTest {
+        p_value: two.map_or(f64::NAN, |t| t.p_value),
+        cliffs_delta: d.cliffs_delta,
+        verdict: d.verdict,
+    }
+}
+
+/// Every pair of planners on each problem, time and length compared at level `alpha`.
+#[must_use]
+pub fn compare(runs: &[BenchRun], alpha: f64) -> Vec<Comparison> {
+    let g = groups(runs);
+    let mut out = Vec::new();
+    for (i, ((pa, la), ra)) in g.iter().enumerate() {
+        for ((pb, lb), rb) in &g[i + 1..] {
+            if pa != pb {
+                continue;
+            }
+            let time = |rs: &[&BenchRun]| rs.iter().map(|r| r.metrics.time_s).collect::<Vec<_>>();
+            // Failed runs have NaN lengths, which the test leaves out.
+            let length = |rs: &[&BenchRun]| rs.iter().map(|r| r.metrics.length).collect::<Vec<_>>();
+            out.push(Comparison {
+                problem: *pa,
+                a: la.clone(),
+                b: lb.clone(),
+                time: metric_test(&time(ra), &time(rb), alpha),
+                length: metric_test(&length(ra), &length(rb), alpha),
+            });
+        }
+    }
+    out
+}
+
+/// The run properties of the OMPL log, sorted by name as OMPL sorts them, and how each
+/// is read off a run. OMPL's own names where OMPL has the measure (`time`, `solved`,
+/// `solution length`, `graph states`, `status`, ...), so our runs and OMPL's share columns.
+#[must_use]
+pub fn ompl_properties() -> Vec<(Property, fn(&BenchRun) -> Value)> {
+    use PropertyType::{Boolean, Enum, Integer, Real};
+    let mut props: Vec<(Property, fn(&BenchRun) -> Value)> = vec![
+        (Property::new("approximate solution", Boolean), |_| {
+            Value::Bool(false)
+        }),
+        (Property::new("collision checks", Integer), |r| {
+            Value::Int(i64::try_from(r.collision_checks).unwrap_or(i64::MAX))
+        }),
+        (Property::new("correct solution", Boolean), |r| {
+            if r.exact {
+                Value::Bool(r.metrics.success)
+            } else {
+                Value::None
+            }
+        }),
+        (Property::new("cpu time", Real), |r| {
+            Value::Real(r.metrics.cpu_time_s)
+        }),
+        (Property::new("graph states", Integer), |r| {
+            int_or_none(r.metrics.explored)
+        }),
+        (Property::new("iterations", Integer), |r| {
+            Value::Int(i64::try_from(r.iterations).unwrap_or(i64::MAX))
+        }),
+        (Property::new("max curvature", Real), |r| {
+            Value::Real(r.max_curvature)
+        }),
+        (Property::new("minimum clearance", Real), |r| {
+            Value::Real(r.metrics.min_clearance)
+        }),
+        (Property::new("path length", Real), |r| {
+            Value::Real(r.metrics.length)
+        }),
+        (Property::new("path nodes", Integer), |r| {
+            int_or_none(r.metrics.nodes)
+        }),
+        (Property::new("run index", Integer), |r| {
+            Value::Int(i64::from(r.metrics.run))
+        }),
+        (Property::new("solution length", Real), |r| {
+            Value::Real(r.raw_length)
+        }),
+        (Property::new("solved", Boolean), |r| {
+            Value::Bool(r.metrics.success)
+        }),
+        (Property::new("status", Enum), |r| {
+            Value::Int(r.ompl_status() as i64)
+        }),
+        (Property::new("time", Real), |r| {
+            Value::Real(r.planning_time_s)
+        }),
+        (Property::new("total time", Real), |r| {
+            Value::Real(r.metrics.time_s)
+        }),
+        (Property::new("transfer time", Real), |r| {
+            Value::Real(r.metrics.transfer_time_s)
+        }),
+        (Property::new("turns", Integer), |r| {
+            int_or_none(r.metrics.turns)
+        }),
+    ];
+    props.sort_by(|a, b| a.0.name.cmp(&b.0.name));
+    props
+}
+
+fn int_or_none(v: f64) -> Value {
+    if v.is_finite() {
+        Value::Int(v as i64)
+    } else {
+        Value::None
+    }
+}
+
+/// What the OMPL log says about the experiment besides the runs.
+#[derive(Debug, Clone, Default)]
+pub struct ExperimentInfo {
+    /// One-word name.
+    pub name: String,
+    /// Host name.
+    pub host: String,
+    /// Start, `YYYY-MM-DD HH:MM:SS`.
+    pub start: String,
+    /// Setup text: the map, the query, the options.
+    pub setup: String,
+    /// Base seed.
+    pub seed: u64,
+    /// Time limit per run, s (0: none).
+    pub max_time: f64,
+    /// Runs per planner.
+    pub run_count: u64,
+    /// Wall time of the whole experiment, s.
+    pub total_duration: f64,
+}
+
+/// One problem's runs as an OMPL experiment: one planner block per label (in order of
+/// first appearance), with its settings (`common`) from `settings`.
+#[must_use]
+pub fn experiment_log(
+    info: &ExperimentInfo,
+    runs: &[&BenchRun],
+    settings: &BTreeMap<String, BTreeMap<String, String>>,
+) -> Experiment {
+    let props = ompl_properties();
+    let mut planners: Vec<PlannerBlock> = Vec::new();
+    for r in runs {
+        let block = match planners.iter_mut().position(|p| p.name == r.planner) {
+            Some(i) => &mut planners[i],
+            None => {
+                planners.push(PlannerBlock {
+                    name: r.planner.clone(),
+                    common: settings.get(&r.planner).cloned().unwrap_or_default(),
+                    properties: props.iter().map(|(p, _)| p.clone()).collect(),
+                    runs: Vec::new(),
+                    progress: None,
+                });
+                planners.last_mut().expect("just pushed")
+            }
+        };
+        block.runs.push(props.iter().map(|(_, f)| f(r)).collect());
+    }
+    Experiment {
+        version: format!("hyplan {}", env!("CARGO_PKG_VERSION")),
+        name: info.name.clone(),
+        properties: Vec::new(),
+        host: info.host.clone(),
+        start: info.start.clone(),
+        setup: info.setup.clone(),
+        cpu_info: String::new(),
+        seed: info.seed,
+        max_time: info.max_time,
+        max_mem: 0.0,
+        run_count: info.run_count,
+        total_duration: info.total_duration,
+        planners,
+    }
+}
+
+/// Draws the success rate of each planner as a bar chart (percent), Planner Arena's view
+/// of the `solved` property, into an SVG file.
+///
+/// # Errors
+///
+/// A message when drawing or writing fails.
+#[cfg(feature = "plot")]
+pub fn chart_success(
+    title: &str,
+    rates: &[(String, f64)],
+    out: &std::path::Path,
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
+    let width = (120 * rates.len().max(2) as u32).max(360);
+    let root = SVGBackend::new(out, (width, 360)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let labels: Vec<String> = rates.iter().map(|(l, _)| l.clone()).collect();
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(50)
+        .build_cartesian_2d(labels.as_slice().into_segmented(), 0.0..105.0_f64)
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .light_line_style(WHITE)
+        .y_desc("solved (%)")
+        .draw()
+        .map_err(|e| err(&e))?;
+    chart
+        .draw_series(rates.iter().map(|(label, rate)| {
+            let mut bar = Rectangle::new(
+                [
+                    (SegmentValue::Exact(label), 0.0),
+                    (SegmentValue::Exact(label), 100.0 * rate),
+                ],
+                BLUE.mix(0.6).filled(),
+            );
+            bar.set_margin(0, 0, 20, 20);
+            bar
+        }))
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantiles_as_numpy() {
+        let v = [1.0, 2.0, 3.0, 4.0];
+        assert_eq!(quantile(&v, 0.5), 2.5);
+        assert_eq!(quantile(&v, 0.25), 1.75);
+        assert_eq!(quantile(&v, 0.75), 3.25);
+        assert!(quantile(&[], 0.5).is_nan());
+        let s = Spread::of([3.0, f64::NAN, 1.0, 2.0]);
+        assert_eq!((s.q1, s.median, s.q3), (1.5, 2.0, 2.5));
+    }
+
+    #[test]
+    fn properties_are_sorted_and_sql_safe() {
+        let props = ompl_properties();
+        let names: Vec<&str> = props.iter().map(|(p, _)| p.name.as_str()).collect();
+        let mut sorted = names.clone();
+        sorted.sort_unstable();
+        assert_eq!(names, sorted);
+        assert!(names.contains(&"time") && names.contains(&"solved"));
+    }
+}
