@@ -35,9 +35,12 @@ pub struct BenchRun {
     /// Whether the planner returned a path reaching the goal region (before
     /// post-processing; `metrics.success` also needs the post-processed curve free).
     pub exact: bool,
-    /// How the planning call ended: `exact solution`, `timeout` (budget spent) or
-    /// `no path` (proved).
+    /// How the planning call ended: `exact solution`, `timeout` (budget spent), `no path`
+    /// (proved) or `invalid input` (a parameter or the query refused by the planner).
     pub status: &'static str,
+    /// The planner's message when it refused its input.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
     /// Wall time of the planning call alone, s (OMPL's `time`).
     pub planning_time_s: f64,
     /// Length of the planner's own path before post-processing (OMPL's `solution length`);
@@ -67,7 +70,7 @@ impl BenchRun {
 /// Plans one run with the RNG `ChaCha8Rng::seed_from_u64(seed)` and scores it.
 ///
 /// Bad queries and parameters are the caller's to catch before the runs: here such an
-/// error is a failed run with status `no path`.
+/// error is a failed run with status `invalid input` and the planner's message.
 #[must_use]
 pub fn run_once(
     planner: &dyn Planner,
@@ -93,7 +96,12 @@ pub fn run_once(
     let status = match &outcome {
         Ok(_) => "exact solution",
         Err(PlanError::BudgetExhausted { .. }) => "timeout",
-        Err(_) => "no path",
+        Err(e) if e.is_no_path() => "no path",
+        Err(_) => "invalid input",
+    };
+    let error = match &outcome {
+        Err(e) if !e.is_no_path() => Some(e.to_string()),
+        _ => None,
     };
     let max_curvature = if metrics.path.len() >= 2 {
         postproc::discrete_curvature(&metrics.path)
@@ -113,6 +121,7 @@ pub fn run_once(
         planner: label.to_string(),
         exact: outcome.is_ok(),
         status,
+        error,
         planning_time_s: stats.map_or(wall, |s| s.elapsed.as_secs_f64()),
         raw_length: outcome.as_ref().map_or(f64::NAN, Plan::length),
         iterations: stats.map_or(0, |s| s.iterations),
