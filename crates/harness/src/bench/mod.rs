@@ -29,7 +29,8 @@ pub struct BenchRun {
     /// The planner's label (its spec as given, e.g. `rrt-star:step=20`).
     pub planner: String,
     /// Run index, seed, success, times, final length, nodes, turns, explored nodes,
-    /// transfer time and minimum clearance, as the harness scores every run.
+    /// transfer time and minimum clearance, as the harness scores every run (the path
+    /// itself is not kept).
     #[serde(flatten)]
     pub metrics: RunMetrics,
     /// Whether the planner returned a path reaching the goal region (before
@@ -41,7 +42,7 @@ pub struct BenchRun {
     /// The planner's message when it refused its input.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
-    /// Wall time of the planning call alone, s (OMPL's `time`).
+    /// Wall time of the planning call alone, s (OMPL's `time`, the `solve` call).
     pub planning_time_s: f64,
     /// Length of the planner's own path before post-processing (OMPL's `solution length`);
     /// NaN without a path.
@@ -51,7 +52,9 @@ pub struct BenchRun {
     /// Collision checks (`is_free` and `segment_free` calls) of the planner.
     pub collision_checks: u64,
     /// Largest discrete curvature of the final path, 1 / world unit (turning angle over
-    /// the mean of the two adjacent segment lengths); NaN without a path.
+    /// the mean of the two adjacent segment lengths): at the nodes of a polyline left
+    /// unsmoothed, at the samples (a quarter cell apart) of a smoothed curve; NaN without
+    /// a path.
     pub max_curvature: f64,
 }
 
@@ -103,26 +106,37 @@ pub fn run_once(
         Err(e) if !e.is_no_path() => Some(e.to_string()),
         _ => None,
     };
-    let max_curvature = if metrics.path.len() >= 2 {
-        postproc::discrete_curvature(&metrics.path)
+    // A polyline left as it is: the curvature at its nodes (the dense samples would put
+    // each corner's whole angle on a quarter cell); a smoothed curve: at its samples.
+    let curve: &[hyplan_core::Point2] = match (&outcome, scoring.smoothing) {
+        (Ok(plan), postproc::Smoothing::None) if metrics.success => plan.nodes(),
+        _ => &metrics.path,
+    };
+    let max_curvature = if curve.len() >= 2 {
+        postproc::discrete_curvature(curve)
             .into_iter()
             .map(f64::abs)
             .fold(0.0, f64::max)
     } else {
         f64::NAN
     };
-    // `measure` leaves the time NaN for errors without statistics; the wall clock is the
-    // next best thing.
-    if metrics.time_s.is_nan() {
-        metrics.time_s = wall;
-    }
+    // The final path served the measures above; 400 runs of dense samples would only
+    // cost memory.
+    metrics.path = Vec::new();
+    // The planning time is the whole call (what a user waits for), not the planner's own
+    // `stats.elapsed`, which leaves out building the returned plan; `measure` added the
+    // post-processing to the latter.
+    metrics.time_s = match stats {
+        Some(s) if metrics.time_s.is_finite() => metrics.time_s - s.elapsed.as_secs_f64() + wall,
+        _ => wall,
+    };
     BenchRun {
         problem,
         planner: label.to_string(),
         exact: outcome.is_ok(),
         status,
         error,
-        planning_time_s: stats.map_or(wall, |s| s.elapsed.as_secs_f64()),
+        planning_time_s: wall,
         raw_length: outcome.as_ref().map_or(f64::NAN, Plan::length),
         iterations: stats.map_or(0, |s| s.iterations),
         collision_checks: stats.map_or(0, |s| s.collision_checks),

@@ -414,6 +414,10 @@ pub struct Report {
     pub sum_run_time_s: f64,
     /// Sum of the planning times alone, s.
     pub sum_planning_time_s: f64,
+    /// Sum of the planning calls' thread CPU times, s.
+    pub sum_planning_cpu_s: f64,
+    /// CPU time of the whole command (every thread) up to the report, s.
+    pub command_cpu_s: f64,
     /// Worker threads.
     pub threads: usize,
 }
@@ -436,6 +440,7 @@ pub struct ProblemRecord {
 /// Bad input (before any run), or an output that cannot be written.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let started = Instant::now();
+    let cpu_started = cpu_time::ProcessTime::try_now().ok();
     let e = experiment(args)?;
     let problems = prepare(&e, args.max_cells)?;
     if !(args.alpha > 0.0 && args.alpha < 0.5) {
@@ -525,6 +530,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let comparisons = bench::compare(&runs, args.alpha);
     let sum_run_time_s: f64 = runs.iter().map(|r| r.metrics.time_s).sum();
     let sum_planning_time_s: f64 = runs.iter().map(|r| r.planning_time_s).sum();
+    let sum_planning_cpu_s: f64 = runs.iter().map(|r| r.metrics.cpu_time_s).sum();
 
     // OMPL logs, one per problem.
     let host = std::fs::read_to_string("/etc/hostname")
@@ -589,7 +595,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         bench::chart_success(&prob.name, &rates, &path).map_err(|err| anyhow::anyhow!("{err}"))?;
     }
 
-    let report = Report {
+    let mut report = Report {
         problems: problems
             .iter()
             .map(|p| ProblemRecord {
@@ -605,11 +611,15 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         wall_s,
         sum_run_time_s,
         sum_planning_time_s,
+        sum_planning_cpu_s,
+        command_cpu_s: f64::NAN,
         threads,
     };
     write_csv(&out.join("runs.csv"), &report)?;
     let json = serde_json::to_string_pretty(&report)?;
     std::fs::write(out.join("runs.json"), json).context("writing runs.json")?;
+    // Everything but writing the report itself is in these totals.
+    report.command_cpu_s = cpu_started.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
     let md = markdown(&report, args.alpha, started.elapsed().as_secs_f64());
     std::fs::write(out.join("summary.md"), &md).context("writing summary.md")?;
     outln!("{md}")?;
@@ -737,8 +747,9 @@ fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
     }
     let _ = writeln!(
         s,
-        "{} runs on {} threads: wall time of the runs {:.3} s, whole command {:.3} s; sum of \
-         run times (planning and post-processing) {:.3} s, of planning times {:.3} s; \
+        "{} runs on {} threads. Wall clock: the runs {:.3} s, the whole command {:.3} s; sum \
+         of the run times (planning and post-processing) {:.3} s, of the planning times {:.3} s; \
+         command / planning = {:.3}. CPU: the command {:.3} s, the planning calls {:.3} s; \
          command / planning = {:.3}.",
         r.runs.len(),
         r.threads,
@@ -746,7 +757,10 @@ fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
         total_s,
         r.sum_run_time_s,
         r.sum_planning_time_s,
-        total_s / r.sum_planning_time_s
+        total_s / r.sum_planning_time_s,
+        r.command_cpu_s,
+        r.sum_planning_cpu_s,
+        r.command_cpu_s / r.sum_planning_cpu_s,
     );
     s
 }
