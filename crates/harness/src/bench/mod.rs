@@ -464,37 +464,122 @@ pub fn chart_success(
 ) -> Result<(), String> {
     use plotters::prelude::*;
     let err = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
-    let width = (120 * rates.len().max(2) as u32).max(360);
-    let root = SVGBackend::new(out, (width, 360)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
     let labels: Vec<String> = rates.iter().map(|(l, _)| l.clone()).collect();
+    let root = SVGBackend::new(out, chart_size(&labels)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 16))
         .margin(10)
         .x_label_area_size(40)
-        .y_label_area_size(50)
+        .y_label_area_size(60)
         .build_cartesian_2d(labels.as_slice().into_segmented(), 0.0..105.0_f64)
         .map_err(|e| err(&e))?;
     chart
         .configure_mesh()
         .light_line_style(WHITE)
+        .x_label_formatter(&segment_label)
         .y_desc("solved (%)")
         .draw()
         .map_err(|e| err(&e))?;
     chart
-        .draw_series(rates.iter().map(|(label, rate)| {
-            let mut bar = Rectangle::new(
-                [
-                    (SegmentValue::Exact(label), 0.0),
-                    (SegmentValue::Exact(label), 100.0 * rate),
-                ],
-                BLUE.mix(0.6).filled(),
-            );
-            bar.set_margin(0, 0, 20, 20);
-            bar
+        .draw_series(
+            labels
+                .iter()
+                .zip(rates)
+                .enumerate()
+                .map(|(i, (label, (_, rate)))| {
+                    // A bar spans its label's segment, up to the next label's (the last, to the end).
+                    let next = labels
+                        .get(i + 1)
+                        .map_or(SegmentValue::Last, SegmentValue::Exact);
+                    let mut bar = Rectangle::new(
+                        [(SegmentValue::Exact(label), 0.0), (next, 100.0 * rate)],
+                        BLUE.mix(0.6).filled(),
+                    );
+                    bar.set_margin(0, 0, 20, 20);
+                    bar
+                }),
+        )
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))
+}
+
+/// Draws box plots of one measure, one box per planner (whiskers at the extremes, as
+/// `harness::chart_metrics` draws them), Planner Arena's default view of a real property,
+/// into an SVG file. Non-finite values (failed runs' lengths) are left out.
+///
+/// # Errors
+///
+/// A message when drawing or writing fails.
+#[cfg(feature = "plot")]
+pub fn chart_box(
+    title: &str,
+    measure: &str,
+    series: &[(String, Vec<f64>)],
+    out: &std::path::Path,
+) -> Result<(), String> {
+    use plotters::data::Quartiles;
+    use plotters::prelude::*;
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
+    let labels: Vec<String> = series.iter().map(|(l, _)| l.clone()).collect();
+    let root = SVGBackend::new(out, chart_size(&labels)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let boxes: Vec<(&String, Quartiles)> = series
+        .iter()
+        .filter_map(|(label, v)| {
+            let v: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
+            (!v.is_empty()).then(|| (label, Quartiles::new(&v)))
+        })
+        .collect();
+    let (lo, hi) = boxes
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), (_, q)| {
+            let v = q.values();
+            (lo.min(v[0]), hi.max(v[4]))
+        });
+    let (lo, hi) = if lo.is_finite() { (lo, hi) } else { (0.0, 1.0) };
+    let pad = ((hi - lo) * 0.08).max(1e-6);
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(labels.as_slice().into_segmented(), (lo - pad)..(hi + pad))
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .light_line_style(WHITE)
+        .x_label_formatter(&segment_label)
+        .y_desc(measure)
+        .draw()
+        .map_err(|e| err(&e))?;
+    chart
+        .draw_series(boxes.iter().map(|(label, q)| {
+            Boxplot::new_vertical(SegmentValue::CenterOf(*label), q)
+                .width(24)
+                .style(BLUE)
         }))
         .map_err(|e| err(&e))?;
     root.present().map_err(|e| err(&e))
+}
+
+/// Wide enough for every label written level under its box (about 7 px a character).
+#[cfg(feature = "plot")]
+fn chart_size(labels: &[String]) -> (u32, u32) {
+    let slots: u32 = labels
+        .iter()
+        .map(|l| (7 * l.len() as u32 + 20).max(110))
+        .sum();
+    ((slots + 90).max(420), 380)
+}
+
+#[cfg(feature = "plot")]
+fn segment_label(v: &plotters::coord::ranged1d::SegmentValue<&String>) -> String {
+    use plotters::coord::ranged1d::SegmentValue;
+    match v {
+        SegmentValue::Exact(s) | SegmentValue::CenterOf(s) => (*s).clone(),
+        SegmentValue::Last => String::new(),
+    }
 }
 
 #[cfg(test)]

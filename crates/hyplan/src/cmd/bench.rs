@@ -576,14 +576,22 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         let path = out.join(format!("{}.log", prob.name));
         std::fs::write(&path, log).with_context(|| format!("writing {}", path.display()))?;
         // Planner Arena's default views.
-        let per_planner: Vec<(String, Vec<harness::RunMetrics>)> = bench::groups(&runs)
-            .into_iter()
-            .filter(|((q, _), _)| *q == p)
-            .map(|((_, l), rs)| (l, rs.iter().map(|r| r.metrics.clone()).collect()))
-            .collect();
-        for (metric, file) in [("time_s", "time"), ("length", "length")] {
+        let groups = bench::groups(&runs);
+        let mine: Vec<&(_, Vec<&BenchRun>)> = groups.iter().filter(|((q, _), _)| *q == p).collect();
+        for (file, measure, get) in [
+            (
+                "time",
+                "time (s)",
+                (|r: &BenchRun| r.metrics.time_s) as fn(&BenchRun) -> f64,
+            ),
+            ("length", "path length", |r: &BenchRun| r.metrics.length),
+        ] {
+            let series: Vec<(String, Vec<f64>)> = mine
+                .iter()
+                .map(|((_, l), rs)| (l.clone(), rs.iter().map(|r| get(r)).collect()))
+                .collect();
             let path = out.join(format!("{}-{file}.svg", prob.name));
-            harness::chart_metrics(&prob.name, &per_planner, &[metric], &path)
+            bench::chart_box(&prob.name, measure, &series, &path)
                 .map_err(|err| anyhow::anyhow!("{err}"))?;
         }
         let rates: Vec<(String, f64)> = summary
