@@ -90,25 +90,65 @@ pub fn run_once(
     let outcome: Result<Plan, PlanError> = planner.plan(scoring.ws, query, &mut rng);
     let wall = started.elapsed().as_secs_f64();
     let cpu_s = cpu.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
-    let mut metrics = measure(scoring, &outcome, run, seed);
+    let id = RunId {
+        problem,
+        label,
+        run,
+        seed,
+    };
+    score_run(&outcome, wall, cpu_s, scoring, &id)
+}
+
+/// Which run a record is: problem index, planner label, run index and seed.
+#[derive(Debug, Clone, Copy)]
+pub struct RunId<'a> {
+    /// Problem index.
+    pub problem: usize,
+    /// Planner label.
+    pub label: &'a str,
+    /// Run index.
+    pub run: u32,
+    /// The run's seed.
+    pub seed: u64,
+}
+
+/// Scores a planning outcome its caller timed itself (`wall_s` and `cpu_s` for the
+/// planning call): what [`run_once`] does after planning, for callers that plan in their
+/// own way (`cargo xtask bench-peers`).
+#[must_use]
+pub fn score_run(
+    outcome: &Result<Plan, PlanError>,
+    wall_s: f64,
+    cpu_s: f64,
+    scoring: &Scoring<'_>,
+    id: &RunId<'_>,
+) -> BenchRun {
+    let RunId {
+        problem,
+        label,
+        run,
+        seed,
+    } = *id;
+    let wall = wall_s;
+    let mut metrics = measure(scoring, outcome, run, seed);
     metrics.cpu_time_s = cpu_s;
-    let stats = match &outcome {
+    let stats = match outcome {
         Ok(plan) => Some(plan.stats),
         Err(e) => e.stats().copied(),
     };
-    let status = match &outcome {
+    let status = match outcome {
         Ok(_) => "exact solution",
         Err(PlanError::BudgetExhausted { .. }) => "timeout",
         Err(e) if e.is_no_path() => "no path",
         Err(_) => "invalid input",
     };
-    let error = match &outcome {
+    let error = match outcome {
         Err(e) if !e.is_no_path() => Some(e.to_string()),
         _ => None,
     };
     // A polyline left as it is: the curvature at its nodes (the dense samples would put
     // each corner's whole angle on a quarter cell); a smoothed curve: at its samples.
-    let curve: &[hyplan_core::Point2] = match (&outcome, scoring.smoothing) {
+    let curve: &[hyplan_core::Point2] = match (outcome, scoring.smoothing) {
         (Ok(plan), postproc::Smoothing::None) if metrics.success => plan.nodes(),
         _ => &metrics.path,
     };
@@ -582,9 +622,48 @@ fn segment_label(v: &plotters::coord::ranged1d::SegmentValue<&String>) -> String
     }
 }
 
+/// Now in UTC as OMPL writes its start time, `YYYY-MM-DD HH:MM:SS`.
+#[must_use]
+pub fn utc_timestamp() -> String {
+    utc_date_time(
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs()),
+    )
+}
+
+/// `YYYY-MM-DD HH:MM:SS` (UTC) of a Unix time in seconds.
+#[must_use]
+pub fn utc_date_time(secs: u64) -> String {
+    let (days, rem) = (secs / 86_400, secs % 86_400);
+    // Howard Hinnant's days-to-civil algorithm.
+    let z = days as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02} {:02}:{:02}:{:02}",
+        rem / 3600,
+        rem % 3600 / 60,
+        rem % 60
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn dates_are_civil() {
+        assert_eq!(utc_date_time(0), "1970-01-01 00:00:00");
+        // 2024-02-29 12:34:56 UTC, a leap day.
+        assert_eq!(utc_date_time(1_709_210_096), "2024-02-29 12:34:56");
+    }
 
     #[test]
     fn quantiles_as_numpy() {

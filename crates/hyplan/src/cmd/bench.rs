@@ -538,7 +538,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         .ok()
         .filter(|h| !h.is_empty())
         .unwrap_or_else(|| "UNKNOWN".into());
-    let start = utc_timestamp();
+    let start = bench::utc_timestamp();
     for (p, prob) in problems.iter().enumerate() {
         let mine: Vec<&BenchRun> = runs.iter().filter(|r| r.problem == p).collect();
         let settings: BTreeMap<String, BTreeMap<String, String>> = prob
@@ -783,30 +783,6 @@ fn p_fmt(p: f64) -> String {
     }
 }
 
-/// Now in UTC as OMPL writes its start time, `YYYY-MM-DD HH:MM:SS`.
-fn utc_timestamp() -> String {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    let (days, rem) = (secs / 86_400, secs % 86_400);
-    // Howard Hinnant's days-to-civil algorithm.
-    let z = days as i64 + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!(
-        "{year:04}-{month:02}-{day:02} {:02}:{:02}:{:02}",
-        rem / 3600,
-        rem % 3600 / 60,
-        rem % 60
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -827,12 +803,5 @@ mod tests {
         assert!(planner_spec("nope", 1.0, None).is_err());
         assert!(planner_spec("rrt:step", 1.0, None).is_err());
         assert!(planner_spec("rrt:step=x", 1.0, None).is_err());
-    }
-
-    #[test]
-    fn timestamps_are_civil_dates() {
-        let t = utc_timestamp();
-        assert_eq!(t.len(), 19);
-        assert!(t.starts_with("20"));
     }
 }
