@@ -39,6 +39,16 @@ fn runs() -> Vec<BenchRun> {
         ("rrt-connect", "rrt-connect", vec![("step", 5.0)], "none"),
         ("rrt:budget", "rrt", vec![("max_iterations", 40.0)], "none"),
         ("astar", "astar", vec![], "pchip"),
+        (
+            "rrt-star:anytime",
+            "rrt-star",
+            vec![
+                ("max_iterations", 400.0),
+                ("full_budget", 1.0),
+                ("step", 5.0),
+            ],
+            "none",
+        ),
     ] {
         let spec = PlannerSpec {
             name: name.into(),
@@ -50,6 +60,18 @@ fn runs() -> Vec<BenchRun> {
             smoothing: None,
         };
         let planner = build_planner(&spec).unwrap();
+        // RRT* to its whole budget, observed: the progress properties.
+        let anytime = sampling::RrtStar {
+            step: 5.0,
+            budget: hyplan_core::Budget::iterations(400),
+            stop_at_first_solution: false,
+            ..sampling::RrtStar::default()
+        };
+        let call = if name == "rrt-star" {
+            bench::PlanCall::RrtStar(&anytime)
+        } else {
+            bench::PlanCall::Planner(planner.as_ref())
+        };
         let scoring = Scoring {
             ws: &world.map,
             obstacles: &obstacles,
@@ -60,7 +82,7 @@ fn runs() -> Vec<BenchRun> {
         };
         for k in 0..6 {
             out.push(bench::run_once(
-                planner.as_ref(),
+                call,
                 &scoring,
                 &world.query,
                 0,
@@ -136,6 +158,7 @@ fn ompl_script_reads_every_run_with_our_values() {
              plannerConfigs.settings AS settings FROM runs JOIN plannerConfigs \
              ON runs.plannerid = plannerConfigs.id ORDER BY runs.id'), \
              'experiments': q('SELECT * FROM experiments'), \
+             'progress': q('SELECT * FROM progress ORDER BY runid, time'), \
              'enums': q('SELECT * FROM enums ORDER BY value')}))",
         )
         .arg(&db)
@@ -202,4 +225,25 @@ fn ompl_script_reads_every_run_with_our_values() {
     }
     let settings = rows[0]["settings"].as_str().unwrap();
     assert_eq!(settings, "step = 5\n;");
+
+    // The progress table: every sample of every anytime run, under the run's id.
+    let progress = db["progress"].as_array().unwrap();
+    let expected: usize = runs.iter().map(|r| r.progress.len()).sum();
+    assert!(expected > runs.len() / 4, "RRT* reported progress");
+    assert_eq!(
+        progress.len(),
+        expected,
+        "every progress sample is in the database"
+    );
+    let mut k = 0;
+    for (r, row) in runs.iter().zip(rows) {
+        for p in &r.progress {
+            let got = &progress[k];
+            k += 1;
+            assert_eq!(got["runid"], row["id"], "{}", r.planner);
+            assert_eq!(got["iterations"], p.iterations);
+            assert!(same(p.time_s, &got["time"]), "{got}");
+            assert!(same(p.best_cost, &got["best_cost"]), "{got}");
+        }
+    }
 }

@@ -51,6 +51,10 @@ pub struct BenchRun {
     pub iterations: u64,
     /// Collision checks (`is_free` and `segment_free` calls) of the planner.
     pub collision_checks: u64,
+    /// An anytime planner's progress (RRT* run through [`PlanCall::RrtStar`]): samples
+    /// every 64 iterations and one at the end; empty for the others.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub progress: Vec<ProgressPoint>,
     /// Largest discrete curvature of the final path, 1 / world unit (turning angle over
     /// the mean of the two adjacent segment lengths): at the nodes of a polyline left
     /// unsmoothed, at the samples (a quarter cell apart) of a smoothed curve; NaN without
@@ -70,13 +74,35 @@ impl BenchRun {
     }
 }
 
+/// One sample of an anytime planner's progress: OMPL's progress properties `time`,
+/// `iterations` and `best cost`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ProgressPoint {
+    /// Time since the planning call started, s.
+    pub time_s: f64,
+    /// Iterations done.
+    pub iterations: u64,
+    /// Cost of the best path so far (NaN before the first).
+    pub best_cost: f64,
+}
+
+/// How a run calls its planner.
+#[derive(Clone, Copy)]
+pub enum PlanCall<'a> {
+    /// Any planner, through the trait.
+    Planner(&'a dyn Planner),
+    /// RRT* through `plan_with`, its best cost recorded as it improves (every 64
+    /// iterations: RRT*'s observer period) for OMPL's progress properties.
+    RrtStar(&'a sampling::RrtStar),
+}
+
 /// Plans one run with the RNG `ChaCha8Rng::seed_from_u64(seed)` and scores it.
 ///
 /// Bad queries and parameters are the caller's to catch before the runs: here such an
 /// error is a failed run with status `invalid input` and the planner's message.
 #[must_use]
 pub fn run_once(
-    planner: &dyn Planner,
+    call: PlanCall<'_>,
     scoring: &Scoring<'_>,
     query: &Query,
     problem: usize,
@@ -85,18 +111,45 @@ pub fn run_once(
     seed: u64,
 ) -> BenchRun {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut progress = Vec::new();
     let cpu = cpu_time::ThreadTime::try_now().ok();
     let started = Instant::now();
-    let outcome: Result<Plan, PlanError> = planner.plan(scoring.ws, query, &mut rng);
+    let outcome: Result<Plan, PlanError> = match call {
+        PlanCall::Planner(planner) => planner.plan(scoring.ws, query, &mut rng),
+        PlanCall::RrtStar(planner) => {
+            let mut observe = |p: &hyplan_core::Progress| {
+                progress.push(ProgressPoint {
+                    time_s: started.elapsed().as_secs_f64(),
+                    iterations: p.iterations,
+                    best_cost: p.best_cost.unwrap_or(f64::NAN),
+                });
+                std::ops::ControlFlow::Continue(())
+            };
+            planner.plan_with(scoring.ws, query, &mut rng, &mut observe)
+        }
+    };
     let wall = started.elapsed().as_secs_f64();
     let cpu_s = cpu.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+    if matches!(call, PlanCall::RrtStar(_)) {
+        let stats = match &outcome {
+            Ok(plan) => Some(plan.stats),
+            Err(e) => e.stats().copied(),
+        };
+        progress.push(ProgressPoint {
+            time_s: wall,
+            iterations: stats.map_or(0, |s| s.iterations),
+            best_cost: outcome.as_ref().map_or(f64::NAN, |p| p.cost),
+        });
+    }
     let id = RunId {
         problem,
         label,
         run,
         seed,
     };
-    score_run(&outcome, wall, cpu_s, scoring, &id)
+    let mut record = score_run(&outcome, wall, cpu_s, scoring, &id);
+    record.progress = progress;
+    record
 }
 
 /// Which run a record is: problem index, planner label, run index and seed.
@@ -181,6 +234,7 @@ pub fn score_run(
         iterations: stats.map_or(0, |s| s.iterations),
         collision_checks: stats.map_or(0, |s| s.collision_checks),
         max_curvature,
+        progress: Vec::new(),
         metrics,
     }
 }
@@ -472,6 +526,35 @@ pub fn experiment_log(
             }
         };
         block.runs.push(props.iter().map(|(_, f)| f(r)).collect());
+    }
+    // OMPL's progress properties for the planners that report progress, sorted by name.
+    for block in &mut planners {
+        let mine: Vec<&&BenchRun> = runs.iter().filter(|r| r.planner == block.name).collect();
+        if mine.iter().all(|r| r.progress.is_empty()) {
+            continue;
+        }
+        block.progress = Some(ompl_log::ProgressBlock {
+            properties: vec![
+                Property::new("best cost", PropertyType::Real),
+                Property::new("iterations", PropertyType::Integer),
+                Property::new("time", PropertyType::Real),
+            ],
+            runs: mine
+                .iter()
+                .map(|r| {
+                    r.progress
+                        .iter()
+                        .map(|p| {
+                            vec![
+                                Value::Real(p.best_cost),
+                                Value::Int(i64::try_from(p.iterations).unwrap_or(i64::MAX)),
+                                Value::Real(p.time_s),
+                            ]
+                        })
+                        .collect()
+                })
+                .collect(),
+        });
     }
     Experiment {
         version: format!("hyplan {}", env!("CARGO_PKG_VERSION")),

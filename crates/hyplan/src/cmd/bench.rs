@@ -182,6 +182,37 @@ pub fn planner_spec(
     Ok((spec, planner))
 }
 
+/// RRT* run to its whole budget (`full_budget=1`), as the struct `build_planner` makes of
+/// the spec, so that its progress can be observed (the trait has no observer). `None` for
+/// every other planner. A test checks that it plans as the registry's planner does.
+pub fn anytime_rrt_star(spec: &PlannerSpec) -> Option<sampling::RrtStar> {
+    use sampling::{RewireRadius, RrtStar};
+    let p = |k: &str| spec.params.get(k).copied();
+    if spec.name != "rrt-star" || p("full_budget") != Some(1.0) {
+        return None;
+    }
+    let d = RrtStar::default();
+    let mut budget = d.budget;
+    if let Some(n) = p("max_iterations") {
+        budget.max_iterations = n as u64;
+    }
+    if let Some(t) = p("time_limit_s") {
+        budget = budget.with_time(std::time::Duration::from_secs_f64(t));
+    }
+    Some(RrtStar {
+        step: p("step").unwrap_or(d.step),
+        goal_bias: p("goal_bias").unwrap_or(d.goal_bias),
+        budget,
+        rewire: match (p("gamma"), p("k_nearest")) {
+            (Some(g), _) => RewireRadius::Gamma(g),
+            (None, Some(k)) => RewireRadius::KNearest(k as usize),
+            (None, None) => d.rewire,
+        },
+        stop_at_first_solution: false,
+        ..d
+    })
+}
+
 /// A problem ready to run: the map, its query in world coordinates, its planners.
 struct Problem {
     /// `MAPSTEM-qK`, the log's experiment name.
@@ -194,6 +225,8 @@ struct Problem {
     /// World units per input unit.
     scale: f64,
     planners: Vec<(PlannerSpec, Box<dyn Planner>)>,
+    /// For each planner, the RRT* whose progress is recorded (see [`anytime_rrt_star`]).
+    anytime: Vec<Option<sampling::RrtStar>>,
 }
 
 /// World units per input unit.
@@ -380,6 +413,7 @@ fn prepare(e: &Experiment, max_cells: usize) -> anyhow::Result<Vec<Problem>> {
                         .map_err(|err| anyhow::anyhow!("planner {text}: {err}"))
                 })
                 .collect::<anyhow::Result<Vec<_>>>()?;
+            let anytime = planners.iter().map(|(s, _)| anytime_rrt_star(s)).collect();
             problems.push(Problem {
                 name: format!("{}-{stem}-q{k}", e.name),
                 map_path: spec.map.clone(),
@@ -389,6 +423,7 @@ fn prepare(e: &Experiment, max_cells: usize) -> anyhow::Result<Vec<Problem>> {
                 query,
                 scale,
                 planners,
+                anytime,
             });
         }
     }
@@ -502,8 +537,12 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                     ),
                     ..scorings[p]
                 };
+                let call = match &prob.anytime[i] {
+                    Some(rrt_star) => bench::PlanCall::RrtStar(rrt_star),
+                    None => bench::PlanCall::Planner(planner.as_ref()),
+                };
                 let r = bench::run_once(
-                    planner.as_ref(),
+                    call,
                     &scoring,
                     &prob.query,
                     p,
@@ -787,6 +826,43 @@ fn p_fmt(p: f64) -> String {
 mod tests {
     use super::*;
 
+    /// The anytime RRT* plans exactly as the registry's `rrt-star` with the same spec.
+    #[test]
+    fn anytime_rrt_star_is_the_registry_planner() {
+        use hyplan_core::{Goal, Point2, Query};
+        use rand_chacha::rand_core::SeedableRng;
+        let mut map = envmap::GridMap::filled(40, 30, Zone::Free).unwrap();
+        for j in 0..22 {
+            map.set_cell_zone(20, j, Zone::Forbidden);
+        }
+        let query = Query::new(Point2::new(2.5, 2.5), Goal::Point(Point2::new(37.5, 2.5)));
+        for text in [
+            "rrt-star:full_budget=1,max_iterations=600",
+            "rrt-star:full_budget=1,max_iterations=400,k_nearest=8,step=3,goal_bias=0.2",
+            "rrt-star:full_budget=1,max_iterations=400,gamma=30",
+        ] {
+            let (spec, registry) = planner_spec(text, 50.0, None).unwrap();
+            let mirror = anytime_rrt_star(&spec).expect("an anytime RRT*");
+            for seed in 0..3 {
+                let a = registry.plan(
+                    &map,
+                    &query,
+                    &mut rand_chacha::ChaCha8Rng::seed_from_u64(seed),
+                );
+                let b = mirror.plan(
+                    &map,
+                    &query,
+                    &mut rand_chacha::ChaCha8Rng::seed_from_u64(seed),
+                );
+                let (a, b) = (a.unwrap(), b.unwrap());
+                assert_eq!(a.path, b.path, "{text}, seed {seed}");
+                assert_eq!(a.stats.iterations, b.stats.iterations, "{text}");
+            }
+        }
+        let (spec, _) = planner_spec("rrt-star", 50.0, None).unwrap();
+        assert!(anytime_rrt_star(&spec).is_none());
+    }
+
     #[test]
     fn planner_specs_parse() {
         let (spec, p) = planner_spec("rrt-star:step=2,full_budget=1", 100.0, Some(0.5)).unwrap();
@@ -797,7 +873,8 @@ mod tests {
         assert!(spec.params.is_empty());
         assert!(
             planner_spec("rrt:stpe=2", 1.0, None)
-                .unwrap_err()
+                .err()
+                .unwrap()
                 .contains("stpe")
         );
         assert!(planner_spec("nope", 1.0, None).is_err());
