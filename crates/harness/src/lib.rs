@@ -21,7 +21,7 @@
 //! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate;
 //!   [`stats::mann_whitney_u`] and [`stats::decide_less`]: the rank test that decides a
 //!   paper's ordering claim on our runs, with its p-value and effect size.
-//! - [`bench`]: `hyplan bench`'s runs on a user's problems: [`bench::run_once`], the
+//! - [`bench`](mod@bench): `hyplan bench`'s runs on a user's problems: [`bench::run_once`], the
 //!   summary and pairwise rank tests, and [`bench::ompl_log`], OMPL's benchmark log format.
 //! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
 //!   box plots of the metrics.

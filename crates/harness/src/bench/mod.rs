@@ -402,13 +402,16 @@ pub fn compare(runs: &[BenchRun], alpha: f64) -> Vec<Comparison> {
     out
 }
 
+/// How a run property's value is read off a run.
+pub type ReadValue = fn(&BenchRun) -> Value;
+
 /// The run properties of the OMPL log, sorted by name as OMPL sorts them, and how each
 /// is read off a run. OMPL's own names where OMPL has the measure (`time`, `solved`,
 /// `solution length`, `graph states`, `status`, ...), so our runs and OMPL's share columns.
 #[must_use]
-pub fn ompl_properties() -> Vec<(Property, fn(&BenchRun) -> Value)> {
+pub fn ompl_properties() -> Vec<(Property, ReadValue)> {
     use PropertyType::{Boolean, Enum, Integer, Real};
-    let mut props: Vec<(Property, fn(&BenchRun) -> Value)> = vec![
+    let mut props: Vec<(Property, ReadValue)> = vec![
         (Property::new("approximate solution", Boolean), |_| {
             Value::Bool(false)
         }),

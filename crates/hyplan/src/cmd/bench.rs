@@ -185,6 +185,8 @@ pub fn planner_spec(
 /// RRT* run to its whole budget (`full_budget=1`), as the struct `build_planner` makes of
 /// the spec, so that its progress can be observed (the trait has no observer). `None` for
 /// every other planner. A test checks that it plans as the registry's planner does.
+// `..d` keeps the defaults of fields RRT* may gain later.
+#[allow(clippy::needless_update)]
 pub fn anytime_rrt_star(spec: &PlannerSpec) -> Option<sampling::RrtStar> {
     use sampling::{RewireRadius, RrtStar};
     let p = |k: &str| spec.params.get(k).copied();
