@@ -424,6 +424,7 @@ mod tests {
         };
         assert!(matches!(e.to_log(), Err(LogError::BadName { .. })));
         e.name = "ok".into();
+        e.host = "h".into();
         e.planners.push(PlannerBlock {
             name: "p".into(),
             properties: vec![Property::new("time; drop", PropertyType::Real)],
