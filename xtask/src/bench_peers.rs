@@ -7,6 +7,11 @@
 //! peer's `time_s` is `SimpleSetup::solve`). Prints a Markdown table of medians, ratios,
 //! success rates and lengths.
 //!
+//! With `--db FILE`, both sides' runs are also written as OMPL benchmark logs (the peer
+//! through `ompl::tools::Benchmark`, `--ompl-log`; ours through `harness::bench`) under
+//! `target/bench-peers/logs/`, and OMPL's `ompl_benchmark_statistics` loads them all into
+//! the one SQLite database FILE, which Planner Arena opens.
+//!
 //! Caveat printed with the table: OMPL's motion check is sampled (a state every 0.25 cells,
 //! the peer's default); ours is exact (every cell a segment touches), which costs us time
 //! and never cuts a corner. The `OMPL cut` column counts OMPL paths that cross a blocked
@@ -18,6 +23,8 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, bail};
 use envmap::{GridMap, LoadOptions, load_map};
+use harness::Scoring;
+use harness::bench::{self, BenchRun, ExperimentInfo, RunId};
 use hyplan_core::{Budget, Goal, Plan, PlanError, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -41,6 +48,10 @@ pub struct Args {
     /// Rebuild the OMPL peer even if it is already built.
     #[arg(long)]
     pub rebuild: bool,
+    /// Also write both sides' runs as OMPL benchmark logs and load them with OMPL's
+    /// `ompl_benchmark_statistics` (package ompl-demos) into this SQLite database.
+    #[arg(long)]
+    pub db: Option<PathBuf>,
 }
 
 /// One comparison setting.
@@ -196,6 +207,7 @@ fn run_ompl(
     case: &Case,
     planner: &str,
     args: &Args,
+    log: Option<&Path>,
 ) -> anyhow::Result<Summary> {
     let mut cmd = Command::new(bin);
     cmd.arg("--map")
@@ -216,6 +228,11 @@ fn run_ompl(
     }
     if case.goal_radius > 0.0 {
         cmd.args(["--goal-radius", &case.goal_radius.to_string()]);
+    }
+    if let Some(log) = log {
+        // OMPL's Benchmark runs the problem again (the same runs and time limit) and
+        // writes its own log.
+        cmd.arg("--ompl-log").arg(log);
     }
     let out = cmd.output().context("running ompl_peer")?;
     let stdout = String::from_utf8_lossy(&out.stdout);
@@ -261,6 +278,7 @@ fn run_ours(
     case: &Case,
     planner: &str,
     args: &Args,
+    records: Option<&mut Vec<BenchRun>>,
 ) -> anyhow::Result<Summary> {
     let limit = Duration::try_from_secs_f64(args.time_limit).context("--time-limit")?;
     let budget = Budget::iterations(u64::MAX).with_time(limit);
@@ -288,11 +306,35 @@ fn run_ours(
     let mut times = Vec::new();
     let mut lengths = Vec::new();
     let mut cut = 0;
+    let mut obstacles = map.clone();
+    obstacles.blocked_from = hyplan_core::Zone::Forbidden;
+    let scoring = Scoring {
+        ws: map,
+        obstacles: &obstacles,
+        explored_by_expansions: false,
+        smoothing: postproc::Smoothing::None,
+        limits: None,
+        spacing: 0.25 * map.resolution(),
+    };
+    let label = format!("hyplan_{planner}");
+    let mut records = records;
     for seed in 0..u64::from(args.runs) {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let cpu = cpu_time::ThreadTime::try_now().ok();
         let started = Instant::now();
         let result = plan(&mut rng);
-        times.push(started.elapsed().as_secs_f64());
+        let wall = started.elapsed().as_secs_f64();
+        times.push(wall);
+        if let Some(records) = records.as_deref_mut() {
+            let cpu_s = cpu.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+            let id = RunId {
+                problem: 0,
+                label: &label,
+                run: u32::try_from(seed).unwrap_or(u32::MAX),
+                seed,
+            };
+            records.push(bench::score_run(&result, wall, cpu_s, &scoring, &id));
+        }
         match result {
             Ok(p) => {
                 let valid = p.path.first() == Some(&query.start)
@@ -328,6 +370,14 @@ fn fmt_len(l: Option<f64>) -> String {
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let root = root();
     let bin = build_peer(&root, args.rebuild)?;
+    let log_dir = root.join("target/bench-peers/logs");
+    if args.db.is_some() {
+        // Stale logs of other cases or planners would land in the database too.
+        let _ = std::fs::remove_dir_all(&log_dir);
+        std::fs::create_dir_all(&log_dir)
+            .with_context(|| format!("creating {}", log_dir.display()))?;
+    }
+    let mut logs: Vec<PathBuf> = Vec::new();
     println!(
         "| case | planner | step | runs | ours median ms | OMPL median ms | ours/OMPL | ours solved | OMPL exact | ours median length | OMPL median length | OMPL cut |"
     );
@@ -372,9 +422,24 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             {
                 continue;
             }
-            let o = run_ours(&loaded.map, &query, case, ours, args)?;
+            let mut records = args.db.as_ref().map(|_| Vec::new());
+            let started = Instant::now();
+            let o = run_ours(&loaded.map, &query, case, ours, args, records.as_mut())?;
+            if let Some(records) = &records {
+                let log = log_dir.join(format!("hyplan-{}-{ours}.log", case.name));
+                write_our_log(&log, case, &map_path, ours, args, records, started)?;
+                logs.push(log);
+            }
             let p = match ompl {
-                Some(name) => Some(run_ompl(&bin, &map_path, case, name, args)?),
+                Some(name) => {
+                    let log = args
+                        .db
+                        .as_ref()
+                        .map(|_| log_dir.join(format!("ompl-{}-{name}.log", case.name)));
+                    let summary = run_ompl(&bin, &map_path, case, name, args, log.as_deref())?;
+                    logs.extend(log);
+                    Some(summary)
+                }
                 None => None,
             };
             let (ompl_ms, ratio, ompl_exact, ompl_len, ompl_cut) = match p {
@@ -417,6 +482,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             }
         }
     }
+    if let Some(db) = &args.db {
+        load_logs(db, &logs)?;
+    }
     println!();
     println!(
         "worst ours/OMPL median-time ratio: {worst_ratio:.3}; success >= OMPL's everywhere: {success_ok}"
@@ -424,6 +492,69 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     println!(
         "note: OMPL checks motions at sampled states 0.25 cells apart (`OMPL cut` = its paths that \
          cross a blocked cell); ours checks every cell a segment touches."
+    );
+    Ok(())
+}
+
+/// Writes our runs of one planner on one case as an OMPL benchmark log.
+fn write_our_log(
+    path: &Path,
+    case: &Case,
+    map: &Path,
+    planner: &str,
+    args: &Args,
+    records: &[BenchRun],
+    started: Instant,
+) -> anyhow::Result<()> {
+    let info = ExperimentInfo {
+        // OMPL's peer names its experiment after the map path: ours says the same.
+        name: map.display().to_string().replace(char::is_whitespace, "_"),
+        host: std::fs::read_to_string("/etc/hostname")
+            .map(|h| h.trim().to_string())
+            .ok()
+            .filter(|h| !h.is_empty())
+            .unwrap_or_else(|| "UNKNOWN".into()),
+        start: bench::utc_timestamp(),
+        setup: format!(
+            "cargo xtask bench-peers\ncase {}\nstart {:?} goal {:?} goal radius {}\nstep {} goal bias {}",
+            case.name, case.start, case.goal, case.goal_radius, case.step, case.goal_bias
+        ),
+        seed: 0,
+        max_time: args.time_limit,
+        run_count: u64::from(args.runs),
+        total_duration: started.elapsed().as_secs_f64(),
+    };
+    let mut settings = std::collections::BTreeMap::new();
+    settings.insert(
+        format!("hyplan_{planner}"),
+        [
+            ("range".to_string(), case.step.to_string()),
+            ("goal_bias".to_string(), case.goal_bias.to_string()),
+        ]
+        .into(),
+    );
+    let refs: Vec<&BenchRun> = records.iter().collect();
+    let log = bench::experiment_log(&info, &refs, &settings).to_log()?;
+    std::fs::write(path, log).with_context(|| format!("writing {}", path.display()))
+}
+
+/// Loads the logs into `db` with OMPL's own script (a fresh database).
+fn load_logs(db: &Path, logs: &[PathBuf]) -> anyhow::Result<()> {
+    let script = "ompl_benchmark_statistics";
+    let _ = std::fs::remove_file(db);
+    let out = Command::new(script)
+        .arg("-d")
+        .arg(db)
+        .args(logs)
+        .output()
+        .with_context(|| format!("running {script} (apt-get install ompl-demos)"))?;
+    if !out.status.success() {
+        bail!("{script} failed: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    eprintln!(
+        "{} OMPL logs (ours and OMPL's) loaded into {}",
+        logs.len(),
+        db.display()
     );
     Ok(())
 }

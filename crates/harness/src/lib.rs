@@ -24,6 +24,8 @@
 //!   [`stats::mann_whitney_u`] and [`stats::decide_less`]: the rank test that decides a
 //!   paper's ordering claim on our runs, with its p-value and effect size.
 //! - [`report`]: the replay's claims decided on the runs, and its Markdown report.
+//! - [`bench`](mod@bench): `hyplan bench`'s runs on a user's problems: [`bench::run_once`], the
+//!   summary and pairwise rank tests, and [`bench::ompl_log`], OMPL's benchmark log format.
 //! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
 //!   box plots of the metrics.
 //!
@@ -32,6 +34,7 @@
 //! - `parallel` (default): runs spread over threads with rayon; results equal the serial run's.
 //! - `plot` (default): PNG figures (tiny-skia) and SVG charts (plotters).
 
+pub mod bench;
 #[cfg(feature = "plot")]
 mod figure;
 mod metrics;

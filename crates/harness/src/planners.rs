@@ -354,7 +354,7 @@ impl PlannerConfig {
     }
 
     /// Overrides fields by `key=value` pairs, values in RON syntax; `budget.key` reaches
-    /// into the budget. Unknown keys and values of the wrong type are errors naming them.
+    /// into the budget (`max_iterations` and `time_limit_s` may drop the prefix). Unknown keys and values of the wrong type are errors naming them.
     ///
     /// # Errors
     ///
@@ -363,7 +363,15 @@ impl PlannerConfig {
         self,
         pairs: impl IntoIterator<Item = (&'a str, &'a str)>,
     ) -> Result<Self, RegistryError> {
-        let pairs: Vec<(&str, &str)> = pairs.into_iter().collect();
+        // The budget's fields may be named without their `budget.` prefix.
+        let pairs: Vec<(&str, &str)> = pairs
+            .into_iter()
+            .map(|(k, v)| match k {
+                "max_iterations" => ("budget.max_iterations", v),
+                "time_limit_s" => ("budget.time_limit_s", v),
+                _ => (k, v),
+            })
+            .collect();
         let name = self.name();
         let bad = |reason: String| RegistryError::BadParameter {
             spec: name.to_string(),

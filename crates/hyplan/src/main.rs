@@ -29,6 +29,9 @@ pub(crate) struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Benchmark planners on your maps and queries: CSV, JSON, a Markdown summary with
+    /// rank tests, SVG box plots and an OMPL benchmark log per problem.
+    Bench(Box<cmd::bench::Args>),
     /// Turn a picture, ROS map or MovingAI map into a three-zone safe map.
     Map(cmd::map::Args),
     /// Plan a path with any planner of the registry (`hyplan planners` lists them).
@@ -53,6 +56,7 @@ fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
+        Command::Bench(args) => cmd::bench::run(&args),
         Command::Map(args) => cmd::map::run(&args),
         Command::Plan(args) => cmd::plan::run(&args),
         Command::Planners(args) => cmd::planners::run(&args),

@@ -1,5 +1,6 @@
 //! Integration tests of the `hyplan` binary, one module per subcommand.
 
+mod bench;
 mod map;
 mod plan;
 mod scen;

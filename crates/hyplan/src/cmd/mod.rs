@@ -24,6 +24,7 @@ pub fn load_map(
     })
 }
 
+pub mod bench;
 pub mod map;
 pub mod plan;
 pub mod planners;

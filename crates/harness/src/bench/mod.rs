@@ -1,0 +1,774 @@
+//! Benchmarks of planners on a user's own problems: one record per run, the summary
+//! (success rate, median and inter-quartile range), the pairwise rank tests, and the
+//! runs as an OMPL benchmark log ([`ompl_log`]) that OMPL's `ompl_benchmark_statistics`
+//! loads into the same database as OMPL's own runs.
+//!
+//! A problem is a map and a query; an experiment is one problem and the planners run on
+//! it, as in OMPL. [`run_once`] plans and scores one run; [`summarise`] and [`compare`]
+//! reduce the runs; [`experiment_log`] writes them in OMPL's format.
+
+pub mod ompl_log;
+
+use std::collections::BTreeMap;
+use std::time::Instant;
+
+use hyplan_core::{Plan, PlanError, Planner, Query};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+
+use crate::stats::{Alternative, Verdict, decide_less, mann_whitney_u};
+use crate::{RunMetrics, Scoring, measure};
+use ompl_log::{Experiment, PlannerBlock, Property, PropertyType, Status, Value};
+
+/// One run of one planner on one problem, as the CSV, the JSON and the OMPL log hold it.
+#[derive(Debug, Clone, Serialize)]
+pub struct BenchRun {
+    /// Index of the problem (map and query) in the experiment list.
+    pub problem: usize,
+    /// The planner's label (its spec as given, e.g. `rrt-star:step=20`).
+    pub planner: String,
+    /// Run index, seed, success, times, final length, nodes, turns, explored nodes,
+    /// transfer time and minimum clearance, as the harness scores every run (the path
+    /// itself is not kept).
+    #[serde(flatten)]
+    pub metrics: RunMetrics,
+    /// Whether the planner returned a path reaching the goal region (before
+    /// post-processing; `metrics.success` also needs the post-processed curve free).
+    pub exact: bool,
+    /// How the planning call ended: `exact solution`, `timeout` (budget spent), `no path`
+    /// (proved) or `invalid input` (a parameter or the query refused by the planner).
+    pub status: &'static str,
+    /// The planner's message when it refused its input.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    /// Wall time of the planning call alone, s (OMPL's `time`, the `solve` call).
+    pub planning_time_s: f64,
+    /// Length of the planner's own path before post-processing (OMPL's `solution length`);
+    /// NaN without a path.
+    pub raw_length: f64,
+    /// Main-loop iterations of the planner.
+    pub iterations: u64,
+    /// Collision checks (`is_free` and `segment_free` calls) of the planner.
+    pub collision_checks: u64,
+    /// An anytime planner's progress (RRT* run through [`PlanCall::RrtStar`]): samples
+    /// every 64 iterations and one at the end; empty for the others.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub progress: Vec<ProgressPoint>,
+    /// Largest discrete curvature of the final path, 1 / world unit (turning angle over
+    /// the mean of the two adjacent segment lengths): at the nodes of a polyline left
+    /// unsmoothed, at the samples (a quarter cell apart) of a smoothed curve; NaN without
+    /// a path.
+    pub max_curvature: f64,
+}
+
+impl BenchRun {
+    /// The OMPL `status` enum value of the run.
+    #[must_use]
+    pub fn ompl_status(&self) -> Status {
+        match self.status {
+            "exact solution" => Status::ExactSolution,
+            "timeout" => Status::Timeout,
+            _ => Status::Unknown,
+        }
+    }
+}
+
+/// One sample of an anytime planner's progress: OMPL's progress properties `time`,
+/// `iterations` and `best cost`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ProgressPoint {
+    /// Time since the planning call started, s.
+    pub time_s: f64,
+    /// Iterations done.
+    pub iterations: u64,
+    /// Cost of the best path so far (NaN before the first).
+    pub best_cost: f64,
+}
+
+/// How a run calls its planner.
+#[derive(Clone, Copy)]
+pub enum PlanCall<'a> {
+    /// Any planner, through the trait.
+    Planner(&'a dyn Planner),
+    /// RRT* through `plan_with`, its best cost recorded as it improves (every 64
+    /// iterations: RRT*'s observer period) for OMPL's progress properties.
+    RrtStar(&'a sampling::RrtStar),
+}
+
+/// Plans one run with the RNG `ChaCha8Rng::seed_from_u64(seed)` and scores it.
+///
+/// Bad queries and parameters are the caller's to catch before the runs: here such an
+/// error is a failed run with status `invalid input` and the planner's message.
+#[must_use]
+pub fn run_once(
+    call: PlanCall<'_>,
+    scoring: &Scoring<'_>,
+    query: &Query,
+    problem: usize,
+    label: &str,
+    run: u32,
+    seed: u64,
+) -> BenchRun {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut progress = Vec::new();
+    let cpu = cpu_time::ThreadTime::try_now().ok();
+    let started = Instant::now();
+    let outcome: Result<Plan, PlanError> = match call {
+        PlanCall::Planner(planner) => planner.plan(scoring.ws, query, &mut rng),
+        PlanCall::RrtStar(planner) => {
+            let mut observe = |p: &hyplan_core::Progress| {
+                progress.push(ProgressPoint {
+                    time_s: started.elapsed().as_secs_f64(),
+                    iterations: p.iterations,
+                    best_cost: p.best_cost.unwrap_or(f64::NAN),
+                });
+                std::ops::ControlFlow::Continue(())
+            };
+            planner.plan_with(scoring.ws, query, &mut rng, &mut observe)
+        }
+    };
+    let wall = started.elapsed().as_secs_f64();
+    let cpu_s = cpu.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+    if matches!(call, PlanCall::RrtStar(_)) {
+        let stats = match &outcome {
+            Ok(plan) => Some(plan.stats),
+            Err(e) => e.stats().copied(),
+        };
+        progress.push(ProgressPoint {
+            time_s: wall,
+            iterations: stats.map_or(0, |s| s.iterations),
+            best_cost: outcome.as_ref().map_or(f64::NAN, |p| p.cost),
+        });
+    }
+    let id = RunId {
+        problem,
+        label,
+        run,
+        seed,
+    };
+    let mut record = score_run(&outcome, wall, cpu_s, scoring, &id);
+    record.progress = progress;
+    record
+}
+
+/// Which run a record is: problem index, planner label, run index and seed.
+#[derive(Debug, Clone, Copy)]
+pub struct RunId<'a> {
+    /// Problem index.
+    pub problem: usize,
+    /// Planner label.
+    pub label: &'a str,
+    /// Run index.
+    pub run: u32,
+    /// The run's seed.
+    pub seed: u64,
+}
+
+/// Scores a planning outcome its caller timed itself (`wall_s` and `cpu_s` for the
+/// planning call): what [`run_once`] does after planning, for callers that plan in their
+/// own way (`cargo xtask bench-peers`).
+#[must_use]
+pub fn score_run(
+    outcome: &Result<Plan, PlanError>,
+    wall_s: f64,
+    cpu_s: f64,
+    scoring: &Scoring<'_>,
+    id: &RunId<'_>,
+) -> BenchRun {
+    let RunId {
+        problem,
+        label,
+        run,
+        seed,
+    } = *id;
+    let wall = wall_s;
+    let mut metrics = measure(scoring, outcome, run, seed);
+    metrics.cpu_time_s = cpu_s;
+    let stats = match outcome {
+        Ok(plan) => Some(plan.stats),
+        Err(e) => e.stats().copied(),
+    };
+    let status = match outcome {
+        Ok(_) => "exact solution",
+        Err(PlanError::BudgetExhausted { .. }) => "timeout",
+        Err(e) if e.is_no_path() => "no path",
+        Err(_) => "invalid input",
+    };
+    let error = match outcome {
+        Err(e) if !e.is_no_path() => Some(e.to_string()),
+        _ => None,
+    };
+    // A polyline left as it is: the curvature at its nodes (the dense samples would put
+    // each corner's whole angle on a quarter cell); a smoothed curve: at its samples.
+    let curve: &[hyplan_core::Point2] = match (outcome, scoring.smoothing) {
+        (Ok(plan), postproc::Smoothing::None) if metrics.success => plan.nodes(),
+        _ => &metrics.path,
+    };
+    let max_curvature = if curve.len() >= 2 {
+        postproc::discrete_curvature(curve)
+            .into_iter()
+            .map(f64::abs)
+            .fold(0.0, f64::max)
+    } else {
+        f64::NAN
+    };
+    // The final path served the measures above; 400 runs of dense samples would only
+    // cost memory.
+    metrics.path = Vec::new();
+    // The planning time is the whole call (what a user waits for), not the planner's own
+    // `stats.elapsed`, which leaves out building the returned plan; `measure` added the
+    // post-processing to the latter.
+    metrics.time_s = match stats {
+        Some(s) if metrics.time_s.is_finite() => metrics.time_s - s.elapsed.as_secs_f64() + wall,
+        _ => wall,
+    };
+    BenchRun {
+        problem,
+        planner: label.to_string(),
+        exact: outcome.is_ok(),
+        status,
+        error,
+        planning_time_s: wall,
+        raw_length: outcome.as_ref().map_or(f64::NAN, Plan::length),
+        iterations: stats.map_or(0, |s| s.iterations),
+        collision_checks: stats.map_or(0, |s| s.collision_checks),
+        max_curvature,
+        progress: Vec::new(),
+        metrics,
+    }
+}
+
+/// The `q`-quantile of sorted finite values, linearly interpolated (NumPy's default);
+/// NaN for no values.
+#[must_use]
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let pos = q.clamp(0.0, 1.0) * (sorted.len() - 1) as f64;
+    let lo = pos.floor() as usize;
+    let hi = pos.ceil() as usize;
+    sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)
+}
+
+/// Median and inter-quartile range of the finite values of a sample.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Spread {
+    /// Median (NaN for no values).
+    pub median: f64,
+    /// First quartile.
+    pub q1: f64,
+    /// Third quartile.
+    pub q3: f64,
+}
+
+impl Spread {
+    /// The spread of the finite values.
+    #[must_use]
+    pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
+        let mut v: Vec<f64> = values.into_iter().filter(|x| x.is_finite()).collect();
+        v.sort_by(f64::total_cmp);
+        Self {
+            median: quantile(&v, 0.5),
+            q1: quantile(&v, 0.25),
+            q3: quantile(&v, 0.75),
+        }
+    }
+
+    /// The inter-quartile range, q3 - q1.
+    #[must_use]
+    pub fn iqr(&self) -> f64 {
+        self.q3 - self.q1
+    }
+}
+
+/// One line of the summary table: a planner on a problem.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SummaryRow {
+    /// Problem index.
+    pub problem: usize,
+    /// Planner label.
+    pub planner: String,
+    /// Runs.
+    pub runs: usize,
+    /// Fraction of runs with a checked path.
+    pub success_rate: f64,
+    /// Time (planning and post-processing, wall clock) of every run, s.
+    pub time_s: Spread,
+    /// Final path length of the successful runs.
+    pub length: Spread,
+}
+
+/// The summary rows, in the order the (problem, planner) pairs first appear in `runs`.
+#[must_use]
+pub fn summarise(runs: &[BenchRun]) -> Vec<SummaryRow> {
+    groups(runs)
+        .into_iter()
+        .map(|((problem, planner), rs)| SummaryRow {
+            problem,
+            runs: rs.len(),
+            success_rate: rs.iter().filter(|r| r.metrics.success).count() as f64
+                / rs.len().max(1) as f64,
+            time_s: Spread::of(rs.iter().map(|r| r.metrics.time_s)),
+            length: Spread::of(
+                rs.iter()
+                    .filter(|r| r.metrics.success)
+                    .map(|r| r.metrics.length),
+            ),
+            planner,
+        })
+        .collect()
+}
+
+/// The runs grouped by (problem, planner label), groups in order of first appearance.
+#[must_use]
+pub fn groups(runs: &[BenchRun]) -> Vec<((usize, String), Vec<&BenchRun>)> {
+    let mut out: Vec<((usize, String), Vec<&BenchRun>)> = Vec::new();
+    for r in runs {
+        match out
+            .iter_mut()
+            .find(|((p, l), _)| *p == r.problem && *l == r.planner)
+        {
+            Some((_, v)) => v.push(r),
+            None => out.push(((r.problem, r.planner.clone()), vec![r])),
+        }
+    }
+    out
+}
+
+/// A two-sided Mann-Whitney U test of one metric between two planners, with the
+/// direction decided by [`decide_less`] (the test `cargo xtask reproduce` decides the
+/// papers' ordering claims with).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MetricTest {
+    /// Two-sided p-value; NaN when a side has no value.
+    pub p_value: f64,
+    /// Cliff's delta of the first planner against the second (negative: the first tends
+    /// to be smaller).
+    pub cliffs_delta: f64,
+    /// [`Verdict::Held`]: the first is significantly smaller; [`Verdict::NotHeld`]: the
+    /// second is; otherwise not significant or no data.
+    pub verdict: Verdict,
+}
+
+/// The comparison of two planners on one problem.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Comparison {
+    /// Problem index.
+    pub problem: usize,
+    /// First planner.
+    pub a: String,
+    /// Second planner.
+    pub b: String,
+    /// Time of every run (`time_s`).
+    pub time: MetricTest,
+    /// Final length of the successful runs.
+    pub length: MetricTest,
+}
+
+fn metric_test(x: &[f64], y: &[f64], alpha: f64) -> MetricTest {
+    let d = decide_less(x, y, alpha);
+    let two = mann_whitney_u(x, y, Alternative::TwoSided);
+    MetricTest {
+        p_value: two.map_or(f64::NAN, |t| t.p_value),
+        cliffs_delta: d.cliffs_delta,
+        verdict: d.verdict,
+    }
+}
+
+/// Every pair of planners on each problem, time and length compared at level `alpha`.
+#[must_use]
+pub fn compare(runs: &[BenchRun], alpha: f64) -> Vec<Comparison> {
+    let g = groups(runs);
+    let mut out = Vec::new();
+    for (i, ((pa, la), ra)) in g.iter().enumerate() {
+        for ((pb, lb), rb) in &g[i + 1..] {
+            if pa != pb {
+                continue;
+            }
+            let time = |rs: &[&BenchRun]| rs.iter().map(|r| r.metrics.time_s).collect::<Vec<_>>();
+            // Failed runs have NaN lengths, which the test leaves out.
+            let length = |rs: &[&BenchRun]| rs.iter().map(|r| r.metrics.length).collect::<Vec<_>>();
+            out.push(Comparison {
+                problem: *pa,
+                a: la.clone(),
+                b: lb.clone(),
+                time: metric_test(&time(ra), &time(rb), alpha),
+                length: metric_test(&length(ra), &length(rb), alpha),
+            });
+        }
+    }
+    out
+}
+
+/// How a run property's value is read off a run.
+pub type ReadValue = fn(&BenchRun) -> Value;
+
+/// The run properties of the OMPL log, sorted by name as OMPL sorts them, and how each
+/// is read off a run. OMPL's own names where OMPL has the measure (`time`, `solved`,
+/// `solution length`, `graph states`, `status`, ...), so our runs and OMPL's share columns.
+#[must_use]
+pub fn ompl_properties() -> Vec<(Property, ReadValue)> {
+    use PropertyType::{Boolean, Enum, Integer, Real};
+    let mut props: Vec<(Property, ReadValue)> = vec![
+        (Property::new("approximate solution", Boolean), |_| {
+            Value::Bool(false)
+        }),
+        (Property::new("collision checks", Integer), |r| {
+            Value::Int(i64::try_from(r.collision_checks).unwrap_or(i64::MAX))
+        }),
+        (Property::new("correct solution", Boolean), |r| {
+            if r.exact {
+                Value::Bool(r.metrics.success)
+            } else {
+                Value::None
+            }
+        }),
+        (Property::new("cpu time", Real), |r| {
+            Value::Real(r.metrics.cpu_time_s)
+        }),
+        (Property::new("graph states", Integer), |r| {
+            int_or_none(r.metrics.explored)
+        }),
+        (Property::new("iterations", Integer), |r| {
+            Value::Int(i64::try_from(r.iterations).unwrap_or(i64::MAX))
+        }),
+        (Property::new("max curvature", Real), |r| {
+            Value::Real(r.max_curvature)
+        }),
+        (Property::new("minimum clearance", Real), |r| {
+            Value::Real(r.metrics.min_clearance)
+        }),
+        (Property::new("path length", Real), |r| {
+            Value::Real(r.metrics.length)
+        }),
+        (Property::new("path nodes", Integer), |r| {
+            int_or_none(r.metrics.nodes)
+        }),
+        (Property::new("run index", Integer), |r| {
+            Value::Int(i64::from(r.metrics.run))
+        }),
+        (Property::new("solution length", Real), |r| {
+            Value::Real(r.raw_length)
+        }),
+        (Property::new("solved", Boolean), |r| {
+            Value::Bool(r.metrics.success)
+        }),
+        (Property::new("status", Enum), |r| {
+            Value::Int(r.ompl_status() as i64)
+        }),
+        (Property::new("time", Real), |r| {
+            Value::Real(r.planning_time_s)
+        }),
+        (Property::new("total time", Real), |r| {
+            Value::Real(r.metrics.time_s)
+        }),
+        (Property::new("transfer time", Real), |r| {
+            Value::Real(r.metrics.transfer_time_s)
+        }),
+        (Property::new("turns", Integer), |r| {
+            int_or_none(r.metrics.turns)
+        }),
+    ];
+    props.sort_by(|a, b| a.0.name.cmp(&b.0.name));
+    props
+}
+
+fn int_or_none(v: f64) -> Value {
+    if v.is_finite() {
+        Value::Int(v as i64)
+    } else {
+        Value::None
+    }
+}
+
+/// What the OMPL log says about the experiment besides the runs.
+#[derive(Debug, Clone, Default)]
+pub struct ExperimentInfo {
+    /// One-word name.
+    pub name: String,
+    /// Host name.
+    pub host: String,
+    /// Start, `YYYY-MM-DD HH:MM:SS`.
+    pub start: String,
+    /// Setup text: the map, the query, the options.
+    pub setup: String,
+    /// Base seed.
+    pub seed: u64,
+    /// Time limit per run, s (0: none).
+    pub max_time: f64,
+    /// Runs per planner.
+    pub run_count: u64,
+    /// Wall time of the whole experiment, s.
+    pub total_duration: f64,
+}
+
+/// One problem's runs as an OMPL experiment: one planner block per label (in order of
+/// first appearance), with its settings (`common`) from `settings`.
+#[must_use]
+pub fn experiment_log(
+    info: &ExperimentInfo,
+    runs: &[&BenchRun],
+    settings: &BTreeMap<String, BTreeMap<String, String>>,
+) -> Experiment {
+    let props = ompl_properties();
+    let mut planners: Vec<PlannerBlock> = Vec::new();
+    for r in runs {
+        let block = match planners.iter_mut().position(|p| p.name == r.planner) {
+            Some(i) => &mut planners[i],
+            None => {
+                planners.push(PlannerBlock {
+                    name: r.planner.clone(),
+                    common: settings.get(&r.planner).cloned().unwrap_or_default(),
+                    properties: props.iter().map(|(p, _)| p.clone()).collect(),
+                    runs: Vec::new(),
+                    progress: None,
+                });
+                planners.last_mut().expect("just pushed")
+            }
+        };
+        block.runs.push(props.iter().map(|(_, f)| f(r)).collect());
+    }
+    // OMPL's progress properties for the planners that report progress, sorted by name.
+    for block in &mut planners {
+        let mine: Vec<&&BenchRun> = runs.iter().filter(|r| r.planner == block.name).collect();
+        if mine.iter().all(|r| r.progress.is_empty()) {
+            continue;
+        }
+        block.progress = Some(ompl_log::ProgressBlock {
+            properties: vec![
+                Property::new("best cost", PropertyType::Real),
+                Property::new("iterations", PropertyType::Integer),
+                Property::new("time", PropertyType::Real),
+            ],
+            runs: mine
+                .iter()
+                .map(|r| {
+                    r.progress
+                        .iter()
+                        .map(|p| {
+                            vec![
+                                Value::Real(p.best_cost),
+                                Value::Int(i64::try_from(p.iterations).unwrap_or(i64::MAX)),
+                                Value::Real(p.time_s),
+                            ]
+                        })
+                        .collect()
+                })
+                .collect(),
+        });
+    }
+    Experiment {
+        version: format!("hyplan {}", env!("CARGO_PKG_VERSION")),
+        name: info.name.clone(),
+        properties: Vec::new(),
+        host: info.host.clone(),
+        start: info.start.clone(),
+        setup: info.setup.clone(),
+        cpu_info: String::new(),
+        seed: info.seed,
+        max_time: info.max_time,
+        max_mem: 0.0,
+        run_count: info.run_count,
+        total_duration: info.total_duration,
+        planners,
+    }
+}
+
+/// Draws the success rate of each planner as a bar chart (percent), Planner Arena's view
+/// of the `solved` property, into an SVG file.
+///
+/// # Errors
+///
+/// A message when drawing or writing fails.
+#[cfg(feature = "plot")]
+pub fn chart_success(
+    title: &str,
+    rates: &[(String, f64)],
+    out: &std::path::Path,
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
+    let labels: Vec<String> = rates.iter().map(|(l, _)| l.clone()).collect();
+    let root = SVGBackend::new(out, chart_size(&labels)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(labels.as_slice().into_segmented(), 0.0..105.0_f64)
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .light_line_style(WHITE)
+        .x_label_formatter(&segment_label)
+        .y_desc("solved (%)")
+        .draw()
+        .map_err(|e| err(&e))?;
+    chart
+        .draw_series(
+            labels
+                .iter()
+                .zip(rates)
+                .enumerate()
+                .map(|(i, (label, (_, rate)))| {
+                    // A bar spans its label's segment, up to the next label's (the last, to the end).
+                    let next = labels
+                        .get(i + 1)
+                        .map_or(SegmentValue::Last, SegmentValue::Exact);
+                    let mut bar = Rectangle::new(
+                        [(SegmentValue::Exact(label), 0.0), (next, 100.0 * rate)],
+                        BLUE.mix(0.6).filled(),
+                    );
+                    bar.set_margin(0, 0, 20, 20);
+                    bar
+                }),
+        )
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))
+}
+
+/// Draws box plots of one measure, one box per planner (whiskers at the extremes, as
+/// `harness::chart_metrics` draws them), Planner Arena's default view of a real property,
+/// into an SVG file. Non-finite values (failed runs' lengths) are left out.
+///
+/// # Errors
+///
+/// A message when drawing or writing fails.
+#[cfg(feature = "plot")]
+pub fn chart_box(
+    title: &str,
+    measure: &str,
+    series: &[(String, Vec<f64>)],
+    out: &std::path::Path,
+) -> Result<(), String> {
+    use plotters::data::Quartiles;
+    use plotters::prelude::*;
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
+    let labels: Vec<String> = series.iter().map(|(l, _)| l.clone()).collect();
+    let root = SVGBackend::new(out, chart_size(&labels)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let boxes: Vec<(&String, Quartiles)> = series
+        .iter()
+        .filter_map(|(label, v)| {
+            let v: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
+            (!v.is_empty()).then(|| (label, Quartiles::new(&v)))
+        })
+        .collect();
+    let (lo, hi) = boxes
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), (_, q)| {
+            let v = q.values();
+            (lo.min(v[0]), hi.max(v[4]))
+        });
+    let (lo, hi) = if lo.is_finite() { (lo, hi) } else { (0.0, 1.0) };
+    let pad = ((hi - lo) * 0.08).max(1e-6);
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(labels.as_slice().into_segmented(), (lo - pad)..(hi + pad))
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .light_line_style(WHITE)
+        .x_label_formatter(&segment_label)
+        .y_desc(measure)
+        .draw()
+        .map_err(|e| err(&e))?;
+    chart
+        .draw_series(boxes.iter().map(|(label, q)| {
+            Boxplot::new_vertical(SegmentValue::CenterOf(*label), q)
+                .width(24)
+                .style(BLUE)
+        }))
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))
+}
+
+/// Wide enough for every label written level under its box (about 7 px a character).
+#[cfg(feature = "plot")]
+fn chart_size(labels: &[String]) -> (u32, u32) {
+    let slots: u32 = labels
+        .iter()
+        .map(|l| (7 * l.len() as u32 + 20).max(110))
+        .sum();
+    ((slots + 90).max(420), 380)
+}
+
+#[cfg(feature = "plot")]
+fn segment_label(v: &plotters::coord::ranged1d::SegmentValue<&String>) -> String {
+    use plotters::coord::ranged1d::SegmentValue;
+    match v {
+        SegmentValue::Exact(s) | SegmentValue::CenterOf(s) => (*s).clone(),
+        SegmentValue::Last => String::new(),
+    }
+}
+
+/// Now in UTC as OMPL writes its start time, `YYYY-MM-DD HH:MM:SS`.
+#[must_use]
+pub fn utc_timestamp() -> String {
+    utc_date_time(
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs()),
+    )
+}
+
+/// `YYYY-MM-DD HH:MM:SS` (UTC) of a Unix time in seconds.
+#[must_use]
+pub fn utc_date_time(secs: u64) -> String {
+    let (days, rem) = (secs / 86_400, secs % 86_400);
+    // Howard Hinnant's days-to-civil algorithm.
+    let z = days as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02} {:02}:{:02}:{:02}",
+        rem / 3600,
+        rem % 3600 / 60,
+        rem % 60
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dates_are_civil() {
+        assert_eq!(utc_date_time(0), "1970-01-01 00:00:00");
+        // 2024-02-29 12:34:56 UTC, a leap day.
+        assert_eq!(utc_date_time(1_709_210_096), "2024-02-29 12:34:56");
+    }
+
+    #[test]
+    fn quantiles_as_numpy() {
+        let v = [1.0, 2.0, 3.0, 4.0];
+        assert_eq!(quantile(&v, 0.5), 2.5);
+        assert_eq!(quantile(&v, 0.25), 1.75);
+        assert_eq!(quantile(&v, 0.75), 3.25);
+        assert!(quantile(&[], 0.5).is_nan());
+        let s = Spread::of([3.0, f64::NAN, 1.0, 2.0]);
+        assert_eq!((s.q1, s.median, s.q3), (1.5, 2.0, 2.5));
+    }
+
+    #[test]
+    fn properties_are_sorted_and_sql_safe() {
+        let props = ompl_properties();
+        let names: Vec<&str> = props.iter().map(|(p, _)| p.name.as_str()).collect();
+        let mut sorted = names.clone();
+        sorted.sort_unstable();
+        assert_eq!(names, sorted);
+        assert!(names.contains(&"time") && names.contains(&"solved"));
+    }
+}

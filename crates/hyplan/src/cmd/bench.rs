@@ -1,0 +1,829 @@
+//! `hyplan bench`: which planner, with which parameters, for my map? Runs planners on
+//! one or more problems (a map and a query), many times each, spread over threads, and
+//! writes every run (CSV, JSON), a summary with pairwise rank tests (Markdown), box plots
+//! and a success-rate chart (SVG) and one OMPL benchmark log per problem, which OMPL's
+//! `ompl_benchmark_statistics` loads into the same database as OMPL's own runs.
+//!
+//! Everything is validated before the first run: maps load, queries lie in free cells,
+//! planners and their parameter names exist; bad input exits 2.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::{Context as _, bail};
+use envmap::{GridMap, InputFrame, LoadOptions};
+use harness::bench::{self, BenchRun, Comparison, ExperimentInfo, SummaryRow};
+use harness::{Explored, PlannerConfig, PlannerSpec, Scoring};
+use hyplan_core::{Budget, Goal, PlanError, Planner, Query, Zone};
+use serde::{Deserialize, Serialize};
+
+/// Options of `hyplan bench`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// An experiment file (RON): maps, queries, planners and options together (see
+    /// docs/bench.md). Excludes --map, --query and --planner.
+    #[arg(long, conflicts_with_all = ["map", "query", "planner"])]
+    pub experiment: Option<PathBuf>,
+    /// A map: picture, ROS `.yaml` or MovingAI `.map` (repeat for several maps; each
+    /// query is run on each map).
+    #[arg(long, required_unless_present = "experiment")]
+    pub map: Vec<PathBuf>,
+    /// A query `X,Y X,Y` (start, goal) in the map's input frame (pictures and `.map`:
+    /// column, row from the top); repeat for several queries.
+    #[arg(long, num_args = 2, value_names = ["START", "GOAL"], required_unless_present = "experiment", allow_hyphen_values = true)]
+    pub query: Vec<String>,
+    /// A planner `NAME[:key=value,...]` (repeat for several): rrt, rrt-star, bi-rrt,
+    /// rrt-connect, astar, dijkstra, theta-star, rrt-astar-bt, rrt-astar-refine,
+    /// hybrid-rrt-astar, safe-rrt-star, ga-pchip; keys are the planner's parameters
+    /// (`step`, `goal_bias`, `max_iterations`, `stop_at_first_solution`, ...).
+    #[arg(long, required_unless_present = "experiment")]
+    pub planner: Vec<String>,
+    /// Runs per planner and problem [default: 20].
+    #[arg(long)]
+    pub runs: Option<u32>,
+    /// Time limit per run, seconds (sampling planners and hybrids; the grid searches run
+    /// to the end).
+    #[arg(long)]
+    pub time_limit: Option<f64>,
+    /// Base seed; run k uses SplitMix64(seed) output k + 1, whatever the thread [default: 1].
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Post-processing of every path: none, prune, pchip, bspline, bspline-interp
+    /// [default: none].
+    #[arg(long)]
+    pub smooth: Option<String>,
+    /// Goal tolerance in the input's units; 0: the exact goal point [default: 0].
+    #[arg(long)]
+    pub goal_radius: Option<f64>,
+    /// Robot limits `VMAX,WMAX,AMAX` (input units/s, rad/s, input units/s^2): each run's
+    /// transfer time.
+    #[arg(long)]
+    pub limits: Option<String>,
+    /// Output directory [default: bench-out].
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Worker threads [default: all cores]; the results do not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Significance level of the pairwise rank tests.
+    #[arg(long, default_value_t = 0.05)]
+    pub alpha: f64,
+    /// Memory limit: maps with more cells (width x height) are refused before loading.
+    #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
+    pub max_cells: usize,
+}
+
+/// An experiment as a RON file gives it (and as the flags build it).
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Experiment {
+    /// Name: the logs' experiment names start with it (one word).
+    #[serde(default = "default_name")]
+    pub name: String,
+    /// Maps with their queries.
+    pub problems: Vec<ProblemSpec>,
+    /// Planners, `NAME[:key=value,...]`.
+    pub planners: Vec<String>,
+    /// Runs per planner and problem.
+    #[serde(default = "default_runs")]
+    pub runs: u32,
+    /// Base seed.
+    #[serde(default = "default_seed")]
+    pub seed: u64,
+    /// Time limit per run, s.
+    #[serde(default)]
+    pub time_limit: Option<f64>,
+    /// Post-processing method.
+    #[serde(default = "default_smooth")]
+    pub smooth: String,
+    /// Goal tolerance, input units.
+    #[serde(default)]
+    pub goal_radius: f64,
+    /// Robot limits (v_max, omega_max, a_max) in input units.
+    #[serde(default)]
+    pub limits: Option<(f64, f64, f64)>,
+}
+
+/// One map and the queries run on it.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProblemSpec {
+    /// The map file (relative paths: to the experiment file's folder).
+    pub map: PathBuf,
+    /// Start and goal pairs, input frame.
+    pub queries: Vec<((f64, f64), (f64, f64))>,
+}
+
+fn default_name() -> String {
+    "hyplan".into()
+}
+const fn default_runs() -> u32 {
+    20
+}
+const fn default_seed() -> u64 {
+    1
+}
+fn default_smooth() -> String {
+    "none".into()
+}
+
+/// A planner spec from `NAME[:key=value,...]` (the registry's form, see
+/// [`harness::PlannerConfig::from_spec`]), with the command's defaults for what the user
+/// left out: a step of 5% of the map's diagonal for the plain sampling planners, the time
+/// limit (and no iteration cap) as every planner's budget. The pairs win over both.
+///
+/// # Errors
+///
+/// A malformed spec, an unknown planner, key or value (the registry's message).
+pub fn planner_spec(
+    text: &str,
+    map_diagonal: f64,
+    time_limit: Option<f64>,
+) -> Result<(PlannerSpec, Box<dyn Planner>), String> {
+    let budget = match time_limit {
+        Some(t) => Some(
+            Budget::iterations(u64::MAX).with_time(
+                std::time::Duration::try_from_secs_f64(t)
+                    .map_err(|_| format!("time limit {t}: not a duration"))?,
+            ),
+        ),
+        None => None,
+    };
+    let config = PlannerConfig::from_spec(text, |mut c| {
+        if c.wants_default_step() {
+            c = c.with_step(0.05 * map_diagonal);
+        }
+        if let Some(b) = budget {
+            c = c.with_budget(b);
+        }
+        c
+    })
+    .map_err(|e| e.to_string())?;
+    let planner = config.build();
+    let spec = PlannerSpec {
+        label: Some(text.to_string()),
+        ..PlannerSpec::new(config)
+    };
+    Ok((spec, planner))
+}
+
+/// RRT* run to its whole budget (`stop_at_first_solution=false`), whose progress is
+/// observed through its own `plan_with` (the trait has no observer); `None` for every
+/// other planner.
+pub fn anytime_rrt_star(spec: &PlannerSpec) -> Option<sampling::RrtStar> {
+    match &spec.planner {
+        PlannerConfig::RrtStar(p) if !p.stop_at_first_solution => Some(*p),
+        _ => None,
+    }
+}
+
+/// A problem ready to run: the map, its query in world coordinates, its planners.
+struct Problem {
+    /// `MAPSTEM-qK`, the log's experiment name.
+    name: String,
+    map_path: PathBuf,
+    query_text: String,
+    map: GridMap,
+    obstacles: GridMap,
+    query: Query,
+    /// World units per input unit.
+    scale: f64,
+    planners: Vec<(PlannerSpec, Box<dyn Planner>)>,
+    /// For each planner, the RRT* whose progress is recorded (see [`anytime_rrt_star`]).
+    anytime: Vec<Option<sampling::RrtStar>>,
+}
+
+/// World units per input unit.
+fn input_scale(frame: &InputFrame) -> f64 {
+    match *frame {
+        InputFrame::Cells { resolution, .. } => resolution,
+        InputFrame::World | InputFrame::MapFrame { .. } => 1.0,
+    }
+}
+
+fn parse_xy(s: &str) -> anyhow::Result<(f64, f64)> {
+    let (x, y) = s
+        .split_once(',')
+        .with_context(|| format!("expected X,Y, got {s:?}"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<f64>()
+            .with_context(|| format!("{v:?} in {s:?} is not a number"))
+    };
+    Ok((parse(x)?, parse(y)?))
+}
+
+/// The experiment the flags describe, or the RON file's (its map paths made relative to
+/// the file's folder).
+fn experiment(args: &Args) -> anyhow::Result<Experiment> {
+    let mut e = if let Some(path) = &args.experiment {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("reading experiment {}", path.display()))?;
+        let mut e: Experiment = ron::from_str(&text).map_err(|err| {
+            anyhow::anyhow!(
+                "experiment {}:{}:{}: {}",
+                path.display(),
+                err.position.line,
+                err.position.col,
+                err.code
+            )
+        })?;
+        let dir = path.parent().unwrap_or(Path::new("."));
+        for p in &mut e.problems {
+            if p.map.is_relative() {
+                p.map = dir.join(&p.map);
+            }
+        }
+        e
+    } else {
+        let mut queries = Vec::new();
+        for pair in args.query.chunks(2) {
+            let [s, g] = pair else {
+                bail!("--query takes two points, START and GOAL");
+            };
+            let start = parse_xy(s).with_context(|| format!("--query {s} {g}: start"))?;
+            let goal = parse_xy(g).with_context(|| format!("--query {s} {g}: goal"))?;
+            queries.push((start, goal));
+        }
+        Experiment {
+            name: default_name(),
+            problems: args
+                .map
+                .iter()
+                .map(|m| ProblemSpec {
+                    map: m.clone(),
+                    queries: queries.clone(),
+                })
+                .collect(),
+            planners: args.planner.clone(),
+            runs: default_runs(),
+            seed: default_seed(),
+            time_limit: None,
+            smooth: default_smooth(),
+            goal_radius: 0.0,
+            limits: None,
+        }
+    };
+    // Flags override the file's options.
+    if let Some(r) = args.runs {
+        e.runs = r;
+    }
+    if let Some(s) = args.seed {
+        e.seed = s;
+    }
+    if args.time_limit.is_some() {
+        e.time_limit = args.time_limit;
+    }
+    if let Some(s) = &args.smooth {
+        e.smooth.clone_from(s);
+    }
+    if let Some(r) = args.goal_radius {
+        e.goal_radius = r;
+    }
+    if let Some(l) = &args.limits {
+        let v: Vec<f64> = l
+            .split(',')
+            .map(|x| x.trim().parse::<f64>())
+            .collect::<Result<_, _>>()
+            .with_context(|| format!("--limits {l}: expected VMAX,WMAX,AMAX"))?;
+        let [v, w, a] = v[..] else {
+            bail!("--limits {l}: expected three numbers VMAX,WMAX,AMAX");
+        };
+        e.limits = Some((v, w, a));
+    }
+    Ok(e)
+}
+
+/// Loads the maps, places the queries and builds the planners: every error before a run.
+fn prepare(e: &Experiment, max_cells: usize) -> anyhow::Result<Vec<Problem>> {
+    if e.runs == 0 {
+        bail!("runs = 0: must be at least 1");
+    }
+    if e.name.split_whitespace().count() != 1 || e.name.contains(['/', '\\']) {
+        bail!("experiment name {:?}: must be one word", e.name);
+    }
+    if let Some(t) = e.time_limit
+        && !(t.is_finite() && t > 0.0)
+    {
+        bail!("time limit {t}: must be a positive number of seconds");
+    }
+    if !(e.goal_radius.is_finite() && e.goal_radius >= 0.0) {
+        bail!("goal radius {}: must be >= 0", e.goal_radius);
+    }
+    if e.problems.is_empty() || e.problems.iter().all(|p| p.queries.is_empty()) {
+        bail!("no problem: give at least one map and one query");
+    }
+    if e.planners.is_empty() {
+        bail!("no planner: give at least one");
+    }
+    let mut seen = std::collections::HashSet::new();
+    if let Some(dup) = e.planners.iter().find(|p| !seen.insert(p.as_str())) {
+        bail!("planner {dup} is given twice");
+    }
+    if let Some((v, w, a)) = e.limits {
+        postproc::Limits::new(v, w, a)
+            .map_err(|err| anyhow::anyhow!("limits {v},{w},{a}: {err}"))?;
+    }
+    e.smooth
+        .parse::<postproc::Smoothing>()
+        .map_err(|err| anyhow::anyhow!("smoothing {:?}: {err}", e.smooth))?;
+    let mut problems = Vec::new();
+    for spec in &e.problems {
+        let opts = LoadOptions {
+            max_cells,
+            ..LoadOptions::default()
+        };
+        let loaded = super::load_map(&spec.map, &opts)
+            .with_context(|| format!("loading {}", spec.map.display()))?;
+        let frame = loaded.frame;
+        let scale = input_scale(&frame);
+        let map = loaded.map;
+        let mut obstacles = map.clone();
+        obstacles.blocked_from = Zone::Forbidden;
+        let stem = spec
+            .map
+            .file_stem()
+            .map_or_else(|| "map".into(), |s| s.to_string_lossy().into_owned())
+            .replace(
+                |c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '_'),
+                "_",
+            );
+        for (k, &(s, g)) in spec.queries.iter().enumerate() {
+            let query_text = format!("{},{} {},{}", s.0, s.1, g.0, g.1);
+            let start = frame.to_world(s.0, s.1);
+            let centre = frame.to_world(g.0, g.1);
+            let goal = if e.goal_radius == 0.0 {
+                Goal::Point(centre)
+            } else {
+                Goal::disc(centre, e.goal_radius * scale)
+            };
+            let query = Query::new(start, goal);
+            query.validate(&map).map_err(|err| {
+                let (which, reason) = match err {
+                    PlanError::InvalidStart { reason, .. } => ("start", reason),
+                    PlanError::InvalidGoal { reason, .. } => ("goal", reason),
+                    _ => ("query", "invalid"),
+                };
+                anyhow::anyhow!(
+                    "query {query_text} on {}: the {which} is {reason}",
+                    spec.map.display()
+                )
+            })?;
+            let planners = e
+                .planners
+                .iter()
+                .map(|text| {
+                    planner_spec(text, map.bounds().diagonal(), e.time_limit)
+                        .map_err(|err| anyhow::anyhow!("planner {text}: {err}"))
+                })
+                .collect::<anyhow::Result<Vec<_>>>()?;
+            let anytime = planners.iter().map(|(s, _)| anytime_rrt_star(s)).collect();
+            problems.push(Problem {
+                name: format!("{}-{stem}-q{k}", e.name),
+                map_path: spec.map.clone(),
+                query_text,
+                map: map.clone(),
+                obstacles: obstacles.clone(),
+                query,
+                scale,
+                planners,
+                anytime,
+            });
+        }
+    }
+    Ok(problems)
+}
+
+/// Everything a bench produced, as `runs.json` holds it.
+#[derive(Debug, Serialize)]
+pub struct Report {
+    /// The experiment as run.
+    pub experiment: Experiment,
+    /// Problems: name, map, query.
+    pub problems: Vec<ProblemRecord>,
+    /// Every run.
+    pub runs: Vec<BenchRun>,
+    /// One row per planner and problem.
+    pub summary: Vec<SummaryRow>,
+    /// Every pair of planners on each problem.
+    pub comparisons: Vec<Comparison>,
+    /// Wall time of the runs, s.
+    pub wall_s: f64,
+    /// Sum of the runs' times (planning and post-processing), s.
+    pub sum_run_time_s: f64,
+    /// Sum of the planning times alone, s.
+    pub sum_planning_time_s: f64,
+    /// Sum of the planning calls' thread CPU times, s.
+    pub sum_planning_cpu_s: f64,
+    /// CPU time of the whole command (every thread) up to the report, s.
+    pub command_cpu_s: f64,
+    /// Worker threads.
+    pub threads: usize,
+}
+
+/// A problem in the report.
+#[derive(Debug, Serialize)]
+pub struct ProblemRecord {
+    /// The log's experiment name.
+    pub name: String,
+    /// The map file.
+    pub map: PathBuf,
+    /// The query as given (`SX,SY GX,GY`, input frame).
+    pub query: String,
+}
+
+/// Runs `hyplan bench`.
+///
+/// # Errors
+///
+/// Bad input (before any run), or an output that cannot be written.
+pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    let started = Instant::now();
+    let cpu_started = cpu_time::ProcessTime::try_now().ok();
+    let e = experiment(args)?;
+    let problems = prepare(&e, args.max_cells)?;
+    if !(args.alpha > 0.0 && args.alpha < 0.5) {
+        bail!("--alpha {}: must be in (0, 0.5)", args.alpha);
+    }
+    let smoothing: postproc::Smoothing =
+        e.smooth.parse().map_err(|err| anyhow::anyhow!("{err}"))?;
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("bench-out"));
+    std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let threads = args.threads.unwrap_or(0);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .context("starting the worker threads")?;
+    let threads = pool.current_num_threads();
+
+    let scorings: Vec<Scoring<'_>> = problems
+        .iter()
+        .map(|p| Scoring {
+            ws: &p.map,
+            obstacles: &p.obstacles,
+            explored_by_expansions: false,
+            smoothing,
+            // Checked in `prepare`; given in input units, the map's scale makes them world's.
+            limits: e
+                .limits
+                .and_then(|(v, w, a)| postproc::Limits::new(v * p.scale, w, a * p.scale).ok()),
+            spacing: 0.25 * p.map.resolution(),
+        })
+        .collect();
+    let jobs: Vec<(usize, usize, u32)> = problems
+        .iter()
+        .enumerate()
+        .flat_map(|(p, prob)| {
+            (0..prob.planners.len()).flat_map(move |i| (0..e.runs).map(move |k| (p, i, k)))
+        })
+        .collect();
+    let bar = indicatif::ProgressBar::new(jobs.len() as u64).with_style(
+        indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} runs ({eta} left)",
+        )
+        .expect("a valid template"),
+    );
+    let runs_started = Instant::now();
+    let runs: Vec<BenchRun> = pool.install(|| {
+        use rayon::prelude::*;
+        jobs.par_iter()
+            .map(|&(p, i, k)| {
+                let prob = &problems[p];
+                let (spec, planner) = &prob.planners[i];
+                let scoring = Scoring {
+                    // Graph searches count expansions, the others their nodes.
+                    explored_by_expansions: spec.planner.explored() == Explored::Expansions,
+                    ..scorings[p]
+                };
+                let call = match &prob.anytime[i] {
+                    Some(rrt_star) => bench::PlanCall::RrtStar(rrt_star),
+                    None => bench::PlanCall::Planner(planner.as_ref()),
+                };
+                let r = bench::run_once(
+                    call,
+                    &scoring,
+                    &prob.query,
+                    p,
+                    spec.label(),
+                    k,
+                    harness::run_seed(e.seed, u64::from(k)),
+                );
+                bar.inc(1);
+                r
+            })
+            .collect()
+    });
+    let wall_s = runs_started.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+    if let Some(bad) = runs.iter().find(|r| r.status == "invalid input") {
+        bail!(
+            "planner {}: {}",
+            bad.planner,
+            bad.error.as_deref().unwrap_or("invalid input")
+        );
+    }
+
+    let summary = bench::summarise(&runs);
+    let comparisons = bench::compare(&runs, args.alpha);
+    let sum_run_time_s: f64 = runs.iter().map(|r| r.metrics.time_s).sum();
+    let sum_planning_time_s: f64 = runs.iter().map(|r| r.planning_time_s).sum();
+    let sum_planning_cpu_s: f64 = runs.iter().map(|r| r.metrics.cpu_time_s).sum();
+
+    // OMPL logs, one per problem.
+    let host = std::fs::read_to_string("/etc/hostname")
+        .map(|h| h.trim().to_string())
+        .ok()
+        .filter(|h| !h.is_empty())
+        .unwrap_or_else(|| "UNKNOWN".into());
+    let start = bench::utc_timestamp();
+    for (p, prob) in problems.iter().enumerate() {
+        let mine: Vec<&BenchRun> = runs.iter().filter(|r| r.problem == p).collect();
+        let settings: BTreeMap<String, BTreeMap<String, String>> = prob
+            .planners
+            .iter()
+            .map(|(spec, _)| {
+                // Every field of the planner, as `hyplan planners` shows them.
+                let mut s: BTreeMap<String, String> = spec.planner.params().into_iter().collect();
+                s.insert("planner".into(), spec.planner.name().to_string());
+                s.insert("smoothing".into(), e.smooth.clone());
+                (spec.label().to_string(), s)
+            })
+            .collect();
+        let info = ExperimentInfo {
+            name: prob.name.clone(),
+            host: host.clone(),
+            start: start.clone(),
+            setup: format!(
+                "hyplan bench\nmap {}\nquery {} (goal radius {})\nsmoothing {}\nseed {}",
+                prob.map_path.display(),
+                prob.query_text,
+                e.goal_radius,
+                e.smooth,
+                e.seed
+            ),
+            seed: e.seed,
+            max_time: e.time_limit.unwrap_or(0.0),
+            run_count: u64::from(e.runs),
+            total_duration: wall_s,
+        };
+        let log = bench::experiment_log(&info, &mine, &settings).to_log()?;
+        let path = out.join(format!("{}.log", prob.name));
+        std::fs::write(&path, log).with_context(|| format!("writing {}", path.display()))?;
+        // Planner Arena's default views.
+        let groups = bench::groups(&runs);
+        let mine: Vec<&(_, Vec<&BenchRun>)> = groups.iter().filter(|((q, _), _)| *q == p).collect();
+        for (file, measure, get) in [
+            (
+                "time",
+                "time (s)",
+                (|r: &BenchRun| r.metrics.time_s) as fn(&BenchRun) -> f64,
+            ),
+            ("length", "path length", |r: &BenchRun| r.metrics.length),
+        ] {
+            let series: Vec<(String, Vec<f64>)> = mine
+                .iter()
+                .map(|((_, l), rs)| (l.clone(), rs.iter().map(|r| get(r)).collect()))
+                .collect();
+            let path = out.join(format!("{}-{file}.svg", prob.name));
+            bench::chart_box(&prob.name, measure, &series, &path)
+                .map_err(|err| anyhow::anyhow!("{err}"))?;
+        }
+        let rates: Vec<(String, f64)> = summary
+            .iter()
+            .filter(|s| s.problem == p)
+            .map(|s| (s.planner.clone(), s.success_rate))
+            .collect();
+        let path = out.join(format!("{}-success.svg", prob.name));
+        bench::chart_success(&prob.name, &rates, &path).map_err(|err| anyhow::anyhow!("{err}"))?;
+    }
+
+    let mut report = Report {
+        problems: problems
+            .iter()
+            .map(|p| ProblemRecord {
+                name: p.name.clone(),
+                map: p.map_path.clone(),
+                query: p.query_text.clone(),
+            })
+            .collect(),
+        experiment: e,
+        runs,
+        summary,
+        comparisons,
+        wall_s,
+        sum_run_time_s,
+        sum_planning_time_s,
+        sum_planning_cpu_s,
+        command_cpu_s: f64::NAN,
+        threads,
+    };
+    write_csv(&out.join("runs.csv"), &report)?;
+    let json = serde_json::to_string_pretty(&report)?;
+    std::fs::write(out.join("runs.json"), json).context("writing runs.json")?;
+    // Everything but writing the report itself is in these totals.
+    report.command_cpu_s = cpu_started.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+    let md = markdown(&report, args.alpha, started.elapsed().as_secs_f64());
+    std::fs::write(out.join("summary.md"), &md).context("writing summary.md")?;
+    outln!("{md}")?;
+    outln!("outputs in {}", out.display())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+fn write_csv(path: &Path, r: &Report) -> anyhow::Result<()> {
+    let mut s = String::from(
+        "problem,map,query,planner,run,seed,solved,exact,status,time_s,planning_time_s,\
+         cpu_time_s,length,raw_length,nodes,explored,iterations,collision_checks,turns,\
+         max_curvature,min_clearance,transfer_time_s\n",
+    );
+    let f = |v: f64| {
+        if v.is_finite() {
+            v.to_string()
+        } else {
+            String::new()
+        }
+    };
+    // Labels may hold commas (`rrt:step=2,goal_bias=0.1`): quoted as RFC 4180 says.
+    let quote = |t: &str| format!("\"{}\"", t.replace('"', "\"\""));
+    for run in &r.runs {
+        let p = &r.problems[run.problem];
+        let m = &run.metrics;
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            quote(&p.name),
+            quote(&p.map.display().to_string()),
+            quote(&p.query),
+            quote(&run.planner),
+            m.run,
+            m.seed,
+            u8::from(m.success),
+            u8::from(run.exact),
+            run.status,
+            f(m.time_s),
+            f(run.planning_time_s),
+            f(m.cpu_time_s),
+            f(m.length),
+            f(run.raw_length),
+            f(m.nodes),
+            f(m.explored),
+            run.iterations,
+            run.collision_checks,
+            f(m.turns),
+            f(run.max_curvature),
+            f(m.min_clearance),
+            f(m.transfer_time_s),
+        );
+    }
+    std::fs::write(path, s).with_context(|| format!("writing {}", path.display()))
+}
+
+fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
+    let mut s = String::new();
+    let g = |v: f64, digits: usize| {
+        if v.is_finite() {
+            format!("{v:.digits$}")
+        } else {
+            "-".into()
+        }
+    };
+    for (p, prob) in r.problems.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "## {}: {} query {}\n",
+            prob.name,
+            prob.map.display(),
+            prob.query
+        );
+        let _ = writeln!(
+            s,
+            "| planner | runs | solved | time median (ms) | time IQR (ms) | length median | length IQR |"
+        );
+        let _ = writeln!(s, "|---|---:|---:|---:|---:|---:|---:|");
+        for row in r.summary.iter().filter(|x| x.problem == p) {
+            let _ = writeln!(
+                s,
+                "| {} | {} | {:.0}% | {} | {} | {} | {} |",
+                row.planner,
+                row.runs,
+                100.0 * row.success_rate,
+                g(1e3 * row.time_s.median, 3),
+                g(1e3 * row.time_s.iqr(), 3),
+                g(row.length.median, 2),
+                g(row.length.iqr(), 2),
+            );
+        }
+        let pairs: Vec<&Comparison> = r.comparisons.iter().filter(|c| c.problem == p).collect();
+        if !pairs.is_empty() {
+            let _ = writeln!(
+                s,
+                "\nPairwise Mann-Whitney U tests (two-sided p; Cliff's delta of A against B; \
+                 verdict at alpha = {alpha}):\n"
+            );
+            let _ = writeln!(
+                s,
+                "| A | B | time p | time delta | time | length p | length delta | length |"
+            );
+            let _ = writeln!(s, "|---|---|---:|---:|---|---:|---:|---|");
+            for c in pairs {
+                let word = |t: &bench::MetricTest, less: &str, more: &str| match t.verdict {
+                    harness::stats::Verdict::Held => format!("A {less}"),
+                    harness::stats::Verdict::NotHeld => format!("B {less}"),
+                    harness::stats::Verdict::NotSignificant => format!("no {more} difference"),
+                    harness::stats::Verdict::NoData => "no data".into(),
+                };
+                let _ = writeln!(
+                    s,
+                    "| {} | {} | {} | {} | {} | {} | {} | {} |",
+                    c.a,
+                    c.b,
+                    p_fmt(c.time.p_value),
+                    g(c.time.cliffs_delta, 2),
+                    word(&c.time, "faster", "significant"),
+                    p_fmt(c.length.p_value),
+                    g(c.length.cliffs_delta, 2),
+                    word(&c.length, "shorter", "significant"),
+                );
+            }
+        }
+        s.push('\n');
+    }
+    let _ = writeln!(
+        s,
+        "{} runs on {} threads. Wall clock: the runs {:.3} s, the whole command {:.3} s; sum \
+         of the run times (planning and post-processing) {:.3} s, of the planning times {:.3} s; \
+         command / planning = {:.3}. CPU: the command {:.3} s, the planning calls {:.3} s; \
+         command / planning = {:.3}.",
+        r.runs.len(),
+        r.threads,
+        r.wall_s,
+        total_s,
+        r.sum_run_time_s,
+        r.sum_planning_time_s,
+        total_s / r.sum_planning_time_s,
+        r.command_cpu_s,
+        r.sum_planning_cpu_s,
+        r.command_cpu_s / r.sum_planning_cpu_s,
+    );
+    s
+}
+
+fn p_fmt(p: f64) -> String {
+    if !p.is_finite() {
+        "-".into()
+    } else if p < 1e-4 {
+        format!("{p:.1e}")
+    } else {
+        format!("{p:.4}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Only RRT* to its whole budget is observed as anytime.
+    #[test]
+    fn anytime_rrt_star_only_for_the_whole_budget() {
+        let (spec, _) = planner_spec("rrt-star:stop_at_first_solution=false", 50.0, None).unwrap();
+        assert!(anytime_rrt_star(&spec).is_some());
+        let (spec, _) = planner_spec("rrt-star", 50.0, None).unwrap();
+        assert!(anytime_rrt_star(&spec).is_none());
+        let (spec, _) = planner_spec("rrt", 50.0, None).unwrap();
+        assert!(anytime_rrt_star(&spec).is_none());
+    }
+
+    #[test]
+    fn planner_specs_parse() {
+        let (spec, p) = planner_spec(
+            "rrt-star:step=2,stop_at_first_solution=false",
+            100.0,
+            Some(0.5),
+        )
+        .unwrap();
+        assert_eq!(p.info().name, "rrt-star");
+        assert_eq!(spec.planner.step(), Some(2.0));
+        let budget = spec.planner.budget().unwrap();
+        assert_eq!(budget.max_time, Some(std::time::Duration::from_millis(500)));
+        assert_eq!(budget.max_iterations, u64::MAX);
+        // The map-sized default step for the plain sampling planners only.
+        let (spec, _) = planner_spec("rrt", 100.0, None).unwrap();
+        assert_eq!(spec.planner.step(), Some(5.0));
+        let (spec, _) = planner_spec("rrt-astar-bt", 100.0, None).unwrap();
+        assert_eq!(spec.planner.step(), Some(40.0));
+        assert!(
+            planner_spec("rrt:stpe=2", 1.0, None)
+                .err()
+                .unwrap()
+                .contains("stpe")
+        );
+        assert!(planner_spec("nope", 1.0, None).is_err());
+        assert!(planner_spec("rrt:step", 1.0, None).is_err());
+        assert!(planner_spec("rrt:step=x", 1.0, None).is_err());
+    }
+}
