@@ -12,7 +12,7 @@ use crate::{ClaimKind, RunMetrics, Scenario, Summary};
 pub mod markdown;
 
 /// The level at which every ordering claim is decided (two one-sided Mann-Whitney U
-/// tests, see [`harness::stats::decide_less`]).
+/// tests, see [`crate::stats::decide_less`]).
 pub const ALPHA: f64 = 0.01;
 
 /// The metrics shown in the tables, with their headings.
