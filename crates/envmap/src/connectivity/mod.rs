@@ -33,7 +33,7 @@
 //! in the Free zone), and bisection over that integer range finds it exactly. Each test
 //! costs the runs near changes between rows times the disc's diameter (rows repeated in a
 //! block are widened once), so the searches touch the map's shapes a few dozen times and
-//! never its cells one by one: a few milliseconds on 2000 x 2000 cells. [`reference`]
+//! never its cells one by one: a few milliseconds on 2000 x 2000 cells. [`reference`](mod@reference)
 //! keeps the slow cell-by-cell version the tests compare against.
 //!
 //! ```
