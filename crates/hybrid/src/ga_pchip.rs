@@ -460,9 +460,9 @@ mod tests {
             budget: Budget::iterations(20),
             ..GaPchip::default()
         };
-        assert!(matches!(
-            ga.plan(&closed, &q, &mut rng),
-            Err(PlanError::BudgetExhausted { .. })
-        ));
+        // A closed wall is proved at once, before any generation.
+        let err = ga.plan(&closed, &q, &mut rng).unwrap_err();
+        assert!(matches!(err, PlanError::Disconnected { .. }), "{err}");
+        assert_eq!(err.cause(), Some(&hyplan_core::NoPathCause::Wall));
     }
 }
