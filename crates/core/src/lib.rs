@@ -16,7 +16,8 @@
 //! - [`Plan`], [`Tree`] and [`PlanStats`]: what a planner returns.
 //! - [`PlanError`]: typed failures, including "no path" with the statistics of the attempt;
 //!   [`NoPathCause`]: what separates start and goal when a connectivity check proves it.
-//! - [`Budget`]: iteration and time limits.
+//! - [`Budget`]: iteration and time limits; [`check`]: the parameter checks every planner
+//!   uses (positive, non-negative, probability, count).
 //! - [`Planner`] and [`PlannerInfo`]: the object-safe trait the harness holds as
 //!   `Box<dyn Planner>`.
 //! - [`path_length`]: the length of a polyline.
@@ -57,6 +58,7 @@
 //! - `serde`: `Serialize`/`Deserialize` for the plain data types (off by default).
 
 mod budget;
+pub mod check;
 mod error;
 mod geometry;
 mod plan;

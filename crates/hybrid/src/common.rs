@@ -1,37 +1,11 @@
 //! Pieces the four planners share beyond `sampling`'s toolkit (steer, uniform sampling,
-//! the counted collision checker, step/budget validation, branches): the hybrids' own
-//! parameter checks, the grid downcast, the goal join, zone queries and path assembly.
+//! the counted collision checker, step/budget validation, branches): the grid downcast,
+//! the goal join, zone queries and path assembly.
 
 use envmap::GridMap;
 use hyplan_core::{Goal, PlanError, Point2, Workspace, Zone};
 use sampling::CountingChecker;
 use search::{Connectivity, GridOptions};
-
-/// Checks that `value` is finite and >= 0.
-pub(crate) fn check_non_negative(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be finite and >= 0",
-        })
-    }
-}
-
-/// Checks a count >= 1.
-pub(crate) fn check_count(name: &'static str, value: usize) -> Result<(), PlanError> {
-    if value >= 1 {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be at least 1",
-        })
-    }
-}
 
 /// The grid map behind a workspace, or a typed error naming `workspace`.
 pub(crate) fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanError> {

@@ -147,7 +147,7 @@ impl Individual {
 
 impl GaPchip {
     fn validate_params(&self) -> Result<(), PlanError> {
-        common::check_count("via_points", self.via_points)?;
+        hyplan_core::check::count("via_points", self.via_points)?;
         if self.population < 2 {
             return Err(PlanError::InvalidParameter {
                 name: "population",
@@ -162,13 +162,13 @@ impl GaPchip {
                 reason: "must be smaller than the population",
             });
         }
-        sampling::check_probability("crossover_rate", self.crossover_rate)?;
-        sampling::check_probability("mutation_rate", self.mutation_rate)?;
-        sampling::check_positive("mutation_radius", self.mutation_radius)?;
-        common::check_count("stall_generations", self.stall_generations)?;
-        sampling::check_positive("probe_spacing", self.probe_spacing)?;
-        common::check_count("sample_tries", self.sample_tries)?;
-        sampling::check_positive("curve_spacing", self.curve_spacing)?;
+        hyplan_core::check::probability("crossover_rate", self.crossover_rate)?;
+        hyplan_core::check::probability("mutation_rate", self.mutation_rate)?;
+        hyplan_core::check::positive("mutation_radius", self.mutation_radius)?;
+        hyplan_core::check::count("stall_generations", self.stall_generations)?;
+        hyplan_core::check::positive("probe_spacing", self.probe_spacing)?;
+        hyplan_core::check::count("sample_tries", self.sample_tries)?;
+        hyplan_core::check::positive("curve_spacing", self.curve_spacing)?;
         self.budget.validate()
     }
 

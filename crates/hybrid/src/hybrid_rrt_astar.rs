@@ -122,11 +122,11 @@ impl Default for HybridRrtAstar {
 
 impl HybridRrtAstar {
     fn validate_params(&self) -> Result<(), PlanError> {
-        sampling::check_positive("step", self.step)?;
-        sampling::check_probability("goal_bias", self.goal_bias)?;
-        common::check_non_negative("goal_threshold", self.goal_threshold)?;
-        common::check_non_negative("astar_spacing", self.astar_spacing)?;
-        common::check_count("astar_max_visited", self.astar_max_visited)
+        hyplan_core::check::positive("step", self.step)?;
+        hyplan_core::check::probability("goal_bias", self.goal_bias)?;
+        hyplan_core::check::non_negative("goal_threshold", self.goal_threshold)?;
+        hyplan_core::check::non_negative("astar_spacing", self.astar_spacing)?;
+        hyplan_core::check::count("astar_max_visited", self.astar_max_visited)
     }
 
     /// Plans a path for `query` in `ws`, drawing every random number from `rng`.

@@ -180,14 +180,14 @@ impl RrtAstarBt {
     }
 
     fn validate_params(&self) -> Result<(), PlanError> {
-        sampling::check_positive("step", self.step)?;
-        common::check_non_negative("goal_radius", self.goal_radius)?;
-        common::check_count("candidates", self.candidates)?;
-        common::check_count("sample_tries", self.sample_tries)?;
+        hyplan_core::check::positive("step", self.step)?;
+        hyplan_core::check::non_negative("goal_radius", self.goal_radius)?;
+        hyplan_core::check::count("candidates", self.candidates)?;
+        hyplan_core::check::count("sample_tries", self.sample_tries)?;
         if let Some(r) = self.closed_radius {
-            common::check_non_negative("closed_radius", r)?;
+            hyplan_core::check::non_negative("closed_radius", r)?;
         }
-        sampling::check_positive("curve_spacing", self.curve_spacing)
+        hyplan_core::check::positive("curve_spacing", self.curve_spacing)
     }
 
     /// Plans a path for `query` in `ws`, drawing every random number from `rng`.

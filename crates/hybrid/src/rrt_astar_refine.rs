@@ -136,7 +136,7 @@ impl RrtAstarRefine {
         rng: &mut R,
     ) -> Result<Staged, PlanError> {
         let started = Instant::now();
-        common::check_non_negative("near_radius", self.near_radius)?;
+        hyplan_core::check::non_negative("near_radius", self.near_radius)?;
         let map = common::as_grid(ws)?;
         // 1. RRT (2.1): the initial path.
         let rrt = Rrt {

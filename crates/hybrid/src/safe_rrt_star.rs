@@ -132,15 +132,15 @@ impl Default for SafeRrtStar {
 
 impl SafeRrtStar {
     fn validate_params(&self) -> Result<(), PlanError> {
-        sampling::check_positive("step", self.step)?;
-        common::check_non_negative("goal_radius", self.goal_radius)?;
-        sampling::check_probability("goal_bias", self.goal_bias)?;
-        sampling::check_positive("gamma", self.gamma)?;
-        sampling::check_positive("max_radius", self.max_radius)?;
-        common::check_non_negative("safety_weight", self.safety_weight)?;
-        common::check_count("sample_tries", self.sample_tries)?;
-        sampling::check_positive("spline_max_spacing", self.spline_max_spacing)?;
-        sampling::check_positive("curve_spacing", self.curve_spacing)
+        hyplan_core::check::positive("step", self.step)?;
+        hyplan_core::check::non_negative("goal_radius", self.goal_radius)?;
+        hyplan_core::check::probability("goal_bias", self.goal_bias)?;
+        hyplan_core::check::positive("gamma", self.gamma)?;
+        hyplan_core::check::positive("max_radius", self.max_radius)?;
+        hyplan_core::check::non_negative("safety_weight", self.safety_weight)?;
+        hyplan_core::check::count("sample_tries", self.sample_tries)?;
+        hyplan_core::check::positive("spline_max_spacing", self.spline_max_spacing)?;
+        hyplan_core::check::positive("curve_spacing", self.curve_spacing)
     }
 
     /// The proof step before sampling: on a grid map whose only blocked zone is Forbidden,

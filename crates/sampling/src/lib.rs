@@ -16,9 +16,9 @@
 //! - [`NearestIndex`]: the k-d tree (kiddo) behind one small type, plain distances.
 //! - [`toolkit`], re-exported here: the building blocks the planners are made of, for
 //!   planners in other crates: [`steer`], [`sample_uniform`], [`sample_goal_biased`], [`CountingChecker`],
-//!   [`branch`], [`StarTree`], [`validate_step_and_budget`], [`check_connected`] (the
-//!   connectivity proof before sampling), [`check_positive`] and
-//!   [`check_probability`].
+//!   [`branch`], [`StarTree`], [`validate_step_and_budget`] and [`check_connected`] (the
+//!   connectivity proof before sampling). Parameter checks are
+//!   [`hyplan_core::check`]'s, shared by every planner.
 //!
 //! # Guarantees
 //!
@@ -101,8 +101,8 @@ pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::{RewireRadius, RrtStar};
 pub use toolkit::{
-    CountingChecker, StarTree, branch, check_connected, check_positive, check_probability,
-    sample_goal_biased, sample_uniform, steer, validate_step_and_budget,
+    CountingChecker, StarTree, branch, check_connected, sample_goal_biased, sample_uniform, steer,
+    validate_step_and_budget,
 };
 
 /// The README's examples, compiled and run as doctests.

@@ -112,7 +112,7 @@ impl Rrt {
     {
         let started = Instant::now();
         toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
-        toolkit::check_probability("goal_bias", self.goal_bias)?;
+        hyplan_core::check::probability("goal_bias", self.goal_bias)?;
         toolkit::check_connected(ws, query, started)?;
         let goal = query.goal;
         let mut checker = CountingChecker::new(ws);

@@ -41,40 +41,6 @@ use rand::Rng;
 
 use crate::NearestIndex;
 
-/// Checks that a length parameter `name` is finite and > 0.
-///
-/// # Errors
-///
-/// [`PlanError::InvalidParameter`] named `name` otherwise.
-pub fn check_positive(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be finite and > 0 (world units)",
-        })
-    }
-}
-
-/// Checks that `name` (a goal bias, say) is a probability in [0, 1].
-///
-/// # Errors
-///
-/// [`PlanError::InvalidParameter`] named `name` otherwise (NaN included).
-pub fn check_probability(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if (0.0..=1.0).contains(&value) {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be a probability in [0, 1]",
-        })
-    }
-}
-
 /// Validates what every tree-growing planner has, in this order: the step (finite and
 /// positive), the budget, the workspace bounds (a finite, positive area to sample in)
 /// and the query (start and goal inside the workspace and free).
@@ -90,7 +56,7 @@ pub fn validate_step_and_budget<W: Workspace + ?Sized>(
     ws: &W,
     query: &Query,
 ) -> Result<(), PlanError> {
-    check_positive("step", step)?;
+    hyplan_core::check::positive("step", step)?;
     budget.validate()?;
     let b = ws.bounds();
     if !(b.width() > 0.0 && b.height() > 0.0 && b.width().is_finite() && b.height().is_finite()) {

@@ -1,0 +1,77 @@
+//! Parameter checks shared by every planner: one rule per kind of value, one message.
+//!
+//! ```
+//! use hyplan_core::check;
+//! assert!(check::positive("step", 0.5).is_ok());
+//! assert!(check::probability("goal_bias", 1.5).is_err());
+//! ```
+
+use crate::PlanError;
+
+/// Checks that a length parameter `name` is finite and > 0.
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `name` otherwise.
+pub fn positive(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be finite and > 0 (world units)",
+        })
+    }
+}
+
+/// Checks that `name` is finite and >= 0.
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `name` otherwise.
+pub fn non_negative(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be finite and >= 0",
+        })
+    }
+}
+
+/// Checks that `name` (a goal bias, say) is a probability in [0, 1].
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `name` otherwise (NaN included).
+pub fn probability(name: &'static str, value: f64) -> Result<(), PlanError> {
+    if (0.0..=1.0).contains(&value) {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be a probability in [0, 1]",
+        })
+    }
+}
+
+/// Checks a count >= 1.
+///
+/// # Errors
+///
+/// [`PlanError::InvalidParameter`] named `name` otherwise.
+pub fn count(name: &'static str, value: usize) -> Result<(), PlanError> {
+    if value >= 1 {
+        Ok(())
+    } else {
+        Err(PlanError::InvalidParameter {
+            name,
+            value: format!("{value}"),
+            reason: "must be at least 1",
+        })
+    }
+}
