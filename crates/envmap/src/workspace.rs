@@ -147,16 +147,146 @@ fn clamp_index(x: f64, n: usize) -> usize {
     }
 }
 
+impl GridMap {
+    /// The cell whose square holds `p` more than 1e-6 cells from each of its edges (far
+    /// beyond the sweep's touch margin [`TOUCH_TOLERANCE`] and the rounding of the cell
+    /// coordinates), or `None`: the point test that needs no sweep.
+    #[inline]
+    fn interior_cell(&self, p: Point2) -> Option<(usize, usize)> {
+        let (r, o) = (self.resolution(), self.origin());
+        let (u, v) = ((p.x - o.x) / r, (p.y - o.y) / r);
+        if !(u >= 0.0 && v >= 0.0 && u < self.width() as f64 && v < self.height() as f64) {
+            return None;
+        }
+        let (i, j) = (u.floor(), v.floor());
+        let inside = |t: f64, k: f64| t - k > 1e-6 && k + 1.0 - t > 1e-6;
+        (inside(u, i) && inside(v, j)).then_some((i as usize, j as usize))
+    }
+}
+
+/// The zone queries along segments that the papers' planners need, exact on the cells.
+impl GridMap {
+    /// Whether the closed segment touches only `Free` cells (neither high-risk nor
+    /// forbidden) and both ends lie inside the map: seed 003's "safe" edge.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::Point2;
+    /// let map = GridMap::from_ascii("....\n.~~.\n....")?;
+    /// assert!(map.segment_in_safe_zone(Point2::new(0.5, 0.5), Point2::new(3.5, 0.5)));
+    /// assert!(!map.segment_in_safe_zone(Point2::new(0.5, 1.5), Point2::new(3.5, 1.5)));
+    /// assert!((map.risk_length(Point2::new(0.5, 1.5), Point2::new(3.5, 1.5)) - 2.0).abs() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn segment_in_safe_zone(&self, a: Point2, b: Point2) -> bool {
+        let bounds = self.bounds();
+        bounds.contains(a)
+            && bounds.contains(b)
+            && self.segment_cells(a, b, |i, j| self.cell_zone(i, j) == Zone::Free)
+    }
+
+    /// Length of the segment inside high-risk cells, world units (each cell's share
+    /// clipped exactly, [`clipped_length`](Self::clipped_length)): seed 003's risk cost.
+    #[must_use]
+    pub fn risk_length(&self, a: Point2, b: Point2) -> f64 {
+        let mut len = 0.0;
+        self.segment_cells(a, b, |i, j| {
+            if self.cell_zone(i, j) == Zone::Risk {
+                len += self.clipped_length(i, j, a, b);
+            }
+            true
+        });
+        len.min((b - a).norm())
+    }
+
+    /// Length of segment `a`-`b` inside the closed square of cell `(i, j)` (Liang-Barsky).
+    #[must_use]
+    pub fn clipped_length(&self, i: usize, j: usize, a: Point2, b: Point2) -> f64 {
+        let r = self.resolution();
+        let o = self.origin();
+        let (x0, y0) = (o.x + i as f64 * r, o.y + j as f64 * r);
+        let (x1, y1) = (x0 + r, y0 + r);
+        let d = b - a;
+        let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+        for (p, q) in [
+            (-d.x, a.x - x0),
+            (d.x, x1 - a.x),
+            (-d.y, a.y - y0),
+            (d.y, y1 - a.y),
+        ] {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return 0.0;
+                }
+            } else {
+                let t = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(t);
+                } else {
+                    t1 = t1.min(t);
+                }
+            }
+        }
+        if t1 > t0 { (t1 - t0) * d.norm() } else { 0.0 }
+    }
+
+    /// Distance from `p` to the nearest cell that blocks motion (its `blocked_from`), if one lies within
+    /// `radius` (world units); `None` when none does. Exact point-to-square distances over
+    /// the cells of the disc's bounding box.
+    #[must_use]
+    pub fn blocked_within(&self, p: Point2, radius: f64) -> Option<f64> {
+        let r = self.resolution();
+        let o = self.origin();
+        let (u, v) = ((p.x - o.x) / r, (p.y - o.y) / r);
+        let k = radius / r;
+        let i0 = (u - k).floor().max(0.0) as usize;
+        let j0 = (v - k).floor().max(0.0) as usize;
+        let i1 = ((u + k).floor().max(0.0) as usize).min(self.width().saturating_sub(1));
+        let j1 = ((v + k).floor().max(0.0) as usize).min(self.height().saturating_sub(1));
+        let mut best: Option<f64> = None;
+        for j in j0..=j1 {
+            for i in i0..=i1 {
+                if self.cell_free(i, j) {
+                    continue;
+                }
+                let dx = (i as f64 - u).max(0.0).max(u - (i as f64 + 1.0));
+                let dy = (j as f64 - v).max(0.0).max(v - (j as f64 + 1.0));
+                let d = dx.hypot(dy) * r;
+                if d < radius && best.is_none_or(|b| d < b) {
+                    best = Some(d);
+                }
+            }
+        }
+        best
+    }
+}
+
 impl Workspace for GridMap {
     fn bounds(&self) -> Bounds {
         GridMap::bounds(self)
     }
 
+    /// A point well inside one cell (the usual case for a random sample) is answered by
+    /// that cell alone; a point on or near a cell edge goes through the sweep, which
+    /// treats cells as closed. The same answer either way.
+    #[inline]
     fn is_free(&self, p: Point2) -> bool {
-        self.segment_free_cells(p, p)
+        match self.interior_cell(p) {
+            Some((i, j)) => self.cell_free(i, j),
+            None => self.segment_free_cells(p, p),
+        }
     }
 
+    /// A segment that ends well inside a blocked cell is refused without the sweep (the
+    /// sweep would meet that cell); any other goes through it.
+    #[inline]
     fn segment_free(&self, a: Point2, b: Point2) -> bool {
+        if let Some((i, j)) = self.interior_cell(b)
+            && !self.cell_free(i, j)
+        {
+            return false;
+        }
         self.segment_free_cells(a, b)
     }
 
@@ -180,6 +310,23 @@ impl Workspace for GridMap {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn clipped_length_of_a_diagonal() {
+        let map = GridMap::filled(4, 4, Zone::Free).unwrap();
+        let (a, b) = (Point2::new(0.0, 0.0), Point2::new(2.0, 2.0));
+        let l = map.clipped_length(0, 0, a, b);
+        assert!((l - 2f64.sqrt()).abs() < 1e-12);
+        assert_eq!(map.clipped_length(3, 0, a, b), 0.0);
+    }
+
+    #[test]
+    fn blocked_within_finds_the_nearest_cell() {
+        let map = GridMap::from_ascii(".....\n....#\n.....").unwrap();
+        let d = map.blocked_within(Point2::new(2.5, 1.5), 5.0).unwrap();
+        assert!((d - 1.5).abs() < 1e-12);
+        assert!(map.blocked_within(Point2::new(0.5, 1.5), 2.0).is_none());
+    }
 
     fn cells(map: &GridMap, a: (f64, f64), b: (f64, f64)) -> Vec<(usize, usize)> {
         let mut v = Vec::new();

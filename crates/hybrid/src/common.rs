@@ -101,12 +101,7 @@ impl<'a, W: Workspace + ?Sized> ZoneView<'a, W> {
     /// and both ends are inside the bounds.
     pub(crate) fn safe_segment(&self, a: Point2, b: Point2) -> bool {
         match self {
-            Self::Grid(map) => {
-                let bounds = map.bounds();
-                bounds.contains(a)
-                    && bounds.contains(b)
-                    && map.segment_cells(a, b, |i, j| map.cell_zone(i, j) == Zone::Free)
-            }
+            Self::Grid(map) => map.segment_in_safe_zone(a, b),
             Self::Sampled(ws, spacing) => {
                 if !ws.segment_free(a, b) {
                     return false;
@@ -120,16 +115,7 @@ impl<'a, W: Workspace + ?Sized> ZoneView<'a, W> {
     /// Length of the segment inside the Risk zone, world units.
     pub(crate) fn risk_length(&self, a: Point2, b: Point2) -> f64 {
         match self {
-            Self::Grid(map) => {
-                let mut len = 0.0;
-                map.segment_cells(a, b, |i, j| {
-                    if map.cell_zone(i, j) == Zone::Risk {
-                        len += clipped_length(map, i, j, a, b);
-                    }
-                    true
-                });
-                len.min((b - a).norm())
-            }
+            Self::Grid(map) => map.risk_length(a, b),
             Self::Sampled(ws, spacing) => {
                 let n = samples(a, b, *spacing);
                 let piece = (b - a).norm() / n as f64;
@@ -145,65 +131,6 @@ impl<'a, W: Workspace + ?Sized> ZoneView<'a, W> {
 /// Number of pieces of at most `spacing` on segment `a`-`b` (at least 1).
 fn samples(a: Point2, b: Point2, spacing: f64) -> usize {
     ((b - a).norm() / spacing).ceil().max(1.0) as usize
-}
-
-/// Length of segment `a`-`b` inside the closed square of cell `(i, j)` (Liang-Barsky).
-fn clipped_length(map: &GridMap, i: usize, j: usize, a: Point2, b: Point2) -> f64 {
-    let r = map.resolution();
-    let o = map.origin();
-    let (x0, y0) = (o.x + i as f64 * r, o.y + j as f64 * r);
-    let (x1, y1) = (x0 + r, y0 + r);
-    let d = b - a;
-    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-    for (p, q) in [
-        (-d.x, a.x - x0),
-        (d.x, x1 - a.x),
-        (-d.y, a.y - y0),
-        (d.y, y1 - a.y),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return 0.0;
-            }
-        } else {
-            let t = q / p;
-            if p < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    if t1 > t0 { (t1 - t0) * d.norm() } else { 0.0 }
-}
-
-/// Distance from `p` to the nearest cell of `map` that blocks motion, if one lies within
-/// `radius` (world units); `None` when none does. Exact point-to-square distances over
-/// the cells of the disc's bounding box.
-pub(crate) fn blocked_within(map: &GridMap, p: Point2, radius: f64) -> Option<f64> {
-    let r = map.resolution();
-    let o = map.origin();
-    let (u, v) = ((p.x - o.x) / r, (p.y - o.y) / r);
-    let k = radius / r;
-    let i0 = (u - k).floor().max(0.0) as usize;
-    let j0 = (v - k).floor().max(0.0) as usize;
-    let i1 = ((u + k).floor().max(0.0) as usize).min(map.width().saturating_sub(1));
-    let j1 = ((v + k).floor().max(0.0) as usize).min(map.height().saturating_sub(1));
-    let mut best: Option<f64> = None;
-    for j in j0..=j1 {
-        for i in i0..=i1 {
-            if map.cell_free(i, j) {
-                continue;
-            }
-            let dx = (i as f64 - u).max(0.0).max(u - (i as f64 + 1.0));
-            let dy = (j as f64 - v).max(0.0).max(v - (j as f64 + 1.0));
-            let d = dx.hypot(dy) * r;
-            if d < radius && best.is_none_or(|b| d < b) {
-                best = Some(d);
-            }
-        }
-    }
-    best
 }
 
 /// Moves of an 8-connected grid: offset and cost; the first four are the straight ones.
@@ -276,112 +203,9 @@ pub(crate) fn grid_astar(
     }
 }
 
-/// `is_free` through a [`CountingChecker`], answered by one cell lookup when the
-/// workspace is a [`GridMap`] and the point lies strictly inside one cell (the usual case
-/// for a random sample), else by the workspace itself. Gives exactly `ws.is_free(p)` and
-/// counts one check either way; it skips the general segment sweep that a point query
-/// goes through in `GridMap::segment_free_cells`.
-pub(crate) struct PointChecker<'a> {
-    /// The grid, its bounds, origin, 1 / resolution, and width and height in cells.
-    grid: Option<(&'a GridMap, hyplan_core::Bounds, Point2, f64, f64, f64)>,
-}
-
-impl<'a> PointChecker<'a> {
-    /// The checker for `ws`: the direct lookup when it is a grid map.
-    pub(crate) fn new<W: Workspace + ?Sized>(ws: &'a W) -> Self {
-        // Cell indices go through `i32` (a cheaper conversion than to `usize`).
-        let grid = ws
-            .as_any()
-            .and_then(|a| a.downcast_ref::<GridMap>())
-            .filter(|map| map.width() < i32::MAX as usize && map.height() < i32::MAX as usize)
-            .map(|map| {
-                (
-                    map,
-                    map.bounds(),
-                    map.origin(),
-                    1.0 / map.resolution(),
-                    map.width() as f64,
-                    map.height() as f64,
-                )
-            });
-        Self { grid }
-    }
-
-    /// Whether `p` is free, exactly as `checker.is_free(p)`, counted the same way: the
-    /// direct lookup answers only for points more than 1e-6 cells from every cell edge.
-    #[inline]
-    pub(crate) fn is_free<W: Workspace + ?Sized>(
-        &self,
-        checker: &mut CountingChecker<'_, W>,
-        p: Point2,
-    ) -> bool {
-        if let Some((map, bounds, o, inv, w, h)) = self.grid {
-            // As `GridMap::segment_free_cells(p, p)`: inside the closed bounds, then the
-            // cells whose closed squares contain p, in the same cell coordinates. A
-            // coordinate that is not a whole number lies in one column (row) only.
-            if !bounds.contains(p) {
-                checker.checks += 1;
-                return false;
-            }
-            let (u, v) = ((p.x - o.x) * inv, (p.y - o.y) * inv);
-            if u >= 0.0 && v >= 0.0 && u < w && v < h {
-                let (i, j) = (u as i32, v as i32);
-                // Clear of the cell's edges by far more than the sweep's touch margin
-                // (envmap::TOUCH_TOLERANCE) and the rounding of `* inv`; closer points
-                // go through the sweep, which treats cells as closed.
-                let inside =
-                    |t: f64, k: i32| t - f64::from(k) > 1e-6 && f64::from(k) + 1.0 - t > 1e-6;
-                if inside(u, i) && inside(v, j) {
-                    checker.checks += 1;
-                    return map.cell_free(i as usize, j as usize);
-                }
-            }
-        }
-        checker.is_free(p)
-    }
-
-    /// Whether the segment `a`-`b` is free, exactly as `checker.segment_free(a, b)` and
-    /// counted as one check. On a grid map, when `b` lies well inside a blocked cell
-    /// (each cell coordinate more than 1e-6 from a whole number, far beyond the sweep's
-    /// rounding) the answer is `false` without the sweep: the sweep meets the cell of its
-    /// end point `b` and stops at the first blocked cell it meets.
-    #[inline]
-    pub(crate) fn segment_free<W: Workspace + ?Sized>(
-        &self,
-        checker: &mut CountingChecker<'_, W>,
-        a: Point2,
-        b: Point2,
-    ) -> bool {
-        if let Some((map, bounds, o, inv, w, h)) = self.grid
-            && bounds.contains(b)
-        {
-            let (u, v) = ((b.x - o.x) * inv, (b.y - o.y) * inv);
-            if u >= 0.0 && v >= 0.0 && u < w && v < h {
-                let (i, j) = (u as i32, v as i32);
-                let inside =
-                    |t: f64, k: i32| t - f64::from(k) > 1e-6 && f64::from(k) + 1.0 - t > 1e-6;
-                if inside(u, i) && inside(v, j) && !map.cell_free(i as usize, j as usize) {
-                    checker.checks += 1;
-                    return false;
-                }
-            }
-        }
-        checker.segment_free(a, b)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn clipped_length_of_a_diagonal() {
-        let map = GridMap::filled(4, 4, Zone::Free).unwrap();
-        let (a, b) = (Point2::new(0.0, 0.0), Point2::new(2.0, 2.0));
-        let l = clipped_length(&map, 0, 0, a, b);
-        assert!((l - 2f64.sqrt()).abs() < 1e-12);
-        assert_eq!(clipped_length(&map, 3, 0, a, b), 0.0);
-    }
 
     #[test]
     fn risk_length_counts_risk_cells_only() {
@@ -391,14 +215,6 @@ mod tests {
         assert!((l - 2.0).abs() < 1e-12, "{l}");
         assert!(!view.safe_segment(Point2::new(0.5, 1.5), Point2::new(3.5, 1.5)));
         assert!(view.safe_segment(Point2::new(0.5, 0.5), Point2::new(3.5, 0.5)));
-    }
-
-    #[test]
-    fn blocked_within_finds_the_nearest_cell() {
-        let map = GridMap::from_ascii(".....\n....#\n.....").unwrap();
-        let d = blocked_within(&map, Point2::new(2.5, 1.5), 5.0).unwrap();
-        assert!((d - 1.5).abs() < 1e-12);
-        assert!(blocked_within(&map, Point2::new(0.5, 1.5), 2.0).is_none());
     }
 
     #[test]

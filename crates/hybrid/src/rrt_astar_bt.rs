@@ -21,9 +21,8 @@
 //! collision-free samples, by rejection), pushes ~41 000 candidates and pops nearly all of
 //! them, three in four already closed, and most of the rest blocked. So the work is kept
 //! per draw and per candidate: a sample on a [`envmap::GridMap`] is one cell lookup
-//! (`common::PointChecker`, same answer and same count as `is_free`, bounds read once), an
-//! edge whose new end lies inside a blocked cell is refused without the segment sweep
-//! (same answer, one check counted), the closed list is a bucket grid of the nodes
+//! (`GridMap::is_free`'s point test), an edge whose new end lies inside a blocked cell is
+//! refused without the segment sweep (`GridMap::segment_free`), the closed list is a bucket grid of the nodes
 //! (`ClosedList`: the 3 x 3 cells around a point, checked exactly) instead of a k-d tree
 //! query, a candidate already closed when drawn never enters the open list (it could never
 //! be taken: nodes are never removed, and the closed test comes before the counted edge
@@ -230,7 +229,6 @@ impl RrtAstarBt {
         let goal = query.goal;
         let target = goal.center();
         let mut checker = CountingChecker::new(ws);
-        let points_free = common::PointChecker::new(ws);
         let bounds = ws.bounds();
         let (width, height) = (bounds.width(), bounds.height());
         // The tree: every node ever grown, with its parent and g (path length from start),
@@ -273,7 +271,7 @@ impl RrtAstarBt {
                         bounds.min.x + hyplan_core::uniform01(rng) * width,
                         bounds.min.y + hyplan_core::uniform01(rng) * height,
                     );
-                    points_free.is_free(&mut checker, p).then_some(p)
+                    checker.is_free(p).then_some(p)
                 });
                 let Some(sample) = sample else { continue };
                 let c = sampling::steer(hp, sample, self.step);
@@ -300,11 +298,7 @@ impl RrtAstarBt {
             let mut chosen = None;
             while let Some(c) = open.pop() {
                 if !tree.is_closed(c.point)
-                    && points_free.segment_free(
-                        &mut checker,
-                        tree.point(c.parent as usize),
-                        c.point,
-                    )
+                    && checker.segment_free(tree.point(c.parent as usize), c.point)
                 {
                     chosen = Some(c);
                     break;
@@ -327,7 +321,7 @@ impl RrtAstarBt {
                         bounds.min.x + hyplan_core::uniform01(rng) * width,
                         bounds.min.y + hyplan_core::uniform01(rng) * height,
                     );
-                    points_free.is_free(&mut checker, p).then_some(p)
+                    checker.is_free(p).then_some(p)
                 });
                 if let Some((n, _)) = sample.and_then(|p| nearest.nearest(p)) {
                     head = n;

@@ -163,9 +163,7 @@ impl RrtAstarRefine {
         let near: Vec<bool> = raw
             .iter()
             .enumerate()
-            .map(|(k, &p)| {
-                k != 0 && k != m && common::blocked_within(map, p, self.near_radius).is_some()
-            })
+            .map(|(k, &p)| k != 0 && k != m && map.blocked_within(p, self.near_radius).is_some())
             .collect();
         // 3. Each run of near nodes re-planned by grid A* between its anchors.
         let (mut runs, mut failures) = (0_u32, 0_u32);
