@@ -1,6 +1,6 @@
 //! `Workspace` for `GridMap`: exact cell-level collision queries.
 
-use hyplan_core::{Bounds, Point2, Workspace, Zone};
+use hyplan_core::{Bounds, PlanError, Point2, Workspace, Zone};
 
 use crate::GridMap;
 
@@ -161,6 +161,42 @@ impl GridMap {
         let (i, j) = (u.floor(), v.floor());
         let inside = |t: f64, k: f64| t - k > 1e-6 && k + 1.0 - t > 1e-6;
         (inside(u, i) && inside(v, j)).then_some((i as usize, j as usize))
+    }
+}
+
+/// The grid map behind a workspace, for the planners that need one.
+impl GridMap {
+    /// The grid map behind `ws`, for `planner`, which runs on grid maps only: the one
+    /// place a workspace is downcast (a grid planner's `Planner` impl calls it; its own
+    /// `plan` takes a `&GridMap`).
+    ///
+    /// # Errors
+    ///
+    /// [`PlanError::InvalidParameter`] named `workspace`, naming the planner, when `ws` is
+    /// not a grid map.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// let map = GridMap::from_ascii("..")?;
+    /// assert!(GridMap::of_workspace(&map, "astar").is_ok());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn of_workspace<'a, W: Workspace + ?Sized>(
+        ws: &'a W,
+        planner: &'static str,
+    ) -> Result<&'a Self, PlanError> {
+        Self::try_of_workspace(ws).ok_or_else(|| PlanError::InvalidParameter {
+            name: "workspace",
+            value: format!("not an envmap::GridMap (given to {planner})"),
+            reason: "this planner runs on grid maps only",
+        })
+    }
+
+    /// The grid map behind `ws`, if it is one: for planners with an exact path on grids
+    /// and a sampled one elsewhere.
+    #[must_use]
+    pub fn try_of_workspace<W: Workspace + ?Sized>(ws: &W) -> Option<&Self> {
+        ws.as_any().and_then(|a| a.downcast_ref::<Self>())
     }
 }
 

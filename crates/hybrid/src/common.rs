@@ -3,20 +3,9 @@
 //! the goal join, zone queries and path assembly.
 
 use envmap::GridMap;
-use hyplan_core::{Goal, PlanError, Point2, Workspace, Zone};
+use hyplan_core::{Goal, Point2, Workspace, Zone};
 use sampling::CountingChecker;
 use search::{Connectivity, GridOptions};
-
-/// The grid map behind a workspace, or a typed error naming `workspace`.
-pub(crate) fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanError> {
-    ws.as_any()
-        .and_then(|a| a.downcast_ref::<GridMap>())
-        .ok_or(PlanError::InvalidParameter {
-            name: "workspace",
-            value: "not an envmap::GridMap".into(),
-            reason: "this planner runs grid A* searches and needs a grid map",
-        })
-}
 
 /// How a node that came within the planner's goal radius finishes the path.
 ///
@@ -83,7 +72,7 @@ pub(crate) enum ZoneView<'a, W: ?Sized> {
 impl<'a, W: Workspace + ?Sized> ZoneView<'a, W> {
     /// The exact view for a grid map, else the sampled one with `spacing`.
     pub(crate) fn new(ws: &'a W, spacing: f64) -> Self {
-        match ws.as_any().and_then(|a| a.downcast_ref::<GridMap>()) {
+        match GridMap::try_of_workspace(ws) {
             Some(map) => Self::Grid(map),
             None => Self::Sampled(ws, spacing),
         }

@@ -233,8 +233,19 @@ impl GaPchip {
                 checker.is_free(p).then_some(p)
             })
         };
+        // A time limit is checked before every evaluation (a generation on a large map
+        // takes longer than a short limit); an iteration budget only between generations,
+        // so seeded runs stay deterministic.
+        let out_of_time = || {
+            self.budget
+                .max_time
+                .is_some_and(|limit| started.elapsed() >= limit)
+        };
         let mut population: Vec<Individual> = Vec::with_capacity(self.population);
         for _ in 0..self.population {
+            if out_of_time() {
+                break;
+            }
             let mut genes: Vec<Point2> = (0..self.via_points)
                 .map(|_| free_sample(rng, &mut checker).unwrap_or(start))
                 .collect();
@@ -247,7 +258,7 @@ impl GaPchip {
         let mut best_length = f64::INFINITY;
         let mut stall = 0;
         let mut generation = 0_u64;
-        while !self.budget.exhausted(generation, started) {
+        'generations: while !population.is_empty() && !self.budget.exhausted(generation, started) {
             generation += 1;
             population.sort_by(|a, b| {
                 if a.beats(b) {
@@ -275,6 +286,10 @@ impl GaPchip {
             let radius = self.mutation_radius * diagonal * (1.0 - 0.9 * progress);
             let mut next: Vec<Individual> = population[..self.elites].to_vec();
             while next.len() < self.population {
+                if out_of_time() {
+                    // The generation is left unfinished; the last whole one stands.
+                    break 'generations;
+                }
                 let tournament = |rng: &mut R| {
                     let a = &population[rng.random_range(0..population.len())];
                     let b = &population[rng.random_range(0..population.len())];

@@ -133,18 +133,18 @@ impl HybridRrtAstar {
     ///
     /// # Errors
     ///
-    /// [`PlanError::InvalidParameter`] for a bad parameter or budget, or named `workspace`
-    /// when `ws` is not a grid map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
+    /// [`PlanError::InvalidParameter`] for a bad parameter or budget (through the
+    /// [`Planner`] trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
     /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
     /// passable cells do not join start and goal; [`PlanError::BudgetExhausted`] when neither
     /// the tree nor a sub-search reached the goal within the budget.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
+    pub fn plan<R: Rng + ?Sized>(
         &self,
-        ws: &W,
+        map: &GridMap,
         query: &Query,
         rng: &mut R,
     ) -> Result<Plan, PlanError> {
-        self.plan_detailed(ws, query, rng).map(|s| s.plan)
+        self.plan_detailed(map, query, rng).map(|s| s.plan)
     }
 
     /// [`plan`](Self::plan), also counting the sub-searches launched and given up.
@@ -152,15 +152,15 @@ impl HybridRrtAstar {
     /// # Errors
     ///
     /// As [`plan`](Self::plan).
-    pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
+    pub fn plan_detailed<R: Rng + ?Sized>(
         &self,
-        ws: &W,
+        map: &GridMap,
         query: &Query,
         rng: &mut R,
     ) -> Result<Staged, PlanError> {
+        let ws = map;
         let started = Instant::now();
         self.validate_params()?;
-        let map = common::as_grid(ws)?;
         sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
         sampling::check_connected(ws, query, started)?;
         let goal = query.goal;
@@ -312,6 +312,11 @@ impl Planner for HybridRrtAstar {
         query: &Query,
         rng: &mut dyn RngCore,
     ) -> Result<Plan, PlanError> {
-        HybridRrtAstar::plan(self, ws, query, rng)
+        HybridRrtAstar::plan(
+            self,
+            GridMap::of_workspace(ws, "hybrid-rrt-astar")?,
+            query,
+            rng,
+        )
     }
 }

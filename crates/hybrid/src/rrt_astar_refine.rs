@@ -108,19 +108,19 @@ impl RrtAstarRefine {
     ///
     /// # Errors
     ///
-    /// [`PlanError::InvalidParameter`] for a bad parameter or budget, or named `workspace`
-    /// when `ws` is not a grid map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
+    /// [`PlanError::InvalidParameter`] for a bad parameter or budget (through the
+    /// [`Planner`] trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
     /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
     /// passable cells do not join start and goal (checked by the RRT before sampling);
     /// [`PlanError::BudgetExhausted`] when the RRT
     /// does not reach the goal within its budget.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
+    pub fn plan<R: Rng + ?Sized>(
         &self,
-        ws: &W,
+        map: &GridMap,
         query: &Query,
         rng: &mut R,
     ) -> Result<Plan, PlanError> {
-        self.plan_detailed(ws, query, rng).map(|s| s.plan)
+        self.plan_detailed(map, query, rng).map(|s| s.plan)
     }
 
     /// [`plan`](Self::plan), also returning the raw RRT path and the refined path before
@@ -129,15 +129,15 @@ impl RrtAstarRefine {
     /// # Errors
     ///
     /// As [`plan`](Self::plan).
-    pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
+    pub fn plan_detailed<R: Rng + ?Sized>(
         &self,
-        ws: &W,
+        map: &GridMap,
         query: &Query,
         rng: &mut R,
     ) -> Result<Staged, PlanError> {
+        let ws = map;
         let started = Instant::now();
         hyplan_core::check::non_negative("near_radius", self.near_radius)?;
-        let map = common::as_grid(ws)?;
         // 1. RRT (2.1): the initial path.
         let rrt = Rrt {
             step: self.step,
@@ -281,6 +281,11 @@ impl Planner for RrtAstarRefine {
         query: &Query,
         rng: &mut dyn RngCore,
     ) -> Result<Plan, PlanError> {
-        RrtAstarRefine::plan(self, ws, query, rng)
+        RrtAstarRefine::plan(
+            self,
+            GridMap::of_workspace(ws, "rrt-astar-refine")?,
+            query,
+            rng,
+        )
     }
 }

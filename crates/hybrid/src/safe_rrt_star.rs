@@ -153,10 +153,8 @@ impl SafeRrtStar {
         query: &Query,
         started: Instant,
     ) -> Result<(), PlanError> {
-        let grid = ws
-            .as_any()
-            .and_then(|a| a.downcast_ref::<envmap::GridMap>())
-            .filter(|map| map.blocked_from == Zone::Forbidden);
+        let grid =
+            envmap::GridMap::try_of_workspace(ws).filter(|map| map.blocked_from == Zone::Forbidden);
         let cause = match grid {
             Some(map) => envmap::connectivity::disconnection_hopping(
                 map,

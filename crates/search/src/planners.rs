@@ -129,26 +129,27 @@ const UNLIMITED: Budget = Budget::iterations(u64::MAX);
 macro_rules! grid_planner {
     ($ty:ident, $algo:expr, $name:literal) => {
         impl $ty {
-            /// Plans on `ws`, which must be an [`envmap::GridMap`]. The RNG is not used
-            /// (the search is deterministic); it is there for the common planner shape.
+            /// Plans on `map`. The RNG is not used (the search is deterministic); it is
+            /// there for the common planner shape. Through the [`Planner`] trait, a
+            /// workspace that is not a grid map is refused with
+            /// [`PlanError::InvalidParameter`] named `workspace` (and the planner).
             ///
             /// # Errors
             ///
-            /// [`PlanError::InvalidParameter`] named `workspace` when `ws` is not a grid
-            /// map; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for points
+            /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for points
             /// outside the map, not finite or blocked; [`PlanError::Disconnected`] (with
             /// the cause: a wall, or the risk band) when a flood fill of the passable
             /// cells, run first, does not join start and goal; [`PlanError::NoPath`]
             /// (with the expansion count) when every reachable cell was expanded;
             /// [`PlanError::BudgetExhausted`] when the budget ran out first.
-            pub fn plan<W: Workspace + ?Sized, R: RngCore + ?Sized>(
+            pub fn plan<R: RngCore + ?Sized>(
                 &self,
-                ws: &W,
+                map: &GridMap,
                 query: &Query,
                 rng: &mut R,
             ) -> Result<Plan, PlanError> {
                 let _ = rng;
-                plan_on_grid(ws, query, self.options, self.budget, $algo)
+                plan_on_grid(map, query, self.options, self.budget, $algo)
             }
         }
 
@@ -168,7 +169,7 @@ macro_rules! grid_planner {
                 query: &Query,
                 rng: &mut dyn RngCore,
             ) -> Result<Plan, PlanError> {
-                $ty::plan(self, ws, query, rng)
+                $ty::plan(self, GridMap::of_workspace(ws, $name)?, query, rng)
             }
         }
     };
@@ -178,19 +179,8 @@ grid_planner!(GridAstar, Algo::Astar, "astar");
 grid_planner!(GridDijkstra, Algo::Dijkstra, "dijkstra");
 grid_planner!(ThetaStar, Algo::ThetaStar, "theta-star");
 
-/// The grid map behind a workspace, or a typed error.
-fn as_grid<W: Workspace + ?Sized>(ws: &W) -> Result<&GridMap, PlanError> {
-    ws.as_any()
-        .and_then(|a| a.downcast_ref::<GridMap>())
-        .ok_or(PlanError::InvalidParameter {
-            name: "workspace",
-            value: "not an envmap::GridMap".into(),
-            reason: "grid searches need a grid map",
-        })
-}
-
-fn plan_on_grid<W: Workspace + ?Sized>(
-    ws: &W,
+fn plan_on_grid(
+    map: &GridMap,
     query: &Query,
     options: GridOptions,
     budget: Budget,
@@ -198,7 +188,6 @@ fn plan_on_grid<W: Workspace + ?Sized>(
 ) -> Result<Plan, PlanError> {
     let started = Instant::now();
     budget.validate()?;
-    let map = as_grid(ws)?;
     query.validate(map)?;
     // A flood fill proves "no path", with its cause, faster than exhausting the search.
     let moves = match (algo, options.connectivity, options.corner_cutting) {
