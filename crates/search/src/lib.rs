@@ -69,7 +69,7 @@ mod astar;
 mod backtrack;
 mod dijkstra;
 #[cfg(feature = "grid")]
-mod grid_search;
+mod grid;
 mod heap;
 mod movingai;
 #[cfg(feature = "grid")]
@@ -82,9 +82,7 @@ pub use astar::astar;
 pub use backtrack::{BacktrackLimits, backtrack};
 pub use dijkstra::dijkstra;
 #[cfg(feature = "grid")]
-pub use grid_search::{
-    Connectivity, CostField, GridOptions, GridPath, GridSearch, GridSearchError,
-};
+pub use grid::{Connectivity, CostField, GridOptions, GridPath, GridSearch, GridSearchError};
 pub use movingai::{ScenEntry, ScenError, parse_scen, read_scen};
 #[cfg(feature = "grid")]
 pub use planners::{GridAstar, GridDijkstra, ThetaStar};

@@ -1,0 +1,477 @@
+//! The packed A* / Dijkstra engine shared by the grid searches: one word per cell
+//! (generation, g, parent move), a radix-friendly heap key, and the expansion loop.
+
+use super::*;
+
+impl GridSearch {
+    /// A* (`heuristic`) or Dijkstra from `s0` to `t0` (`NONE`: no target, run until the
+    /// reachable cells are exhausted) on fixed-point integer costs.
+    ///
+    /// Open list: the [`MinHeap`] of [`GridKey`]s (smallest f first, ties toward larger g,
+    /// i.e. smaller h; `u64` keys when [`Fixed::narrow`], else `u128`), with decrease-key
+    /// through `slot`, plus a stack of cells whose f equals the f being expanded: they
+    /// would come out of the heap next anyway (their g is final, the heuristic being
+    /// consistent), so they skip it, and runs toward the goal go depth-first. Stale
+    /// entries are skipped by the closed bit.
+    pub(super) fn grid_search(
+        &mut self,
+        s0: u32,
+        t0: u32,
+        heuristic: bool,
+    ) -> Result<GridPath, GridSearchError> {
+        if self.fixed.narrow {
+            self.grid_search_with::<u64>(s0, t0, heuristic)
+        } else {
+            self.grid_search_with::<Upper>(s0, t0, heuristic)
+        }
+    }
+
+    /// [`grid_search`](GridSearch::grid_search) with open-list keys of type `K`.
+    pub(super) fn grid_search_with<K: GridKey>(
+        &mut self,
+        s0: u32,
+        t0: u32,
+        heuristic: bool,
+    ) -> Result<GridPath, GridSearchError> {
+        let mut stats = SearchStats::default();
+        let fx = self.fixed;
+        let (unit, diag) = (fx.unit, fx.diag);
+        let four = self.options.connectivity == Connectivity::Four;
+        // h = hi * c_hi + lo * c_lo over the coordinate differences; zero for Dijkstra.
+        let (c_hi, c_lo) = match (heuristic, four) {
+            (false, _) => (0, 0),
+            (true, true) => (unit, unit),
+            (true, false) => (unit, diag - unit),
+        };
+        let (gx, gy) = if t0 == NONE { (0, 0) } else { self.xy(t0) };
+        let h = move |x: u32, y: u32| {
+            let dx = (i64::from(x) - i64::from(gx)).unsigned_abs();
+            let dy = (i64::from(y) - i64::from(gy)).unsigned_abs();
+            let (lo, hi) = if dx < dy { (dx, dy) } else { (dy, dx) };
+            hi * c_hi + lo * c_lo
+        };
+        let (sx, sy) = self.xy(s0);
+        let h0 = h(sx, sy);
+        // `base | g << G_SHIFT | d << 1` is an open word of this query with cost g reached
+        // by move d, `| 1` closes it.
+        let base = self.begin(s0, &mut stats);
+        K::heap(&mut self.heap, &mut self.wide_heap).push(K::pack(fx, fx.order(h0, h0), s0));
+        let run = Run {
+            t0,
+            base,
+            f0: h0 >> fx.f_shift,
+            pw: self.pw,
+            magic: self.magic,
+            fx,
+            h,
+        };
+        let Self {
+            words,
+            moves,
+            heap,
+            wide_heap,
+            stack,
+            slot,
+            ..
+        } = self;
+        let heap = K::heap(heap, wide_heap);
+        match expand(
+            &run, words, moves, heap, stack, slot, &mut stats, self.limit,
+        ) {
+            Expanded::Target(g) => {
+                let cost = fx.to_cells(g);
+                Ok(self.trace_words(t0, cost, stats))
+            }
+            Expanded::Exhausted => Err(GridSearchError::NoPath { stats }),
+            Expanded::Limit => Err(GridSearchError::LimitReached { stats }),
+        }
+    }
+
+    /// The A* / Dijkstra / Theta* entry point.
+    pub(super) fn run(
+        &mut self,
+        map: Option<&GridMap>,
+        start: (usize, usize),
+        goal: (usize, usize),
+        kind: Kind,
+    ) -> Result<GridPath, GridSearchError> {
+        let s0 = self.check(start, true)?;
+        let t0 = self.check(goal, false)?;
+        match (kind, map) {
+            (Kind::Astar, _) => self.grid_search(s0, t0, true),
+            (Kind::Dijkstra, _) | (Kind::ThetaStar, None) => self.grid_search(s0, t0, false),
+            (Kind::ThetaStar, Some(map)) => self.theta_search(map, s0, t0),
+        }
+    }
+}
+
+/// The eight moves `(dx, dy, cost)`: E, W, N, S, then the diagonals NE, NW, SE, SW.
+pub(super) const DIRS: [(i32, i32, f64); 8] = [
+    (1, 0, 1.0),
+    (-1, 0, 1.0),
+    (0, 1, 1.0),
+    (0, -1, 1.0),
+    (1, 1, SQRT2),
+    (-1, 1, SQRT2),
+    (1, -1, SQRT2),
+    (-1, -1, SQRT2),
+];
+
+/// The search state of one cell, valid in the current query only if `stamp` (without the
+/// closed bit) is the current generation.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Node {
+    /// Cost so far: fixed point (see [`Fixed`]) for A* and Dijkstra, `f64` bits for Theta*.
+    pub(super) g: u64,
+    /// The cell it was reached from ([`NONE`] for the start).
+    pub(super) parent: u32,
+    /// Generation of the last query that reached it, plus the [`CLOSED`] bit.
+    pub(super) stamp: u32,
+}
+
+/// Theta*'s open-list key: one `u128` compared as an integer, smallest first. From the
+/// top: the bits of `f` (non-negative `f64` bits sort as the numbers do), the complement of
+/// `g` as `f32` bits (ties on `f` go to the larger `g`; `f32` is only a tie-breaker, the
+/// order on `f` stays exact), and the cell index.
+#[inline(always)]
+pub(super) fn float_key(f: f64, g: f64, p: u32) -> u128 {
+    (u128::from(f.to_bits()) << 64) | (u128::from(!(g as f32).to_bits()) << 32) | u128::from(p)
+}
+
+/// The fixed inputs of [`expand`].
+pub(super) struct Run<H> {
+    /// Target cell (`NONE`: none).
+    t0: u32,
+    /// The query's base word ([`GridSearch::base`]).
+    pub(super) base: u64,
+    /// `f >> f_shift` of the start.
+    f0: u64,
+    pub(super) pw: usize,
+    pub(super) magic: u64,
+    pub(super) fx: Fixed,
+    /// Heuristic at padded coordinates.
+    pub(super) h: H,
+}
+
+/// How [`expand`] ended.
+pub(super) enum Expanded {
+    /// The target was taken from the open list with this g.
+    Target(u64),
+    /// The open list ran out.
+    Exhausted,
+    /// The search's limit was reached first.
+    Limit,
+}
+
+/// The loop of A* / Dijkstra (see [`GridSearch::grid_search`]) on the query's arrays,
+/// passed apart so that nothing else can alias them: expands cells until the target is
+/// taken from the open list (its g), the open list runs out, or the limit is reached.
+#[inline]
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the arrays are passed apart, see above"
+)]
+pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
+    run: &Run<H>,
+    words: &mut [u64],
+    moves: &[u8],
+    heap: &mut MinHeap<K>,
+    stack: &mut Vec<u32>,
+    slot: &mut [u32],
+    stats: &mut SearchStats,
+    limit: Limit,
+) -> Expanded {
+    let mut check_at = limit.next_check(stats.expansions);
+    let Run {
+        t0,
+        base,
+        f0,
+        pw,
+        magic,
+        fx,
+        ref h,
+    } = *run;
+    let (unit, diag) = (fx.unit, fx.diag);
+    // Every word above this one belongs to an earlier query.
+    let last = base | ((1 << GEN_SHIFT) - 1);
+    // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
+    // on the stack has it.
+    let mut f_cur = f0;
+    // Keeps `slot` up to date as the heap moves keys.
+    macro_rules! place {
+        () => {
+            &mut |k: K, i: usize| slot[k.cell(fx) as usize] = i as u32
+        };
+    }
+    // The heap's root is the cell being expanded (taken but not yet removed): the first
+    // successor that goes to the heap replaces it (one sift instead of a pop and a push).
+    let mut taken = false;
+    loop {
+        let p = if let Some(p) = stack.pop() {
+            p
+        } else {
+            if taken {
+                heap.pop_placed(place!());
+            }
+            let Some(k) = heap.peek() else {
+                break;
+            };
+            taken = true;
+            f_cur = k.order(fx) >> fx.tie_bits;
+            k.cell(fx)
+        };
+        let pu = p as usize;
+        let word = words[pu];
+        // Already closed: a stale entry. Queued cells are lowered in place, but a cell
+        // whose lower f sends it to the stack leaves its heap entry behind (and, when f
+        // values closer than the key's quantum were ordered wrongly, a closed cell can be
+        // reopened and queued again).
+        if word & 1 != 0 {
+            continue;
+        }
+        words[pu] = word | 1;
+        let g = (word >> G_SHIFT) & G_MASK;
+        if p == t0 {
+            return Expanded::Target(g);
+        }
+        if stats.expansions >= check_at {
+            if limit.spent(stats.expansions) {
+                return Expanded::Limit;
+            }
+            check_at = limit.next_check(stats.expansions);
+        }
+        stats.expansions += 1;
+        let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
+        let x = p - y * pw as u32;
+        let mask = moves[pu];
+        // The 3 x 3 block around p as three rows of three words (south, middle, north),
+        // so that the moves below index them with constants.
+        let (below, rest) = words.split_at_mut(pu - 1);
+        let (mid, above) = rest.split_at_mut(3);
+        let (Some(south), Some(mid), Some(north)) = (
+            below[pu - pw - 1..].first_chunk_mut::<3>(),
+            mid.first_chunk_mut::<3>(),
+            above[pw - 3..].first_chunk_mut::<3>(),
+        ) else {
+            // p is an inner cell of the padded grid: its 3 x 3 block exists.
+            continue;
+        };
+        // One move: whether it is legal (all ones if not), word, bit, padded index, cost,
+        // (dx, dy).
+        macro_rules! relax {
+            ($illegal:expr, $word:expr, $bit:expr, $q:expr, $cost:expr, $dx:expr, $dy:expr) => {{
+                let word = &mut $word;
+                let ng = g + $cost;
+                // Relax a legal move unless q has a g from this query at least as
+                // good (open, or closed: a closed cell's g is final, so never
+                // worse). With the bits below g all set in `test`, one comparison
+                // says it (a word of an earlier query is above every word of this
+                // one, a blocked cell's word is 0, below every test), and an illegal
+                // move's test is all ones, above every word. The word is read even
+                // for an illegal move (it exists: the padded border), so that one
+                // branch decides.
+                let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | $illegal;
+                if test < *word {
+                    stats.reached += u64::from(*word > last);
+                    *word = (test & !((1 << G_SHIFT) - 1)) | ($bit << 1);
+                    let q: u32 = $q;
+                    let hq = h(x.wrapping_add_signed($dx), y.wrapping_add_signed($dy));
+                    // The heuristic is consistent and the arithmetic exact, so
+                    // f >= f_cur.
+                    if (ng + hq) >> fx.f_shift <= f_cur {
+                        stack.push(q);
+                    } else {
+                        let key = K::pack(fx, fx.order(ng + hq, hq), q);
+                        // Already queued (its g dropped): lower its key in place. The
+                        // taken root is on its way out, so it does not count.
+                        // (`K::MAX` holds no cell: the border cell with the last index
+                        // is never queued.)
+                        let i = slot[q as usize] as usize;
+                        let queued = (heap.at(i).cell(fx) == q) & ((i != 0) | !taken);
+                        if queued {
+                            heap.decrease_placed(i, key, place!());
+                        } else if taken {
+                            heap.replace_top_placed(key, place!());
+                            taken = false;
+                        } else {
+                            heap.push_placed(key, place!());
+                        }
+                    }
+                    stats.pushes += 1;
+                }
+            }};
+        }
+        let pw32 = pw as u32;
+        // The order of `DIRS`: E, W, N, S, NE, NW, SE, SW.
+        // A straight move is legal exactly when its cell is passable, which the blocked
+        // word says; a diagonal also needs the corner rule, which the mask says.
+        let illegal = |bit: u8| u64::from((mask >> bit) & 1 ^ 1).wrapping_neg();
+        relax!(0, mid[2], 0, p + 1, unit, 1, 0);
+        relax!(0, mid[0], 1, p - 1, unit, -1, 0);
+        relax!(0, north[1], 2, p + pw32, unit, 0, 1);
+        relax!(0, south[1], 3, p - pw32, unit, 0, -1);
+        relax!(illegal(4), north[2], 4, p + pw32 + 1, diag, 1, 1);
+        relax!(illegal(5), north[0], 5, p + pw32 - 1, diag, -1, 1);
+        relax!(illegal(6), south[2], 6, p - pw32 + 1, diag, 1, -1);
+        relax!(illegal(7), south[0], 7, p - pw32 - 1, diag, -1, -1);
+    }
+    Expanded::Exhausted
+}
+
+/// The open-list key of A* and Dijkstra: the order ([`Fixed::order`]: f, then the
+/// tie-break on h) above the cell, in one `u64` on grids where both fit
+/// ([`Fixed::narrow`]), else in the two halves of a `u128` ordered by its upper half.
+pub(super) trait GridKey: HeapKey {
+    /// The key of cell `p` with order field `order`.
+    fn pack(fx: Fixed, order: u64, p: u32) -> Self;
+    /// The order field.
+    fn order(self, fx: Fixed) -> u64;
+    /// The cell.
+    fn cell(self, fx: Fixed) -> u32;
+    /// The open list of this key type.
+    fn heap<'a>(
+        narrow: &'a mut MinHeap<u64>,
+        wide: &'a mut MinHeap<Upper>,
+    ) -> &'a mut MinHeap<Self>;
+}
+
+impl GridKey for u64 {
+    #[inline(always)]
+    fn pack(fx: Fixed, order: u64, p: u32) -> Self {
+        (order << fx.cell_bits) | u64::from(p)
+    }
+    #[inline(always)]
+    fn order(self, fx: Fixed) -> u64 {
+        self >> fx.cell_bits
+    }
+    #[inline(always)]
+    fn cell(self, fx: Fixed) -> u32 {
+        (self & ((1 << fx.cell_bits) - 1)) as u32
+    }
+    fn heap<'a>(narrow: &'a mut MinHeap<u64>, _: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
+        narrow
+    }
+}
+
+impl GridKey for Upper {
+    #[inline(always)]
+    fn pack(_: Fixed, order: u64, p: u32) -> Self {
+        Upper((u128::from(order) << 64) | u128::from(p))
+    }
+    #[inline(always)]
+    fn order(self, _: Fixed) -> u64 {
+        (self.0 >> 64) as u64
+    }
+    #[inline(always)]
+    fn cell(self, _: Fixed) -> u32 {
+        self.0 as u32
+    }
+    fn heap<'a>(_: &'a mut MinHeap<u64>, wide: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
+        wide
+    }
+}
+
+/// Fixed-point costs of A* and Dijkstra: a straight move costs `unit = 2^k` and a diagonal
+/// `diag`, the odd integer nearest to `sqrt(2) * 2^k` (relative error below `2^-k`), with
+/// `k = 32` below 2^19 padded cells and smaller above so that g fits the 52 bits of its
+/// field in a cell's word.
+///
+/// Sums are exact, so the octile heuristic in the same units is exactly consistent. A cost
+/// `a * unit + b * diag` (a straight moves, b diagonals) determines `(a, b)` (diag is odd and
+/// `b < 2^k`), so equal integer costs are equal real costs, and
+/// [`to_cells`](Fixed::to_cells) returns `a + b * sqrt 2` exactly as `f64` sums it. Two
+/// real path lengths closer than the approximation error (`b * 2^-k`) could be ordered
+/// wrongly; for that, `|a' + b' sqrt 2|` must fall below `b 2^-k` for some integers of
+/// that size, which needs `b` around `2^(k/2)` (65,536 diagonals at k = 32).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Fixed {
+    /// `k`.
+    pub(super) shift: u32,
+    /// Cost of a straight move, `2^k`.
+    pub(super) unit: u64,
+    /// Cost of a diagonal move.
+    pub(super) diag: u64,
+    /// Inverse of `diag` modulo 2^64.
+    pub(super) inv_diag: u64,
+    /// Right shift of f for the f field of the order.
+    pub(super) f_shift: u32,
+    /// Right shift of h for the tie-break field of the order.
+    pub(super) h_shift: u32,
+    /// Bits of the tie-break field.
+    pub(super) tie_bits: u32,
+    /// Whether the open-list keys are `u64` (order above `cell_bits` bits of cell).
+    pub(super) narrow: bool,
+    /// Bits of the cell in a `u64` key.
+    pub(super) cell_bits: u32,
+}
+
+impl Fixed {
+    /// The scale for a padded grid of `pw x ph` cells.
+    pub(super) fn new(pw: usize, ph: usize) -> Self {
+        let n = pw * ph;
+        // Any path visits each cell at most once, so g < n * diag < n * 2^(k + 1) <=
+        // 2^(bits(n) + k + 1), which must fit the word's g field, and
+        // f = g + h < 2 n 2^(k + 1) <= 2^(bits(n) + k + 2) <= 2^64.
+        let bits = usize::BITS - n.leading_zeros();
+        let shift = (GEN_SHIFT - G_SHIFT - 1).saturating_sub(bits).min(32);
+        let unit = 1u64 << shift;
+        let diag = ((std::f64::consts::SQRT_2 * unit as f64).round() as u64) | 1;
+        // Newton's iteration for the inverse of an odd number modulo 2^64.
+        let mut inv_diag = diag;
+        for _ in 0..6 {
+            inv_diag = inv_diag.wrapping_mul(2u64.wrapping_sub(diag.wrapping_mul(inv_diag)));
+        }
+        // h <= (pw + ph) * diag < (pw + ph) * 2^(k + 1).
+        let h_bits = usize::BITS - (pw + ph).leading_zeros() + shift + 1;
+        // The f field quantum is 2^(bits(n) + 2 - f_bits) cells: a `u64` key is used when
+        // f gets at least bits(n) + 18 bits (a quantum of 2^-16 cells or finer) besides
+        // the cell and at least 8 bits of tie-break.
+        let cell_bits = usize::BITS - (n - 1).leading_zeros();
+        let spare = (64 - cell_bits).saturating_sub(bits + 18);
+        let narrow = spare >= 8;
+        let (f_bits, tie_bits) = if narrow {
+            let tie_bits = spare.min(16);
+            (64 - cell_bits - tie_bits, tie_bits)
+        } else {
+            (40, 24)
+        };
+        Self {
+            shift,
+            unit,
+            diag,
+            inv_diag,
+            f_shift: (bits + shift + 2).saturating_sub(f_bits),
+            h_shift: h_bits.saturating_sub(tie_bits),
+            tie_bits,
+            narrow,
+            cell_bits,
+        }
+    }
+
+    /// The order of a cell with f and h (fixed point) in the open list: the top bits of f,
+    /// then the top `tie_bits` bits of h (ties on f go to the smaller h, that is, the
+    /// larger g). With `u64` keys the cell's bits follow (so the order of equal fields is
+    /// by cell); with `u128` keys the order is the upper half, and equal ones come out in
+    /// any order.
+    ///
+    /// Truncating f merges only f values less than `2^f_shift` units apart: 2^-18 cells on
+    /// the peers' 101 x 101 maze, 2^-22 on the MovingAI arena, at most 2^-16 wherever keys
+    /// are `u64` (up to about 2^19 padded cells), and 2^-16 cells at 2^22 cells with
+    /// `u128` keys. Distinct lengths `a + b sqrt 2` of paths with fewer than about 10^4
+    /// diagonals lie further apart than that, so there the order is exact; otherwise a
+    /// cell may come out before one whose f is smaller by less than the quantum (a closed
+    /// cell that later gets a smaller g is reopened), and the cost is within the quantum
+    /// of the optimum. Truncating h only coarsens the tie-break.
+    #[inline(always)]
+    pub(super) fn order(self, f: u64, h: u64) -> u64 {
+        // h < 2^(h_shift + tie_bits), so the tie field holds it.
+        ((f >> self.f_shift) << self.tie_bits) | (h >> self.h_shift)
+    }
+
+    /// A fixed-point cost in cells: `a + b * sqrt 2` for `cost = a * unit + b * diag`.
+    pub(super) fn to_cells(self, cost: u64) -> f64 {
+        let b = cost.wrapping_mul(self.inv_diag) & (self.unit - 1);
+        let a = cost.wrapping_sub(b.wrapping_mul(self.diag)) >> self.shift;
+        a as f64 + b as f64 * SQRT2
+    }
+}

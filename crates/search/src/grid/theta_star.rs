@@ -1,0 +1,192 @@
+//! Theta*: any-angle paths between cell centres (line-of-sight parents).
+
+use super::engine::*;
+use super::*;
+
+impl GridSearch {
+    /// Any-angle path from `start` to `goal` by Theta* (Nash, Daniel, Koenig and Felner,
+    /// 2007): A* on the grid moves, except that a cell's parent may be any earlier cell in
+    /// line of sight, so the path goes straight between cell centres where it can. The
+    /// diagonal moves never cut corners, whatever [`GridOptions::corner_cutting`] says.
+    ///
+    /// Line of sight between two cell centres means that every cell the closed segment
+    /// touches (corners included, as [`GridMap::segment_cells`] sees it) is passable, so
+    /// every segment of the path passes the map's exact `segment_free`. The heuristic is
+    /// the Euclidean distance. Theta* is not guaranteed to find the shortest any-angle
+    /// path, and nodes may be re-expanded when their cost drops.
+    ///
+    /// `map` must be the map this search was built from (its frame is used for the line of
+    /// sight; which cells are passable comes from this search).
+    ///
+    /// # Errors
+    ///
+    /// As [`astar`](GridSearch::astar).
+    pub fn theta_star(
+        &mut self,
+        map: &GridMap,
+        start: (usize, usize),
+        goal: (usize, usize),
+    ) -> Result<GridPath, GridSearchError> {
+        self.run(Some(map), start, goal, Kind::ThetaStar)
+    }
+
+    /// Starts a Theta* query from `s` on its own nodes (allocated by the first query),
+    /// with g = 0.
+    pub(super) fn begin_theta(&mut self, s: u32, stats: &mut SearchStats) {
+        if self.theta_nodes.len() != self.words.len() {
+            let unset = Node {
+                g: 0,
+                parent: NONE,
+                stamp: 0,
+            };
+            self.theta_nodes = vec![unset; self.words.len()];
+            self.theta_generation = 0;
+        }
+        self.theta_generation += 1;
+        if self.theta_generation >= CLOSED {
+            for node in &mut self.theta_nodes {
+                node.stamp = 0;
+            }
+            self.theta_generation = 1;
+        }
+        self.theta_heap.clear();
+        self.theta_nodes[s as usize] = Node {
+            g: 0f64.to_bits(),
+            parent: NONE,
+            stamp: self.theta_generation,
+        };
+        stats.pushes += 1;
+        stats.reached = 1;
+    }
+
+    /// Padded coordinates `(x, y)` of a padded index (division by `pw` as a multiplication,
+    /// exact for every `u32` index: Lemire, Kaser and Kurz 2019).
+    #[inline(always)]
+    pub(super) fn xy(&self, p: u32) -> (u32, u32) {
+        let y = ((u128::from(p) * u128::from(self.magic)) >> 64) as u32;
+        (p - y * self.pw as u32, y)
+    }
+
+    /// Theta*'s loop, on `f64` costs (stored as bits in `g`) and keys of `f64` bits.
+    pub(super) fn theta_search(
+        &mut self,
+        map: &GridMap,
+        s0: u32,
+        t0: u32,
+    ) -> Result<GridPath, GridSearchError> {
+        let mut stats = SearchStats::default();
+        let (gx, gy) = self.xy(t0);
+        let euclid = move |x: u32, y: u32| {
+            let dx = f64::from(x.abs_diff(gx));
+            let dy = f64::from(y.abs_diff(gy));
+            dx.hypot(dy)
+        };
+        let (sx, sy) = self.xy(s0);
+        self.begin_theta(s0, &mut stats);
+        self.theta_heap.push(float_key(euclid(sx, sy), 0.0, s0));
+        let closed = self.theta_generation | CLOSED;
+        let limit = self.limit;
+        let mut check_at = limit.next_check(0);
+        while let Some(k) = self.theta_heap.pop() {
+            let p = k as u32;
+            if self.theta_nodes[p as usize].stamp == closed {
+                continue;
+            }
+            self.theta_nodes[p as usize].stamp = closed;
+            let g = f64::from_bits(self.theta_nodes[p as usize].g);
+            if p == t0 {
+                return Ok(self.trace(t0, g, stats));
+            }
+            if stats.expansions >= check_at {
+                if limit.spent(stats.expansions) {
+                    return Err(GridSearchError::LimitReached { stats });
+                }
+                check_at = limit.next_check(stats.expansions);
+            }
+            stats.expansions += 1;
+            self.theta_expand(map, p, g, &mut stats, euclid);
+        }
+        Err(GridSearchError::NoPath { stats })
+    }
+
+    /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
+    /// parent when it sees q (path 2 of the paper), else p (path 1).
+    pub(super) fn theta_expand(
+        &mut self,
+        map: &GridMap,
+        p: u32,
+        g: f64,
+        stats: &mut SearchStats,
+        h: impl Fn(u32, u32) -> f64,
+    ) {
+        // The grid moves, with the same rules as A* but never cutting corners: Theta*'s
+        // segments are checked exactly, so a diagonal must not touch a blocked corner.
+        let pw = self.pw as u32;
+        let pu = p as usize;
+        let pass = &self.passable;
+        let (e, w, n, s) = (
+            pass[pu + 1],
+            pass[pu - 1],
+            pass[pu + self.pw],
+            pass[pu - self.pw],
+        );
+        let mut moves = [(0u32, 0.0f64); 8];
+        let mut k = 0;
+        for (ok, q) in [(e, p + 1), (w, p - 1), (n, p + pw), (s, p - pw)] {
+            if ok {
+                moves[k] = (q, 1.0);
+                k += 1;
+            }
+        }
+        if self.options.connectivity == Connectivity::Eight {
+            for (a, b, q) in [
+                (n, e, p + pw + 1),
+                (n, w, p + pw - 1),
+                (s, e, p - pw + 1),
+                (s, w, p - pw - 1),
+            ] {
+                if a && b && pass[q as usize] {
+                    moves[k] = (q, SQRT2);
+                    k += 1;
+                }
+            }
+        }
+        let open = self.theta_generation;
+        let pp = self.theta_nodes[pu].parent;
+        for &(q, c) in &moves[..k] {
+            let qu = q as usize;
+            let st = self.theta_nodes[qu].stamp;
+            if st == open | CLOSED {
+                continue;
+            }
+            let (mut ng, mut parent) = (g + c, p);
+            if pp != NONE && self.line_of_sight(map, pp, q) {
+                let (a, b) = (self.cell(pp), self.cell(q));
+                let d = (a.0 as f64 - b.0 as f64).hypot(a.1 as f64 - b.1 as f64);
+                let via = f64::from_bits(self.theta_nodes[pp as usize].g) + d;
+                if via <= ng {
+                    ng = via;
+                    parent = pp;
+                }
+            }
+            if st == open && f64::from_bits(self.theta_nodes[qu].g) <= ng {
+                continue;
+            }
+            stats.reached += u64::from(st != open);
+            self.theta_nodes[qu].stamp = open;
+            self.theta_nodes[qu].g = ng.to_bits();
+            self.theta_nodes[qu].parent = parent;
+            let (x, y) = self.xy(q);
+            self.theta_heap.push(float_key(ng + h(x, y), ng, q));
+            stats.pushes += 1;
+        }
+    }
+
+    /// Whether the segment between the centres of cells `a` and `b` touches only passable
+    /// cells (corner touches included).
+    pub(super) fn line_of_sight(&self, map: &GridMap, a: u32, b: u32) -> bool {
+        let (a, b) = (self.cell(a), self.cell(b));
+        let (pa, pb) = (map.cell_center(a.0, a.1), map.cell_center(b.0, b.1));
+        map.segment_cells(pa, pb, |i, j| self.cell_passable(i, j))
+    }
+}
