@@ -73,9 +73,15 @@ fn zones_of(occ: &ArrayView2<'_, bool>) -> Vec<Zone> {
     let mut zones = Vec::with_capacity(h * w);
     for row in occ.axis_iter(Axis(0)).rev() {
         if let Some(s) = row.as_slice() {
-            zones.extend(s.iter().map(|&b| if b { Zone::Forbidden } else { Zone::Free }));
+            zones.extend(
+                s.iter()
+                    .map(|&b| if b { Zone::Forbidden } else { Zone::Free }),
+            );
         } else {
-            zones.extend(row.iter().map(|&b| if b { Zone::Forbidden } else { Zone::Free }));
+            zones.extend(
+                row.iter()
+                    .map(|&b| if b { Zone::Forbidden } else { Zone::Free }),
+            );
         }
     }
     zones
@@ -133,7 +139,10 @@ impl PyGridMap {
         max_cells: usize,
     ) -> PyResult<Self> {
         if !path.exists() {
-            return Err(PyOSError::new_err(format!("{}: no such file", path.display())));
+            return Err(PyOSError::new_err(format!(
+                "{}: no such file",
+                path.display()
+            )));
         }
         let opts = LoadOptions {
             threshold,
@@ -167,11 +176,17 @@ impl PyGridMap {
                 let mask = Mask::from_zones_at_least(&src, Zone::Forbidden);
                 let dist = envmap::distance_transform(&mask);
                 let zones = envmap::zones(&mask, &dist, cells);
-                GridMap::from_zones(src.width(), src.height(), src.resolution(), src.origin(), zones)
-                    .map(|mut m| {
-                        m.blocked_from = src.blocked_from;
-                        m
-                    })
+                GridMap::from_zones(
+                    src.width(),
+                    src.height(),
+                    src.resolution(),
+                    src.origin(),
+                    zones,
+                )
+                .map(|mut m| {
+                    m.blocked_from = src.blocked_from;
+                    m
+                })
             })
             .map_err(value_err)?;
         Ok(Self {
@@ -302,7 +317,12 @@ fn ron_value(v: &Bound<'_, PyAny>) -> PyResult<String> {
     if v.is_none() {
         Ok("None".into())
     } else if v.is_instance_of::<PyBool>() {
-        Ok(if v.extract::<bool>()? { "true" } else { "false" }.into())
+        Ok(if v.extract::<bool>()? {
+            "true"
+        } else {
+            "false"
+        }
+        .into())
     } else if v.is_instance_of::<PyInt>() {
         Ok(v.str()?.to_string())
     } else if v.is_instance_of::<PyFloat>() {
@@ -469,9 +489,13 @@ fn plan(
         let outcome = built.plan(&*grid, &query, &mut rng);
         let time_s = started.elapsed().as_secs_f64();
         let post = outcome.as_ref().ok().map(|p| {
-            harness::post_process(p, smoothing, 0.25 * grid.resolution(), limits.as_ref(), |a, b| {
-                grid.segment_free_cells(a, b)
-            })
+            harness::post_process(
+                p,
+                smoothing,
+                0.25 * grid.resolution(),
+                limits.as_ref(),
+                |a, b| grid.segment_free_cells(a, b),
+            )
         });
         (outcome, time_s, post)
     });
@@ -558,7 +582,12 @@ fn smooth<'py>(
 /// speed limit `vmax` (units/s), turn-rate limit `wmax` (rad/s, turning on the spot at
 /// each corner) and acceleration `amax` (units/s^2).
 #[pyfunction]
-fn transfer_time(path: PyReadonlyArray2<'_, f64>, vmax: f64, wmax: f64, amax: f64) -> PyResult<f64> {
+fn transfer_time(
+    path: PyReadonlyArray2<'_, f64>,
+    vmax: f64,
+    wmax: f64,
+    amax: f64,
+) -> PyResult<f64> {
     let view = path.as_array();
     if view.ncols() != 2 {
         return Err(PyValueError::new_err(format!(
@@ -566,7 +595,11 @@ fn transfer_time(path: PyReadonlyArray2<'_, f64>, vmax: f64, wmax: f64, amax: f6
             path.shape()
         )));
     }
-    let pts: Vec<Point2> = view.rows().into_iter().map(|r| Point2::new(r[0], r[1])).collect();
+    let pts: Vec<Point2> = view
+        .rows()
+        .into_iter()
+        .map(|r| Point2::new(r[0], r[1]))
+        .collect();
     let limits = postproc::Limits::new(vmax, wmax, amax).map_err(value_err)?;
     Ok(postproc::time_polyline(&pts, &limits)
         .map_err(value_err)?
@@ -577,22 +610,33 @@ fn transfer_time(path: PyReadonlyArray2<'_, f64>, vmax: f64, wmax: f64, amax: f6
 /// returns one record (a dict of the harness's `RunMetrics` plus `planner`) per run.
 #[pyfunction]
 #[pyo3(signature = (path, runs = None))]
-fn run_scenario<'py>(py: Python<'py>, path: PathBuf, runs: Option<u32>) -> PyResult<Bound<'py, PyList>> {
+fn run_scenario<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    runs: Option<u32>,
+) -> PyResult<Bound<'py, PyList>> {
     if !path.exists() {
-        return Err(PyOSError::new_err(format!("{}: no such file", path.display())));
+        return Err(PyOSError::new_err(format!(
+            "{}: no such file",
+            path.display()
+        )));
     }
     let records = py
-        .detach(|| -> Result<Vec<(String, Vec<harness::RunMetrics>)>, String> {
-            let (scenario, world) = harness::Scenario::load(&path).map_err(|e| e.to_string())?;
-            let runs = runs.unwrap_or(scenario.runs);
-            let mut out = Vec::new();
-            for spec in &scenario.planners {
-                let metrics = harness::run_planner(&scenario, &world, spec, runs, false, &|| {})
-                    .map_err(|e| e.to_string())?;
-                out.push((spec.label().to_string(), metrics));
-            }
-            Ok(out)
-        })
+        .detach(
+            || -> Result<Vec<(String, Vec<harness::RunMetrics>)>, String> {
+                let (scenario, world) =
+                    harness::Scenario::load(&path).map_err(|e| e.to_string())?;
+                let runs = runs.unwrap_or(scenario.runs);
+                let mut out = Vec::new();
+                for spec in &scenario.planners {
+                    let metrics =
+                        harness::run_planner(&scenario, &world, spec, runs, false, &|| {})
+                            .map_err(|e| e.to_string())?;
+                    out.push((spec.label().to_string(), metrics));
+                }
+                Ok(out)
+            },
+        )
         .map_err(PyValueError::new_err)?;
     let json = py.import("json")?;
     let list = PyList::empty(py);
