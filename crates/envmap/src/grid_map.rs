@@ -141,17 +141,29 @@ impl GridMap {
         origin: Point2,
         zones: Vec<Zone>,
     ) -> Result<Self, GridError> {
-        let mut map = Self::filled(width, height, Zone::Free)?;
-        if zones.len() != map.zones.len() {
+        // Checked before any allocation: the zones given are the map's only cell buffer
+        // (no filled map built and replaced), so a map from an array costs one copy.
+        let n = width
+            .checked_mul(height)
+            .filter(|&n| n > 0 && width <= u32::MAX as usize && height <= u32::MAX as usize)
+            .ok_or(GridError::InvalidSize { width, height })?;
+        if zones.len() != n {
             return Err(GridError::CellCount {
-                expected: map.zones.len(),
+                expected: n,
                 got: zones.len(),
             });
         }
-        map.zones = zones;
-        map.clearance_fields = Default::default();
-        map.connectivity = Default::default();
-        map.with_frame(resolution, origin)
+        Self {
+            width,
+            height,
+            resolution: 1.0,
+            origin: Point2::origin(),
+            zones,
+            blocked_from: Zone::Forbidden,
+            clearance_fields: Default::default(),
+            connectivity: Default::default(),
+        }
+        .with_frame(resolution, origin)
     }
 
     /// The same map with another resolution and origin.

@@ -1,0 +1,16 @@
+from . import scenario as scenario
+from ._hyplan import (
+    GridMap as GridMap,
+    PlanResult as PlanResult,
+    plan as plan,
+    planner_params as planner_params,
+    planners as planners,
+    smooth as smooth,
+    transfer_time as transfer_time,
+)
+
+class NoPathError(RuntimeError):
+    result: PlanResult
+    def __init__(self, message: str, result: PlanResult) -> None: ...
+    @property
+    def kind(self) -> str: ...
