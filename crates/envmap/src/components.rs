@@ -149,7 +149,8 @@ impl Runs {
     }
 }
 
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
+/// Union-find root of `x`, with path halving (shared with `connectivity`).
+pub(crate) fn find(parent: &mut [u32], mut x: u32) -> u32 {
     while parent[x as usize] != x {
         let up = parent[parent[x as usize] as usize];
         parent[x as usize] = up; // path halving
@@ -158,7 +159,8 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
-fn union(parent: &mut [u32], a: u32, b: u32) {
+/// Joins the sets of `a` and `b`; the smaller index stays the root.
+pub(crate) fn union(parent: &mut [u32], a: u32, b: u32) {
     let (ra, rb) = (find(parent, a), find(parent, b));
     // The smaller index is the root, so roots are the earliest runs.
     if ra < rb {

@@ -9,6 +9,7 @@ use hyplan_core::Zone;
 
 use super::{Moves, Target};
 use crate::GridMap;
+use crate::components::{find, union};
 
 /// A set of cells: per row, sorted disjoint runs `[i0, i1)` of columns that do not touch
 /// (a gap of at least one cell between runs of a row).
@@ -350,24 +351,6 @@ impl Components {
                 .enumerate()
                 .any(|(m, _)| self.label[base + first + m] == s)
         })
-    }
-}
-
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let up = parent[parent[x as usize] as usize];
-        parent[x as usize] = up; // path halving
-        x = up;
-    }
-    x
-}
-
-fn union(parent: &mut [u32], a: u32, b: u32) {
-    let (ra, rb) = (find(parent, a), find(parent, b));
-    if ra < rb {
-        parent[rb as usize] = ra;
-    } else if rb < ra {
-        parent[ra as usize] = rb;
     }
 }
 
