@@ -394,7 +394,7 @@ pub fn smooth_checked(
 /// use hyplan_core::Point2;
 /// use postproc::{Fit, FitOptions, OnFailure, fit_checked};
 /// let nodes = [Point2::new(0.0, 0.0), Point2::new(4.0, 1.0), Point2::new(5.0, 5.0)];
-/// // An oracle that accepts nothing off the polyline: the curve is refused.
+/// // An oracle that accepts nothing off the polyline: the repairs pull the curve onto it.
 /// let on = |p: Point2| {
 ///     nodes.windows(2).any(|w| {
 ///         let d = w[1] - w[0];
@@ -403,8 +403,10 @@ pub fn smooth_checked(
 ///     })
 /// };
 /// let options = FitOptions { insert_rounds: 0, on_failure: OnFailure::Polyline };
-/// let s = fit_checked(&nodes, Fit::BSpline, 0.25, options, |a, b| on(a) && on(b))?;
-/// assert!(s.refused && s.points.iter().all(|&p| on(p)));
+/// let s = fit_checked(&nodes, Fit::Pchip, 0.25, options, |a, b| on(a) && on(b))?;
+/// assert!(!s.repairs.is_empty());
+/// assert!(s.points.iter().all(|&p| on(p)));
+/// assert_eq!((s.points[0], *s.points.last().unwrap()), (nodes[0], nodes[2]));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn fit_checked(
