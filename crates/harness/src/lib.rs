@@ -26,13 +26,15 @@
 //! - [`report`]: the replay's claims decided on the runs, and its Markdown report.
 //! - [`bench`](mod@bench): `hyplan bench`'s runs on a user's problems: [`bench::run_once`], the
 //!   summary and pairwise rank tests, and [`bench::ompl_log`], OMPL's benchmark log format.
-//! - `draw_world`, `chart_metrics` (feature `plot`): figures in the papers' conventions and
-//!   box plots of the metrics.
+//! - `Scene`, `draw_world` (feature `plot`): the world figure (zones, rectangles, trees,
+//!   raw path, smoothed curve) as PNG or SVG, one composition for both; `chart_metrics`,
+//!   `chart_box`, `chart_success`: box plots and success bars (SVG).
 //!
 //! # Features
 //!
 //! - `parallel` (default): runs spread over threads with rayon; results equal the serial run's.
-//! - `plot` (default): PNG figures (tiny-skia) and SVG charts (plotters).
+//! - `plot` (default): world figures (PNG with tiny-skia, SVG with the zone picture
+//!   embedded) and charts (SVG, plotters).
 
 pub mod bench;
 #[cfg(feature = "plot")]
@@ -48,7 +50,10 @@ pub mod stats;
 /// An obstacle of a scenario's drawn grid: `envmap`'s shapes.
 pub use envmap::shapes::Shape;
 #[cfg(feature = "plot")]
-pub use figure::{FigureError, chart_metrics, draw_world};
+pub use figure::{
+    CURVE_COLOUR, FigureError, Mark, PATH_COLOUR, START_COLOUR, Scene, TREE_COLOURS, chart_box,
+    chart_metrics, chart_success, draw_world,
+};
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
 pub use planners::{Explored, PlannerConfig, RegistryError, ron_options};
 /// Robot limits of a scenario (speed, turn rate, acceleration): `postproc`'s type.

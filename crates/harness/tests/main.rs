@@ -1,6 +1,7 @@
 //! Public-API tests of `harness`: scenario validation and Monte-Carlo runs.
 
 mod budgets;
+mod figure;
 mod ompl_log;
 mod runs;
 mod scenarios;

@@ -233,11 +233,11 @@ fn svg_draws_map_tree_and_path() {
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("<svg"));
     assert!(text.matches("<path").count() >= 3, "two trees and the path");
-    assert!(text.contains("<rect"));
+    assert!(text.contains("data:image/png;base64,"), "the zone layer");
     assert!(stdout(&o).contains("path of length"));
 }
 
-/// The zones are one path per zone (no seams between rows), in envmap's colours, and a
+/// The zones are one picture (`envmap::render_zones`, no seams between rows), and a
 /// smoothed curve is drawn and reported with its transfer time.
 #[test]
 fn svg_zones_are_seamless_and_the_curve_is_drawn() {
@@ -265,10 +265,11 @@ fn svg_zones_are_seamless_and_the_curve_is_drawn() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let text = std::fs::read_to_string(&svg).unwrap();
-    // Only the white background is a rectangle; the wall is one path in black.
-    assert_eq!(text.matches("<rect").count(), 1, "{text}");
-    assert_eq!(text.matches(r##"fill="#000000""##).count(), 1, "{text}");
-    assert!(text.contains("#2ca02c"), "the smoothed curve");
+    // One raster for the zones, no cell rectangles.
+    assert_eq!(text.matches("<image").count(), 1, "{text}");
+    assert_eq!(text.matches("<rect").count(), 0, "{text}");
+    let hex = |c: [u8; 4]| format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
+    assert!(text.contains(&hex(harness::CURVE_COLOUR)), "the smoothed curve");
     let out = stdout(&o);
     assert!(
         out.contains("pchip curve") && out.contains("transfer time"),

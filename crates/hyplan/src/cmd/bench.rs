@@ -591,8 +591,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                 .map(|((_, l), rs)| (l.clone(), rs.iter().map(|r| get(r)).collect()))
                 .collect();
             let path = out.join(format!("{}-{file}.svg", prob.name));
-            bench::chart_box(&prob.name, measure, &series, &path)
-                .map_err(|err| anyhow::anyhow!("{err}"))?;
+            harness::chart_box(&prob.name, measure, &series, &path)?;
         }
         let rates: Vec<(String, f64)> = summary
             .iter()
@@ -600,7 +599,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             .map(|s| (s.planner.clone(), s.success_rate))
             .collect();
         let path = out.join(format!("{}-success.svg", prob.name));
-        bench::chart_success(&prob.name, &rates, &path).map_err(|err| anyhow::anyhow!("{err}"))?;
+        harness::chart_success(&prob.name, &rates, &path)?;
     }
 
     let mut report = Report {

@@ -7,13 +7,13 @@
 //! MovingAI `.map` files (the frame of image viewers, MovingAI and the OMPL peer), metres
 //! with y up for ROS YAML maps.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use envmap::{GridMap, InputFrame, LoadOptions};
-use hyplan_core::{Budget, Goal, NoPathCause, Plan, PlanError, Point2, Query, Zone};
+use hyplan_core::{Budget, Goal, NoPathCause, Plan, PlanError, Point2, Query};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
 use serde::Serialize;
@@ -263,15 +263,13 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         print_summary(&records)?;
     }
     if let Some(svg_path) = &args.svg {
-        let first = first.as_ref();
-        write_svg(
-            svg_path,
-            &setup.map,
-            &setup.query,
-            first.and_then(|o| o.plan.as_ref()),
-            first.and_then(|o| o.curve.as_deref()),
-        )
-        .with_context(|| format!("writing {}", svg_path.display()))?;
+        let plan = first.as_ref().and_then(|o| o.plan.as_ref());
+        let curve = first.as_ref().and_then(|o| o.curve.as_deref());
+        harness::Scene::new(&setup.map, &setup.query)
+            .trees(plan.map_or(&[], |p| &p.trees))
+            .path(plan.map_or(&[], |p| &p.path))
+            .curve(curve.unwrap_or(&[]))
+            .write_svg(svg_path)?;
     }
     Ok(if solved == records.len() {
         ExitCode::SUCCESS
@@ -553,138 +551,5 @@ fn print_summary(records: &[RunRecord]) -> std::io::Result<()> {
         time * 1e3,
         length.map_or_else(|| "-".to_string(), |l| format!("{l:.3}"))
     )?;
-    Ok(())
-}
-
-/// Draws zones, trees, the raw path and the smoothed curve, in cell units with y down
-/// (SVG's frame), one cell = 1 user unit. Each zone is one path of all its cell runs, so
-/// the renderer fills it in one pass with no seams between rows; colours are
-/// [`envmap::zone_colour`]'s, the scheme of every figure.
-fn write_svg(
-    path: &Path,
-    map: &GridMap,
-    query: &Query,
-    plan: Option<&Plan>,
-    curve: Option<&[Point2]>,
-) -> anyhow::Result<()> {
-    use svg::Document;
-    use svg::node::element::path::Data;
-    use svg::node::element::{Circle, Path as SvgPath, Rectangle};
-
-    let (w, h) = (map.width(), map.height());
-    let res = map.resolution();
-    let origin = map.origin();
-    // World point -> SVG point (cells, y down).
-    let to_svg = |p: Point2| ((p.x - origin.x) / res, h as f64 - (p.y - origin.y) / res);
-    let scale = 1.0_f64.max(800.0 / w.max(h) as f64);
-    let stroke = (w.max(h) as f64 / 800.0).max(0.05);
-    let mut doc = Document::new()
-        .set("viewBox", (0, 0, w, h))
-        .set("width", (w as f64 * scale).round())
-        .set("height", (h as f64 * scale).round())
-        .add(
-            Rectangle::new()
-                .set("width", w)
-                .set("height", h)
-                .set("fill", "white"),
-        );
-    let hex = |c: [u8; 3]| format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
-    for zone in [Zone::Risk, Zone::Forbidden] {
-        let mut data = Data::new();
-        let mut any = false;
-        for j in 0..h {
-            let row = h - 1 - j;
-            let mut i = 0;
-            while i < w {
-                if map.cell_zone(i, j) != zone {
-                    i += 1;
-                    continue;
-                }
-                let mut end = i + 1;
-                while end < w && map.cell_zone(end, j) == zone {
-                    end += 1;
-                }
-                data = data
-                    .move_to((i, row))
-                    .horizontal_line_by((end - i) as f64)
-                    .vertical_line_by(1)
-                    .horizontal_line_by(-((end - i) as f64))
-                    .close();
-                any = true;
-                i = end;
-            }
-        }
-        if any {
-            doc = doc.add(
-                SvgPath::new()
-                    .set("d", data)
-                    .set("fill", hex(envmap::zone_colour(zone)))
-                    .set("shape-rendering", "crispEdges"),
-            );
-        }
-    }
-    if let Some(plan) = plan {
-        for (k, tree) in plan.trees.iter().enumerate() {
-            let mut data = Data::new();
-            for (a, b) in tree.edges() {
-                data = data.move_to(to_svg(a)).line_to(to_svg(b));
-            }
-            let colour = if k == 0 { "#4a90d9" } else { "#5cb85c" };
-            doc = doc.add(
-                SvgPath::new()
-                    .set("d", data)
-                    .set("fill", "none")
-                    .set("stroke", colour)
-                    .set("stroke-width", stroke),
-            );
-        }
-        if plan.path.len() >= 2 {
-            let mut data = Data::new().move_to(to_svg(plan.path[0]));
-            for &p in &plan.path[1..] {
-                data = data.line_to(to_svg(p));
-            }
-            doc = doc.add(
-                SvgPath::new()
-                    .set("d", data)
-                    .set("fill", "none")
-                    .set("stroke", "#d9534f")
-                    .set("stroke-width", 3.0 * stroke),
-            );
-        }
-    }
-    if let Some(curve) = curve.filter(|c| c.len() >= 2) {
-        let mut data = Data::new().move_to(to_svg(curve[0]));
-        for &p in &curve[1..] {
-            data = data.line_to(to_svg(p));
-        }
-        doc = doc.add(
-            SvgPath::new()
-                .set("d", data)
-                .set("fill", "none")
-                .set("stroke", "#2ca02c")
-                .set("stroke-width", 2.0 * stroke),
-        );
-    }
-    let (sx, sy) = to_svg(query.start);
-    let (gx, gy) = to_svg(query.goal.center());
-    let marker = 4.0 * stroke;
-    doc = doc
-        .add(
-            Circle::new()
-                .set("cx", sx)
-                .set("cy", sy)
-                .set("r", marker)
-                .set("fill", "#d9534f"),
-        )
-        .add(
-            Circle::new()
-                .set("cx", gx)
-                .set("cy", gy)
-                .set("r", (query.goal.radius() / res).max(marker))
-                .set("fill", "none")
-                .set("stroke", "#d9534f")
-                .set("stroke-width", stroke),
-        );
-    svg::save(path, &doc)?;
     Ok(())
 }
