@@ -18,7 +18,8 @@
 //!   name; [`PlannerConfig::build`] makes the planner, `"rrt:step=2".parse()` reads the
 //!   command line's form.
 //! - [`RunMetrics`], [`measure`]: what one run is scored on; [`post_process`]: smoothing,
-//!   node metrics and transfer time of one plan, shared with `hyplan plan`.
+//!   node metrics and transfer time of one plan, shared with `hyplan plan`;
+//!   [`NoPathRecord`]: why a plan ended without a path.
 //! - [`run_planner`], [`run_seed`]: Monte-Carlo runs.
 //! - [`Summary`], [`Stat`]: mean, standard deviation, median, success rate;
 //!   [`stats::mann_whitney_u`] and [`stats::decide_less`]: the rank test that decides a
@@ -40,6 +41,7 @@ pub mod bench;
 #[cfg(feature = "plot")]
 mod figure;
 mod metrics;
+mod no_path;
 mod planners;
 pub mod report;
 mod room;
@@ -55,6 +57,7 @@ pub use figure::{
     chart_metrics, chart_success, draw_world,
 };
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
+pub use no_path::NoPathRecord;
 pub use planners::{Explored, PlannerConfig, RegistryError, ron_options};
 /// Robot limits of a scenario (speed, turn rate, acceleration): `postproc`'s type.
 pub use postproc::Limits;

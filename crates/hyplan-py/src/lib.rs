@@ -14,7 +14,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use envmap::{GridMap, InputFrame, LoadOptions, Mask};
-use hyplan_core::{Budget, Goal, NoPathCause, PlanError, Point2, Query, Zone};
+use hyplan_core::{Budget, Goal, PlanError, Point2, Query, Zone};
 use numpy::ndarray::{Array2, ArrayView2, Axis};
 use numpy::{IntoPyArray, PyArray2, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
@@ -341,27 +341,12 @@ fn ron_value(v: &Bound<'_, PyAny>) -> PyResult<String> {
 
 fn no_path_dict<'py>(py: Python<'py>, e: &PlanError, scale: f64) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    let (kind, cause, band, max): (&str, Option<&str>, Option<f64>, Option<f64>) = match e {
-        PlanError::Disconnected { cause, .. } => match cause {
-            NoPathCause::RiskBand {
-                band_radius,
-                max_radius,
-            } => (
-                "disconnected",
-                Some("risk-band"),
-                Some(band_radius / scale),
-                Some(max_radius / scale),
-            ),
-            _ => ("disconnected", Some("wall"), None, None),
-        },
-        PlanError::NoPath { .. } => ("exhausted", None, None, None),
-        _ => ("budget", None, None, None),
-    };
-    d.set_item("kind", kind)?;
-    d.set_item("cause", cause)?;
-    d.set_item("band_radius", band)?;
-    d.set_item("max_safety_radius", max)?;
-    d.set_item("message", e.to_string())?;
+    let r = harness::NoPathRecord::new(e, scale);
+    d.set_item("kind", r.kind)?;
+    d.set_item("cause", r.cause)?;
+    d.set_item("band_radius", r.band_radius)?;
+    d.set_item("max_safety_radius", r.max_safety_radius)?;
+    d.set_item("message", r.message)?;
     Ok(d)
 }
 

@@ -27,7 +27,7 @@ class NoPathError(RuntimeError):
 
     @property
     def kind(self):
-        """``"disconnected"``, ``"exhausted"`` or ``"budget"``."""
+        """``"disconnected"``, ``"exhausted"``, ``"budget"`` or ``"invalid"``."""
         return self.result.no_path["kind"]
 
 

@@ -13,7 +13,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use envmap::{GridMap, InputFrame, LoadOptions};
-use hyplan_core::{Budget, Goal, NoPathCause, Plan, PlanError, Point2, Query};
+use hyplan_core::{Budget, Goal, Plan, PlanError, Point2, Query};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
 use serde::Serialize;
@@ -140,59 +140,7 @@ pub struct RunRecord {
     pub transfer_time_s: Option<f64>,
     /// When no path was found: why.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub no_path: Option<NoPathRecord>,
-}
-
-/// Why a run found no path, for `--json`.
-#[derive(Debug, Clone, Serialize)]
-pub struct NoPathRecord {
-    /// `disconnected` (proved before planning: start and goal not connected in the zones
-    /// the planner may use), `exhausted` (a complete search ran out of nodes) or `budget`
-    /// (iterations or time ran out).
-    pub kind: &'static str,
-    /// For `disconnected`: `wall` (obstacles separate start and goal) or `risk-band` (the
-    /// high-risk band closes every passage).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub cause: Option<&'static str>,
-    /// For `risk-band`: the band's radius on the map, in the input's units.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub band_radius: Option<f64>,
-    /// For `risk-band`: every safety radius strictly below this (input units) leaves a
-    /// passage in the safe zone (the widest path's bottleneck).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub max_safety_radius: Option<f64>,
-    /// The planner's message.
-    pub message: String,
-}
-
-impl NoPathRecord {
-    /// The record of a "no path" error; lengths divided by `scale` (world units per input
-    /// unit).
-    fn new(e: &PlanError, scale: f64) -> Self {
-        let (kind, cause, band, max) = match e {
-            PlanError::Disconnected { cause, .. } => match cause {
-                NoPathCause::RiskBand {
-                    band_radius,
-                    max_radius,
-                } => (
-                    "disconnected",
-                    Some("risk-band"),
-                    Some(band_radius / scale),
-                    Some(max_radius / scale),
-                ),
-                _ => ("disconnected", Some("wall"), None, None),
-            },
-            PlanError::NoPath { .. } => ("exhausted", None, None, None),
-            _ => ("budget", None, None, None),
-        };
-        Self {
-            kind,
-            cause,
-            band_radius: band,
-            max_safety_radius: max,
-            message: e.to_string(),
-        }
-    }
+    pub no_path: Option<harness::NoPathRecord>,
 }
 
 fn parse_xy(s: &str) -> Result<(f64, f64), String> {
@@ -463,7 +411,7 @@ fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
                 smoothed: None,
                 turns: None,
                 transfer_time_s: None,
-                no_path: Some(NoPathRecord::new(e, scale)),
+                no_path: Some(harness::NoPathRecord::new(e, scale)),
             }
         }
         Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
