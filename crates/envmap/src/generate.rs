@@ -228,19 +228,7 @@ pub fn maze<R: Rng + ?Sized>(
     let mut stack = vec![(0_usize, 0_usize)];
     visited[0] = true;
     while let Some(&(i, j)) = stack.last() {
-        let mut next: Vec<(usize, usize)> = Vec::with_capacity(4);
-        if i > 0 {
-            next.push((i - 1, j));
-        }
-        if i + 1 < nx {
-            next.push((i + 1, j));
-        }
-        if j > 0 {
-            next.push((i, j - 1));
-        }
-        if j + 1 < ny {
-            next.push((i, j + 1));
-        }
+        let mut next = lattice_neighbours(i, j, nx, ny);
         next.retain(|&(a, b)| !visited[b * nx + a]);
         if next.is_empty() {
             stack.pop();
@@ -587,23 +575,7 @@ pub fn rooms<R: Rng + ?Sized>(
     let mut inside = vec![false; nx * ny];
     inside[0] = true;
     let mut frontier: Vec<((usize, usize), (usize, usize))> = Vec::new();
-    let neighbours = |i: usize, j: usize| {
-        let mut v = Vec::with_capacity(4);
-        if i > 0 {
-            v.push((i - 1, j));
-        }
-        if i + 1 < nx {
-            v.push((i + 1, j));
-        }
-        if j > 0 {
-            v.push((i, j - 1));
-        }
-        if j + 1 < ny {
-            v.push((i, j + 1));
-        }
-        v
-    };
-    frontier.extend(neighbours(0, 0).into_iter().map(|n| ((0, 0), n)));
+    frontier.extend(lattice_neighbours(0, 0, nx, ny).into_iter().map(|n| ((0, 0), n)));
     while !frontier.is_empty() {
         let (a, b) = frontier.swap_remove(rng.random_range(0..frontier.len()));
         if inside[b.1 * nx + b.0] {
@@ -611,11 +583,11 @@ pub fn rooms<R: Rng + ?Sized>(
         }
         inside[b.1 * nx + b.0] = true;
         edges.push((a, b));
-        frontier.extend(neighbours(b.0, b.1).into_iter().map(|n| (b, n)));
+        frontier.extend(lattice_neighbours(b.0, b.1, nx, ny).into_iter().map(|n| (b, n)));
     }
     for _ in 0..(nx * ny) / 10 {
         let (i, j) = (rng.random_range(0..nx), rng.random_range(0..ny));
-        let ns = neighbours(i, j);
+        let ns = lattice_neighbours(i, j, nx, ny);
         if !ns.is_empty() {
             edges.push(((i, j), ns[rng.random_range(0..ns.len())]));
         }
@@ -682,6 +654,26 @@ pub fn random_query<R: Rng + ?Sized>(
         }
     }
     None
+}
+
+
+/// The 4-neighbours of cell `(i, j)` of an `nx` x `ny` lattice (of maze cells or rooms),
+/// in the order the generators draw from: left, right, down, up.
+fn lattice_neighbours(i: usize, j: usize, nx: usize, ny: usize) -> Vec<(usize, usize)> {
+    let mut v = Vec::with_capacity(4);
+    if i > 0 {
+        v.push((i - 1, j));
+    }
+    if i + 1 < nx {
+        v.push((i + 1, j));
+    }
+    if j > 0 {
+        v.push((i, j - 1));
+    }
+    if j + 1 < ny {
+        v.push((i, j + 1));
+    }
+    v
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
 //! The private open lists: [`Entry`] for the generic searches (a min-heap on `f` with ties
-//! broken toward larger `g`) and [`MinHeap`], the grid searches' binary heap of packed keys.
+//! broken toward larger `g`) and `MinHeap`, the grid searches' binary heap of packed keys
+//! (feature `grid`).
 
 use std::cmp::Ordering;
 
@@ -40,6 +41,7 @@ impl<T> Ord for Entry<T> {
     }
 }
 
+#[cfg(feature = "grid")]
 /// A key of [`MinHeap`]: its order, and the value that fills the slots past the last key.
 pub(crate) trait HeapKey: Copy {
     /// Above or equal to every key.
@@ -48,6 +50,7 @@ pub(crate) trait HeapKey: Copy {
     fn lt(a: Self, b: Self) -> bool;
 }
 
+#[cfg(feature = "grid")]
 /// Ordered as integers (Theta*'s keys).
 impl HeapKey for u128 {
     const MAX: Self = u128::MAX;
@@ -57,6 +60,7 @@ impl HeapKey for u128 {
     }
 }
 
+#[cfg(feature = "grid")]
 /// Ordered as integers (the grid searches' keys on grids where they fit 64 bits).
 impl HeapKey for u64 {
     const MAX: Self = u64::MAX;
@@ -66,11 +70,13 @@ impl HeapKey for u64 {
     }
 }
 
+#[cfg(feature = "grid")]
 /// A key ordered by its upper 64 bits only (one `u64` comparison): the lower half carries
 /// the cell, and keys with equal upper halves come out in any order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct Upper(pub u128);
 
+#[cfg(feature = "grid")]
 impl HeapKey for Upper {
     const MAX: Self = Upper(u128::MAX);
     #[inline(always)]
@@ -79,6 +85,7 @@ impl HeapKey for Upper {
     }
 }
 
+#[cfg(feature = "grid")]
 /// A binary min-heap for the grid searches, whose callers pack their order (f, then the
 /// tie-break on g) and the cell into the key.
 ///
@@ -93,6 +100,7 @@ pub(crate) struct MinHeap<K> {
     len: usize,
 }
 
+#[cfg(feature = "grid")]
 impl<K: HeapKey> Default for MinHeap<K> {
     fn default() -> Self {
         Self {
@@ -102,6 +110,7 @@ impl<K: HeapKey> Default for MinHeap<K> {
     }
 }
 
+#[cfg(feature = "grid")]
 impl<K: HeapKey> MinHeap<K> {
     /// Removes every key, keeping the capacity.
     #[inline]
@@ -255,8 +264,11 @@ impl<K: HeapKey> MinHeap<K> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Entry, MinHeap, Upper};
+    use super::Entry;
+    #[cfg(feature = "grid")]
+    use super::{MinHeap, Upper};
 
+    #[cfg(feature = "grid")]
     #[test]
     fn min_heap_pops_in_order() {
         let mut heap = MinHeap::<u128>::default();
@@ -295,9 +307,11 @@ mod tests {
         small.sort_unstable();
         assert_eq!(tops, small);
     }
+    #[cfg(feature = "grid")]
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
 
+    #[cfg(feature = "grid")]
     /// A xorshift64 sequence from `state` (not 0).
     fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
         move || {
@@ -308,6 +322,7 @@ mod tests {
         }
     }
 
+    #[cfg(feature = "grid")]
     #[test]
     fn min_heap_matches_a_sorted_model_under_mixed_operations() {
         // Sizes cross many powers of two (the padded last level of `pop`), keys repeat.
@@ -341,6 +356,7 @@ mod tests {
         assert_eq!(heap.pop(), None);
     }
 
+    #[cfg(feature = "grid")]
     #[test]
     fn placed_operations_keep_an_index_of_every_key() {
         // Keys carry their "cell" in the low 16 bits; `place` records where each sits, as
