@@ -7,9 +7,7 @@ use std::path::Path;
 /// report section and (claims held, claims).
 pub fn section(root: &Path, figures: &Path) -> anyhow::Result<(String, usize, usize)> {
     let replay = sim::replay::seed004(&root.join("scenarios/sim"), 0)?;
-    replay
-        .write_figures(&figures.join("004-navigation"))
-        .map_err(anyhow::Error::msg)?;
+    replay.write_figures(&figures.join("004-navigation"))?;
     let held = replay.claims.iter().filter(|c| c.held).count();
     eprintln!(
         "004-navigation: 3 runs in {:.2} s, claims held {held}/{}",

@@ -575,7 +575,11 @@ pub fn rooms<R: Rng + ?Sized>(
     let mut inside = vec![false; nx * ny];
     inside[0] = true;
     let mut frontier: Vec<((usize, usize), (usize, usize))> = Vec::new();
-    frontier.extend(lattice_neighbours(0, 0, nx, ny).into_iter().map(|n| ((0, 0), n)));
+    frontier.extend(
+        lattice_neighbours(0, 0, nx, ny)
+            .into_iter()
+            .map(|n| ((0, 0), n)),
+    );
     while !frontier.is_empty() {
         let (a, b) = frontier.swap_remove(rng.random_range(0..frontier.len()));
         if inside[b.1 * nx + b.0] {
@@ -583,7 +587,11 @@ pub fn rooms<R: Rng + ?Sized>(
         }
         inside[b.1 * nx + b.0] = true;
         edges.push((a, b));
-        frontier.extend(lattice_neighbours(b.0, b.1, nx, ny).into_iter().map(|n| (b, n)));
+        frontier.extend(
+            lattice_neighbours(b.0, b.1, nx, ny)
+                .into_iter()
+                .map(|n| (b, n)),
+        );
     }
     for _ in 0..(nx * ny) / 10 {
         let (i, j) = (rng.random_range(0..nx), rng.random_range(0..ny));
@@ -655,7 +663,6 @@ pub fn random_query<R: Rng + ?Sized>(
     }
     None
 }
-
 
 /// The 4-neighbours of cell `(i, j)` of an `nx` x `ny` lattice (of maze cells or rooms),
 /// in the order the generators draw from: left, right, down, up.

@@ -22,7 +22,10 @@ fn map() -> GridMap {
 }
 
 fn query() -> Query {
-    Query::new(Point2::new(0.5, 0.5), Goal::disc(Point2::new(9.5, 4.5), 0.4))
+    Query::new(
+        Point2::new(0.5, 0.5),
+        Goal::disc(Point2::new(9.5, 4.5), 0.4),
+    )
 }
 
 /// The PNG's pixel at the centre of every cell is that cell's colour in

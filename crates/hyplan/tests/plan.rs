@@ -269,7 +269,10 @@ fn svg_zones_are_seamless_and_the_curve_is_drawn() {
     assert_eq!(text.matches("<image").count(), 1, "{text}");
     assert_eq!(text.matches("<rect").count(), 0, "{text}");
     let hex = |c: [u8; 4]| format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
-    assert!(text.contains(&hex(harness::CURVE_COLOUR)), "the smoothed curve");
+    assert!(
+        text.contains(&hex(harness::CURVE_COLOUR)),
+        "the smoothed curve"
+    );
     let out = stdout(&o);
     assert!(
         out.contains("pchip curve") && out.contains("transfer time"),

@@ -24,7 +24,7 @@
 //! - [`scenario`]: [`Scenario`] (RON files), [`ScenarioError`].
 //! - [`run()`]: the simulation loop, [`Outcome`], [`TICKS_PER_SECOND`].
 //! - [`record`]: [`Trace`], [`Row`], [`Event`], [`Summary`], CSV / JSON / SVG outputs
-//!   ([`write_all`]).
+//!   ([`write_all`], [`OutputError`]).
 //! - [`replay`]: the paper's three navigation scenarios against its figures.
 //! - [`soak`]: generated rooms with people, for the safety figures.
 //!
@@ -82,7 +82,9 @@ pub use laser::{Laser, LaserModel, Scan};
 pub use mapping::{Mapping, OccupancyGrid};
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
 pub use planner::GlobalPlanner;
-pub use record::{Contact, ContactClass, Event, EventKind, Row, Summary, Trace, write_all};
+pub use record::{
+    Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, write_all,
+};
 pub use run::{NOISE_STREAM, Outcome, PLANNER_STREAM, TICKS_PER_SECOND, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
 pub use tracking::{Mover, Tracker};

@@ -165,32 +165,65 @@ impl Trace {
     }
 }
 
+/// An output file of a run that could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// Creating the directory or writing a file failed.
+    #[error("writing {}: {source}", path.display())]
+    Io {
+        /// The directory or file.
+        path: PathBuf,
+        /// What the file system said.
+        source: std::io::Error,
+    },
+    /// The trace could not be serialised.
+    #[error("writing {}: {source}", path.display())]
+    Json {
+        /// The file.
+        path: PathBuf,
+        /// What serde_json said.
+        source: serde_json::Error,
+    },
+    /// The built map could not be written as ROS YAML + PGM.
+    #[error(transparent)]
+    Map(#[from] envmap::MapError),
+}
+
 /// Writes `trace.csv`, `trace.json`, `map.yaml` + `map.pgm`, `trajectory.svg`,
 /// `velocity.svg` and `animation.svg` into `dir`; returns the files written.
 ///
 /// # Errors
 ///
-/// Any io error, with the file.
-pub fn write_all(outcome: &Outcome, world: &World, dir: &Path) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+/// [`OutputError`] naming the directory or file that could not be written.
+pub fn write_all(
+    outcome: &Outcome,
+    world: &World,
+    dir: &Path,
+) -> Result<Vec<PathBuf>, OutputError> {
+    let io = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| OutputError::Io { path, source }
+    };
+    std::fs::create_dir_all(dir).map_err(io(dir))?;
     let mut files = Vec::new();
-    let mut put = |name: &str, text: String| -> Result<(), String> {
+    let mut put = |name: &str, text: String| -> Result<(), OutputError> {
         let p = dir.join(name);
-        std::fs::write(&p, text).map_err(|e| format!("writing {}: {e}", p.display()))?;
+        std::fs::write(&p, text).map_err(io(&p))?;
         files.push(p);
         Ok(())
     };
     put("trace.csv", outcome.trace.to_csv())?;
-    put(
-        "trace.json",
-        serde_json::to_string(outcome).map_err(|e| e.to_string())?,
-    )?;
+    let json = serde_json::to_string(outcome).map_err(|source| OutputError::Json {
+        path: dir.join("trace.json"),
+        source,
+    })?;
+    put("trace.json", json)?;
     put("trajectory.svg", trajectory_svg(outcome, world))?;
     put("velocity.svg", velocity_svg(&outcome.trace))?;
     put("animation.svg", animation_svg(outcome, world))?;
     if let Some(map) = &outcome.map {
         let p = dir.join("map.yaml");
-        map.write_ros(&p).map_err(|e| e.to_string())?;
+        map.write_ros(&p)?;
         files.push(p.clone());
         files.push(p.with_extension("pgm"));
     }

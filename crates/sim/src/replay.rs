@@ -348,8 +348,8 @@ impl Seed004 {
     ///
     /// # Errors
     ///
-    /// An io error, with the file.
-    pub fn write_figures(&self, dir: &Path) -> Result<(), String> {
+    /// [`crate::record::OutputError`] naming the file.
+    pub fn write_figures(&self, dir: &Path) -> Result<(), crate::record::OutputError> {
         for (sc, w, o) in &self.runs {
             crate::record::write_all(o, w, &dir.join(&sc.name))?;
         }

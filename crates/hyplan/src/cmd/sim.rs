@@ -75,7 +75,6 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     )?;
     if let Some(dir) = &args.out {
         let files = sim::write_all(&outcome, &world, dir)
-            .map_err(anyhow::Error::msg)
             .with_context(|| format!("writing the outputs into {}", dir.display()))?;
         for f in files {
             outln!("wrote {}", f.display())?;
