@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use hyplan_core::Point2;
+use hyplan_core::{Point2, Zone};
 use postproc::{Limits, PathMetrics, Repair, Smoothed, Smoothing, Timing, smooth_checked};
 
 /// Grid size in cells (world units = cells, origin lower left, y up).
@@ -135,11 +135,13 @@ fn scene(title: &str, input: &[Point2], s: &Smoothed) -> String {
     );
     for j in 0..H {
         for i in 0..W {
-            let fill = if blocked(i as i64, j as i64) {
-                "#333"
+            // The workspace's one zone scheme (envmap::zone_colour).
+            let [r, g, b] = envmap::zone_colour(if blocked(i as i64, j as i64) {
+                Zone::Forbidden
             } else {
-                "#f4f4f4"
-            };
+                Zone::Free
+            });
+            let fill = format!("#{r:02x}{g:02x}{b:02x}");
             let _ = writeln!(
                 svg,
                 r##"<rect x="{:.1}" y="{:.1}" width="{PX}" height="{PX}" fill="{fill}" stroke="#ddd" stroke-width="0.5"/>"##,
