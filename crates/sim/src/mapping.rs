@@ -262,6 +262,27 @@ impl OccupancyGrid {
         envmap::write_ros(&self.to_grid_map(), yaml_path)
     }
 
+    /// Marks the unknown cells whose centre lies within `radius` of `center` free (one
+    /// miss): the robot's footprint, which a scanner mounted ahead of the centre never
+    /// sees but which the robot, standing there, knows to be free. Known cells keep
+    /// their value.
+    pub fn mark_footprint_free(&mut self, center: Point2, radius: f64) {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let lo_i = ((center.x - radius - o.x) / res).floor().max(0.0) as usize;
+        let lo_j = ((center.y - radius - o.y) / res).floor().max(0.0) as usize;
+        let hi_i = (((center.x + radius - o.x) / res).ceil().max(0.0) as usize).min(self.width);
+        let hi_j = (((center.y + radius - o.y) / res).ceil().max(0.0) as usize).min(self.height);
+        for j in lo_j..hi_j {
+            for i in lo_i..hi_i {
+                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                if (c - center).norm() <= radius && self.value(i, j) == UNKNOWN {
+                    self.logodds[j * self.width + i] = self.params.l_miss as f32;
+                }
+            }
+        }
+    }
+
     /// Whether the cell holding `p` is occupied.
     #[must_use]
     pub fn occupied_at(&self, p: Point2) -> bool {
