@@ -262,6 +262,19 @@ impl OccupancyGrid {
         envmap::write_ros(&self.to_grid_map(), yaml_path)
     }
 
+    /// Sets cell `(i, j)` to the ROS value `v` (-1 unknown, 0 free, anything else
+    /// occupied) with one update's log-odds, for hand-made maps in tests and tools; a
+    /// cell outside the grid is ignored.
+    pub fn set_value(&mut self, i: usize, j: usize, v: i8) {
+        if i < self.width && j < self.height {
+            self.logodds[j * self.width + i] = match v {
+                UNKNOWN => -0.0,
+                FREE => self.params.l_miss as f32,
+                _ => self.params.l_hit as f32,
+            };
+        }
+    }
+
     /// Marks the unknown cells whose centre lies within `radius` of `center` free (one
     /// miss): the robot's footprint, which a scanner mounted ahead of the centre never
     /// sees but which the robot, standing there, knows to be free. Known cells keep

@@ -2,5 +2,6 @@
 
 mod kinematics;
 mod laser;
+mod explore;
 mod navigation;
 mod tracking;

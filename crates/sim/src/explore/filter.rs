@@ -134,20 +134,21 @@ impl Filter {
     }
 
     /// One cycle: the kept frontiers and the `published` points since the last cycle are
-    /// clustered, and the centres that pass on `map` and `costmap` are kept (and returned).
+    /// clustered, and the centres that pass on `map` and `costmap` (whose
+    /// [`Costmap::ros_values`] are `values`) are kept (and returned).
     pub fn update(
         &mut self,
         published: &[Point2],
         map: &OccupancyGrid,
         costmap: &Costmap,
+        values: &[i8],
     ) -> &[Point2] {
         let mut all = std::mem::take(&mut self.kept);
         all.extend_from_slice(published);
-        let values = costmap.ros_values();
         self.kept = mean_shift(&all, self.bandwidth)
             .into_iter()
             .filter(|&c| {
-                cost_at(costmap, &values, c) <= self.costmap_threshold
+                cost_at(costmap, values, c) <= self.costmap_threshold
                     && information_gain(map, c, self.radius) >= self.min_gain
             })
             .collect();

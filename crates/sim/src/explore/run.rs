@@ -319,6 +319,8 @@ pub fn explore(
     let mut goal: Option<Point2> = None;
     let mut candidates: Vec<Point2> = Vec::new();
     let mut idle_since: Option<u64> = None;
+    let mut map_version = 0u64;
+    let mut cached: Option<(u64, crate::costmap::Costmap, Vec<i8>)> = None;
     // Where the robot was when it last moved 0.2 m, and when.
     let mut anchor = (start, 0u64);
     let mut finished = false;
@@ -371,6 +373,7 @@ pub fn explore(
             laser.add_noise(&mut scan, &mut noise_rng);
             if tick % map_every == 0 {
                 map.integrate(&scan);
+                map_version += 1;
                 map.mark_footprint_free(here, robot.body_radius);
                 coverage.push(sample(&map, t));
             }
@@ -394,16 +397,24 @@ pub fn explore(
             }
         }
         if tick % cycle_every == 0 && turned.is_none() {
-            let costmap = costmaps.build(Some(&map), &[]);
-            let values = costmap.ros_values();
+            // The map changes once per map period: build its costmap once per change.
+            if cached.as_ref().is_none_or(|(at, _, _)| *at != map_version) {
+                let costmap = costmaps.build(Some(&map), &[]);
+                let values = costmap.ros_values();
+                cached = Some((map_version, costmap, values));
+            }
+            let Some((_, costmap, values)) = cached.as_ref() else {
+                unreachable!("built above")
+            };
+            let (costmap, values) = (costmap, values.as_slice());
             if rrt {
                 all_published.extend_from_slice(&published);
-                candidates = filter.update(&published, &map, &costmap).to_vec();
+                candidates = filter.update(&published, &map, costmap, values).to_vec();
                 published.clear();
             }
             if let Some(g) = goal {
                 let state = nav.state();
-                let still_good = cost_at(&costmap, &values, g) <= ex.costmap_threshold
+                let still_good = cost_at(costmap, values, g) <= ex.costmap_threshold
                     && information_gain(&map, g, ex.filter_radius) >= ex.min_gain;
                 if (here - anchor.0).norm() >= 0.2 {
                     anchor = (here, tick);
@@ -421,7 +432,7 @@ pub fn explore(
                 goal = if rrt {
                     assigner.choose(here, &candidates, &map)
                 } else {
-                    let next = nearest_frontier(&map, &costmap, here, ex.min_frontier_cells, |p| {
+                    let next = nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
                         assigner.blacklisted(p)
                     });
                     candidates = next.into_iter().collect();
