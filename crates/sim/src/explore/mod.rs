@@ -38,5 +38,6 @@ pub use filter::{Filter, information_gain, mean_shift};
 pub use frontier::{frontier_cells, frontier_clusters, nearest_frontier};
 pub use params::{Exploration, Strategy};
 pub use run::{
-    Coverage, ExploreOutcome, GLOBAL_STREAM, LOCAL_STREAM, Snapshot, explore, reachable_free,
+    Coverage, ExploreOutcome, GLOBAL_STREAM, LOCAL_STREAM, Snapshot, explore, explore_with,
+    reachable_free, region_of,
 };

@@ -234,6 +234,22 @@ pub fn explore(
     seed: u64,
     strategy: Strategy,
 ) -> Result<ExploreOutcome, RegionError> {
+    explore_with(scenario, world, seed, strategy, &mut |_| {})
+}
+
+/// [`explore`], calling `progress` with every coverage sample as the run goes.
+///
+/// # Errors
+///
+/// As [`explore`].
+#[allow(clippy::too_many_lines)]
+pub fn explore_with(
+    scenario: &Scenario,
+    world: &World,
+    seed: u64,
+    strategy: Strategy,
+    progress: &mut dyn FnMut(&Coverage),
+) -> Result<ExploreOutcome, RegionError> {
     let ex = &scenario.exploration;
     let region = region_of(scenario, world.bounds)?;
     let dt = 1.0 / TICKS_PER_SECOND as f64;
@@ -376,6 +392,7 @@ pub fn explore(
                 map_version += 1;
                 map.mark_footprint_free(here, robot.body_radius);
                 coverage.push(sample(&map, t));
+                progress(&coverage[coverage.len() - 1]);
             }
             tracker.update(&scan, tick);
             memory.insert(scan, tick);
