@@ -18,6 +18,7 @@ mod bench_peers;
 mod report;
 mod reproduce;
 mod rooms;
+mod explore004;
 mod sim004;
 mod soak;
 

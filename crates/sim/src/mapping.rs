@@ -262,6 +262,18 @@ impl OccupancyGrid {
         envmap::write_ros(&self.to_grid_map(), yaml_path)
     }
 
+    /// How many cells are free among those `mask` selects (row-major from the bottom row,
+    /// one flag per cell; a shorter mask selects fewer cells).
+    #[must_use]
+    pub fn count_free(&self, mask: &[bool]) -> usize {
+        // Free: crossed (not -0.0) and log-odds <= 0.
+        self.logodds
+            .iter()
+            .zip(mask)
+            .filter(|&(&l, &m)| m && l <= 0.0 && !(l == 0.0 && l.is_sign_negative()))
+            .count()
+    }
+
     /// Sets cell `(i, j)` to the ROS value `v` (-1 unknown, 0 free, anything else
     /// occupied) with one update's log-odds, for hand-made maps in tests and tools; a
     /// cell outside the grid is ignored.

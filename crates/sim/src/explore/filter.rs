@@ -11,8 +11,10 @@
 use hyplan_core::Point2;
 use sampling::NearestIndex;
 
-use crate::costmap::Costmap;
-use crate::mapping::{OccupancyGrid, UNKNOWN};
+use envmap::Inflation;
+
+use crate::costmap::{Costmap, ros_cost};
+use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
 
 /// Flat-kernel mean shift: each point climbs to the mean of the points within
 /// `bandwidth` until it moves less than `bandwidth / 1000` (at most 300 steps); centres
@@ -91,6 +93,30 @@ pub fn information_gain(map: &OccupancyGrid, p: Point2, radius: f64) -> f64 {
     n as f64 * res * res
 }
 
+/// The costmap value (ROS 0-100) at `p` from the built map alone: the Nav2 inflation
+/// cost of the distance from `p` to the nearest occupied cell centre of `map` (100 off
+/// the map). The same rule as [`Costmap`] without building the whole grid: the filter
+/// asks about a few dozen points per cycle.
+#[must_use]
+pub fn built_cost(map: &OccupancyGrid, inflation: &Inflation, p: Point2) -> i8 {
+    let Some((ci, cj)) = map.cell_of(p) else {
+        return 100;
+    };
+    let res = map.params.resolution;
+    let o = map.origin();
+    let reach = (inflation.inflation_radius / res).ceil() as usize + 1;
+    let mut best = f64::INFINITY;
+    for j in cj.saturating_sub(reach)..(cj + reach + 1).min(map.height()) {
+        for i in ci.saturating_sub(reach)..(ci + reach + 1).min(map.width()) {
+            if map.value(i, j) == OCCUPIED {
+                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                best = best.min((c - p).norm());
+            }
+        }
+    }
+    ros_cost(inflation.cost(best))
+}
+
 /// The costmap's ROS value (0-100) at `p`; 100 off the map.
 #[must_use]
 pub fn cost_at(costmap: &Costmap, values: &[i8], p: Point2) -> i8 {
@@ -134,21 +160,20 @@ impl Filter {
     }
 
     /// One cycle: the kept frontiers and the `published` points since the last cycle are
-    /// clustered, and the centres that pass on `map` and `costmap` (whose
-    /// [`Costmap::ros_values`] are `values`) are kept (and returned).
+    /// clustered, and the centres that pass on `map` (information gain) and `cost` (the
+    /// costmap value at a point, e.g. [`built_cost`]) are kept (and returned).
     pub fn update(
         &mut self,
         published: &[Point2],
         map: &OccupancyGrid,
-        costmap: &Costmap,
-        values: &[i8],
+        cost: impl Fn(Point2) -> i8,
     ) -> &[Point2] {
         let mut all = std::mem::take(&mut self.kept);
         all.extend_from_slice(published);
         self.kept = mean_shift(&all, self.bandwidth)
             .into_iter()
             .filter(|&c| {
-                cost_at(costmap, values, c) <= self.costmap_threshold
+                cost(c) <= self.costmap_threshold
                     && information_gain(map, c, self.radius) >= self.min_gain
             })
             .collect();

@@ -24,12 +24,12 @@ use rand_chacha::ChaCha8Rng;
 use crate::costmap::{CostmapBuilder, ObstacleMemory, rasterize};
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
-use crate::explore::filter::{Filter, cost_at, information_gain};
+use crate::explore::filter::{Filter, built_cost, information_gain};
 use crate::explore::frontier::nearest_frontier;
 use crate::explore::params::Strategy;
 use crate::kinematics::{self, Pose, Twist};
 use crate::laser::LaserModel;
-use crate::mapping::{FREE, OccupancyGrid};
+use crate::mapping::OccupancyGrid;
 use crate::navigator::{NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::run::{NOISE_STREAM, PLANNER_STREAM, TICKS_PER_SECOND};
@@ -272,15 +272,10 @@ pub fn explore_with(
     let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
     let res = scenario.mapping.resolution;
     let start = crate::world::pt(scenario.start);
-    let (rw, reach) = reachable_free(world, res, start);
-    let reach_cells: Vec<(usize, usize)> = reach
-        .iter()
-        .enumerate()
-        .filter(|(_, r)| **r)
-        .map(|(k, _)| (k % rw, k / rw))
-        .collect();
+    let (_, reach) = reachable_free(world, res, start);
+    let reach_count = reach.iter().filter(|r| **r).count();
     let cell_area = res * res;
-    let reachable_area = reach_cells.len() as f64 * cell_area;
+    let reachable_area = reach_count as f64 * cell_area;
     let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
     let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
         .with_prior(world.bounds, &world.mapped);
@@ -306,6 +301,7 @@ pub fn explore_with(
         stream(seed, PLANNER_STREAM),
     );
     let rrt = strategy != Strategy::Frontier;
+    let inflation = costmaps.inflation();
     let mut global = matches!(strategy, Strategy::Global | Strategy::Both)
         .then(|| GlobalRrtDetector::new(region, ex.eta_global, stream(seed, GLOBAL_STREAM)));
     let mut local = matches!(strategy, Strategy::Local | Strategy::Both)
@@ -336,7 +332,7 @@ pub fn explore_with(
     let mut candidates: Vec<Point2> = Vec::new();
     let mut idle_since: Option<u64> = None;
     let mut map_version = 0u64;
-    let mut cached: Option<(u64, crate::costmap::Costmap, Vec<i8>)> = None;
+    let mut cached: Option<(u64, crate::costmap::Costmap)> = None;
     // Where the robot was when it last moved 0.2 m, and when.
     let mut anchor = (start, 0u64);
     let mut finished = false;
@@ -347,17 +343,14 @@ pub fn explore_with(
     // Heading turned so far in the initial turn; `None` once it is over.
     let mut turned = ex.initial_turn.then_some(0.0);
     let sample = |map: &OccupancyGrid, t: f64| {
-        let n = reach_cells
-            .iter()
-            .filter(|&&(i, j)| map.value(i, j) == FREE)
-            .count();
+        let n = map.count_free(&reach);
         Coverage {
             t,
             known_free: n as f64 * cell_area,
-            fraction: if reach_cells.is_empty() {
+            fraction: if reach_count == 0 {
                 0.0
             } else {
-                n as f64 / reach_cells.len() as f64
+                n as f64 / reach_count as f64
             },
         }
     };
@@ -414,24 +407,21 @@ pub fn explore_with(
             }
         }
         if tick % cycle_every == 0 && turned.is_none() {
-            // The map changes once per map period: build its costmap once per change.
-            if cached.as_ref().is_none_or(|(at, _, _)| *at != map_version) {
-                let costmap = costmaps.build(Some(&map), &[]);
-                let values = costmap.ros_values();
-                cached = Some((map_version, costmap, values));
+            // The baseline needs the whole costmap (its reachability); the RRT filter and
+            // the goal test ask about a few points (`built_cost`). The map changes once
+            // per map period: build once per change.
+            if !rrt && cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
+                cached = Some((map_version, costmaps.build(Some(&map), &[])));
             }
-            let Some((_, costmap, values)) = cached.as_ref() else {
-                unreachable!("built above")
-            };
-            let (costmap, values) = (costmap, values.as_slice());
+            let cost = |p: Point2| built_cost(&map, &inflation, p);
             if rrt {
                 all_published.extend_from_slice(&published);
-                candidates = filter.update(&published, &map, costmap, values).to_vec();
+                candidates = filter.update(&published, &map, cost).to_vec();
                 published.clear();
             }
             if let Some(g) = goal {
                 let state = nav.state();
-                let still_good = cost_at(costmap, values, g) <= ex.costmap_threshold
+                let still_good = cost(g) <= ex.costmap_threshold
                     && information_gain(&map, g, ex.filter_radius) >= ex.min_gain;
                 if (here - anchor.0).norm() >= 0.2 {
                     anchor = (here, tick);
@@ -449,8 +439,10 @@ pub fn explore_with(
                 goal = if rrt {
                     assigner.choose(here, &candidates, &map)
                 } else {
-                    let next = nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
-                        assigner.blacklisted(p)
+                    let next = cached.as_ref().and_then(|(_, costmap)| {
+                        nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
+                            assigner.blacklisted(p)
+                        })
                     });
                     candidates = next.into_iter().collect();
                     next
