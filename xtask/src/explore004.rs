@@ -167,7 +167,7 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
         "{} explorations of `scenarios/sim/explore-22m.ron` (22 m x 22 m, reconstructed) in {elapsed:.1} s of computing{}; \
          seeds {seeds:?}; eta in metres (the reference's unit; the paper states none); laser 180 degrees unless said. \
          Coverage = known free / reachable free area of the true world. Times are simulated seconds. \
-         See `crates/sim/docs/explore.md`. Data: `figures/004-exploration/sweep.csv`.\n",
+         See `docs/papers/004-exploration.md`. Data: `figures/004-exploration/sweep.csv`.\n",
         results.len(),
         if quick { " (quick: fewer etas, one seed, local and global only, no field-of-view runs)" } else { "" },
     );
@@ -299,6 +299,46 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             mean(g.iter().map(|r| r.missed)),
             mean(g.iter().map(|r| r.distance)),
         );
+    }
+    // The navigation scenarios on the map the robot built itself (full runs only).
+    if !quick {
+        let t0 = std::time::Instant::now();
+        let runs: Vec<(String, sim::explore::SelfMapped)> = sim::replay::FILES
+            .par_iter()
+            .map(|f| {
+                let path = root.join("scenarios/sim").join(f);
+                let (sc, _) = Scenario::load(&path)?;
+                let r = sim::explore::explore_then_navigate(&sc, &path, 0, Strategy::Both, 1500.0)?;
+                Ok((sc.name, r))
+            })
+            .collect::<anyhow::Result<_>>()?;
+        let _ = writeln!(
+            s,
+            "\nThe three navigation scenarios on the map the robot built itself (each scenario's mapped world explored with both detectors, seed 0; then Dijkstra on the built map, unknown cells passable; {:.1} s of computing):\n",
+            t0.elapsed().as_secs_f64()
+        );
+        let _ = writeln!(
+            s,
+            "| scenario | exploration: coverage / end (s) | true map: reached / travel (s) / distance (m) | built map: reached / travel (s) / distance (m) | contacts at fault (true / built) |\n|---|---|---|---|---|"
+        );
+        for (name, r) in &runs {
+            let (a, b) = (&r.on_true.trace.summary, &r.on_built.trace.summary);
+            let t = |m: &sim::Summary| m.travel_time.map_or("-".into(), |t| format!("{t:.1}"));
+            let _ = writeln!(
+                s,
+                "| {name} | {:.2} % / {:.0} | {} / {} / {:.2} | {} / {} / {:.2} | {} / {} |",
+                100.0 * r.exploration.final_coverage(),
+                r.exploration.end_time,
+                if a.reached { "yes" } else { "no" },
+                t(a),
+                a.distance,
+                if b.reached { "yes" } else { "no" },
+                t(b),
+                b.distance,
+                a.contacts_at_fault,
+                b.contacts_at_fault
+            );
+        }
     }
     eprintln!(
         "004-exploration: {} runs in {elapsed:.1} s, claims held {held}/{}",

@@ -5,7 +5,7 @@
 //!
 //! The public reference is the ROS package `rrt_exploration` (global and local detectors,
 //! `filter.py`, `assigner.py`). Where the paper is silent we follow it; every choice is
-//! written where it is made, and collected in `crates/sim/docs/explore.md`.
+//! written where it is made, and collected in `docs/papers/004-exploration.md`.
 //!
 //! # Contents
 //!
@@ -18,6 +18,8 @@
 //! - [`explore()`]: the exploration loop, [`Exploration`] (parameters), [`Strategy`],
 //!   [`ExploreOutcome`], [`Coverage`].
 //! - [`figure`]: the map with track, trees and frontiers as SVG.
+//! - [`selfmap`]: [`explore_then_navigate`]: a navigation scenario on the map the robot
+//!   built itself.
 //!
 //! # Units
 //!
@@ -31,12 +33,14 @@ pub mod filter;
 pub mod frontier;
 mod params;
 mod run;
+pub mod selfmap;
 
 pub use assigner::{Assigner, revenue};
 pub use detector::{Edge, GlobalRrtDetector, LocalRrtDetector, Region, RegionError, edge_check};
 pub use filter::{Filter, information_gain, mean_shift};
 pub use frontier::{frontier_cells, frontier_clusters, nearest_frontier};
 pub use params::{Exploration, Strategy};
+pub use selfmap::{SelfMapped, explore_then_navigate};
 pub use run::{
     Coverage, ExploreOutcome, GLOBAL_STREAM, LOCAL_STREAM, Snapshot, explore, explore_with,
     reachable_free, region_of,
