@@ -158,10 +158,7 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
         .with_context(|| format!("writing {}", dir.join("sweep.csv").display()))?;
 
     let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "## `004_3e5a323113b41ded.txt` Fig. 5: 004-exploration\n"
-    );
+    let _ = writeln!(s, "## `004_3e5a323113b41ded.txt` Fig. 5: 004-exploration\n");
     let _ = writeln!(
         s,
         "{} explorations of `scenarios/sim/explore-22m.ron` (22 m x 22 m, reconstructed) in {elapsed:.1} s of computing{}; \
@@ -169,7 +166,11 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
          Coverage = known free / reachable free area of the true world. Times are simulated seconds. \
          See `docs/papers/004-exploration.md`. Data: `figures/004-exploration/sweep.csv`.\n",
         results.len(),
-        if quick { " (quick: fewer etas, one seed, local and global only, no field-of-view runs)" } else { "" },
+        if quick {
+            " (quick: fewer etas, one seed, local and global only, no field-of-view runs)"
+        } else {
+            ""
+        },
     );
     // Fig. 5d.
     let _ = writeln!(
@@ -200,7 +201,11 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             let _ = write!(
                 s,
                 " {t95:.0} / {t99:.0}{} / {missed:.2} |",
-                if miss99 > 0 { format!(" (n<99 {miss99})") } else { String::new() }
+                if miss99 > 0 {
+                    format!(" (n<99 {miss99})")
+                } else {
+                    String::new()
+                }
             );
         }
         let _ = writeln!(s);
@@ -223,14 +228,22 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
                 r.spec.seed,
                 100.0 * r.coverage,
                 r.end,
-                if r.finished { "ended with no frontier left" } else { "time limit" }
+                if r.finished {
+                    "ended with no frontier left"
+                } else {
+                    "time limit"
+                }
             )
         })
         .collect();
     let _ = writeln!(
         s,
         "\nRuns that did not reach 99 %: {}.\n",
-        if not99.is_empty() { "none".to_string() } else { not99.join("; ") }
+        if not99.is_empty() {
+            "none".to_string()
+        } else {
+            not99.join("; ")
+        }
     );
     let mut claims = Vec::new();
     for (st, paper_eta, text) in [
@@ -282,7 +295,12 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
     );
     let mut rows: Vec<(String, Vec<&Result>)> = fovs
         .iter()
-        .map(|&f| (format!("both, default etas, fov {f}"), group(Strategy::Both, None, f)))
+        .map(|&f| {
+            (
+                format!("both, default etas, fov {f}"),
+                group(Strategy::Both, None, f),
+            )
+        })
         .collect();
     rows.push((
         "nearest frontier (baseline), fov 180".into(),
@@ -294,7 +312,11 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             s,
             "| {name} | {:.0} | {t99:.0}{} | {:.0} | {:.2} | {:.1} |",
             mean(g.iter().map(|r| r.t95.unwrap_or(r.end))),
-            if n > 0 { format!(" (n<99 {n})") } else { String::new() },
+            if n > 0 {
+                format!(" (n<99 {n})")
+            } else {
+                String::new()
+            },
             mean(g.iter().map(|r| r.end)),
             mean(g.iter().map(|r| r.missed)),
             mean(g.iter().map(|r| r.distance)),

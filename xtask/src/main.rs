@@ -15,10 +15,10 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod bench_peers;
+mod explore004;
 mod report;
 mod reproduce;
 mod rooms;
-mod explore004;
 mod sim004;
 mod soak;
 

@@ -189,7 +189,12 @@ fn explore_writes_coverage_map_and_figures() {
             out.to_str().unwrap(),
         ]);
         let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
-        assert_eq!(o.status.code(), Some(0), "{detector}: {stdout}{}", stderr(&o));
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{detector}: {stdout}{}",
+            stderr(&o)
+        );
         assert!(stdout.contains("explored, no frontier left"), "{stdout}");
         assert!(stderr(&o).contains("coverage"), "progress lines on stderr");
         let csv = std::fs::read_to_string(out.join("coverage.csv")).unwrap();
@@ -242,8 +247,15 @@ fn explore_bad_input_exits_2_naming_the_field() {
     let o = hyplan(&["explore", &bad]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("exploration.region"), "{}", stderr(&o));
-    let bad = tmp_file("radius.ron", &room("\n    exploration: (info_radius: -1.0),"));
+    let bad = tmp_file(
+        "radius.ron",
+        &room("\n    exploration: (info_radius: -1.0),"),
+    );
     let o = hyplan(&["explore", &bad]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("exploration.info_radius"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("exploration.info_radius"),
+        "{}",
+        stderr(&o)
+    );
 }

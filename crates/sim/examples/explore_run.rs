@@ -3,7 +3,10 @@
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
-    let path = std::path::PathBuf::from(args.get(1).ok_or("usage: SCENARIO.ron [strategy] [seed] [eta]")?);
+    let path = std::path::PathBuf::from(
+        args.get(1)
+            .ok_or("usage: SCENARIO.ron [strategy] [seed] [eta]")?,
+    );
     let (mut scenario, _) = sim::Scenario::load(&path)?;
     let strategy = args
         .get(2)
@@ -38,7 +41,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let last = out.snapshots.last().unwrap();
         println!("final frontiers: {:?}", last.frontiers);
         println!("goal: {:?}", last.goal);
-        println!("last goals: {:?}", &out.goals[out.goals.len().saturating_sub(15)..]);
+        println!(
+            "last goals: {:?}",
+            &out.goals[out.goals.len().saturating_sub(15)..]
+        );
     }
     Ok(())
 }

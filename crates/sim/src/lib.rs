@@ -76,8 +76,8 @@ pub mod tracking;
 pub mod world;
 
 pub use control::{Command, Controller};
-pub use explore::{Exploration, ExploreOutcome, Strategy, explore};
 pub use costmap::{Costmap, CostmapBuilder, CostmapParams, ObstacleMemory};
+pub use explore::{Exploration, ExploreOutcome, Strategy, explore};
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, saturate, twist_of,
     wheel_speeds,

@@ -68,7 +68,10 @@ fn region_follows_the_five_point_rule() {
     let mut five = corners.to_vec();
     five.push(p(3.0, 2.0));
     let r = Region::from_points(&five).unwrap();
-    assert_eq!((r.min, r.max, r.root), (p(0.0, 0.0), p(10.0, 5.0), p(3.0, 2.0)));
+    assert_eq!(
+        (r.min, r.max, r.root),
+        (p(0.0, 0.0), p(10.0, 5.0), p(3.0, 2.0))
+    );
     // Order of the corners does not matter: the box of all four.
     let mut shuffled = vec![corners[2], corners[0], corners[3], corners[1]];
     shuffled.push(p(3.0, 2.0));
@@ -79,9 +82,21 @@ fn region_follows_the_five_point_rule() {
         Err(RegionError::RootOutside { .. })
     ));
     assert_eq!(Region::from_points(&five[..4]), Err(RegionError::Count(4)));
-    let flat = [p(0.0, 0.0), p(1.0, 0.0), p(2.0, 0.0), p(3.0, 0.0), p(1.0, 0.0)];
+    let flat = [
+        p(0.0, 0.0),
+        p(1.0, 0.0),
+        p(2.0, 0.0),
+        p(3.0, 0.0),
+        p(1.0, 0.0),
+    ];
     assert_eq!(Region::from_points(&flat), Err(RegionError::Empty));
-    let nan = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, f64::NAN), p(0.5, 0.5)];
+    let nan = [
+        p(0.0, 0.0),
+        p(1.0, 0.0),
+        p(1.0, 1.0),
+        p(0.0, f64::NAN),
+        p(0.5, 0.5),
+    ];
     assert_eq!(Region::from_points(&nan), Err(RegionError::NotFinite(3)));
 }
 
@@ -127,7 +142,7 @@ fn revenue_and_hysteresis() {
     let mut g = grid(FREE);
     for j in 0..g.height() {
         for i in 0..g.width() {
-            if i < 3 || i > 36 {
+            if !(3..=36).contains(&i) {
                 g.set_value(i, j, UNKNOWN);
             }
         }
@@ -212,7 +227,11 @@ fn scenario_path() -> PathBuf {
 fn one_exploration_reaches_99_percent() {
     let (scenario, world) = Scenario::load(&scenario_path()).unwrap();
     let out = sim::explore(&scenario, &world, 1, Strategy::Both).unwrap();
-    assert!(out.finished, "ended by the time limit at {} s", out.end_time);
+    assert!(
+        out.finished,
+        "ended by the time limit at {} s",
+        out.end_time
+    );
     assert!(
         out.final_coverage() >= 0.99,
         "coverage {} (missed {} m^2)",
@@ -265,13 +284,31 @@ fn bad_input_names_the_field() {
                known_map: false, {laser} exploration: ({extra}))"#
         )
     };
-    assert_eq!(field_of(&base("eta_local: -1.0", "")), "exploration.eta_local");
-    assert_eq!(field_of(&base("eta_global: inf", "")), "exploration.eta_global");
-    assert_eq!(field_of(&base("eta_global: NaN", "")), "exploration.eta_global");
-    assert_eq!(field_of(&base("info_radius: 0.0", "")), "exploration.info_radius");
-    assert_eq!(field_of(&base("filter_radius: -0.5", "")), "exploration.filter_radius");
     assert_eq!(
-        field_of(&base("region: [(2.0, 0.0), (6.0, 0.0), (6.0, 3.0), (2.0, 3.0)]", "")),
+        field_of(&base("eta_local: -1.0", "")),
+        "exploration.eta_local"
+    );
+    assert_eq!(
+        field_of(&base("eta_global: inf", "")),
+        "exploration.eta_global"
+    );
+    assert_eq!(
+        field_of(&base("eta_global: NaN", "")),
+        "exploration.eta_global"
+    );
+    assert_eq!(
+        field_of(&base("info_radius: 0.0", "")),
+        "exploration.info_radius"
+    );
+    assert_eq!(
+        field_of(&base("filter_radius: -0.5", "")),
+        "exploration.filter_radius"
+    );
+    assert_eq!(
+        field_of(&base(
+            "region: [(2.0, 0.0), (6.0, 0.0), (6.0, 3.0), (2.0, 3.0)]",
+            ""
+        )),
         "exploration.region"
     );
     assert_eq!(

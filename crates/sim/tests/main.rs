@@ -1,7 +1,7 @@
 //! Public-API tests of `sim`, one module per area.
 
+mod explore;
 mod kinematics;
 mod laser;
-mod explore;
 mod navigation;
 mod tracking;

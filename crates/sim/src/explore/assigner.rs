@@ -59,7 +59,12 @@ impl Assigner {
     /// The frontier of best revenue for a robot at `robot` (ties to the first), if any
     /// frontier is not blacklisted.
     #[must_use]
-    pub fn choose(&self, robot: Point2, frontiers: &[Point2], map: &OccupancyGrid) -> Option<Point2> {
+    pub fn choose(
+        &self,
+        robot: Point2,
+        frontiers: &[Point2],
+        map: &OccupancyGrid,
+    ) -> Option<Point2> {
         let mut best: Option<(f64, Point2)> = None;
         for &f in frontiers {
             if self.blacklisted(f) {

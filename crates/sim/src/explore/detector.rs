@@ -76,12 +76,12 @@ impl Region {
             return Err(RegionError::NotFinite(k));
         }
         let corners = &points[..4];
-        let min = corners.iter().fold(corners[0], |m, p| {
-            Point2::new(m.x.min(p.x), m.y.min(p.y))
-        });
-        let max = corners.iter().fold(corners[0], |m, p| {
-            Point2::new(m.x.max(p.x), m.y.max(p.y))
-        });
+        let min = corners
+            .iter()
+            .fold(corners[0], |m, p| Point2::new(m.x.min(p.x), m.y.min(p.y)));
+        let max = corners
+            .iter()
+            .fold(corners[0], |m, p| Point2::new(m.x.max(p.x), m.y.max(p.y)));
         if max.x <= min.x || max.y <= min.y {
             return Err(RegionError::Empty);
         }
@@ -130,7 +130,13 @@ pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
     let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
     let (dx, dy) = (bx - ax, by - ay);
     let (si, sj) = (dx.signum() as i64, dy.signum() as i64);
-    let inv = |d: f64| if d != 0.0 { (1.0 / d).abs() } else { f64::INFINITY };
+    let inv = |d: f64| {
+        if d != 0.0 {
+            (1.0 / d).abs()
+        } else {
+            f64::INFINITY
+        }
+    };
     let (t_dx, t_dy) = (inv(dx), inv(dy));
     let first = |a: f64, d: f64, t: f64| {
         if d > 0.0 {
@@ -191,7 +197,13 @@ impl Tree {
 
     /// One iteration: sample, nearest, steer by `eta`, check. Returns the edge's verdict
     /// (the node is added when free).
-    fn grow(&mut self, map: &OccupancyGrid, region: &Region, eta: f64, rng: &mut ChaCha8Rng) -> Edge {
+    fn grow(
+        &mut self,
+        map: &OccupancyGrid,
+        region: &Region,
+        eta: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Edge {
         let x_rand = region.sample(rng);
         let Some((near, _)) = self.index.nearest(x_rand) else {
             return Edge::Occupied;
@@ -208,7 +220,9 @@ impl Tree {
 
     fn edges(&self) -> Vec<(Point2, Point2)> {
         let pts = self.index.points();
-        (1..pts.len()).map(|k| (pts[self.parent[k]], pts[k])).collect()
+        (1..pts.len())
+            .map(|k| (pts[self.parent[k]], pts[k]))
+            .collect()
     }
 }
 

@@ -14,7 +14,10 @@ pub fn snapshot_svg(outcome: &ExploreOutcome, snap: &Snapshot, world: &World) ->
     let mut s = String::new();
     world_svg_with(Some(&snap.map), world, &mut s);
     let mut edges = |list: &[(hyplan_core::Point2, hyplan_core::Point2)], colour: &str| {
-        let _ = write!(s, r#"<path fill="none" stroke="{colour}" stroke-width="0.02" d=""#);
+        let _ = write!(
+            s,
+            r#"<path fill="none" stroke="{colour}" stroke-width="0.02" d=""#
+        );
         for (a, b) in list {
             let _ = write!(s, "M{:.3} {:.3}L{:.3} {:.3}", a.x, a.y, b.x, b.y);
         }

@@ -43,9 +43,9 @@ pub fn mean_shift(points: &[Point2], bandwidth: f64) -> Vec<Point2> {
             // Sum in id order so that the mean does not depend on the k-d tree's order.
             near.sort_unstable_by_key(|&(k, _)| k);
             support = near.len();
-            let sum = near
-                .iter()
-                .fold(nalgebra::Vector2::zeros(), |s, &(k, _)| s + points[k].coords);
+            let sum = near.iter().fold(nalgebra::Vector2::zeros(), |s, &(k, _)| {
+                s + points[k].coords
+            });
             let next = Point2::from(sum / near.len() as f64);
             let moved = (next - c).norm();
             c = next;

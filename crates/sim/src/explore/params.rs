@@ -166,7 +166,11 @@ impl Exploration {
                 "must be in 0..=100",
             );
         }
-        if let Some(t) = self.snapshots.iter().find(|t| !(t.is_finite() && **t >= 0.0)) {
+        if let Some(t) = self
+            .snapshots
+            .iter()
+            .find(|t| !(t.is_finite() && **t >= 0.0))
+        {
             return bad("snapshots", t.to_string(), "must be finite and >= 0");
         }
         if let Some(r) = &self.region {

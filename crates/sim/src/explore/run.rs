@@ -114,7 +114,10 @@ impl ExploreOutcome {
     /// First time coverage reached `fraction`, s.
     #[must_use]
     pub fn time_to(&self, fraction: f64) -> Option<f64> {
-        self.coverage.iter().find(|c| c.fraction >= fraction).map(|c| c.t)
+        self.coverage
+            .iter()
+            .find(|c| c.fraction >= fraction)
+            .map(|c| c.t)
     }
 
     /// Final coverage fraction.
@@ -134,7 +137,10 @@ impl ExploreOutcome {
     pub fn coverage_csv(&self) -> String {
         let mut s = String::from("t,known_free_m2,coverage\n");
         for c in &self.coverage {
-            s.push_str(&format!("{:.3},{:.4},{:.6}\n", c.t, c.known_free, c.fraction));
+            s.push_str(&format!(
+                "{:.3},{:.4},{:.6}\n",
+                c.t, c.known_free, c.fraction
+            ));
         }
         s
     }
@@ -306,7 +312,12 @@ pub fn explore_with(
         .then(|| GlobalRrtDetector::new(region, ex.eta_global, stream(seed, GLOBAL_STREAM)));
     let mut local = matches!(strategy, Strategy::Local | Strategy::Both)
         .then(|| LocalRrtDetector::new(region, ex.eta_local, stream(seed, LOCAL_STREAM)));
-    let mut filter = Filter::new(ex.bandwidth, ex.costmap_threshold, ex.filter_radius, ex.min_gain);
+    let mut filter = Filter::new(
+        ex.bandwidth,
+        ex.costmap_threshold,
+        ex.filter_radius,
+        ex.min_gain,
+    );
     let mut assigner = Assigner {
         info_radius: ex.info_radius,
         info_multiplier: ex.info_multiplier,
@@ -364,8 +375,14 @@ pub fn explore_with(
                     goal: Option<Point2>| Snapshot {
         t,
         pose,
-        global_edges: global.as_ref().map(GlobalRrtDetector::edges).unwrap_or_default(),
-        local_edges: local.as_ref().map(LocalRrtDetector::edges).unwrap_or_default(),
+        global_edges: global
+            .as_ref()
+            .map(GlobalRrtDetector::edges)
+            .unwrap_or_default(),
+        local_edges: local
+            .as_ref()
+            .map(LocalRrtDetector::edges)
+            .unwrap_or_default(),
         published: published.to_vec(),
         frontiers: frontiers.to_vec(),
         goal,
@@ -463,7 +480,16 @@ pub fn explore_with(
             }
         }
         if snapshot_ticks.contains(&tick) {
-            snapshots.push(snapshot(t, pose, &map, &global, &local, &all_published, &candidates, goal));
+            snapshots.push(snapshot(
+                t,
+                pose,
+                &map,
+                &global,
+                &local,
+                &all_published,
+                &candidates,
+                goal,
+            ));
         }
         if finished {
             break;
@@ -511,7 +537,16 @@ pub fn explore_with(
         coverage.push(sample(&map, end_time));
     }
     all_published.extend_from_slice(&published);
-    snapshots.push(snapshot(end_time, pose, &map, &global, &local, &all_published, &candidates, goal));
+    snapshots.push(snapshot(
+        end_time,
+        pose,
+        &map,
+        &global,
+        &local,
+        &all_published,
+        &candidates,
+        goal,
+    ));
     Ok(ExploreOutcome {
         scenario: scenario.name.clone(),
         strategy,
