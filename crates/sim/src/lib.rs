@@ -27,7 +27,7 @@
 //!   ([`write_all`]).
 //! - [`replay`]: the paper's three navigation scenarios against its figures.
 //! - [`soak`]: generated rooms with people, for the safety figures.
-//! - [`explore`]: the exploration phase: global and local RRT frontier detectors, the
+//! - [`mod@explore`]: the exploration phase: global and local RRT frontier detectors, the
 //!   filter, the assigner, the nearest-frontier baseline, coverage ([`explore()`]).
 //!
 //! # Conventions
