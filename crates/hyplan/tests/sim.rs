@@ -208,7 +208,7 @@ fn explore_writes_coverage_map_and_figures() {
             .parse()
             .unwrap();
         assert!(last >= 0.95, "{detector}: final coverage {last}");
-        for name in ["track.csv", "map.yaml", "map.pgm"] {
+        for name in ["track.csv", "map.yaml", "map.pgm", "animation.png"] {
             assert!(out.join(name).is_file(), "{name}");
         }
         let svgs = std::fs::read_dir(&out)

@@ -41,6 +41,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let last = out.snapshots.last().unwrap();
         println!("final frontiers: {:?}", last.frontiers);
         println!("goal: {:?}", last.goal);
+        let longest = |e: &[(hyplan_core::Point2, hyplan_core::Point2)]| {
+            e.iter().map(|(a, b)| (b - a).norm()).fold(0.0, f64::max)
+        };
+        println!(
+            "longest edge: global {:.2} m ({} edges), local {:.2} m",
+            longest(&last.global_edges),
+            last.global_edges.len(),
+            longest(&last.local_edges)
+        );
         println!(
             "last goals: {:?}",
             &out.goals[out.goals.len().saturating_sub(15)..]

@@ -27,9 +27,10 @@ pub struct Args {
     /// Seed of the run's random streams (laser noise, planner, each detector).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Folder for coverage.csv, track.csv, the final map (map.yaml + map.pgm) and the
+    /// Folder for coverage.csv, track.csv, the final map (map.yaml + map.pgm), the
     /// figures (map, track, trees and frontiers at the scenario's snapshot times and at
-    /// the end; SVG).
+    /// the end; SVG) and animation.png (the map being built, an animated PNG with a
+    /// frame every 10 s of simulated time unless the scenario sets `frame_period`).
     #[arg(long)]
     pub out: Option<PathBuf>,
 }
@@ -56,6 +57,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             bail!("--fov = {fov}: must be finite, > 0 and at most 360 (degrees)");
         }
         scenario.laser.fov_deg = fov;
+    }
+    if args.out.is_some() && scenario.exploration.frame_period.is_none() {
+        scenario.exploration.frame_period = Some(10.0);
     }
     // The overrides are checked with the rest of the scenario.
     let world = scenario.build_world(&args.scenario)?;
@@ -123,6 +127,15 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             .write_ros(&yaml)
             .with_context(|| format!("writing {}", yaml.display()))?;
         outln!("wrote {} (+ map.pgm)", yaml.display())?;
+        let apng =
+            sim::explore::figure::animation_png(&outcome, 100).map_err(anyhow::Error::msg)?;
+        let p = dir.join("animation.png");
+        std::fs::write(&p, apng).with_context(|| format!("writing {}", p.display()))?;
+        outln!(
+            "wrote {} (animated PNG, a frame per {} s)",
+            p.display(),
+            scenario.exploration.frame_period.unwrap_or(10.0)
+        )?;
         for snap in &outcome.snapshots {
             let svg = sim::explore::figure::snapshot_svg(&outcome, snap, &world);
             put(&format!("explore-{:04.0}s.svg", snap.t), &svg)?;

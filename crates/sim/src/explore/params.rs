@@ -92,6 +92,9 @@ pub struct Exploration {
     /// than 360 degrees leaves the cells behind the robot unknown, every detector then
     /// publishes points within the goal tolerance, and the robot never moves.
     pub initial_turn: bool,
+    /// Seconds between frames of the animation of the map being built (`None`: no
+    /// frames kept; `hyplan explore --out` asks for 10 s).
+    pub frame_period: Option<f64>,
     /// Simulated times at which the trees, frontiers and map are kept for figures, s.
     pub snapshots: Vec<f64>,
 }
@@ -118,6 +121,7 @@ impl Default for Exploration {
             stuck_after: 15.0,
             min_frontier_cells: 5,
             initial_turn: true,
+            frame_period: None,
             snapshots: vec![30.0, 90.0],
         }
     }

@@ -106,6 +106,8 @@ pub struct ExploreOutcome {
     pub end_time: f64,
     /// Distance driven, m.
     pub distance: f64,
+    /// Frames of the map being built (`frame_period`): time, robot, ROS values.
+    pub frames: Vec<(f64, Pose, Vec<i8>)>,
     /// Laser ticks on which the robot's body overlapped the true static world.
     pub contact_ticks: usize,
 }
@@ -339,6 +341,10 @@ pub fn explore_with(
     let mut goals = Vec::new();
     let mut failed = Vec::new();
     let mut snapshots = Vec::new();
+    let mut frames = Vec::new();
+    let frame_every = ex
+        .frame_period
+        .map(|f| ((f * TICKS_PER_SECOND as f64).round() as u64).max(1));
     let mut goal: Option<Point2> = None;
     let mut candidates: Vec<Point2> = Vec::new();
     let mut idle_since: Option<u64> = None;
@@ -479,6 +485,9 @@ pub fn explore_with(
                 idle_since = None;
             }
         }
+        if frame_every.is_some_and(|k| tick % k == 0) {
+            frames.push((t, pose, map.ros_values()));
+        }
         if snapshot_ticks.contains(&tick) {
             snapshots.push(snapshot(
                 t,
@@ -562,6 +571,7 @@ pub fn explore_with(
         finished,
         end_time,
         distance,
+        frames,
         contact_ticks,
     })
 }
