@@ -320,3 +320,41 @@ fn bad_input_names_the_field() {
         "laser.fov_deg"
     );
 }
+
+#[test]
+fn same_bits_whatever_runs_beside() {
+    let (mut scenario, world) = Scenario::load(&scenario_path()).unwrap();
+    scenario.time_limit = 60.0;
+    let alone = sim::explore(&scenario, &world, 9, Strategy::Both).unwrap();
+    // The same run on four threads at once, beside runs of other seeds and detectors.
+    let outs: Vec<sim::ExploreOutcome> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..4u64)
+            .map(|k| {
+                let (sc, w) = (&scenario, &world);
+                s.spawn(move || {
+                    let other = if k % 2 == 0 {
+                        Strategy::Local
+                    } else {
+                        Strategy::Global
+                    };
+                    let _ = sim::explore(sc, w, 100 + k, other).unwrap();
+                    sim::explore(sc, w, 9, Strategy::Both).unwrap()
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    for o in outs {
+        assert_eq!(o.track.len(), alone.track.len());
+        assert!(
+            o.track
+                .iter()
+                .zip(&alone.track)
+                .all(|(a, b)| a.0.to_bits() == b.0.to_bits()
+                    && a.1.x.to_bits() == b.1.x.to_bits()
+                    && a.1.y.to_bits() == b.1.y.to_bits()
+                    && a.1.phi.to_bits() == b.1.phi.to_bits())
+        );
+        assert_eq!(o.map.ros_values(), alone.map.ros_values());
+    }
+}
