@@ -94,7 +94,7 @@ pub fn animation_png(outcome: &ExploreOutcome, delay_ms: u16) -> Result<Vec<u8>,
         let cell = |x: f64, y: f64| {
             let (i, j) = (((x - o.x) / res).floor(), ((y - o.y) / res).floor());
             (i >= 0.0 && j >= 0.0 && (i as usize) < w && (j as usize) < h)
-                .then(|| (i as usize, j as usize))
+                .then_some((i as usize, j as usize))
         };
         let mut rgb = vec![0u8; w * h * 3];
         for (t, pose, values) in &outcome.frames {
