@@ -358,3 +358,70 @@ fn same_bits_whatever_runs_beside() {
         assert_eq!(o.map.ros_values(), alone.map.ros_values());
     }
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// A free verdict is sound: every point densely sampled along the segment (past
+        /// the start's own cell) lies in a free cell; an unknown verdict names an unknown
+        /// cell on the segment's way.
+        #[test]
+        fn edge_check_agrees_with_dense_sampling(
+            cells in proptest::collection::vec(0u8..10, 40 * 20),
+            ax in 0.01..1.99f64, ay in 0.01..0.99f64,
+            bx in 0.01..1.99f64, by in 0.01..0.99f64,
+        ) {
+            let mut g = grid(FREE);
+            for (k, c) in cells.iter().enumerate() {
+                let v = match c { 0 => OCCUPIED, 1 => UNKNOWN, _ => FREE };
+                g.set_value(k % 40, k / 40, v);
+            }
+            let (a, b) = (p(ax, ay), p(bx, by));
+            let start = g.cell_of(a).unwrap();
+            match edge_check(&g, a, b) {
+                Edge::Free => {
+                    for k in 0..=2000 {
+                        let q = a + (b - a) * (f64::from(k) / 2000.0);
+                        let c = g.cell_of(q).unwrap();
+                        prop_assert!(c == start || g.value(c.0, c.1) == FREE, "{c:?}");
+                    }
+                }
+                Edge::Unknown(f) => {
+                    let c = g.cell_of(f).unwrap();
+                    prop_assert_eq!(g.value(c.0, c.1), UNKNOWN);
+                    prop_assert!(c != start);
+                    // The cell lies on the segment: its centre is within half a cell
+                    // diagonal of the line.
+                    let d = (b - a).normalize();
+                    let off = (f - a) - d * (f - a).dot(&d);
+                    prop_assert!(off.norm() <= 0.05 * std::f64::consts::FRAC_1_SQRT_2 + 1e-9);
+                }
+                Edge::Occupied => {}
+            }
+        }
+
+        /// Mean-shift centres lie in the points' bounding box, are at least a bandwidth
+        /// apart, and number no more than the points.
+        #[test]
+        fn mean_shift_centres_are_sane(
+            pts in proptest::collection::vec((0.0..10.0f64, 0.0..10.0f64), 1..60),
+            bw in 0.1..2.0f64,
+        ) {
+            let pts: Vec<Point2> = pts.into_iter().map(|(x, y)| p(x, y)).collect();
+            let c = mean_shift(&pts, bw);
+            prop_assert!(!c.is_empty() && c.len() <= pts.len());
+            let lo = pts.iter().fold(p(f64::INFINITY, f64::INFINITY), |m, q| p(m.x.min(q.x), m.y.min(q.y)));
+            let hi = pts.iter().fold(p(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, q| p(m.x.max(q.x), m.y.max(q.y)));
+            for (i, x) in c.iter().enumerate() {
+                prop_assert!(x.x >= lo.x - 1e-9 && x.x <= hi.x + 1e-9 && x.y >= lo.y - 1e-9 && x.y <= hi.y + 1e-9);
+                for y in &c[i + 1..] {
+                    prop_assert!((x - y).norm() >= bw);
+                }
+            }
+        }
+    }
+}
