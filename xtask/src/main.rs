@@ -15,6 +15,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod bench_peers;
+mod explore004;
 mod report;
 mod reproduce;
 mod rooms;

@@ -161,6 +161,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut report = markdown::report(&results, &series, args.quick, seconds);
     // Seed 004 runs in the `sim` crate (scenarios/sim/), with claims of its own.
     report.push_str(&crate::sim004::section(&root, &figures)?.0);
+    report.push_str(&crate::explore004::section(&root, &figures, args.quick)?.0);
     let report_path = out.join("report.md");
     std::fs::write(&report_path, &report)
         .with_context(|| format!("writing {}", report_path.display()))?;

@@ -32,6 +32,10 @@ enum Command {
     /// Benchmark planners on your maps and queries: CSV, JSON, a Markdown summary with
     /// rank tests, SVG box plots and an OMPL benchmark log per problem.
     Bench(Box<cmd::bench::Args>),
+    /// Explore an unknown world with seed 004's RRT frontier detectors (or the
+    /// nearest-frontier baseline): coverage over time, the built map, figures (exit 1:
+    /// stopped by the time limit).
+    Explore(cmd::explore::Args),
     /// Turn a picture, ROS map or MovingAI map into a three-zone safe map.
     Map(cmd::map::Args),
     /// Plan a path with any planner of the registry (`hyplan planners` lists them).
@@ -57,6 +61,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Bench(args) => cmd::bench::run(&args),
+        Command::Explore(args) => cmd::explore::run(&args),
         Command::Map(args) => cmd::map::run(&args),
         Command::Plan(args) => cmd::plan::run(&args),
         Command::Planners(args) => cmd::planners::run(&args),

@@ -152,3 +152,110 @@ fn bad_scenarios_exit_2_naming_field_and_value() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("/no/such/file.ron"));
 }
+
+/// A 6 m x 4 m room with a box: small enough to explore in a few seconds.
+fn room(extra: &str) -> String {
+    format!(
+        r#"SimScenario(
+    name: "room",
+    world: (size: (6.0, 4.0), shapes: [
+        Wall(from: (0.0, 0.05), to: (6.0, 0.05), thickness: 0.1),
+        Wall(from: (0.0, 3.95), to: (6.0, 3.95), thickness: 0.1),
+        Wall(from: (0.05, 0.0), to: (0.05, 4.0), thickness: 0.1),
+        Wall(from: (5.95, 0.0), to: (5.95, 4.0), thickness: 0.1),
+        Box(center: (3.0, 2.0), size: (0.6, 0.6)),
+    ]),
+    start: (1.0, 1.0), goal: (5.0, 3.0), known_map: false,
+    time_limit: 300.0,{extra}
+)"#
+    )
+}
+
+#[test]
+fn explore_writes_coverage_map_and_figures() {
+    let f = tmp_file("room.ron", &room(""));
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_sim/explore");
+    for detector in ["both", "frontier"] {
+        let o = hyplan(&[
+            "explore",
+            &f,
+            "--detector",
+            detector,
+            "--eta",
+            "2",
+            "--seed",
+            "4",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{detector}: {stdout}{}",
+            stderr(&o)
+        );
+        assert!(stdout.contains("explored, no frontier left"), "{stdout}");
+        assert!(stderr(&o).contains("coverage"), "progress lines on stderr");
+        let csv = std::fs::read_to_string(out.join("coverage.csv")).unwrap();
+        let last: f64 = csv
+            .lines()
+            .last()
+            .unwrap()
+            .rsplit(',')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(last >= 0.95, "{detector}: final coverage {last}");
+        for name in ["track.csv", "map.yaml", "map.pgm", "animation.png"] {
+            assert!(out.join(name).is_file(), "{name}");
+        }
+        let svgs = std::fs::read_dir(&out)
+            .unwrap()
+            .filter(|e| {
+                e.as_ref()
+                    .is_ok_and(|e| e.file_name().to_string_lossy().ends_with(".svg"))
+            })
+            .count();
+        assert!(svgs >= 1);
+    }
+}
+
+#[test]
+fn explore_bad_input_exits_2_naming_the_field() {
+    let f = tmp_file("room2.ron", &room(""));
+    let cases: [(&[&str], &str); 6] = [
+        (&["--eta", "-1"], "--eta"),
+        (&["--eta", "inf"], "--eta"),
+        (&["--fov", "0"], "--fov"),
+        (&["--fov", "400"], "--fov"),
+        (&["--detector", "sideways"], "--detector"),
+        (&["--eta", "NaN"], "--eta"),
+    ];
+    for (extra, needle) in cases {
+        let mut args = vec!["explore", f.as_str()];
+        args.extend_from_slice(extra);
+        let o = hyplan(&args);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{extra:?}: {}", stderr(&o));
+    }
+    let bad = tmp_file(
+        "region.ron",
+        &room("\n    exploration: (region: [(2.0, 0.0), (6.0, 0.0), (6.0, 4.0), (2.0, 4.0)]),"),
+    );
+    let o = hyplan(&["explore", &bad]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("exploration.region"), "{}", stderr(&o));
+    let bad = tmp_file(
+        "radius.ron",
+        &room("\n    exploration: (info_radius: -1.0),"),
+    );
+    let o = hyplan(&["explore", &bad]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("exploration.info_radius"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -249,15 +249,18 @@ impl Costmap {
     /// The costmap ROS would publish: 254 -> 100, 253 -> 99, 1..=252 -> 1..=98, 0 -> 0.
     #[must_use]
     pub fn ros_values(&self) -> Vec<i8> {
-        self.costs
-            .iter()
-            .map(|&c| match c {
-                LETHAL_OBSTACLE => 100,
-                INSCRIBED_INFLATED_OBSTACLE => 99,
-                0 => 0,
-                c => (1 + (u32::from(c) - 1) * 97 / 251) as i8,
-            })
-            .collect()
+        self.costs.iter().map(|&c| ros_cost(c)).collect()
+    }
+}
+
+/// A Nav2 cost as ROS publishes it: 254 -> 100, 253 -> 99, 1..=252 -> 1..=98, 0 -> 0.
+#[must_use]
+pub const fn ros_cost(c: u8) -> i8 {
+    match c {
+        LETHAL_OBSTACLE => 100,
+        INSCRIBED_INFLATED_OBSTACLE => 99,
+        0 => 0,
+        c => (1 + (c as u32 - 1) * 97 / 251) as i8,
     }
 }
 

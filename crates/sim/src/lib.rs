@@ -27,6 +27,8 @@
 //!   ([`write_all`], [`OutputError`]).
 //! - [`replay`]: the paper's three navigation scenarios against its figures.
 //! - [`soak`]: generated rooms with people, for the safety figures.
+//! - [`mod@explore`]: the exploration phase: global and local RRT frontier detectors, the
+//!   filter, the assigner, the nearest-frontier baseline, coverage ([`explore()`]).
 //!
 //! # Conventions
 //!
@@ -59,6 +61,7 @@
 
 pub mod control;
 pub mod costmap;
+pub mod explore;
 pub mod kinematics;
 pub mod laser;
 pub mod mapping;
@@ -74,6 +77,7 @@ pub mod world;
 
 pub use control::{Command, Controller};
 pub use costmap::{Costmap, CostmapBuilder, CostmapParams, ObstacleMemory};
+pub use explore::{Exploration, ExploreOutcome, Strategy, explore};
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, saturate, twist_of,
     wheel_speeds,

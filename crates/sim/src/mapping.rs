@@ -262,6 +262,58 @@ impl OccupancyGrid {
         envmap::write_ros(&self.to_grid_map(), yaml_path)
     }
 
+    /// How many cells are free among those `mask` selects (row-major from the bottom row,
+    /// one flag per cell; a shorter mask selects fewer cells).
+    #[must_use]
+    pub fn count_free(&self, mask: &[bool]) -> usize {
+        // Free: crossed (not -0.0) and log-odds <= 0, i.e. +0.0 or a negative number
+        // other than -0.0. On the bits, so that the loop has no branch and vectorises
+        // (it runs over every cell at every map update).
+        self.logodds
+            .iter()
+            .zip(mask)
+            .map(|(&l, &m)| {
+                let b = l.to_bits();
+                let free = (b == 0) | ((b >> 31) == 1 && b != 0x8000_0000);
+                usize::from(free & m)
+            })
+            .sum()
+    }
+
+    /// Sets cell `(i, j)` to the ROS value `v` (-1 unknown, 0 free, anything else
+    /// occupied) with one update's log-odds, for hand-made maps in tests and tools; a
+    /// cell outside the grid is ignored.
+    pub fn set_value(&mut self, i: usize, j: usize, v: i8) {
+        if i < self.width && j < self.height {
+            self.logodds[j * self.width + i] = match v {
+                UNKNOWN => -0.0,
+                FREE => self.params.l_miss as f32,
+                _ => self.params.l_hit as f32,
+            };
+        }
+    }
+
+    /// Marks the unknown cells whose centre lies within `radius` of `center` free (one
+    /// miss): the robot's footprint, which a scanner mounted ahead of the centre never
+    /// sees but which the robot, standing there, knows to be free. Known cells keep
+    /// their value.
+    pub fn mark_footprint_free(&mut self, center: Point2, radius: f64) {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let lo_i = ((center.x - radius - o.x) / res).floor().max(0.0) as usize;
+        let lo_j = ((center.y - radius - o.y) / res).floor().max(0.0) as usize;
+        let hi_i = (((center.x + radius - o.x) / res).ceil().max(0.0) as usize).min(self.width);
+        let hi_j = (((center.y + radius - o.y) / res).ceil().max(0.0) as usize).min(self.height);
+        for j in lo_j..hi_j {
+            for i in lo_i..hi_i {
+                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                if (c - center).norm() <= radius && self.value(i, j) == UNKNOWN {
+                    self.logodds[j * self.width + i] = self.params.l_miss as f32;
+                }
+            }
+        }
+    }
+
     /// Whether the cell holding `p` is occupied.
     #[must_use]
     pub fn occupied_at(&self, p: Point2) -> bool {

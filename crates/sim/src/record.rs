@@ -235,6 +235,16 @@ const SCALE: f64 = 30.0;
 
 /// SVG header and the static world (built map below when given) in a y-up frame.
 fn world_svg(outcome: &Outcome, world: &World, s: &mut String) -> (f64, f64) {
+    world_svg_with(outcome.map.as_ref(), world, s)
+}
+
+/// SVG header and the static world with `map` below, in a y-up frame (the group is left
+/// open: close it with `</g></svg>`).
+pub(crate) fn world_svg_with(
+    map: Option<&crate::mapping::OccupancyGrid>,
+    world: &World,
+    s: &mut String,
+) -> (f64, f64) {
     let b = world.bounds;
     let (w, h) = (b.width() * SCALE, b.height() * SCALE);
     let _ = writeln!(
@@ -254,7 +264,7 @@ fn world_svg(outcome: &Outcome, world: &World, s: &mut String) -> (f64, f64) {
         b.height()
     );
     let _ = writeln!(s, r#"<g transform="scale(1,-1)">"#);
-    if let Some(map) = &outcome.map {
+    if let Some(map) = map {
         let r = map.params.resolution;
         let o = map.origin();
         for j in 0..map.height() {
@@ -298,7 +308,7 @@ fn world_svg(outcome: &Outcome, world: &World, s: &mut String) -> (f64, f64) {
     (w, h)
 }
 
-fn polyline(points: impl Iterator<Item = (f64, f64)>) -> String {
+pub(crate) fn polyline(points: impl Iterator<Item = (f64, f64)>) -> String {
     points
         .map(|(x, y)| format!("{x:.3},{y:.3}"))
         .collect::<Vec<_>>()

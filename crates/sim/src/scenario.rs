@@ -19,6 +19,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::control::Controller;
 use crate::costmap::CostmapParams;
+use crate::explore::Exploration;
 use crate::kinematics::Robot;
 use crate::laser::Laser;
 use crate::mapping::Mapping;
@@ -122,6 +123,9 @@ pub struct Scenario {
     /// Navigator.
     #[serde(default)]
     pub navigation: Navigation,
+    /// Exploration (used by [`crate::explore::explore`]).
+    #[serde(default)]
+    pub exploration: Exploration,
 }
 
 /// Why a scenario was refused.
@@ -497,6 +501,13 @@ impl Scenario {
             positive(&format!("{f}.radius"), p.radius)?;
             non_negative(&format!("{f}.start"), p.start)?;
         }
-        Ok(())
+        self.exploration
+            .check(self.start)
+            .map_err(|(field, value, reason)| ScenarioError::Field {
+                path: path.to_path_buf(),
+                field,
+                value,
+                reason,
+            })
     }
 }

@@ -122,6 +122,7 @@ pub fn room(seed: u64, index: u64) -> Scenario {
         start_heading_deg: rng.random_range(-180.0..180.0),
         goal,
         known_map: true,
+        exploration: crate::explore::Exploration::default(),
         time_limit: 90.0,
         robot: Robot::default(),
         laser: Default::default(),

@@ -1,5 +1,6 @@
 //! Public-API tests of `sim`, one module per area.
 
+mod explore;
 mod kinematics;
 mod laser;
 mod navigation;

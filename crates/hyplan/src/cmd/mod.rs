@@ -25,6 +25,7 @@ pub fn load_map(
 }
 
 pub mod bench;
+pub mod explore;
 pub mod map;
 pub mod plan;
 pub mod planners;

@@ -1,0 +1,149 @@
+//! `hyplan explore`: the simulated robot of seed 004 explores an unknown world with the
+//! RRT frontier detectors (or the nearest-frontier baseline) and builds its map (crate
+//! `sim`, module `explore`).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::{Context, bail};
+
+/// Options of `hyplan explore`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The scenario file (RON, see `scenarios/sim/explore-*.ron`).
+    pub scenario: PathBuf,
+    /// Frontier detector: `local` (Algorithm 1), `global` (Algorithm 2), `both` (the
+    /// reference's launch) or `frontier` (the nearest-frontier baseline). Default: the
+    /// scenario's (`both` when it says nothing).
+    #[arg(long)]
+    pub detector: Option<String>,
+    /// Growth rate eta of both trees, m (default: the scenario's, or the reference's 15
+    /// global and 1 local).
+    #[arg(long, allow_negative_numbers = true)]
+    pub eta: Option<f64>,
+    /// Laser field of view, degrees, in (0, 360] (default: the scenario's, 180).
+    #[arg(long, allow_negative_numbers = true)]
+    pub fov: Option<f64>,
+    /// Seed of the run's random streams (laser noise, planner, each detector).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Folder for coverage.csv, track.csv, the final map (map.yaml + map.pgm), the
+    /// figures (map, track, trees and frontiers at the scenario's snapshot times and at
+    /// the end; SVG) and animation.png (the map being built, an animated PNG with a
+    /// frame every 10 s of simulated time unless the scenario sets `frame_period`).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+/// Runs `hyplan explore`: progress on stderr, a summary on stdout; exit 0 when the
+/// exploration ended by itself (no frontier left), 1 when the time limit stopped it,
+/// 2 on bad input.
+pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    let (mut scenario, _) = sim::Scenario::load(&args.scenario)?;
+    if let Some(d) = &args.detector {
+        scenario.exploration.strategy = sim::Strategy::parse(d).with_context(|| {
+            format!("--detector = {d:?}: must be one of local, global, both, frontier")
+        })?;
+    }
+    if let Some(eta) = args.eta {
+        if !(eta.is_finite() && eta > 0.0) {
+            bail!("--eta = {eta}: must be finite and > 0 (metres)");
+        }
+        scenario.exploration.eta_global = eta;
+        scenario.exploration.eta_local = eta;
+    }
+    if let Some(fov) = args.fov {
+        if !(fov.is_finite() && fov > 0.0 && fov <= 360.0) {
+            bail!("--fov = {fov}: must be finite, > 0 and at most 360 (degrees)");
+        }
+        scenario.laser.fov_deg = fov;
+    }
+    if args.out.is_some() && scenario.exploration.frame_period.is_none() {
+        scenario.exploration.frame_period = Some(10.0);
+    }
+    // The overrides are checked with the rest of the scenario.
+    let world = scenario.build_world(&args.scenario)?;
+    let strategy = scenario.exploration.strategy;
+    let mut next_line = 0.0;
+    let outcome = sim::explore::explore_with(&scenario, &world, args.seed, strategy, &mut |c| {
+        if c.t >= next_line {
+            eprintln!(
+                "explore: t {:6.0} s, coverage {:5.1} %",
+                c.t,
+                100.0 * c.fraction
+            );
+            next_line += 60.0;
+        }
+    })?;
+    let time = |f: f64| {
+        outcome
+            .time_to(f)
+            .map_or("not reached".to_string(), |t| format!("{t:.0} s"))
+    };
+    outln!(
+        "{}: {} (detector {}, eta {} m global / {} m local, fov {} deg, seed {})",
+        outcome.scenario,
+        if outcome.finished {
+            format!("explored, no frontier left at {:.0} s", outcome.end_time)
+        } else {
+            format!("stopped by the time limit at {:.0} s", outcome.end_time)
+        },
+        strategy.name(),
+        scenario.exploration.eta_global,
+        scenario.exploration.eta_local,
+        scenario.laser.fov_deg,
+        args.seed
+    )?;
+    outln!(
+        "coverage {:.2} % of {:.1} m^2 reachable free; 95 % at {}, 99 % at {}; missed {:.2} m^2",
+        100.0 * outcome.final_coverage(),
+        outcome.reachable_area,
+        time(0.95),
+        time(0.99),
+        outcome.missed_area()
+    )?;
+    outln!(
+        "distance {:.1} m, goals {}, blacklisted {}, points published {}, contact ticks {}",
+        outcome.distance,
+        outcome.goals.len(),
+        outcome.blacklisted.len(),
+        outcome.published,
+        outcome.contact_ticks
+    )?;
+    if let Some(dir) = &args.out {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("creating the folder {}", dir.display()))?;
+        let put = |name: &str, text: &str| -> anyhow::Result<()> {
+            let p = dir.join(name);
+            std::fs::write(&p, text).with_context(|| format!("writing {}", p.display()))?;
+            outln!("wrote {}", p.display())?;
+            Ok(())
+        };
+        put("coverage.csv", &outcome.coverage_csv())?;
+        put("track.csv", &outcome.track_csv())?;
+        let yaml = dir.join("map.yaml");
+        outcome
+            .map
+            .write_ros(&yaml)
+            .with_context(|| format!("writing {}", yaml.display()))?;
+        outln!("wrote {} (+ map.pgm)", yaml.display())?;
+        let apng =
+            sim::explore::figure::animation_png(&outcome, 100).map_err(anyhow::Error::msg)?;
+        let p = dir.join("animation.png");
+        std::fs::write(&p, apng).with_context(|| format!("writing {}", p.display()))?;
+        outln!(
+            "wrote {} (animated PNG, a frame per {} s)",
+            p.display(),
+            scenario.exploration.frame_period.unwrap_or(10.0)
+        )?;
+        for snap in &outcome.snapshots {
+            let svg = sim::explore::figure::snapshot_svg(&outcome, snap, &world);
+            put(&format!("explore-{:04.0}s.svg", snap.t), &svg)?;
+        }
+    }
+    Ok(if outcome.finished {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(crate::EXIT_NO_PATH)
+    })
+}

@@ -1,0 +1,334 @@
+//! The RRT frontier detectors of seed 004 (Algorithms 1 and 2) and what they share: the
+//! exploration region and the three-valued edge check.
+//!
+//! Choices where the paper is silent (the reference is `rrt_exploration`'s
+//! `global_rrt_detector.cpp`, `local_rrt_detector.cpp` and `functions.cpp`):
+//! - Samples are uniform in the axis-aligned box of the region's four corners. The
+//!   reference takes the box's width from corners 0 and 2 and its height from corners 0
+//!   and 1 (a diagonal for a width when the corners are clicked round the box); we take
+//!   the bounding box of all four, which is what the user meant.
+//! - The edge check walks the exact cells the segment crosses (Amanatides-Woo) where the
+//!   reference steps by a fraction of the resolution and may skip a cell's corner; an
+//!   occupied cell met first discards the edge, an unknown cell met first publishes that
+//!   cell's centre, a segment leaving the map counts as occupied.
+//! - Nearest neighbours come from [`sampling::NearestIndex`] (a k-d tree) and steering
+//!   from [`sampling::steer`]; the reference scans every node and always steps +y when x
+//!   is equal, which changes nothing but speed.
+//! - Each detector draws from its own ChaCha8 stream (the reference seeds a Mersenne
+//!   Twister with a constant).
+
+use hyplan_core::Point2;
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+use sampling::{NearestIndex, steer};
+
+use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
+
+/// Why the 5 points do not make a region.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum RegionError {
+    /// Not exactly five points (four corners, then the root).
+    #[error("needs 5 points (4 corners, then the tree's root), got {0}")]
+    Count(usize),
+    /// A coordinate is NaN or infinite.
+    #[error("point {0} is not finite")]
+    NotFinite(usize),
+    /// The corners enclose no area.
+    #[error("the 4 corners enclose no area")]
+    Empty,
+    /// The root (the robot) lies outside the region.
+    #[error("the root ({x}, {y}) (the robot) is not inside the region")]
+    RootOutside {
+        /// Root x, m.
+        x: f64,
+        /// Root y, m.
+        y: f64,
+    },
+}
+
+/// The exploration region: where the detectors sample, and the trees' first root.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Region {
+    /// Lower-left corner of the sampling box, m.
+    pub min: Point2,
+    /// Upper-right corner, m.
+    pub max: Point2,
+    /// The root, m.
+    pub root: Point2,
+}
+
+impl Region {
+    /// The paper's 5-point rule: four corners of the region, then the tree's root (the
+    /// robot), which must lie inside the corners' box (edges included).
+    ///
+    /// # Errors
+    ///
+    /// [`RegionError`].
+    pub fn from_points(points: &[Point2]) -> Result<Self, RegionError> {
+        if points.len() != 5 {
+            return Err(RegionError::Count(points.len()));
+        }
+        if let Some(k) = points
+            .iter()
+            .position(|p| !(p.x.is_finite() && p.y.is_finite()))
+        {
+            return Err(RegionError::NotFinite(k));
+        }
+        let corners = &points[..4];
+        let min = corners
+            .iter()
+            .fold(corners[0], |m, p| Point2::new(m.x.min(p.x), m.y.min(p.y)));
+        let max = corners
+            .iter()
+            .fold(corners[0], |m, p| Point2::new(m.x.max(p.x), m.y.max(p.y)));
+        if max.x <= min.x || max.y <= min.y {
+            return Err(RegionError::Empty);
+        }
+        let root = points[4];
+        if !(root.x >= min.x && root.x <= max.x && root.y >= min.y && root.y <= max.y) {
+            return Err(RegionError::RootOutside {
+                x: root.x,
+                y: root.y,
+            });
+        }
+        Ok(Self { min, max, root })
+    }
+
+    /// A uniform sample in the box.
+    pub fn sample(&self, rng: &mut ChaCha8Rng) -> Point2 {
+        Point2::new(
+            rng.random_range(self.min.x..self.max.x),
+            rng.random_range(self.min.y..self.max.y),
+        )
+    }
+}
+
+/// What the edge check found.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Edge {
+    /// The segment runs into an occupied cell (or off the map) first: discard it.
+    Occupied,
+    /// The segment reaches an unknown cell first: a frontier at that cell's centre.
+    Unknown(Point2),
+    /// Every cell is free: the new node may be added.
+    Free,
+}
+
+/// The three-valued edge check of Algorithms 1-2 on the built map: walks every cell the
+/// segment `a`-`b` crosses, in order, after `a`'s own cell. `a` is a tree node, whose
+/// cell was checked when it was added; the root is the robot, whose own cell a forward
+/// laser of less than 360 degrees never sees (it sits behind the scanner), so checking
+/// it would make every edge from the root a frontier.
+#[must_use]
+pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
+    let res = map.params.resolution;
+    let o = map.origin();
+    let (ax, ay) = ((a.x - o.x) / res, (a.y - o.y) / res);
+    let (bx, by) = ((b.x - o.x) / res, (b.y - o.y) / res);
+    let (mut i, mut j) = (ax.floor() as i64, ay.floor() as i64);
+    let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
+    let (dx, dy) = (bx - ax, by - ay);
+    let (si, sj) = (dx.signum() as i64, dy.signum() as i64);
+    let inv = |d: f64| {
+        if d != 0.0 {
+            (1.0 / d).abs()
+        } else {
+            f64::INFINITY
+        }
+    };
+    let (t_dx, t_dy) = (inv(dx), inv(dy));
+    let first = |a: f64, d: f64, t: f64| {
+        if d > 0.0 {
+            (a.floor() + 1.0 - a) * t
+        } else if d < 0.0 {
+            (a - a.floor()) * t
+        } else {
+            f64::INFINITY
+        }
+    };
+    let (mut t_x, mut t_y) = (first(ax, dx, t_dx), first(ay, dy, t_dy));
+    let steps = (ei - i).abs() + (ej - j).abs();
+    let (w, h) = (map.width() as i64, map.height() as i64);
+    for k in 0..=steps {
+        if k == 0 {
+            // `a`'s own cell: see the doc.
+        } else if i < 0 || j < 0 || i >= w || j >= h {
+            return Edge::Occupied;
+        } else {
+            match map.value(i as usize, j as usize) {
+                OCCUPIED => return Edge::Occupied,
+                UNKNOWN => {
+                    return Edge::Unknown(Point2::new(
+                        o.x + (i as f64 + 0.5) * res,
+                        o.y + (j as f64 + 0.5) * res,
+                    ));
+                }
+                _ => {}
+            }
+        }
+        if k < steps {
+            if t_x < t_y {
+                i += si;
+                t_x += t_dx;
+            } else {
+                j += sj;
+                t_y += t_dy;
+            }
+        }
+    }
+    Edge::Free
+}
+
+/// A tree of the detectors: nodes in a k-d tree, a parent per node.
+#[derive(Debug, Clone)]
+struct Tree {
+    index: NearestIndex,
+    parent: Vec<usize>,
+}
+
+impl Tree {
+    fn rooted_at(root: Point2) -> Self {
+        Self {
+            index: NearestIndex::rooted_at(root),
+            parent: vec![0],
+        }
+    }
+
+    /// One iteration: sample, nearest, steer by `eta`, check. Returns the edge's verdict
+    /// (the node is added when free).
+    fn grow(
+        &mut self,
+        map: &OccupancyGrid,
+        region: &Region,
+        eta: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Edge {
+        let x_rand = region.sample(rng);
+        let Some((near, _)) = self.index.nearest(x_rand) else {
+            return Edge::Occupied;
+        };
+        let x_near = self.index.point(near);
+        let x_new = steer(x_near, x_rand, eta);
+        let edge = edge_check(map, x_near, x_new);
+        if edge == Edge::Free {
+            self.index.insert(x_new);
+            self.parent.push(near);
+        }
+        edge
+    }
+
+    fn edges(&self) -> Vec<(Point2, Point2)> {
+        let pts = self.index.points();
+        (1..pts.len())
+            .map(|k| (pts[self.parent[k]], pts[k]))
+            .collect()
+    }
+}
+
+/// Algorithm 2: one tree grown from the root for the whole exploration; every edge that
+/// reaches unknown space publishes a frontier, and the tree keeps growing.
+#[derive(Debug, Clone)]
+pub struct GlobalRrtDetector {
+    /// Growth rate, m.
+    pub eta: f64,
+    /// Where it samples.
+    pub region: Region,
+    tree: Tree,
+    rng: ChaCha8Rng,
+}
+
+impl GlobalRrtDetector {
+    /// A tree at `region.root`; `rng` is the detector's own stream.
+    #[must_use]
+    pub fn new(region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
+        Self {
+            eta,
+            region,
+            tree: Tree::rooted_at(region.root),
+            rng,
+        }
+    }
+
+    /// One iteration on the current map; a frontier point when the new edge reached
+    /// unknown space.
+    pub fn step(&mut self, map: &OccupancyGrid) -> Option<Point2> {
+        match self.tree.grow(map, &self.region, self.eta, &mut self.rng) {
+            Edge::Unknown(p) => Some(p),
+            _ => None,
+        }
+    }
+
+    /// The tree's edges (parent, child).
+    #[must_use]
+    pub fn edges(&self) -> Vec<(Point2, Point2)> {
+        self.tree.edges()
+    }
+
+    /// Number of nodes.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.tree.index.len()
+    }
+
+    /// Never: the tree holds at least its root.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+}
+
+/// Algorithm 1: like the global tree, but after each frontier found the tree is cleared
+/// and re-rooted at the robot, so it keeps searching near where the robot is.
+#[derive(Debug, Clone)]
+pub struct LocalRrtDetector {
+    /// Growth rate, m.
+    pub eta: f64,
+    /// Where it samples.
+    pub region: Region,
+    tree: Tree,
+    rng: ChaCha8Rng,
+}
+
+impl LocalRrtDetector {
+    /// A tree at `region.root`; `rng` is the detector's own stream.
+    #[must_use]
+    pub fn new(region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
+        Self {
+            eta,
+            region,
+            tree: Tree::rooted_at(region.root),
+            rng,
+        }
+    }
+
+    /// One iteration on the current map with the robot at `robot`; a frontier point
+    /// when the new edge reached unknown space (the tree is then reset at `robot`).
+    pub fn step(&mut self, map: &OccupancyGrid, robot: Point2) -> Option<Point2> {
+        match self.tree.grow(map, &self.region, self.eta, &mut self.rng) {
+            Edge::Unknown(p) => {
+                self.tree = Tree::rooted_at(robot);
+                Some(p)
+            }
+            _ => None,
+        }
+    }
+
+    /// The tree's edges (parent, child).
+    #[must_use]
+    pub fn edges(&self) -> Vec<(Point2, Point2)> {
+        self.tree.edges()
+    }
+
+    /// Number of nodes.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.tree.index.len()
+    }
+
+    /// Never: the tree holds at least its root.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+}

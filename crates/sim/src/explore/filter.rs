@@ -1,0 +1,188 @@
+//! The filter between the detectors and the assigner (`rrt_exploration`'s `filter.py`):
+//! cluster the published points, drop the centres the robot cannot use, keep the rest
+//! and test them again on every later map.
+//!
+//! Choices: mean shift with a flat kernel and every point as a seed, as scikit-learn's
+//! `MeanShift` (which the reference calls) does; centres closer than the bandwidth are
+//! merged, the one with more points in reach kept. A centre is dropped when its costmap
+//! cell is above the threshold (on or near an obstacle) or when the unknown area within
+//! `filter_radius` is below `min_gain`.
+
+use hyplan_core::Point2;
+use sampling::NearestIndex;
+
+use envmap::Inflation;
+
+use crate::costmap::{Costmap, ros_cost};
+use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
+
+/// Flat-kernel mean shift: each point climbs to the mean of the points within
+/// `bandwidth` until it moves less than `bandwidth / 1000` (at most 300 steps); centres
+/// within `bandwidth` of a centre with more points in reach are merged into it. Centres
+/// come out ordered by decreasing support, ties by position, so the result does not
+/// depend on the order of equal-support centres' discovery.
+#[must_use]
+pub fn mean_shift(points: &[Point2], bandwidth: f64) -> Vec<Point2> {
+    if points.is_empty() || !(bandwidth.is_finite() && bandwidth > 0.0) {
+        return Vec::new();
+    }
+    let mut index = NearestIndex::with_capacity(points.len());
+    for &p in points {
+        index.insert(p);
+    }
+    let mut near = Vec::new();
+    let mut found: Vec<(usize, Point2)> = Vec::with_capacity(points.len());
+    for &seed in points {
+        let mut c = seed;
+        let mut support = 0;
+        for _ in 0..300 {
+            index.within_into(c, bandwidth, &mut near);
+            if near.is_empty() {
+                break;
+            }
+            // Sum in id order so that the mean does not depend on the k-d tree's order.
+            near.sort_unstable_by_key(|&(k, _)| k);
+            support = near.len();
+            let sum = near.iter().fold(nalgebra::Vector2::zeros(), |s, &(k, _)| {
+                s + points[k].coords
+            });
+            let next = Point2::from(sum / near.len() as f64);
+            let moved = (next - c).norm();
+            c = next;
+            if moved < bandwidth * 1e-3 {
+                break;
+            }
+        }
+        found.push((support, c));
+    }
+    found.sort_by(|a, b| {
+        b.0.cmp(&a.0)
+            .then(a.1.x.total_cmp(&b.1.x))
+            .then(a.1.y.total_cmp(&b.1.y))
+    });
+    let mut centres: Vec<Point2> = Vec::new();
+    for (_, c) in found {
+        if centres.iter().all(|k| (k - c).norm() >= bandwidth) {
+            centres.push(c);
+        }
+    }
+    centres
+}
+
+/// Unknown area within `radius` of `p` (cells whose centre is within it), m^2: the
+/// reference's information gain.
+#[must_use]
+pub fn information_gain(map: &OccupancyGrid, p: Point2, radius: f64) -> f64 {
+    let res = map.params.resolution;
+    let o = map.origin();
+    let lo_i = ((p.x - radius - o.x) / res).floor().max(0.0) as usize;
+    let lo_j = ((p.y - radius - o.y) / res).floor().max(0.0) as usize;
+    let hi_i = (((p.x + radius - o.x) / res).ceil().max(0.0) as usize).min(map.width());
+    let hi_j = (((p.y + radius - o.y) / res).ceil().max(0.0) as usize).min(map.height());
+    let r2 = radius * radius;
+    let mut n = 0usize;
+    for j in lo_j..hi_j {
+        let cy = o.y + (j as f64 + 0.5) * res - p.y;
+        for i in lo_i..hi_i {
+            let cx = o.x + (i as f64 + 0.5) * res - p.x;
+            if cx * cx + cy * cy <= r2 && map.value(i, j) == UNKNOWN {
+                n += 1;
+            }
+        }
+    }
+    n as f64 * res * res
+}
+
+/// The costmap value (ROS 0-100) at `p` from the built map alone: the Nav2 inflation
+/// cost of the distance from `p` to the nearest occupied cell centre of `map` (100 off
+/// the map). The same rule as [`Costmap`] without building the whole grid: the filter
+/// asks about a few dozen points per cycle.
+#[must_use]
+pub fn built_cost(map: &OccupancyGrid, inflation: &Inflation, p: Point2) -> i8 {
+    let Some((ci, cj)) = map.cell_of(p) else {
+        return 100;
+    };
+    let res = map.params.resolution;
+    let o = map.origin();
+    let reach = (inflation.inflation_radius / res).ceil() as usize + 1;
+    let mut best = f64::INFINITY;
+    for j in cj.saturating_sub(reach)..(cj + reach + 1).min(map.height()) {
+        for i in ci.saturating_sub(reach)..(ci + reach + 1).min(map.width()) {
+            if map.value(i, j) == OCCUPIED {
+                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                best = best.min((c - p).norm());
+            }
+        }
+    }
+    ros_cost(inflation.cost(best))
+}
+
+/// The costmap's ROS value (0-100) at `p`; 100 off the map.
+#[must_use]
+pub fn cost_at(costmap: &Costmap, values: &[i8], p: Point2) -> i8 {
+    let b = costmap.map.bounds();
+    let res = costmap.map.resolution();
+    let (w, h) = (costmap.map.width(), costmap.map.height());
+    let u = (p.x - b.min.x) / res;
+    let v = (p.y - b.min.y) / res;
+    if u >= 0.0 && v >= 0.0 && (u as usize) < w && (v as usize) < h {
+        values[v as usize * w + u as usize]
+    } else {
+        100
+    }
+}
+
+/// The filter's state: the frontiers kept from earlier cycles.
+#[derive(Debug, Clone, Default)]
+pub struct Filter {
+    /// Mean-shift bandwidth, m.
+    pub bandwidth: f64,
+    /// Costmap value above which a centre is dropped.
+    pub costmap_threshold: i8,
+    /// Radius of the information gain, m.
+    pub radius: f64,
+    /// Least information gain kept, m^2.
+    pub min_gain: f64,
+    kept: Vec<Point2>,
+}
+
+impl Filter {
+    /// A filter with nothing kept.
+    #[must_use]
+    pub const fn new(bandwidth: f64, costmap_threshold: i8, radius: f64, min_gain: f64) -> Self {
+        Self {
+            bandwidth,
+            costmap_threshold,
+            radius,
+            min_gain,
+            kept: Vec::new(),
+        }
+    }
+
+    /// One cycle: the kept frontiers and the `published` points since the last cycle are
+    /// clustered, and the centres that pass on `map` (information gain) and `cost` (the
+    /// costmap value at a point, e.g. [`built_cost`]) are kept (and returned).
+    pub fn update(
+        &mut self,
+        published: &[Point2],
+        map: &OccupancyGrid,
+        cost: impl Fn(Point2) -> i8,
+    ) -> &[Point2] {
+        let mut all = std::mem::take(&mut self.kept);
+        all.extend_from_slice(published);
+        self.kept = mean_shift(&all, self.bandwidth)
+            .into_iter()
+            .filter(|&c| {
+                cost(c) <= self.costmap_threshold
+                    && information_gain(map, c, self.radius) >= self.min_gain
+            })
+            .collect();
+        &self.kept
+    }
+
+    /// The frontiers kept by the last cycle.
+    #[must_use]
+    pub fn frontiers(&self) -> &[Point2] {
+        &self.kept
+    }
+}

@@ -1,0 +1,156 @@
+//! The baseline: classic nearest-frontier exploration (Yamauchi 1997). Frontier cells are
+//! free cells of the built map with an unknown 4-neighbour; they are grouped into
+//! 8-connected clusters; the robot goes to the cluster whose closest cell is the fewest
+//! costmap steps away, through cells its centre may occupy (free or unknown, outside the
+//! inscribed radius).
+//!
+//! Choices: distances are breadth-first steps on the 8-connected costmap grid (every step
+//! counts one cell, diagonal or not): enough to rank clusters, no heavier than the map;
+//! clusters of fewer than `min_cells` cells are ignored (laser speckle).
+
+use std::collections::VecDeque;
+
+use envmap::INSCRIBED_INFLATED_OBSTACLE;
+use hyplan_core::Point2;
+
+use crate::costmap::Costmap;
+use crate::mapping::{FREE, OccupancyGrid, UNKNOWN};
+
+/// Free cells with an unknown 4-neighbour, row-major order.
+#[must_use]
+pub fn frontier_cells(map: &OccupancyGrid) -> Vec<(usize, usize)> {
+    let (w, h) = (map.width(), map.height());
+    let mut out = Vec::new();
+    for j in 0..h {
+        for i in 0..w {
+            if map.value(i, j) != FREE {
+                continue;
+            }
+            let unknown = |di: i64, dj: i64| {
+                let (a, b) = (i as i64 + di, j as i64 + dj);
+                a >= 0
+                    && b >= 0
+                    && (a as usize) < w
+                    && (b as usize) < h
+                    && map.value(a as usize, b as usize) == UNKNOWN
+            };
+            if unknown(1, 0) || unknown(-1, 0) || unknown(0, 1) || unknown(0, -1) {
+                out.push((i, j));
+            }
+        }
+    }
+    out
+}
+
+/// The frontier cells of `map` in 8-connected clusters (each in discovery order, clusters
+/// ordered by their first cell).
+#[must_use]
+pub fn frontier_clusters(map: &OccupancyGrid) -> Vec<Vec<(usize, usize)>> {
+    let cells = frontier_cells(map);
+    let w = map.width();
+    let mut is_frontier = vec![false; w * map.height()];
+    for &(i, j) in &cells {
+        is_frontier[j * w + i] = true;
+    }
+    let mut seen = vec![false; is_frontier.len()];
+    let mut clusters = Vec::new();
+    for &(i, j) in &cells {
+        if seen[j * w + i] {
+            continue;
+        }
+        seen[j * w + i] = true;
+        let mut cluster = vec![(i, j)];
+        let mut k = 0;
+        while k < cluster.len() {
+            let (ci, cj) = cluster[k];
+            k += 1;
+            for dj in -1i64..=1 {
+                for di in -1i64..=1 {
+                    let (a, b) = (ci as i64 + di, cj as i64 + dj);
+                    if a < 0 || b < 0 || a as usize >= w || b as usize >= map.height() {
+                        continue;
+                    }
+                    let n = b as usize * w + a as usize;
+                    if is_frontier[n] && !seen[n] {
+                        seen[n] = true;
+                        cluster.push((a as usize, b as usize));
+                    }
+                }
+            }
+        }
+        clusters.push(cluster);
+    }
+    clusters
+}
+
+/// Breadth-first steps from `from` over the costmap cells below the inscribed cost
+/// (`u32::MAX` where unreachable); the start cell is always entered.
+#[must_use]
+pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
+    let (w, h) = (costmap.map.width(), costmap.map.height());
+    let b = costmap.map.bounds();
+    let res = costmap.map.resolution();
+    let mut dist = vec![u32::MAX; w * h];
+    let u = ((from.x - b.min.x) / res).floor();
+    let v = ((from.y - b.min.y) / res).floor();
+    if !(u >= 0.0 && v >= 0.0 && (u as usize) < w && (v as usize) < h) {
+        return dist;
+    }
+    let start = v as usize * w + u as usize;
+    dist[start] = 0;
+    let mut queue = VecDeque::from([start]);
+    while let Some(c) = queue.pop_front() {
+        let (ci, cj) = ((c % w) as i64, (c / w) as i64);
+        for dj in -1i64..=1 {
+            for di in -1i64..=1 {
+                let (a, bb) = (ci + di, cj + dj);
+                if a < 0 || bb < 0 || a as usize >= w || bb as usize >= h {
+                    continue;
+                }
+                let n = bb as usize * w + a as usize;
+                if dist[n] == u32::MAX && costmap.costs[n] < INSCRIBED_INFLATED_OBSTACLE {
+                    dist[n] = dist[c] + 1;
+                    queue.push_back(n);
+                }
+            }
+        }
+    }
+    dist
+}
+
+/// The goal of nearest-frontier exploration: the centre of the reachable frontier cell
+/// closest to `robot` (in costmap steps) among clusters of at least `min_cells` cells,
+/// skipping cells for which `skip` holds (blacklisted goals); `None` when there is none.
+#[must_use]
+pub fn nearest_frontier(
+    map: &OccupancyGrid,
+    costmap: &Costmap,
+    robot: Point2,
+    min_cells: usize,
+    skip: impl Fn(Point2) -> bool,
+) -> Option<Point2> {
+    let steps = costmap_steps(costmap, robot);
+    let b = costmap.map.bounds();
+    let cres = costmap.map.resolution();
+    let cw = costmap.map.width();
+    let res = map.params.resolution;
+    let o = map.origin();
+    let mut best: Option<(u32, Point2)> = None;
+    for cluster in frontier_clusters(map) {
+        if cluster.len() < min_cells {
+            continue;
+        }
+        for (i, j) in cluster {
+            let p = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+            let u = ((p.x - b.min.x) / cres) as usize;
+            let v = ((p.y - b.min.y) / cres) as usize;
+            let Some(&d) = steps.get(v * cw + u) else {
+                continue;
+            };
+            if d != u32::MAX && best.is_none_or(|(bd, _)| d < bd) && !skip(p) {
+                best = Some((d, p));
+            }
+        }
+    }
+    best.map(|(_, p)| p)
+}

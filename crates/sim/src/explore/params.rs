@@ -1,0 +1,190 @@
+//! Exploration parameters (the `exploration` field of a scenario file) and their checks.
+
+use serde::{Deserialize, Serialize};
+
+/// Which frontier detector drives the exploration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Strategy {
+    /// The local RRT detector only (Algorithm 1).
+    Local,
+    /// The global RRT detector only (Algorithm 2).
+    Global,
+    /// Both detectors publish to one filter (the reference's launch file).
+    Both,
+    /// The nearest-frontier baseline: frontier cells of the grid, closest reachable
+    /// cluster first.
+    Frontier,
+}
+
+impl Strategy {
+    /// Every strategy, RRT ones first.
+    pub const ALL: [Self; 4] = [Self::Local, Self::Global, Self::Both, Self::Frontier];
+
+    /// Lower-case name, as the command line spells it.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Local => "local",
+            Self::Global => "global",
+            Self::Both => "both",
+            Self::Frontier => "frontier",
+        }
+    }
+
+    /// The strategy named `s` (`local`, `global`, `both`, `frontier`).
+    #[must_use]
+    pub fn parse(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == s)
+    }
+}
+
+/// Exploration parameters. Defaults are `rrt_exploration`'s launch and script defaults
+/// (`simple.launch`, `filter.py`, `assigner.py`) unless a field says otherwise.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Exploration {
+    /// The detector (default `Both`, as the reference's launch file runs).
+    pub strategy: Strategy,
+    /// The region's four corners, m, in the order the reference's user clicks them; the
+    /// fifth point of the 5-point rule is the robot's start. `None`: the world's bounds.
+    pub region: Option<Vec<(f64, f64)>>,
+    /// Growth rate of the global tree, m (launch default 15).
+    pub eta_global: f64,
+    /// Growth rate of the local tree, m (launch default 1).
+    pub eta_local: f64,
+    /// Detector iterations per simulated second, each detector (the reference's loop
+    /// rate, 100 Hz).
+    pub detector_rate_hz: f64,
+    /// Mean-shift bandwidth, m (`filter.py`: 0.3).
+    pub bandwidth: f64,
+    /// Costmap value (0-100) above which a frontier is dropped (`filter.py`: 70).
+    pub costmap_threshold: i8,
+    /// Radius of the filter's information gain, m (`filter.py`: `info_radius * 0.5` = 0.5).
+    pub filter_radius: f64,
+    /// Frontiers with less unknown area than this within `filter_radius` are dropped,
+    /// m^2 (`filter.py`: 0.2).
+    pub min_gain: f64,
+    /// Radius of the assigner's information gain, m (`assigner.py`: `info_radius` 1.0).
+    pub info_radius: f64,
+    /// Weight of the information gain in the revenue (`assigner.py`: 3).
+    pub info_multiplier: f64,
+    /// Frontiers this close to the robot have their gain multiplied, m (3).
+    pub hysteresis_radius: f64,
+    /// The multiplier (2).
+    pub hysteresis_gain: f64,
+    /// Seconds between filter-and-assigner cycles (`assigner.py`'s
+    /// `delay_after_assignement`, 0.5).
+    pub cycle: f64,
+    /// Frontiers within this distance of a blacklisted goal are not assigned, m (ours,
+    /// 0.5: the reference has no blacklist).
+    pub blacklist_radius: f64,
+    /// The exploration ends when no frontier has been left for this long, s (ours, 10:
+    /// the reference never ends).
+    pub finish_after: f64,
+    /// A goal is given up (and blacklisted) when the robot has not moved `0.2` m for this
+    /// long while driving to it, s (ours, 15: move_base aborts a goal its recovery cannot
+    /// rescue; our navigator can stand still in `Following` when the controller finds no
+    /// command, see the docs page).
+    pub stuck_after: f64,
+    /// Baseline: frontier clusters of fewer cells are ignored (ours, 5 cells = 0.25 m).
+    pub min_frontier_cells: usize,
+    /// Turn a full circle on the spot before exploring (ours, true): a laser narrower
+    /// than 360 degrees leaves the cells behind the robot unknown, every detector then
+    /// publishes points within the goal tolerance, and the robot never moves.
+    pub initial_turn: bool,
+    /// Seconds between frames of the animation of the map being built (`None`: no
+    /// frames kept; `hyplan explore --out` asks for 10 s).
+    pub frame_period: Option<f64>,
+    /// Simulated times at which the trees, frontiers and map are kept for figures, s.
+    pub snapshots: Vec<f64>,
+}
+
+impl Default for Exploration {
+    fn default() -> Self {
+        Self {
+            strategy: Strategy::Both,
+            region: None,
+            eta_global: 15.0,
+            eta_local: 1.0,
+            detector_rate_hz: 100.0,
+            bandwidth: 0.3,
+            costmap_threshold: 70,
+            filter_radius: 0.5,
+            min_gain: 0.2,
+            info_radius: 1.0,
+            info_multiplier: 3.0,
+            hysteresis_radius: 3.0,
+            hysteresis_gain: 2.0,
+            cycle: 0.5,
+            blacklist_radius: 0.5,
+            finish_after: 10.0,
+            stuck_after: 15.0,
+            min_frontier_cells: 5,
+            initial_turn: true,
+            frame_period: None,
+            snapshots: vec![30.0, 90.0],
+        }
+    }
+}
+
+impl Exploration {
+    /// The first invalid field as `(field, value, reason)`; `start` is the robot's start,
+    /// the fifth point of the region rule.
+    ///
+    /// # Errors
+    ///
+    /// The field name (`exploration.eta_local`, `exploration.region`, ...), its value and
+    /// what it must be.
+    pub fn check(&self, start: (f64, f64)) -> Result<(), (String, String, String)> {
+        let bad = |f: &str, v: String, r: &str| Err((format!("exploration.{f}"), v, r.into()));
+        for (f, v) in [
+            ("eta_global", self.eta_global),
+            ("eta_local", self.eta_local),
+            ("detector_rate_hz", self.detector_rate_hz),
+            ("bandwidth", self.bandwidth),
+            ("filter_radius", self.filter_radius),
+            ("info_radius", self.info_radius),
+            ("hysteresis_radius", self.hysteresis_radius),
+            ("cycle", self.cycle),
+            ("blacklist_radius", self.blacklist_radius),
+            ("finish_after", self.finish_after),
+            ("stuck_after", self.stuck_after),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return bad(f, v.to_string(), "must be finite and > 0");
+            }
+        }
+        for (f, v) in [
+            ("min_gain", self.min_gain),
+            ("info_multiplier", self.info_multiplier),
+            ("hysteresis_gain", self.hysteresis_gain),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return bad(f, v.to_string(), "must be finite and >= 0");
+            }
+        }
+        if !(0..=100).contains(&self.costmap_threshold) {
+            return bad(
+                "costmap_threshold",
+                self.costmap_threshold.to_string(),
+                "must be in 0..=100",
+            );
+        }
+        if let Some(t) = self
+            .snapshots
+            .iter()
+            .find(|t| !(t.is_finite() && **t >= 0.0))
+        {
+            return bad("snapshots", t.to_string(), "must be finite and >= 0");
+        }
+        if let Some(r) = &self.region {
+            let mut points: Vec<hyplan_core::Point2> =
+                r.iter().map(|&p| crate::world::pt(p)).collect();
+            points.push(crate::world::pt(start));
+            if let Err(e) = crate::explore::Region::from_points(&points) {
+                return bad("region", format!("{r:?}"), &e.to_string());
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,577 @@
+//! The exploration loop: the navigation simulation of [`crate::run()`] (same ticks, laser,
+//! map, costmap and navigator) with the detectors, the filter and the assigner choosing
+//! the navigator's goals, and the coverage of the true world sampled as the map grows.
+//!
+//! Rates: detectors `detector_rate_hz` (100 Hz, one iteration every 2 ticks, each
+//! detector), filter and assigner every `cycle` (0.5 s), coverage at every map update
+//! (1 s), track at the control rate (10 Hz). Randomness: the run's laser-noise and
+//! planner streams, and one ChaCha8 stream per detector ([`GLOBAL_STREAM`],
+//! [`LOCAL_STREAM`]), so a run is bit-identical per seed whatever else runs beside it.
+//!
+//! Choices beyond the reference: at every map update the unknown cells under the robot's
+//! body are marked free (a scanner mounted ahead of the centre never sees them, and the
+//! trees are rooted there); the robot first turns a full circle on the spot
+//! (`initial_turn`; filter and assigner wait for it, the detectors already grow); a goal is given up (and another chosen) as soon as the
+//! filter's test fails on it (its cell became an obstacle's neighbour or its unknown area
+//! fell below `min_gain`), where the reference keeps driving to it; goals the navigator
+//! reached or gave up on are blacklisted; exploration ends after `finish_after` seconds
+//! without any frontier and without a goal.
+
+use hyplan_core::{Bounds, Point2};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::costmap::{CostmapBuilder, ObstacleMemory, rasterize};
+use crate::explore::assigner::Assigner;
+use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
+use crate::explore::filter::{Filter, built_cost, information_gain};
+use crate::explore::frontier::nearest_frontier;
+use crate::explore::params::Strategy;
+use crate::kinematics::{self, Pose, Twist};
+use crate::laser::LaserModel;
+use crate::mapping::OccupancyGrid;
+use crate::navigator::{NavState, Navigator};
+use crate::planner::GlobalPlanner;
+use crate::run::{NOISE_STREAM, PLANNER_STREAM, TICKS_PER_SECOND};
+use crate::scenario::Scenario;
+use crate::tracking::Tracker;
+use crate::world::World;
+
+/// Global detector stream of a run's seed.
+pub const GLOBAL_STREAM: u64 = 3;
+/// Local detector stream of a run's seed.
+pub const LOCAL_STREAM: u64 = 4;
+
+/// One coverage sample.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Coverage {
+    /// Simulated time, s.
+    pub t: f64,
+    /// Reachable free area of the true world known free on the built map, m^2.
+    pub known_free: f64,
+    /// `known_free` / reachable free area.
+    pub fraction: f64,
+}
+
+/// The state kept at a chosen time, for figures.
+#[derive(Debug, Clone)]
+pub struct Snapshot {
+    /// Simulated time, s.
+    pub t: f64,
+    /// The robot.
+    pub pose: Pose,
+    /// Edges of the global tree.
+    pub global_edges: Vec<(Point2, Point2)>,
+    /// Edges of the local tree.
+    pub local_edges: Vec<(Point2, Point2)>,
+    /// Points published since the start.
+    pub published: Vec<Point2>,
+    /// Frontiers kept by the filter (RRT) or the baseline's goal candidates.
+    pub frontiers: Vec<Point2>,
+    /// The goal being driven to.
+    pub goal: Option<Point2>,
+    /// The built map.
+    pub map: OccupancyGrid,
+}
+
+/// Everything an exploration produced.
+#[derive(Debug, Clone)]
+pub struct ExploreOutcome {
+    /// Scenario name.
+    pub scenario: String,
+    /// The detector.
+    pub strategy: Strategy,
+    /// The seed.
+    pub seed: u64,
+    /// Coverage over time (at every map update, and at the end).
+    pub coverage: Vec<Coverage>,
+    /// The robot's track: time, x, y, heading (10 Hz).
+    pub track: Vec<(f64, Pose)>,
+    /// Goals sent to the navigator, with the time.
+    pub goals: Vec<(f64, Point2)>,
+    /// Goals the navigator gave up on.
+    pub blacklisted: Vec<Point2>,
+    /// Frontier points the detectors published.
+    pub published: usize,
+    /// Snapshots at the scenario's chosen times (and one at the end).
+    pub snapshots: Vec<Snapshot>,
+    /// The built map at the end.
+    pub map: OccupancyGrid,
+    /// Reachable free area of the true world, m^2.
+    pub reachable_area: f64,
+    /// Whether the exploration ended by itself (no frontier left for `finish_after`);
+    /// false when the time limit stopped it.
+    pub finished: bool,
+    /// Simulated time at the end, s.
+    pub end_time: f64,
+    /// Distance driven, m.
+    pub distance: f64,
+    /// Frames of the map being built (`frame_period`): time, robot, ROS values.
+    pub frames: Vec<(f64, Pose, Vec<i8>)>,
+    /// Laser ticks on which the robot's body overlapped the true static world.
+    pub contact_ticks: usize,
+}
+
+impl ExploreOutcome {
+    /// First time coverage reached `fraction`, s.
+    #[must_use]
+    pub fn time_to(&self, fraction: f64) -> Option<f64> {
+        self.coverage
+            .iter()
+            .find(|c| c.fraction >= fraction)
+            .map(|c| c.t)
+    }
+
+    /// Final coverage fraction.
+    #[must_use]
+    pub fn final_coverage(&self) -> f64 {
+        self.coverage.last().map_or(0.0, |c| c.fraction)
+    }
+
+    /// Reachable free area still not known free at the end, m^2 ("missed").
+    #[must_use]
+    pub fn missed_area(&self) -> f64 {
+        self.reachable_area - self.coverage.last().map_or(0.0, |c| c.known_free)
+    }
+
+    /// Coverage over time as CSV (`t,known_free_m2,coverage`).
+    #[must_use]
+    pub fn coverage_csv(&self) -> String {
+        let mut s = String::from("t,known_free_m2,coverage\n");
+        for c in &self.coverage {
+            s.push_str(&format!(
+                "{:.3},{:.4},{:.6}\n",
+                c.t, c.known_free, c.fraction
+            ));
+        }
+        s
+    }
+
+    /// The track as CSV (`t,x,y,phi`).
+    #[must_use]
+    pub fn track_csv(&self) -> String {
+        let mut s = String::from("t,x,y,phi\n");
+        for (t, p) in &self.track {
+            s.push_str(&format!("{t:.3},{:.4},{:.4},{:.4}\n", p.x, p.y, p.phi));
+        }
+        s
+    }
+}
+
+/// The cells of a `res` grid over `bounds` that are free in the true world (no obstacle
+/// reaches into them) and 4-connected to `start`'s cell: (columns, mask).
+#[must_use]
+pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<bool>) {
+    let (w, h, occupied) = rasterize(world.bounds, &world.statics, res);
+    let mut reach = vec![false; w * h];
+    let u = ((start.x - world.bounds.min.x) / res).floor();
+    let v = ((start.y - world.bounds.min.y) / res).floor();
+    if !(u >= 0.0 && v >= 0.0 && (u as usize) < w && (v as usize) < h) {
+        return (w, reach);
+    }
+    let s = v as usize * w + u as usize;
+    if occupied[s] {
+        return (w, reach);
+    }
+    reach[s] = true;
+    let mut stack = vec![s];
+    while let Some(c) = stack.pop() {
+        let (i, j) = (c % w, c / w);
+        let mut push = |n: usize| {
+            if !occupied[n] && !reach[n] {
+                reach[n] = true;
+                stack.push(n);
+            }
+        };
+        if i > 0 {
+            push(c - 1);
+        }
+        if i + 1 < w {
+            push(c + 1);
+        }
+        if j > 0 {
+            push(c - w);
+        }
+        if j + 1 < h {
+            push(c + w);
+        }
+    }
+    (w, reach)
+}
+
+fn stream(seed: u64, s: u64) -> ChaCha8Rng {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    rng.set_stream(s);
+    rng
+}
+
+fn every(hz: f64) -> u64 {
+    ((TICKS_PER_SECOND as f64 / hz).round() as u64).max(1)
+}
+
+/// The region of the scenario's exploration (its corners, or the world's bounds) with
+/// the start as root.
+///
+/// # Errors
+///
+/// [`RegionError`] when the corners are not four, enclose nothing or leave out the start.
+pub fn region_of(scenario: &Scenario, bounds: Bounds) -> Result<Region, RegionError> {
+    let mut points: Vec<Point2> = match &scenario.exploration.region {
+        Some(c) => c.iter().map(|&p| crate::world::pt(p)).collect(),
+        None => vec![
+            bounds.min,
+            Point2::new(bounds.max.x, bounds.min.y),
+            bounds.max,
+            Point2::new(bounds.min.x, bounds.max.y),
+        ],
+    };
+    points.push(crate::world::pt(scenario.start));
+    Region::from_points(&points)
+}
+
+/// Explores `world` from the scenario's start with `strategy` until no frontier is left
+/// (see the module doc) or the scenario's time limit.
+///
+/// # Errors
+///
+/// [`RegionError`] when the scenario's region is invalid (a validated scenario's is not).
+#[allow(clippy::too_many_lines)]
+pub fn explore(
+    scenario: &Scenario,
+    world: &World,
+    seed: u64,
+    strategy: Strategy,
+) -> Result<ExploreOutcome, RegionError> {
+    explore_with(scenario, world, seed, strategy, &mut |_| {})
+}
+
+/// [`explore`], calling `progress` with every coverage sample as the run goes.
+///
+/// # Errors
+///
+/// As [`explore`].
+#[allow(clippy::too_many_lines)]
+pub fn explore_with(
+    scenario: &Scenario,
+    world: &World,
+    seed: u64,
+    strategy: Strategy,
+    progress: &mut dyn FnMut(&Coverage),
+) -> Result<ExploreOutcome, RegionError> {
+    let ex = &scenario.exploration;
+    let region = region_of(scenario, world.bounds)?;
+    let dt = 1.0 / TICKS_PER_SECOND as f64;
+    let robot = scenario.robot;
+    let laser = LaserModel::new(scenario.laser);
+    let laser_every = every(scenario.laser.rate_hz);
+    let control_every = every(scenario.controller.rate_hz);
+    let map_every = every(1.0 / scenario.mapping.period).div_ceil(laser_every) * laser_every;
+    let detector_every = every(ex.detector_rate_hz);
+    let cycle_every = every(1.0 / ex.cycle);
+    let max_ticks = (scenario.time_limit * TICKS_PER_SECOND as f64).ceil() as u64;
+    let stuck_ticks = (ex.stuck_after * TICKS_PER_SECOND as f64).round() as u64;
+    let finish_ticks = (ex.finish_after * TICKS_PER_SECOND as f64).round() as u64;
+    let snapshot_ticks: Vec<u64> = ex
+        .snapshots
+        .iter()
+        .map(|t| (t * TICKS_PER_SECOND as f64).round() as u64)
+        .collect();
+    let mut noise_rng = stream(seed, NOISE_STREAM);
+    let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
+    let res = scenario.mapping.resolution;
+    let start = crate::world::pt(scenario.start);
+    let (_, reach) = reachable_free(world, res, start);
+    let reach_count = reach.iter().filter(|r| **r).count();
+    let cell_area = res * res;
+    let reachable_area = reach_count as f64 * cell_area;
+    let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
+    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
+        .with_prior(world.bounds, &world.mapped);
+    let mut tracker = Tracker::new(
+        world.bounds,
+        &world.mapped,
+        scenario.costmap.obstacle_range,
+        TICKS_PER_SECOND as f64,
+    );
+    let costmaps = CostmapBuilder::new(
+        world.bounds,
+        &world.mapped,
+        scenario.costmap,
+        robot.body_radius,
+    );
+    let mut nav = Navigator::new(
+        scenario.navigation,
+        scenario.controller,
+        GlobalPlanner::Dijkstra,
+        costmaps.clone(),
+        robot,
+        start,
+        stream(seed, PLANNER_STREAM),
+    );
+    let rrt = strategy != Strategy::Frontier;
+    let inflation = costmaps.inflation();
+    let mut global = matches!(strategy, Strategy::Global | Strategy::Both)
+        .then(|| GlobalRrtDetector::new(region, ex.eta_global, stream(seed, GLOBAL_STREAM)));
+    let mut local = matches!(strategy, Strategy::Local | Strategy::Both)
+        .then(|| LocalRrtDetector::new(region, ex.eta_local, stream(seed, LOCAL_STREAM)));
+    let mut filter = Filter::new(
+        ex.bandwidth,
+        ex.costmap_threshold,
+        ex.filter_radius,
+        ex.min_gain,
+    );
+    let mut assigner = Assigner {
+        info_radius: ex.info_radius,
+        info_multiplier: ex.info_multiplier,
+        hysteresis_radius: ex.hysteresis_radius,
+        hysteresis_gain: ex.hysteresis_gain,
+        blacklist_radius: ex.blacklist_radius,
+        blacklist: Vec::new(),
+    };
+    let mut pose = Pose {
+        x: scenario.start.0,
+        y: scenario.start.1,
+        phi: kinematics::wrap_angle(scenario.start_heading_deg.to_radians()),
+    };
+    let mut twist = Twist::default();
+    let mut published = Vec::new();
+    let mut all_published = Vec::new();
+    let mut coverage = Vec::new();
+    let mut track = Vec::new();
+    let mut goals = Vec::new();
+    let mut failed = Vec::new();
+    let mut snapshots = Vec::new();
+    let mut frames = Vec::new();
+    let frame_every = ex
+        .frame_period
+        .map(|f| ((f * TICKS_PER_SECOND as f64).round() as u64).max(1));
+    let mut goal: Option<Point2> = None;
+    let mut candidates: Vec<Point2> = Vec::new();
+    let mut idle_since: Option<u64> = None;
+    let mut map_version = 0u64;
+    let mut cached: Option<(u64, crate::costmap::Costmap)> = None;
+    // Where the robot was when it last moved 0.2 m, and when.
+    let mut anchor = (start, 0u64);
+    let mut finished = false;
+    let mut distance = 0.0;
+    let mut contact_ticks = 0;
+    let mut nav_events = Vec::new();
+    let mut end_tick = 0;
+    // Heading turned so far in the initial turn; `None` once it is over.
+    let mut turned = ex.initial_turn.then_some(0.0);
+    let sample = |map: &OccupancyGrid, t: f64| {
+        let n = map.count_free(&reach);
+        Coverage {
+            t,
+            known_free: n as f64 * cell_area,
+            fraction: if reach_count == 0 {
+                0.0
+            } else {
+                n as f64 / reach_count as f64
+            },
+        }
+    };
+    let snapshot = |t: f64,
+                    pose: Pose,
+                    map: &OccupancyGrid,
+                    global: &Option<GlobalRrtDetector>,
+                    local: &Option<LocalRrtDetector>,
+                    published: &[Point2],
+                    frontiers: &[Point2],
+                    goal: Option<Point2>| Snapshot {
+        t,
+        pose,
+        global_edges: global
+            .as_ref()
+            .map(GlobalRrtDetector::edges)
+            .unwrap_or_default(),
+        local_edges: local
+            .as_ref()
+            .map(LocalRrtDetector::edges)
+            .unwrap_or_default(),
+        published: published.to_vec(),
+        frontiers: frontiers.to_vec(),
+        goal,
+        map: map.clone(),
+    };
+    for tick in 0..=max_ticks {
+        end_tick = tick;
+        let t = tick as f64 * dt;
+        let here = Point2::new(pose.x, pose.y);
+        let people = world.people_at(t);
+        if tick % laser_every == 0 {
+            let (o, h) = laser.origin(&pose);
+            let mut scan = laser.cast(&world.statics, &people, o, h);
+            laser.add_noise(&mut scan, &mut noise_rng);
+            if tick % map_every == 0 {
+                map.integrate(&scan);
+                map_version += 1;
+                map.mark_footprint_free(here, robot.body_radius);
+                coverage.push(sample(&map, t));
+                progress(&coverage[coverage.len() - 1]);
+            }
+            tracker.update(&scan, tick);
+            memory.insert(scan, tick);
+            let (d, _) = world.statics.nearest(here);
+            if d < robot.body_radius || world.statics.inside(here) {
+                contact_ticks += 1;
+            }
+        }
+        if tick % detector_every == 0 {
+            if let Some(g) = global.as_mut()
+                && let Some(p) = g.step(&map)
+            {
+                published.push(p);
+            }
+            if let Some(l) = local.as_mut()
+                && let Some(p) = l.step(&map, here)
+            {
+                published.push(p);
+            }
+        }
+        if tick % cycle_every == 0 && turned.is_none() {
+            // The baseline needs the whole costmap (its reachability); the RRT filter and
+            // the goal test ask about a few points (`built_cost`). The map changes once
+            // per map period: build once per change.
+            if !rrt && cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
+                cached = Some((map_version, costmaps.build(Some(&map), &[])));
+            }
+            let cost = |p: Point2| built_cost(&map, &inflation, p);
+            if rrt {
+                all_published.extend_from_slice(&published);
+                candidates = filter.update(&published, &map, cost).to_vec();
+                published.clear();
+            }
+            if let Some(g) = goal {
+                let state = nav.state();
+                let still_good = cost(g) <= ex.costmap_threshold
+                    && information_gain(&map, g, ex.filter_radius) >= ex.min_gain;
+                if (here - anchor.0).norm() >= 0.2 {
+                    anchor = (here, tick);
+                }
+                if state == NavState::Failed || tick - anchor.1 >= stuck_ticks {
+                    failed.push(g);
+                    assigner.blacklist.push(g);
+                    goal = None;
+                } else if state == NavState::Reached || !still_good {
+                    assigner.blacklist.push(g);
+                    goal = None;
+                }
+            }
+            if goal.is_none() {
+                goal = if rrt {
+                    assigner.choose(here, &candidates, &map)
+                } else {
+                    let next = cached.as_ref().and_then(|(_, costmap)| {
+                        nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
+                            assigner.blacklisted(p)
+                        })
+                    });
+                    candidates = next.into_iter().collect();
+                    next
+                };
+                if let Some(g) = goal {
+                    anchor = (here, tick);
+                    nav.set_goal(g);
+                    goals.push((t, g));
+                }
+            }
+            if goal.is_none() {
+                let since = *idle_since.get_or_insert(tick);
+                if tick - since >= finish_ticks {
+                    finished = true;
+                }
+            } else {
+                idle_since = None;
+            }
+        }
+        if frame_every.is_some_and(|k| tick % k == 0) {
+            frames.push((t, pose, map.ros_values()));
+        }
+        if snapshot_ticks.contains(&tick) {
+            snapshots.push(snapshot(
+                t,
+                pose,
+                &map,
+                &global,
+                &local,
+                &all_published,
+                &candidates,
+                goal,
+            ));
+        }
+        if finished {
+            break;
+        }
+
+        if let Some(a) = turned {
+            if tick % control_every == 0 {
+                let want = if a < std::f64::consts::TAU {
+                    Twist {
+                        v: 0.0,
+                        omega: scenario.controller.rotate_speed,
+                    }
+                } else {
+                    Twist::default()
+                };
+                twist = nav.controller.limit(&robot, twist, want);
+                track.push((t, pose));
+                if a >= std::f64::consts::TAU && twist == Twist::default() {
+                    turned = None;
+                }
+            }
+        } else if tick % control_every == 0 {
+            nav_events.clear();
+            twist = nav.step(
+                pose,
+                twist,
+                &memory,
+                &tracker.movers(tick),
+                Some(&map),
+                tick,
+                TICKS_PER_SECOND as f64,
+                &mut nav_events,
+            );
+            track.push((t, pose));
+        }
+        let next = kinematics::integrate(pose, twist, dt);
+        if let Some(a) = turned.as_mut() {
+            *a += kinematics::wrap_angle(next.phi - pose.phi).abs();
+        }
+        distance += ((next.x - pose.x).powi(2) + (next.y - pose.y).powi(2)).sqrt();
+        pose = next;
+    }
+    let end_time = end_tick as f64 * dt;
+    if coverage.last().is_none_or(|c: &Coverage| c.t < end_time) {
+        coverage.push(sample(&map, end_time));
+    }
+    all_published.extend_from_slice(&published);
+    snapshots.push(snapshot(
+        end_time,
+        pose,
+        &map,
+        &global,
+        &local,
+        &all_published,
+        &candidates,
+        goal,
+    ));
+    Ok(ExploreOutcome {
+        scenario: scenario.name.clone(),
+        strategy,
+        seed,
+        coverage,
+        track,
+        goals,
+        blacklisted: failed,
+        published: all_published.len(),
+        snapshots,
+        map,
+        reachable_area,
+        finished,
+        end_time,
+        distance,
+        frames,
+        contact_ticks,
+    })
+}

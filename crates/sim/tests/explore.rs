@@ -1,0 +1,427 @@
+//! Exploration: the edge check, the region rule, mean shift, the assigner, the baseline,
+//! one whole exploration, determinism and bad input.
+
+use std::path::{Path, PathBuf};
+
+use hyplan_core::{Bounds, Point2};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use sim::explore::{
+    Assigner, Edge, LocalRrtDetector, Region, RegionError, edge_check, frontier_clusters,
+    information_gain, mean_shift, revenue,
+};
+use sim::mapping::{FREE, OCCUPIED, UNKNOWN};
+use sim::{Mapping, OccupancyGrid, Scenario, ScenarioError, Strategy};
+
+fn p(x: f64, y: f64) -> Point2 {
+    Point2::new(x, y)
+}
+
+/// A 2 m x 1 m grid (0.05 m cells), every cell `fill`.
+fn grid(fill: i8) -> OccupancyGrid {
+    let mut g = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(2.0, 1.0)), Mapping::default());
+    for j in 0..g.height() {
+        for i in 0..g.width() {
+            g.set_value(i, j, fill);
+        }
+    }
+    g
+}
+
+#[test]
+fn edge_check_is_three_valued() {
+    let mut g = grid(FREE);
+    assert_eq!(edge_check(&g, p(0.1, 0.5), p(1.9, 0.5)), Edge::Free);
+    // An unknown cell at column 20 (x 1.00-1.05): the frontier is its centre.
+    g.set_value(20, 10, UNKNOWN);
+    let Edge::Unknown(f) = edge_check(&g, p(0.1, 0.52), p(1.9, 0.52)) else {
+        panic!("expected a frontier")
+    };
+    assert!((f - p(1.025, 0.525)).norm() < 1e-12, "{f:?}");
+    // Walking the other way meets an occupied cell first: discarded.
+    g.set_value(30, 10, OCCUPIED);
+    assert_eq!(edge_check(&g, p(1.9, 0.52), p(0.1, 0.52)), Edge::Occupied);
+    // ... and this way the unknown cell comes first.
+    assert!(matches!(
+        edge_check(&g, p(0.1, 0.52), p(1.9, 0.52)),
+        Edge::Unknown(_)
+    ));
+    // A segment that misses both cells is free.
+    assert_eq!(edge_check(&g, p(0.1, 0.2), p(1.9, 0.2)), Edge::Free);
+    // The start cell is the node's own and is not checked; leaving the map is occupied.
+    g.set_value(2, 2, UNKNOWN);
+    assert_eq!(edge_check(&g, p(0.12, 0.12), p(0.5, 0.12)), Edge::Free);
+    assert_eq!(edge_check(&g, p(1.9, 0.5), p(2.5, 0.5)), Edge::Occupied);
+}
+
+#[test]
+fn edge_check_catches_a_diagonal_corner() {
+    // A diagonal that crosses cell (11, 10) only near its corner still sees it.
+    let mut g = grid(FREE);
+    g.set_value(11, 10, OCCUPIED);
+    assert_eq!(edge_check(&g, p(0.5, 0.49), p(0.6, 0.56)), Edge::Occupied);
+}
+
+#[test]
+fn region_follows_the_five_point_rule() {
+    let corners = [p(0.0, 0.0), p(10.0, 0.0), p(10.0, 5.0), p(0.0, 5.0)];
+    let mut five = corners.to_vec();
+    five.push(p(3.0, 2.0));
+    let r = Region::from_points(&five).unwrap();
+    assert_eq!(
+        (r.min, r.max, r.root),
+        (p(0.0, 0.0), p(10.0, 5.0), p(3.0, 2.0))
+    );
+    // Order of the corners does not matter: the box of all four.
+    let mut shuffled = vec![corners[2], corners[0], corners[3], corners[1]];
+    shuffled.push(p(3.0, 2.0));
+    assert_eq!(Region::from_points(&shuffled).unwrap(), r);
+    five[4] = p(11.0, 2.0);
+    assert!(matches!(
+        Region::from_points(&five),
+        Err(RegionError::RootOutside { .. })
+    ));
+    assert_eq!(Region::from_points(&five[..4]), Err(RegionError::Count(4)));
+    let flat = [
+        p(0.0, 0.0),
+        p(1.0, 0.0),
+        p(2.0, 0.0),
+        p(3.0, 0.0),
+        p(1.0, 0.0),
+    ];
+    assert_eq!(Region::from_points(&flat), Err(RegionError::Empty));
+    let nan = [
+        p(0.0, 0.0),
+        p(1.0, 0.0),
+        p(1.0, 1.0),
+        p(0.0, f64::NAN),
+        p(0.5, 0.5),
+    ];
+    assert_eq!(Region::from_points(&nan), Err(RegionError::NotFinite(3)));
+}
+
+#[test]
+fn mean_shift_finds_the_blobs() {
+    let mut pts = Vec::new();
+    for k in 0..5 {
+        let d = f64::from(k) * 0.02;
+        pts.push(p(1.0 + d, 1.0 - d));
+        pts.push(p(4.0 - d, 2.0 + d));
+    }
+    pts.push(p(8.0, 8.0));
+    let c = mean_shift(&pts, 0.3);
+    assert_eq!(c.len(), 3, "{c:?}");
+    // Largest support first; ties by position.
+    assert!((c[0] - p(1.04, 0.96)).norm() < 1e-9, "{c:?}");
+    assert!((c[1] - p(3.96, 2.04)).norm() < 1e-9, "{c:?}");
+    assert_eq!(c[2], p(8.0, 8.0));
+    assert!(mean_shift(&[], 0.3).is_empty());
+}
+
+#[test]
+fn information_gain_counts_unknown_area() {
+    let mut g = grid(FREE);
+    assert_eq!(information_gain(&g, p(1.0, 0.5), 0.3), 0.0);
+    for j in 0..g.height() {
+        for i in 20..g.width() {
+            g.set_value(i, j, UNKNOWN);
+        }
+    }
+    // Half a disc of radius 0.3 m is unknown: about 0.14 m^2.
+    let half = std::f64::consts::PI * 0.09 / 2.0;
+    let gain = information_gain(&g, p(1.0, 0.5), 0.3);
+    assert!((gain - half).abs() < 0.02, "{gain} vs {half}");
+}
+
+#[test]
+fn revenue_and_hysteresis() {
+    // Within the hysteresis radius the gain counts twice.
+    assert_eq!(revenue(1.0, 2.0, 3.0, 3.0, 2.0), 4.0);
+    assert_eq!(revenue(1.0, 4.0, 3.0, 3.0, 2.0), -1.0);
+    // A near frontier with a third of the gain beats a far one because of hysteresis.
+    let mut g = grid(FREE);
+    for j in 0..g.height() {
+        for i in 0..g.width() {
+            if !(3..=36).contains(&i) {
+                g.set_value(i, j, UNKNOWN);
+            }
+        }
+    }
+    let a = Assigner {
+        info_radius: 0.3,
+        info_multiplier: 3.0,
+        hysteresis_radius: 0.5,
+        hysteresis_gain: 2.0,
+        blacklist_radius: 0.2,
+        blacklist: Vec::new(),
+    };
+    let near = p(0.1, 0.5);
+    let far = p(1.9, 0.5);
+    assert_eq!(a.choose(p(0.4, 0.5), &[far, near], &g), Some(near));
+    let none = Assigner {
+        hysteresis_gain: 1.0,
+        ..a.clone()
+    };
+    // Without it, equal gains: the nearer still wins on distance.
+    assert_eq!(none.choose(p(0.4, 0.5), &[far, near], &g), Some(near));
+    let blacklisted = Assigner {
+        blacklist: vec![p(0.15, 0.5)],
+        ..a
+    };
+    assert_eq!(blacklisted.choose(p(0.4, 0.5), &[far, near], &g), Some(far));
+}
+
+#[test]
+fn local_tree_resets_at_the_robot_after_a_frontier() {
+    let mut g = grid(FREE);
+    for j in 0..g.height() {
+        for i in 30..g.width() {
+            g.set_value(i, j, UNKNOWN);
+        }
+    }
+    let region = Region::from_points(&[
+        p(0.0, 0.0),
+        p(2.0, 0.0),
+        p(2.0, 1.0),
+        p(0.0, 1.0),
+        p(0.5, 0.5),
+    ])
+    .unwrap();
+    let mut d = LocalRrtDetector::new(region, 0.3, ChaCha8Rng::seed_from_u64(3));
+    let robot = p(0.7, 0.4);
+    let mut found = None;
+    for _ in 0..10_000 {
+        if let Some(f) = d.step(&g, robot) {
+            found = Some(f);
+            break;
+        }
+    }
+    let f = found.expect("a frontier within 10 000 iterations");
+    assert!(f.x >= 1.5, "published in the unknown part: {f:?}");
+    assert_eq!(d.len(), 1);
+    assert!(d.edges().is_empty());
+}
+
+#[test]
+fn baseline_clusters_frontier_cells() {
+    let mut g = grid(UNKNOWN);
+    // A free 10 x 10 block: its rim touches unknown cells on every side.
+    for j in 5..15 {
+        for i in 5..15 {
+            g.set_value(i, j, FREE);
+        }
+    }
+    // A separate free cell far away: a second cluster of one.
+    g.set_value(35, 10, FREE);
+    let c = frontier_clusters(&g);
+    assert_eq!(c.len(), 2);
+    assert_eq!(c[0].len(), 36);
+    assert_eq!(c[1], vec![(35, 10)]);
+}
+
+fn scenario_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-22m.ron")
+}
+
+#[test]
+fn one_exploration_reaches_99_percent() {
+    let (scenario, world) = Scenario::load(&scenario_path()).unwrap();
+    let out = sim::explore(&scenario, &world, 1, Strategy::Both).unwrap();
+    assert!(
+        out.finished,
+        "ended by the time limit at {} s",
+        out.end_time
+    );
+    assert!(
+        out.final_coverage() >= 0.99,
+        "coverage {} (missed {} m^2)",
+        out.final_coverage(),
+        out.missed_area()
+    );
+    assert_eq!(out.contact_ticks, 0);
+    // Coverage never decreases by more than noise, and the map says what the laser saw.
+    assert!(out.time_to(0.95).unwrap() <= out.time_to(0.99).unwrap());
+}
+
+#[test]
+fn same_seed_same_bits() {
+    let (mut scenario, world) = Scenario::load(&scenario_path()).unwrap();
+    scenario.time_limit = 90.0;
+    for strategy in [Strategy::Both, Strategy::Frontier] {
+        let a = sim::explore(&scenario, &world, 5, strategy).unwrap();
+        let b = sim::explore(&scenario, &world, 5, strategy).unwrap();
+        let bits = |o: &sim::ExploreOutcome| {
+            o.track
+                .iter()
+                .flat_map(|(t, q)| [t.to_bits(), q.x.to_bits(), q.y.to_bits(), q.phi.to_bits()])
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(bits(&a), bits(&b));
+        assert_eq!(a.map.ros_values(), b.map.ros_values());
+        assert_eq!(a.goals, b.goals);
+        // Another seed drives elsewhere (the detectors and the noise differ).
+        if strategy == Strategy::Both {
+            let c = sim::explore(&scenario, &world, 6, strategy).unwrap();
+            assert_ne!(bits(&a), bits(&c));
+        }
+    }
+}
+
+fn field_of(text: &str) -> String {
+    let path = Path::new("bad.ron");
+    let scenario = Scenario::parse(text, path).unwrap();
+    match scenario.build_world(path) {
+        Err(ScenarioError::Field { field, .. }) => field,
+        other => panic!("expected a field error, got {other:?}"),
+    }
+}
+
+#[test]
+fn bad_input_names_the_field() {
+    let base = |extra: &str, laser: &str| {
+        format!(
+            r#"SimScenario(name: "x", world: (size: (6.0, 3.0)), start: (1.0, 1.5), goal: (5.0, 1.5),
+               known_map: false, {laser} exploration: ({extra}))"#
+        )
+    };
+    assert_eq!(
+        field_of(&base("eta_local: -1.0", "")),
+        "exploration.eta_local"
+    );
+    assert_eq!(
+        field_of(&base("eta_global: inf", "")),
+        "exploration.eta_global"
+    );
+    assert_eq!(
+        field_of(&base("eta_global: NaN", "")),
+        "exploration.eta_global"
+    );
+    assert_eq!(
+        field_of(&base("info_radius: 0.0", "")),
+        "exploration.info_radius"
+    );
+    assert_eq!(
+        field_of(&base("filter_radius: -0.5", "")),
+        "exploration.filter_radius"
+    );
+    assert_eq!(
+        field_of(&base(
+            "region: [(2.0, 0.0), (6.0, 0.0), (6.0, 3.0), (2.0, 3.0)]",
+            ""
+        )),
+        "exploration.region"
+    );
+    assert_eq!(
+        field_of(&base("", "laser: (fov_deg: 0.0),")),
+        "laser.fov_deg"
+    );
+    assert_eq!(
+        field_of(&base("", "laser: (fov_deg: 400.0),")),
+        "laser.fov_deg"
+    );
+}
+
+#[test]
+fn same_bits_whatever_runs_beside() {
+    let (mut scenario, world) = Scenario::load(&scenario_path()).unwrap();
+    scenario.time_limit = 60.0;
+    let alone = sim::explore(&scenario, &world, 9, Strategy::Both).unwrap();
+    // The same run on four threads at once, beside runs of other seeds and detectors.
+    let outs: Vec<sim::ExploreOutcome> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..4u64)
+            .map(|k| {
+                let (sc, w) = (&scenario, &world);
+                s.spawn(move || {
+                    let other = if k % 2 == 0 {
+                        Strategy::Local
+                    } else {
+                        Strategy::Global
+                    };
+                    let _ = sim::explore(sc, w, 100 + k, other).unwrap();
+                    sim::explore(sc, w, 9, Strategy::Both).unwrap()
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    for o in outs {
+        assert_eq!(o.track.len(), alone.track.len());
+        assert!(
+            o.track
+                .iter()
+                .zip(&alone.track)
+                .all(|(a, b)| a.0.to_bits() == b.0.to_bits()
+                    && a.1.x.to_bits() == b.1.x.to_bits()
+                    && a.1.y.to_bits() == b.1.y.to_bits()
+                    && a.1.phi.to_bits() == b.1.phi.to_bits())
+        );
+        assert_eq!(o.map.ros_values(), alone.map.ros_values());
+    }
+}
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// A free verdict is sound: every point densely sampled along the segment (past
+        /// the start's own cell) lies in a free cell; an unknown verdict names an unknown
+        /// cell on the segment's way.
+        #[test]
+        fn edge_check_agrees_with_dense_sampling(
+            cells in proptest::collection::vec(0u8..10, 40 * 20),
+            ax in 0.01..1.99f64, ay in 0.01..0.99f64,
+            bx in 0.01..1.99f64, by in 0.01..0.99f64,
+        ) {
+            let mut g = grid(FREE);
+            for (k, c) in cells.iter().enumerate() {
+                let v = match c { 0 => OCCUPIED, 1 => UNKNOWN, _ => FREE };
+                g.set_value(k % 40, k / 40, v);
+            }
+            let (a, b) = (p(ax, ay), p(bx, by));
+            let start = g.cell_of(a).unwrap();
+            match edge_check(&g, a, b) {
+                Edge::Free => {
+                    for k in 0..=2000 {
+                        let q = a + (b - a) * (f64::from(k) / 2000.0);
+                        let c = g.cell_of(q).unwrap();
+                        prop_assert!(c == start || g.value(c.0, c.1) == FREE, "{c:?}");
+                    }
+                }
+                Edge::Unknown(f) => {
+                    let c = g.cell_of(f).unwrap();
+                    prop_assert_eq!(g.value(c.0, c.1), UNKNOWN);
+                    prop_assert!(c != start);
+                    // The cell lies on the segment: its centre is within half a cell
+                    // diagonal of the line.
+                    let d = (b - a).normalize();
+                    let off = (f - a) - d * (f - a).dot(&d);
+                    prop_assert!(off.norm() <= 0.05 * std::f64::consts::FRAC_1_SQRT_2 + 1e-9);
+                }
+                Edge::Occupied => {}
+            }
+        }
+
+        /// Mean-shift centres lie in the points' bounding box, are at least a bandwidth
+        /// apart, and number no more than the points.
+        #[test]
+        fn mean_shift_centres_are_sane(
+            pts in proptest::collection::vec((0.0..10.0f64, 0.0..10.0f64), 1..60),
+            bw in 0.1..2.0f64,
+        ) {
+            let pts: Vec<Point2> = pts.into_iter().map(|(x, y)| p(x, y)).collect();
+            let c = mean_shift(&pts, bw);
+            prop_assert!(!c.is_empty() && c.len() <= pts.len());
+            let lo = pts.iter().fold(p(f64::INFINITY, f64::INFINITY), |m, q| p(m.x.min(q.x), m.y.min(q.y)));
+            let hi = pts.iter().fold(p(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, q| p(m.x.max(q.x), m.y.max(q.y)));
+            for (i, x) in c.iter().enumerate() {
+                prop_assert!(x.x >= lo.x - 1e-9 && x.x <= hi.x + 1e-9 && x.y >= lo.y - 1e-9 && x.y <= hi.y + 1e-9);
+                for y in &c[i + 1..] {
+                    prop_assert!((x - y).norm() >= bw);
+                }
+            }
+        }
+    }
+}
