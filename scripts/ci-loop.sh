@@ -19,7 +19,12 @@ SHARED=$(cd "$(dirname "$0")/../../shared" 2>/dev/null && pwd)
 for k in $(seq 1 "$N"); do
     rm -rf "$W/run"
     git clone -q "$REPO" "$W/run" && git -C "$W/run" checkout -q "$COMMIT"
-    find "$W/run" -path "$W/run/.git" -prune -o -type f -exec touch -h -d "2026-01-01 00:00:00" {} +
+    # The old fixed mtime is only safe when the cache was built from this same commit
+    # (changed sources with an old mtime would look up to date to cargo); otherwise the
+    # clone keeps today's mtimes and cargo rebuilds the workspace's crates.
+    if [ "$(cat "$W/target-cache/.ci-loop-commit" 2>/dev/null)" = "$COMMIT" ]; then
+        find "$W/run" -path "$W/run/.git" -prune -o -type f -exec touch -h -d "2026-01-01 00:00:00" {} +
+    fi
     [ -d "$W/target-cache" ] && mv "$W/target-cache" "$W/run/target"
     [ -d "$W/py-target-cache" ] && mv "$W/py-target-cache" "$W/run/crates/hyplan-py/target"
     t0=$(date +%s)
@@ -29,5 +34,6 @@ for k in $(seq 1 "$N"); do
     grep -E "^test .* \.\.\. (ok|FAILED|ignored)" "$W/log/pass-$k.log" | sort > "$W/log/pass-$k.tests"
     echo "pass $k commit $COMMIT rc $rc $((t1 - t0)) s tests $(wc -l < "$W/log/pass-$k.tests") failed $(grep -c FAILED "$W/log/pass-$k.tests") $(date -u +%H:%M)" >> "$W/log/summary.txt"
     mv "$W/run/target" "$W/target-cache"
+    echo "$COMMIT" > "$W/target-cache/.ci-loop-commit"
     [ -d "$W/run/crates/hyplan-py/target" ] && mv "$W/run/crates/hyplan-py/target" "$W/py-target-cache"
 done
