@@ -266,18 +266,56 @@ impl OccupancyGrid {
     /// one flag per cell; a shorter mask selects fewer cells).
     #[must_use]
     pub fn count_free(&self, mask: &[bool]) -> usize {
-        // Free: crossed (not -0.0) and log-odds <= 0, i.e. +0.0 or a negative number
-        // other than -0.0. On the bits, so that the loop has no branch and vectorises
-        // (it runs over every cell at every map update).
-        self.logodds
-            .iter()
-            .zip(mask)
-            .map(|(&l, &m)| {
-                let b = l.to_bits();
-                let free = (b == 0) | ((b >> 31) == 1 && b != 0x8000_0000);
-                usize::from(free & m)
-            })
-            .sum()
+        free_cells(&self.logodds, mask)
+    }
+
+    /// [`Self::count_free`] over the cells of the square of half-side `reach` around
+    /// `center` (clamped to the grid) only. An update that touches nothing outside that
+    /// square changes the whole count by exactly the change of this one, so the
+    /// coverage of a growing map costs a window per scan instead of the whole grid.
+    #[must_use]
+    pub fn count_free_near(&self, mask: &[bool], center: Point2, reach: f64) -> usize {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let lo_i = ((center.x - reach - o.x) / res).floor().max(0.0) as usize;
+        let lo_j = ((center.y - reach - o.y) / res).floor().max(0.0) as usize;
+        let hi_i = (((center.x + reach - o.x) / res).ceil().max(0.0) as usize).min(self.width);
+        let hi_j = (((center.y + reach - o.y) / res).ceil().max(0.0) as usize).min(self.height);
+        let mut n = 0;
+        for j in lo_j..hi_j {
+            let row = j * self.width;
+            let (a, b) = (row + lo_i, (row + hi_i).max(row + lo_i));
+            if a >= mask.len() {
+                break;
+            }
+            n += free_cells(&self.logodds[a..b], &mask[a..b.min(mask.len())]);
+        }
+        n
+    }
+
+    /// How many unknown cells have their centre within `radius` of `p`.
+    #[must_use]
+    pub fn count_unknown_within(&self, p: Point2, radius: f64) -> usize {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let lo_i = ((p.x - radius - o.x) / res).floor().max(0.0) as usize;
+        let lo_j = ((p.y - radius - o.y) / res).floor().max(0.0) as usize;
+        let hi_i = (((p.x + radius - o.x) / res).ceil().max(0.0) as usize).min(self.width);
+        let hi_j = (((p.y + radius - o.y) / res).ceil().max(0.0) as usize).min(self.height);
+        let r2 = radius * radius;
+        let mut n = 0usize;
+        for j in lo_j..hi_j {
+            let cy = o.y + (j as f64 + 0.5) * res - p.y;
+            let row = &self.logodds[j * self.width..(j + 1) * self.width];
+            // Branch-free (unknown is exactly -0.0, on the bits), so that it vectorises:
+            // the filter and the assigner ask this of hundreds of points per cycle.
+            for (i, l) in row.iter().enumerate().take(hi_i).skip(lo_i) {
+                let cx = o.x + (i as f64 + 0.5) * res - p.x;
+                let inside = cx * cx + cy * cy <= r2;
+                n += usize::from(inside & (l.to_bits() == 0x8000_0000));
+            }
+        }
+        n
     }
 
     /// Sets cell `(i, j)` to the ROS value `v` (-1 unknown, 0 free, anything else
@@ -320,4 +358,19 @@ impl OccupancyGrid {
         self.cell_of(p)
             .is_some_and(|(i, j)| self.value(i, j) == OCCUPIED)
     }
+}
+
+/// Free cells of `logodds` where `mask` is set (zipped: the shorter decides).
+fn free_cells(logodds: &[f32], mask: &[bool]) -> usize {
+    // Free: crossed (not -0.0) and log-odds <= 0, i.e. +0.0 or a negative number other
+    // than -0.0. On the bits, so that the loop has no branch and vectorises.
+    logodds
+        .iter()
+        .zip(mask)
+        .map(|(&l, &m)| {
+            let b = l.to_bits();
+            let free = (b == 0) | ((b >> 31) == 1 && b != 0x8000_0000);
+            usize::from(free & m)
+        })
+        .sum()
 }

@@ -404,6 +404,44 @@ mod properties {
             }
         }
 
+        /// The fast counts agree with the cell-by-cell definitions: the unknown cells
+        /// whose centre is within the radius, and the free masked cells of a window.
+        #[test]
+        fn window_counts_agree_with_cell_by_cell(
+            cells in proptest::collection::vec(0u8..4, 40 * 20),
+            mask in proptest::collection::vec(any::<bool>(), 40 * 20),
+            x in -0.5..2.5f64, y in -0.5..1.5f64, r in 0.0..1.5f64,
+        ) {
+            let mut g = grid(FREE);
+            for (k, c) in cells.iter().enumerate() {
+                let v = match c { 0 => OCCUPIED, 1 => UNKNOWN, 2 => FREE, _ => continue };
+                g.set_value(k % 40, k / 40, v);
+            }
+            let (c, res) = (p(x, y), 0.05);
+            let mut unknown = 0;
+            let mut free = 0;
+            for j in 0..g.height() {
+                for i in 0..g.width() {
+                    let centre = p((i as f64 + 0.5) * res, (j as f64 + 0.5) * res);
+                    let d = centre - c;
+                    if d.x * d.x + d.y * d.y <= r * r && g.value(i, j) == UNKNOWN {
+                        unknown += 1;
+                    }
+                    let lo_i = ((x - r) / res).floor().max(0.0) as usize;
+                    let lo_j = ((y - r) / res).floor().max(0.0) as usize;
+                    let hi_i = ((x + r) / res).ceil().max(0.0) as usize;
+                    let hi_j = ((y + r) / res).ceil().max(0.0) as usize;
+                    if (lo_i..hi_i).contains(&i) && (lo_j..hi_j).contains(&j)
+                        && mask[j * 40 + i] && g.value(i, j) == FREE
+                    {
+                        free += 1;
+                    }
+                }
+            }
+            prop_assert_eq!(g.count_unknown_within(c, r), unknown);
+            prop_assert_eq!(g.count_free_near(&mask, c, r), free);
+        }
+
         /// Mean-shift centres lie in the points' bounding box, are at least a bandwidth
         /// apart, and number no more than the points.
         #[test]

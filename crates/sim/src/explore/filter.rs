@@ -14,7 +14,7 @@ use sampling::NearestIndex;
 use envmap::Inflation;
 
 use crate::costmap::{Costmap, ros_cost};
-use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
+use crate::mapping::{OCCUPIED, OccupancyGrid};
 
 /// Flat-kernel mean shift: each point climbs to the mean of the points within
 /// `bandwidth` until it moves less than `bandwidth / 1000` (at most 300 steps); centres
@@ -74,23 +74,7 @@ pub fn mean_shift(points: &[Point2], bandwidth: f64) -> Vec<Point2> {
 #[must_use]
 pub fn information_gain(map: &OccupancyGrid, p: Point2, radius: f64) -> f64 {
     let res = map.params.resolution;
-    let o = map.origin();
-    let lo_i = ((p.x - radius - o.x) / res).floor().max(0.0) as usize;
-    let lo_j = ((p.y - radius - o.y) / res).floor().max(0.0) as usize;
-    let hi_i = (((p.x + radius - o.x) / res).ceil().max(0.0) as usize).min(map.width());
-    let hi_j = (((p.y + radius - o.y) / res).ceil().max(0.0) as usize).min(map.height());
-    let r2 = radius * radius;
-    let mut n = 0usize;
-    for j in lo_j..hi_j {
-        let cy = o.y + (j as f64 + 0.5) * res - p.y;
-        for i in lo_i..hi_i {
-            let cx = o.x + (i as f64 + 0.5) * res - p.x;
-            if cx * cx + cy * cy <= r2 && map.value(i, j) == UNKNOWN {
-                n += 1;
-            }
-        }
-    }
-    n as f64 * res * res
+    map.count_unknown_within(p, radius) as f64 * res * res
 }
 
 /// The costmap value (ROS 0-100) at `p` from the built map alone: the Nav2 inflation

@@ -359,17 +359,23 @@ pub fn explore_with(
     let mut end_tick = 0;
     // Heading turned so far in the initial turn; `None` once it is over.
     let mut turned = ex.initial_turn.then_some(0.0);
-    let sample = |map: &OccupancyGrid, t: f64| {
-        let n = map.count_free(&reach);
-        Coverage {
-            t,
-            known_free: n as f64 * cell_area,
-            fraction: if reach_count == 0 {
-                0.0
-            } else {
-                n as f64 / reach_count as f64
-            },
-        }
+    // Free reachable cells of the built map, kept up to date window by window.
+    let mut free_count = map.count_free(&reach);
+    // Every cell a map update touches: the beams reach `max_range` from the scanner, the
+    // footprint `mount_offset + body_radius`; two cells of margin for the rounding.
+    let window = scenario
+        .mapping
+        .max_range
+        .max(scenario.laser.mount_offset.abs() + robot.body_radius)
+        + 2.0 * res;
+    let sample = |n: usize, t: f64| Coverage {
+        t,
+        known_free: n as f64 * cell_area,
+        fraction: if reach_count == 0 {
+            0.0
+        } else {
+            n as f64 / reach_count as f64
+        },
     };
     let snapshot = |t: f64,
                     pose: Pose,
@@ -404,10 +410,14 @@ pub fn explore_with(
             let mut scan = laser.cast(&world.statics, &people, o, h);
             laser.add_noise(&mut scan, &mut noise_rng);
             if tick % map_every == 0 {
+                // Only cells within `window` of the scanner change: recount those.
+                let before = map.count_free_near(&reach, o, window);
                 map.integrate(&scan);
                 map_version += 1;
                 map.mark_footprint_free(here, robot.body_radius);
-                coverage.push(sample(&map, t));
+                free_count = free_count - before + map.count_free_near(&reach, o, window);
+                debug_assert_eq!(free_count, map.count_free(&reach), "window missed a cell");
+                coverage.push(sample(free_count, t));
                 progress(&coverage[coverage.len() - 1]);
             }
             tracker.update(&scan, tick);
@@ -543,7 +553,7 @@ pub fn explore_with(
     }
     let end_time = end_tick as f64 * dt;
     if coverage.last().is_none_or(|c: &Coverage| c.t < end_time) {
-        coverage.push(sample(&map, end_time));
+        coverage.push(sample(free_count, end_time));
     }
     all_published.extend_from_slice(&published);
     snapshots.push(snapshot(
