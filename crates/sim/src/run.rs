@@ -52,6 +52,39 @@ fn every(hz: f64) -> u64 {
     ((TICKS_PER_SECOND as f64 / hz).round() as u64).max(1)
 }
 
+/// What the robot builds from its scans, empty at the start of a run: the occupancy
+/// grid, the obstacle memory, the people tracker and the costmap builder (the world's
+/// mapped part as prior). Navigation and exploration start from the same.
+pub(crate) struct Perception {
+    pub map: OccupancyGrid,
+    pub memory: ObstacleMemory,
+    pub tracker: Tracker,
+    pub costmaps: CostmapBuilder,
+}
+
+impl Perception {
+    pub(crate) fn new(scenario: &Scenario, world: &World) -> Self {
+        let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
+        Self {
+            map: OccupancyGrid::new(world.bounds, scenario.mapping),
+            memory: ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
+                .with_prior(world.bounds, &world.mapped),
+            tracker: Tracker::new(
+                world.bounds,
+                &world.mapped,
+                scenario.costmap.obstacle_range,
+                TICKS_PER_SECOND as f64,
+            ),
+            costmaps: CostmapBuilder::new(
+                world.bounds,
+                &world.mapped,
+                scenario.costmap,
+                scenario.robot.body_radius,
+            ),
+        }
+    }
+}
+
 /// Runs a scenario with `seed` and `planner` until the goal is reached, the navigator
 /// gives up, or the time limit.
 #[must_use]
@@ -68,22 +101,12 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
     };
     let max_ticks = (scenario.time_limit * TICKS_PER_SECOND as f64).ceil() as u64;
     let mut noise_rng = stream(seed, NOISE_STREAM);
-    let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
-    let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
-    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
-        .with_prior(world.bounds, &world.mapped);
-    let mut tracker = Tracker::new(
-        world.bounds,
-        &world.mapped,
-        scenario.costmap.obstacle_range,
-        TICKS_PER_SECOND as f64,
-    );
-    let costmaps = CostmapBuilder::new(
-        world.bounds,
-        &world.mapped,
-        scenario.costmap,
-        robot.body_radius,
-    );
+    let Perception {
+        mut map,
+        mut memory,
+        mut tracker,
+        costmaps,
+    } = Perception::new(scenario, world);
     let planner_name = planner.name();
     let goal = Point2::new(scenario.goal.0, scenario.goal.1);
     let mut nav = Navigator::new(

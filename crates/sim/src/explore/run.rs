@@ -21,7 +21,7 @@ use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::costmap::{CostmapBuilder, ObstacleMemory, rasterize};
+use crate::costmap::rasterize;
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
 use crate::explore::filter::{Filter, built_cost, information_gain};
@@ -34,7 +34,6 @@ use crate::navigator::{NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::run::{NOISE_STREAM, PLANNER_STREAM, TICKS_PER_SECOND};
 use crate::scenario::Scenario;
-use crate::tracking::Tracker;
 use crate::world::World;
 
 /// Global detector stream of a run's seed.
@@ -277,28 +276,18 @@ pub fn explore_with(
         .map(|t| (t * TICKS_PER_SECOND as f64).round() as u64)
         .collect();
     let mut noise_rng = stream(seed, NOISE_STREAM);
-    let mut map = OccupancyGrid::new(world.bounds, scenario.mapping);
+    let crate::run::Perception {
+        mut map,
+        mut memory,
+        mut tracker,
+        costmaps,
+    } = crate::run::Perception::new(scenario, world);
     let res = scenario.mapping.resolution;
     let start = crate::world::pt(scenario.start);
     let (_, reach) = reachable_free(world, res, start);
     let reach_count = reach.iter().filter(|r| **r).count();
     let cell_area = res * res;
     let reachable_area = reach_count as f64 * cell_area;
-    let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
-    let mut memory = ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
-        .with_prior(world.bounds, &world.mapped);
-    let mut tracker = Tracker::new(
-        world.bounds,
-        &world.mapped,
-        scenario.costmap.obstacle_range,
-        TICKS_PER_SECOND as f64,
-    );
-    let costmaps = CostmapBuilder::new(
-        world.bounds,
-        &world.mapped,
-        scenario.costmap,
-        robot.body_radius,
-    );
     let mut nav = Navigator::new(
         scenario.navigation,
         scenario.controller,
