@@ -12,7 +12,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 use crate::costmap::{CostmapBuilder, ObstacleMemory};
-use crate::kinematics::{self, Pose, Twist};
+use crate::kinematics::{self, Twist};
 use crate::laser::LaserModel;
 use crate::mapping::OccupancyGrid;
 use crate::navigator::{NavEvent, NavState, Navigator};
@@ -118,11 +118,7 @@ pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner
         goal,
         stream(seed, PLANNER_STREAM),
     );
-    let mut pose = Pose {
-        x: scenario.start.0,
-        y: scenario.start.1,
-        phi: kinematics::wrap_angle(scenario.start_heading_deg.to_radians()),
-    };
+    let mut pose = scenario.start_pose();
     let mut twist = Twist::default();
     let mut rows = Vec::new();
     let mut events = Vec::new();

@@ -20,7 +20,7 @@ use serde::{Deserialize, Serialize};
 use crate::control::Controller;
 use crate::costmap::CostmapParams;
 use crate::explore::Exploration;
-use crate::kinematics::Robot;
+use crate::kinematics::{Pose, Robot, wrap_angle};
 use crate::laser::Laser;
 use crate::mapping::Mapping;
 use crate::navigator::Navigation;
@@ -202,6 +202,16 @@ impl Scenario {
                 path: path.to_path_buf(),
                 message: e.to_string(),
             })
+    }
+
+    /// The robot's pose at the start: `start`, heading `start_heading_deg` (wrapped).
+    #[must_use]
+    pub fn start_pose(&self) -> Pose {
+        Pose {
+            x: self.start.0,
+            y: self.start.1,
+            phi: wrap_angle(self.start_heading_deg.to_radians()),
+        }
     }
 
     /// Checks every value and builds the world; `path` names the file in errors and

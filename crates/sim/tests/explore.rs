@@ -243,6 +243,32 @@ fn one_exploration_reaches_99_percent() {
     assert!(out.time_to(0.95).unwrap() <= out.time_to(0.99).unwrap());
 }
 
+/// On a map we did not draw (the public TurtleBot3 world: a 4 m hexagon with nine
+/// pillars), exploration ends by itself, without contact, but short of 99 %: the
+/// pillars' shadows are small frontiers that the reference's gain threshold (0.2 m^2)
+/// and the baseline's minimum cluster drop. The figures are in
+/// docs/papers/004-exploration.md, section 5.2; this guards them from getting worse.
+#[test]
+fn turtlebot3_world_is_explored_without_contact() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-tb3.ron");
+    if !path.with_file_name("../../../shared/data").exists() {
+        eprintln!("SKIPPED: ../shared/data is missing");
+        return;
+    }
+    let (scenario, world) = Scenario::load(&path).unwrap();
+    for (strategy, at_least) in [(Strategy::Both, 0.92), (Strategy::Frontier, 0.95)] {
+        let out = sim::explore(&scenario, &world, 1, strategy).unwrap();
+        assert!(out.finished, "{strategy:?} ended by the time limit");
+        assert_eq!(out.contact_ticks, 0, "{strategy:?}");
+        assert!(
+            out.final_coverage() >= at_least,
+            "{strategy:?}: coverage {} (missed {} m^2)",
+            out.final_coverage(),
+            out.missed_area()
+        );
+    }
+}
+
 #[test]
 fn same_seed_same_bits() {
     let (mut scenario, world) = Scenario::load(&scenario_path()).unwrap();

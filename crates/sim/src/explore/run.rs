@@ -317,11 +317,7 @@ pub fn explore_with(
         blacklist_radius: ex.blacklist_radius,
         blacklist: Vec::new(),
     };
-    let mut pose = Pose {
-        x: scenario.start.0,
-        y: scenario.start.1,
-        phi: kinematics::wrap_angle(scenario.start_heading_deg.to_radians()),
-    };
+    let mut pose = scenario.start_pose();
     let mut twist = Twist::default();
     let mut published = Vec::new();
     let mut all_published = Vec::new();
