@@ -83,6 +83,32 @@ impl Budget {
         }
     }
 
+    /// The budget of a command line's `--max-iter` / `--time-limit` (and the Python
+    /// bindings' `max_iter` / `time_limit`): the iteration cap given, else unlimited
+    /// iterations under a time limit, else 100 000 iterations.
+    ///
+    /// ```
+    /// use std::time::Duration;
+    /// use hyplan_core::Budget;
+    /// assert_eq!(Budget::of_limits(None, None), Budget::iterations(100_000));
+    /// let t = Duration::from_millis(50);
+    /// assert_eq!(Budget::of_limits(None, Some(t)), Budget::iterations(u64::MAX).with_time(t));
+    /// assert_eq!(Budget::of_limits(Some(7), Some(t)), Budget::iterations(7).with_time(t));
+    /// ```
+    #[must_use]
+    pub fn of_limits(max_iterations: Option<u64>, time_limit: Option<Duration>) -> Self {
+        let cap = max_iterations.unwrap_or(if time_limit.is_some() {
+            u64::MAX
+        } else {
+            100_000
+        });
+        let budget = Self::iterations(cap);
+        match time_limit {
+            Some(t) => budget.with_time(t),
+            None => budget,
+        }
+    }
+
     /// Whether the budget is spent after `iterations` iterations begun at `started`.
     ///
     /// The clock is read only when a time limit is set.

@@ -390,15 +390,7 @@ fn plan(
                 })
         })
         .transpose()?;
-    let max_iterations = max_iter.unwrap_or(if time_limit.is_some() {
-        u64::MAX
-    } else {
-        100_000
-    });
-    let mut budget = Budget::iterations(max_iterations);
-    if let Some(t) = time_limit {
-        budget = budget.with_time(t);
-    }
+    let budget = Budget::of_limits(max_iter, time_limit);
     if !(0.0..=1.0).contains(&goal_bias) {
         return Err(PyValueError::new_err(format!(
             "goal_bias {goal_bias}: invalid parameter goal_bias, must be a probability in [0, 1]"

@@ -256,15 +256,7 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
                 .with_context(|| format!("--time-limit {t}: must be a positive number of seconds"))
         })
         .transpose()?;
-    let max_iterations = args.max_iter.unwrap_or(if time_limit.is_some() {
-        u64::MAX
-    } else {
-        100_000
-    });
-    let mut budget = Budget::iterations(max_iterations);
-    if let Some(t) = time_limit {
-        budget = budget.with_time(t);
-    }
+    let budget = Budget::of_limits(args.max_iter, time_limit);
     let step = match args.step {
         Some(s) => Some(s * scale),
         None if planners::named(&args.planner)?.wants_default_step() => {
