@@ -425,12 +425,6 @@ pub fn explore_with(
             }
         }
         if tick % cycle_every == 0 && turned.is_none() {
-            // The baseline needs the whole costmap (its reachability); the RRT filter and
-            // the goal test ask about a few points (`built_cost`). The map changes once
-            // per map period: build once per change.
-            if !rrt && cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
-                cached = Some((map_version, costmaps.build(Some(&map), &[])));
-            }
             let cost = |p: Point2| built_cost(&map, &inflation, p);
             if rrt {
                 all_published.extend_from_slice(&published);
@@ -457,6 +451,12 @@ pub fn explore_with(
                 goal = if rrt {
                     assigner.choose(here, &candidates, &map)
                 } else {
+                    // The baseline needs the whole costmap (its reachability); the RRT
+                    // filter and the goal test ask about a few points (`built_cost`). Built
+                    // only when a goal is chosen, and once per map change.
+                    if cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
+                        cached = Some((map_version, costmaps.build(Some(&map), &[])));
+                    }
                     let next = cached.as_ref().and_then(|(_, costmap)| {
                         nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
                             assigner.blacklisted(p)
