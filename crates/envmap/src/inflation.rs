@@ -1,6 +1,6 @@
 //! Nav2-style inflation costs: the graded alternative to the three zones.
 
-use crate::{DistanceField, MapError};
+use crate::{DistanceField, MapError, Mask, distance_transform};
 
 /// Nav2 costmap value of an obstacle cell.
 pub const LETHAL_OBSTACLE: u8 = 254;
@@ -69,13 +69,7 @@ impl Inflation {
     /// inflation radius below the inscribed radius, or a non-positive resolution.
     pub fn costs(&self, dist: &DistanceField, resolution: f64) -> Result<Vec<u8>, MapError> {
         self.validate()?;
-        if !(resolution.is_finite() && resolution > 0.0) {
-            return Err(MapError::InvalidParameter {
-                name: "resolution",
-                value: resolution.to_string(),
-                reason: "must be finite and > 0".into(),
-            });
-        }
+        check_resolution(resolution)?;
         Ok(dist
             .dist_sq()
             .iter()
@@ -87,6 +81,99 @@ impl Inflation {
                 }
             })
             .collect())
+    }
+
+    /// The costmap of the obstacle cells of `obstacles`: the same costs as
+    /// [`costs`](Self::costs) of their [`distance_transform`], computed only as far as the
+    /// inflation radius reaches, as Nav2's inflation layer does.
+    ///
+    /// A cell farther than the inflation radius from every obstacle costs 0 whatever its
+    /// exact distance, so column distances are capped there and each row takes the minimum
+    /// of `dx^2 + g(x + dx)^2` over the few `dx` within the radius, with the costs of the
+    /// possible squared distances read from a table (one `exp` per distance, not per cell).
+    /// When the radius spans more than 64 cells this falls back to the full transform.
+    ///
+    /// # Errors
+    ///
+    /// As [`costs`](Self::costs).
+    ///
+    /// ```
+    /// use envmap::{Inflation, Mask, distance_transform};
+    /// let mut m = Mask::new(20, 10);
+    /// m.set(4, 5, true);
+    /// m.set(15, 2, true);
+    /// let inf = Inflation { inscribed_radius: 0.15, inflation_radius: 0.55, cost_scaling_factor: 10.0 };
+    /// let full = inf.costs(&distance_transform(&m), 0.1).unwrap();
+    /// assert_eq!(inf.inflate(&m, 0.1).unwrap(), full);
+    /// ```
+    pub fn inflate(&self, obstacles: &Mask, resolution: f64) -> Result<Vec<u8>, MapError> {
+        self.validate()?;
+        check_resolution(resolution)?;
+        const MAX_REACH: f64 = 64.0;
+        let reach = (self.inflation_radius / resolution).ceil() + 1.0;
+        if reach > MAX_REACH {
+            return self.costs(&distance_transform(obstacles), resolution);
+        }
+        // Every squared cell distance whose cost may be non-zero is at most reach^2:
+        // sqrt(d) * resolution > inflation_radius beyond it.
+        let reach = reach as usize;
+        let reach_sq = (reach * reach) as u32;
+        let table: Vec<u8> = (0..=reach_sq)
+            .map(|d| self.cost(f64::from(d).sqrt() * resolution))
+            .collect();
+        let (w, h) = (obstacles.width(), obstacles.height());
+        let cells = obstacles.cells();
+        // Vertical distance to the nearest obstacle in the column, capped at `far`.
+        let far = reach as u32 + 1;
+        let mut g = vec![far; w * h];
+        for j in 0..h {
+            let (done, rest) = g.split_at_mut(j * w);
+            let row = &mut rest[..w];
+            let m = &cells[j * w..(j + 1) * w];
+            if j == 0 {
+                for (c, &o) in row.iter_mut().zip(m) {
+                    *c = if o { 0 } else { far };
+                }
+            } else {
+                let below = &done[(j - 1) * w..j * w];
+                for ((c, &o), &b) in row.iter_mut().zip(m).zip(below) {
+                    *c = if o { 0 } else { (b + 1).min(far) };
+                }
+            }
+        }
+        for j in (0..h.saturating_sub(1)).rev() {
+            let (lo, hi) = g.split_at_mut((j + 1) * w);
+            let row = &mut lo[j * w..];
+            let above = &hi[..w];
+            for (c, &a) in row.iter_mut().zip(above) {
+                *c = (*c).min(a + 1);
+            }
+        }
+        // Beyond the reach: any value above reach^2 that cannot overflow when dx^2 is added.
+        let beyond = 2 * reach_sq + 1;
+        let mut out = vec![0u8; w * h];
+        let mut g2 = vec![0u32; w];
+        let mut best = vec![0u32; w];
+        for (grow, orow) in g.chunks_exact(w.max(1)).zip(out.chunks_exact_mut(w.max(1))) {
+            for (s, &v) in g2.iter_mut().zip(grow) {
+                *s = if v <= reach as u32 { v * v } else { beyond };
+            }
+            best.copy_from_slice(&g2);
+            for dx in 1..=reach.min(w.saturating_sub(1)) {
+                let a = (dx * dx) as u32;
+                let (left, right) = (&g2[..w - dx], &g2[dx..]);
+                for (b, &r) in best[..w - dx].iter_mut().zip(right) {
+                    *b = (*b).min(r + a);
+                }
+                for (b, &l) in best[dx..].iter_mut().zip(left) {
+                    *b = (*b).min(l + a);
+                }
+            }
+            for (o, &d) in orow.iter_mut().zip(&best) {
+                *o = if d <= reach_sq { table[d as usize] } else { 0 };
+            }
+        }
+        Ok(out)
     }
 
     /// Checks the parameters.
@@ -120,5 +207,17 @@ impl Inflation {
             });
         }
         Ok(())
+    }
+}
+
+fn check_resolution(resolution: f64) -> Result<(), MapError> {
+    if resolution.is_finite() && resolution > 0.0 {
+        Ok(())
+    } else {
+        Err(MapError::InvalidParameter {
+            name: "resolution",
+            value: resolution.to_string(),
+            reason: "must be finite and > 0".into(),
+        })
     }
 }

@@ -243,3 +243,52 @@ fn clearance_cache_follows_zone_edits() {
     let risky = map.clone().avoiding_risk();
     assert!(risky.clearance(p).unwrap() <= 0.5);
 }
+
+/// A sparse mask (obstacles about one cell in `1 / density`), so that most cells are
+/// beyond the inflation radius of every obstacle, some within it.
+fn sparse_mask_strategy(max: usize) -> impl Strategy<Value = Mask> {
+    (1..=max, 1..=max, 2u32..40).prop_flat_map(|(w, h, density)| {
+        proptest::collection::vec(0..density, w * h).prop_map(move |draws| {
+            Mask::from_cells(w, h, draws.into_iter().map(|d| d == 0).collect()).unwrap()
+        })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// The bounded inflation is the full one: the same cost in every cell, for any mask,
+    /// radii and resolution (including radii past the bounded path's 64-cell reach).
+    #[test]
+    fn inflate_equals_the_costs_of_the_full_transform(
+        mask in sparse_mask_strategy(48),
+        inscribed in 0.0f64..0.6,
+        extra in 0.0f64..1.2,
+        scaling in 0.0f64..25.0,
+        resolution in prop_oneof![Just(0.05), Just(0.1), 0.01f64..0.5],
+    ) {
+        let inf = envmap::Inflation {
+            inscribed_radius: inscribed,
+            inflation_radius: inscribed + extra,
+            cost_scaling_factor: scaling,
+        };
+        let full = inf.costs(&distance_transform(&mask), resolution).unwrap();
+        prop_assert_eq!(inf.inflate(&mask, resolution).unwrap(), full);
+    }
+}
+
+#[test]
+fn inflate_refuses_what_costs_refuses() {
+    let mask = Mask::new(4, 4);
+    let bad = envmap::Inflation {
+        inscribed_radius: 0.5,
+        inflation_radius: 0.2,
+        cost_scaling_factor: 1.0,
+    };
+    assert!(bad.inflate(&mask, 0.1).is_err());
+    let ok = envmap::Inflation::default();
+    for res in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let e = ok.inflate(&mask, res).unwrap_err().to_string();
+        assert!(e.contains("resolution"), "{e}");
+    }
+}

@@ -330,26 +330,20 @@ impl CostmapBuilder {
             }
         };
         if let Some(g) = built {
-            let gr = g.params.resolution;
-            for j in 0..g.height() {
-                for i in 0..g.width() {
-                    if g.value(i, j) == crate::mapping::OCCUPIED {
-                        let o = g.origin();
-                        mark(Point2::new(
-                            o.x + (i as f64 + 0.5) * gr,
-                            o.y + (j as f64 + 0.5) * gr,
-                        ));
-                    }
-                }
+            let (gr, o) = (g.params.resolution, g.origin());
+            for (i, j) in g.occupied_cells() {
+                mark(Point2::new(
+                    o.x + (i as f64 + 0.5) * gr,
+                    o.y + (j as f64 + 0.5) * gr,
+                ));
             }
         }
         for &p in hits {
             mark(p);
         }
-        let field = envmap::distance_transform(&mask);
         let inflation = self.inflation();
         let costs = inflation
-            .costs(&field, res)
+            .inflate(&mask, res)
             .expect("the builder's own parameters are valid");
         let risk_from = inflation.cost(self.params.preferred_clearance).max(1);
         let zones = costs

@@ -121,6 +121,17 @@ impl OccupancyGrid {
         }
     }
 
+    /// The occupied cells (column, row), row-major from the bottom row: those whose
+    /// [`value`](Self::value) is [`OCCUPIED`], without classifying the others.
+    pub fn occupied_cells(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        let w = self.width;
+        self.logodds
+            .iter()
+            .enumerate()
+            .filter(|(_, l)| **l > 0.0)
+            .map(move |(k, _)| (k % w, k / w))
+    }
+
     /// Every cell's ROS value, row-major from the bottom row.
     #[must_use]
     pub fn ros_values(&self) -> Vec<i8> {
