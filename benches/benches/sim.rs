@@ -4,6 +4,9 @@
 //! Besides criterion's wall-clock figures, the bench prints the factor on thread CPU time
 //! (the machine it runs on is shared and noisy; CPU time is what one core spends), with
 //! the best and the median of `SIM_BENCH_RUNS` runs (default 20).
+//!
+//! `laser-cast/explore-22m`: one full scan (720 beams, exact) from each of 400 poses on a
+//! grid over the free space of the 22 m exploration world, the hot path of every run.
 
 use std::path::Path;
 
@@ -53,13 +56,42 @@ fn scenario3(c: &mut Criterion) {
     );
 }
 
+fn laser_cast(c: &mut Criterion) {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/explore-22m.ron");
+    let (scenario, world) = Scenario::load(&file).expect("the exploration scenario loads");
+    let laser = sim::LaserModel::new(scenario.laser);
+    let b = world.bounds;
+    let poses: Vec<(hyplan_core::Point2, f64)> = (0..20)
+        .flat_map(|j| (0..20).map(move |i| (i, j)))
+        .map(|(i, j)| {
+            let p = hyplan_core::Point2::new(
+                b.min.x + (f64::from(i) + 0.5) * b.width() / 20.0,
+                b.min.y + (f64::from(j) + 0.5) * b.height() / 20.0,
+            );
+            (p, f64::from(i * 20 + j) * 0.37)
+        })
+        .filter(|(p, _)| !world.statics.inside(*p) && world.statics.nearest(*p).0 > 0.2)
+        .collect();
+    assert!(poses.len() > 200, "{} free poses", poses.len());
+    c.bench_function(
+        &format!("laser-cast/explore-22m/{}-scans", poses.len()),
+        |bch| {
+            bch.iter(|| {
+                for &(o, h) in &poses {
+                    std::hint::black_box(laser.cast(&world.statics, &[], o, h));
+                }
+            });
+        },
+    );
+}
+
 /// The criterion entry points (the macro's generated function carries no doc).
 #[allow(missing_docs)]
 mod entry {
     criterion::criterion_group! {
         name = benches;
         config = criterion::Criterion::default().sample_size(10);
-        targets = super::scenario3
+        targets = super::scenario3, super::laser_cast
     }
 }
 criterion_main!(entry::benches);
