@@ -119,24 +119,12 @@ impl ObstacleMemory {
     /// lies within `radius` of `p` at `tick`.
     #[must_use]
     pub fn loose_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
-        let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
-        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
-        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
-        for j in (cj - r).max(0)..=(cj + r).min(self.height as i64 - 1) {
-            for i in (ci - r).max(0)..=(ci + r).min(self.width as i64 - 1) {
-                let c = j as usize * self.width + i as usize;
-                if self.stamp[c] == 0 || self.explained[c] {
-                    continue;
-                }
-                if self
-                    .valid(c, tick)
-                    .is_some_and(|q| (q - p).norm() <= radius)
-                {
-                    return true;
-                }
-            }
-        }
-        false
+        self.cells_near(p, radius).any(|c| {
+            !self.explained[c]
+                && self
+                    .remembered(c, tick)
+                    .is_some_and(|q| (q - p).norm() <= radius && !self.cleared(c, q, tick))
+        })
     }
 
     /// Records the hits of a scan taken at `tick`.
@@ -174,52 +162,69 @@ impl ObstacleMemory {
 
     /// The remembered point in cell `c` if still valid at `tick`.
     fn valid(&self, c: usize, tick: u64) -> Option<Point2> {
+        let p = self.remembered(c, tick)?;
+        (!self.cleared(c, p, tick)).then_some(p)
+    }
+
+    /// The point last seen in cell `c`, unless its memory expired by `tick` (whether a
+    /// newer beam cleared it is [`ObstacleMemory::cleared`]'s question, asked last by the
+    /// queries because it costs an arctangent).
+    fn remembered(&self, c: usize, tick: u64) -> Option<Point2> {
         let s = self.stamp[c];
-        let now = tick + 1;
-        if s == 0 || s + self.keep < now {
+        if s == 0 || s + self.keep < tick + 1 {
             return None;
         }
-        let p = Point2::new(f64::from(self.point[c][0]), f64::from(self.point[c][1]));
-        if s != now
-            && let Some(scan) = &self.latest
-        {
-            // A newer beam that went past the point clears it (people move on).
-            let v = p - scan.origin;
-            let d = v.norm();
-            if let Some(k) = scan.beam_toward(v.y.atan2(v.x))
-                && scan.ranges[k] > d + 2.0 * MEMORY_RESOLUTION
-                && d > 0.0
-            {
-                return None;
-            }
+        Some(Point2::new(
+            f64::from(self.point[c][0]),
+            f64::from(self.point[c][1]),
+        ))
+    }
+
+    /// Whether a beam of the latest scan, newer than point `p` of cell `c`, went past it
+    /// (people move on).
+    fn cleared(&self, c: usize, p: Point2, tick: u64) -> bool {
+        if self.stamp[c] == tick + 1 {
+            return false;
         }
-        Some(p)
+        let Some(scan) = &self.latest else {
+            return false;
+        };
+        let v = p - scan.origin;
+        let d = v.norm();
+        scan.beam_toward(v.y.atan2(v.x))
+            .is_some_and(|k| scan.ranges[k] > d + 2.0 * MEMORY_RESOLUTION && d > 0.0)
     }
 
     /// Whether any remembered obstacle lies within `radius` of `p` at `tick`.
     #[must_use]
     pub fn any_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
-        self.nearest_within(p, radius, tick).is_some()
+        self.cells_near(p, radius).any(|c| {
+            self.remembered(c, tick)
+                .is_some_and(|q| (q - p).norm() <= radius && !self.cleared(c, q, tick))
+        })
+    }
+
+    /// The cells of the square around `p` that holds every point within `radius`.
+    fn cells_near(&self, p: Point2, radius: f64) -> impl Iterator<Item = usize> + '_ {
+        let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
+        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
+        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
+        let (w, h) = (self.width as i64, self.height as i64);
+        ((cj - r).max(0)..=(cj + r).min(h - 1)).flat_map(move |j| {
+            ((ci - r).max(0)..=(ci + r).min(w - 1))
+                .map(move |i| j as usize * self.width + i as usize)
+        })
     }
 
     /// The nearest remembered obstacle within `radius` of `p` at `tick`.
     #[must_use]
     pub fn nearest_within(&self, p: Point2, radius: f64, tick: u64) -> Option<(f64, Point2)> {
-        let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
-        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
-        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
         let mut best: Option<(f64, Point2)> = None;
-        for j in (cj - r).max(0)..=(cj + r).min(self.height as i64 - 1) {
-            for i in (ci - r).max(0)..=(ci + r).min(self.width as i64 - 1) {
-                let c = j as usize * self.width + i as usize;
-                if self.stamp[c] == 0 {
-                    continue;
-                }
-                if let Some(q) = self.valid(c, tick) {
-                    let d = (q - p).norm();
-                    if d <= radius && best.is_none_or(|b| d < b.0) {
-                        best = Some((d, q));
-                    }
+        for c in self.cells_near(p, radius) {
+            if let Some(q) = self.remembered(c, tick) {
+                let d = (q - p).norm();
+                if d <= radius && best.is_none_or(|b| d < b.0) && !self.cleared(c, q, tick) {
+                    best = Some((d, q));
                 }
             }
         }
