@@ -110,15 +110,7 @@ impl OccupancyGrid {
     /// The ROS value of cell `(i, j)`: -1, 0 or 100.
     #[must_use]
     pub fn value(&self, i: usize, j: usize) -> i8 {
-        let k = j * self.width + i;
-        let l = self.logodds[k];
-        if l == 0.0 && l.is_sign_negative() {
-            UNKNOWN
-        } else if l > 0.0 {
-            OCCUPIED
-        } else {
-            FREE
-        }
+        ros_value(self.logodds[j * self.width + i])
     }
 
     /// The occupied cells (column, row), row-major from the bottom row: those whose
@@ -135,10 +127,7 @@ impl OccupancyGrid {
     /// Every cell's ROS value, row-major from the bottom row.
     #[must_use]
     pub fn ros_values(&self) -> Vec<i8> {
-        (0..self.height)
-            .flat_map(|j| (0..self.width).map(move |i| (i, j)))
-            .map(|(i, j)| self.value(i, j))
-            .collect()
+        self.logodds.iter().map(|&l| ros_value(l)).collect()
     }
 
     /// The cell holding `p`, if inside.
@@ -368,6 +357,18 @@ impl OccupancyGrid {
     pub fn occupied_at(&self, p: Point2) -> bool {
         self.cell_of(p)
             .is_some_and(|(i, j)| self.value(i, j) == OCCUPIED)
+    }
+}
+
+/// The ROS value of a cell's log-odds: unknown cells hold -0.0 (no update yet), occupied
+/// ones a positive value.
+fn ros_value(l: f32) -> i8 {
+    if l == 0.0 && l.is_sign_negative() {
+        UNKNOWN
+    } else if l > 0.0 {
+        OCCUPIED
+    } else {
+        FREE
     }
 }
 

@@ -8,8 +8,6 @@
 //! counts one cell, diagonal or not): enough to rank clusters, no heavier than the map;
 //! clusters of fewer than `min_cells` cells are ignored (laser speckle).
 
-use std::collections::VecDeque;
-
 use envmap::INSCRIBED_INFLATED_OBSTACLE;
 use hyplan_core::Point2;
 
@@ -20,26 +18,30 @@ use crate::mapping::{FREE, OccupancyGrid, UNKNOWN};
 #[must_use]
 pub fn frontier_cells(map: &OccupancyGrid) -> Vec<(usize, usize)> {
     let (w, h) = (map.width(), map.height());
-    let mut out = Vec::new();
-    for j in 0..h {
-        for i in 0..w {
-            if map.value(i, j) != FREE {
-                continue;
-            }
-            let unknown = |di: i64, dj: i64| {
-                let (a, b) = (i as i64 + di, j as i64 + dj);
-                a >= 0
-                    && b >= 0
-                    && (a as usize) < w
-                    && (b as usize) < h
-                    && map.value(a as usize, b as usize) == UNKNOWN
-            };
-            if unknown(1, 0) || unknown(-1, 0) || unknown(0, 1) || unknown(0, -1) {
-                out.push((i, j));
-            }
+    let v = map.ros_values();
+    // Whole-row passes (no per-cell branches): whether a cell has an unknown 4-neighbour.
+    let unknown: Vec<u8> = v.iter().map(|&x| u8::from(x == UNKNOWN)).collect();
+    let mut near = vec![0u8; w * h];
+    for (row, unk) in near.chunks_exact_mut(w).zip(unknown.chunks_exact(w)) {
+        for (n, &u) in row[1..].iter_mut().zip(&unk[..w - 1]) {
+            *n |= u;
+        }
+        for (n, &u) in row[..w - 1].iter_mut().zip(&unk[1..]) {
+            *n |= u;
         }
     }
-    out
+    for (n, &u) in near[w..].iter_mut().zip(&unknown[..w * (h - 1)]) {
+        *n |= u;
+    }
+    for (n, &u) in near[..w * (h - 1)].iter_mut().zip(&unknown[w..]) {
+        *n |= u;
+    }
+    v.iter()
+        .zip(&near)
+        .enumerate()
+        .filter(|&(_, (&x, &n))| x == FREE && n != 0)
+        .map(|(k, _)| (k % w, k / w))
+        .collect()
 }
 
 /// The frontier cells of `map` in 8-connected clusters (each in discovery order, clusters
@@ -98,19 +100,50 @@ pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
     }
     let start = v as usize * w + u as usize;
     dist[start] = 0;
-    let mut queue = VecDeque::from([start]);
-    while let Some(c) = queue.pop_front() {
-        let (ci, cj) = ((c % w) as i64, (c / w) as i64);
-        for dj in -1i64..=1 {
-            for di in -1i64..=1 {
-                let (a, bb) = (ci + di, cj + dj);
-                if a < 0 || bb < 0 || a as usize >= w || bb as usize >= h {
-                    continue;
+    // Breadth-first distances do not depend on the order neighbours are visited in: a
+    // plain vector is the queue, and cells off the border skip the bounds tests.
+    let open: Vec<bool> = costmap
+        .costs
+        .iter()
+        .map(|&c| c < INSCRIBED_INFLATED_OBSTACLE)
+        .collect();
+    let offsets = [
+        -(w as isize) - 1,
+        -(w as isize),
+        -(w as isize) + 1,
+        -1,
+        1,
+        w as isize - 1,
+        w as isize,
+        w as isize + 1,
+    ];
+    let mut queue = vec![start];
+    let mut head = 0;
+    while head < queue.len() {
+        let c = queue[head];
+        head += 1;
+        let next = dist[c] + 1;
+        let (ci, cj) = (c % w, c / w);
+        if ci > 0 && cj > 0 && ci + 1 < w && cj + 1 < h {
+            for o in offsets {
+                let n = c.wrapping_add_signed(o);
+                if dist[n] == u32::MAX && open[n] {
+                    dist[n] = next;
+                    queue.push(n);
                 }
-                let n = bb as usize * w + a as usize;
-                if dist[n] == u32::MAX && costmap.costs[n] < INSCRIBED_INFLATED_OBSTACLE {
-                    dist[n] = dist[c] + 1;
-                    queue.push_back(n);
+            }
+        } else {
+            for dj in -1i64..=1 {
+                for di in -1i64..=1 {
+                    let (a, bb) = (ci as i64 + di, cj as i64 + dj);
+                    if a < 0 || bb < 0 || a as usize >= w || bb as usize >= h {
+                        continue;
+                    }
+                    let n = bb as usize * w + a as usize;
+                    if dist[n] == u32::MAX && open[n] {
+                        dist[n] = next;
+                        queue.push(n);
+                    }
                 }
             }
         }
