@@ -116,15 +116,17 @@ impl Inflation {
         }
         // Every squared cell distance whose cost may be non-zero is at most reach^2:
         // sqrt(d) * resolution > inflation_radius beyond it.
+        // Small integers throughout: with reach <= 64 every sum below stays under
+        // 3 * 64^2 + 1, so 16-bit lanes hold it (and SSE2 has a 16-bit minimum).
         let reach = reach as usize;
-        let reach_sq = (reach * reach) as u32;
+        let reach_sq = (reach * reach) as i16;
         let table: Vec<u8> = (0..=reach_sq)
             .map(|d| self.cost(f64::from(d).sqrt() * resolution))
             .collect();
         let (w, h) = (obstacles.width(), obstacles.height());
         let cells = obstacles.cells();
         // Vertical distance to the nearest obstacle in the column, capped at `far`.
-        let far = reach as u32 + 1;
+        let far = reach as i16 + 1;
         let mut g = vec![far; w * h];
         for j in 0..h {
             let (done, rest) = g.split_at_mut(j * w);
@@ -152,15 +154,15 @@ impl Inflation {
         // Beyond the reach: any value above reach^2 that cannot overflow when dx^2 is added.
         let beyond = 2 * reach_sq + 1;
         let mut out = vec![0u8; w * h];
-        let mut g2 = vec![0u32; w];
-        let mut best = vec![0u32; w];
+        let mut g2 = vec![0i16; w];
+        let mut best = vec![0i16; w];
         for (grow, orow) in g.chunks_exact(w.max(1)).zip(out.chunks_exact_mut(w.max(1))) {
             for (s, &v) in g2.iter_mut().zip(grow) {
-                *s = if v <= reach as u32 { v * v } else { beyond };
+                *s = if v < far { v * v } else { beyond };
             }
             best.copy_from_slice(&g2);
             for dx in 1..=reach.min(w.saturating_sub(1)) {
-                let a = (dx * dx) as u32;
+                let a = (dx * dx) as i16;
                 let (left, right) = (&g2[..w - dx], &g2[dx..]);
                 for (b, &r) in best[..w - dx].iter_mut().zip(right) {
                     *b = (*b).min(r + a);
