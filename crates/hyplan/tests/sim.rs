@@ -211,6 +211,7 @@ fn explore_writes_coverage_map_and_figures() {
         for name in ["track.csv", "map.yaml", "map.pgm", "animation.png"] {
             assert!(out.join(name).is_file(), "{name}");
         }
+        check_animation(&out.join("animation.png"));
         let svgs = std::fs::read_dir(&out)
             .unwrap()
             .filter(|e| {
@@ -220,6 +221,41 @@ fn explore_writes_coverage_map_and_figures() {
             .count();
         assert!(svgs >= 1);
     }
+}
+
+/// The animation decodes frame by frame (palette expanded to RGB, as a viewer shows it)
+/// into the five colours of the figure: the last frame has free, occupied and unknown
+/// cells, the track and the robot.
+fn check_animation(file: &std::path::Path) {
+    let mut decoder =
+        png::Decoder::new(std::io::BufReader::new(std::fs::File::open(file).unwrap()));
+    decoder.set_transformations(png::Transformations::EXPAND);
+    let mut reader = decoder.read_info().unwrap();
+    let frames = reader.info().animation_control().unwrap().num_frames;
+    assert!(frames >= 2, "{frames} frames");
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let palette: [[u8; 3]; 5] = [
+        [255, 255, 255],
+        [0, 0, 0],
+        [160, 160, 160],
+        [30, 60, 200],
+        [220, 0, 0],
+    ];
+    let mut seen = [false; 5];
+    for _ in 0..frames {
+        seen = [false; 5];
+        let info = reader.next_frame(&mut buf).unwrap();
+        assert_eq!(info.color_type, png::ColorType::Rgb);
+        for px in buf[..info.buffer_size()].chunks_exact(3) {
+            let k = palette.iter().position(|c| c == px);
+            assert!(k.is_some(), "colour {px:?} is not the figure's");
+            seen[k.unwrap()] = true;
+        }
+    }
+    assert_eq!(
+        seen, [true; 5],
+        "last frame: white, black, grey, track, robot"
+    );
 }
 
 #[test]
