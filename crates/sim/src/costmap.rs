@@ -57,6 +57,9 @@ impl Default for CostmapParams {
 /// Side of an [`ObstacleMemory`] cell, m.
 pub const MEMORY_RESOLUTION: f64 = 0.05;
 
+/// Length below which [`ObstacleMemory`]'s list of written cells is not compacted.
+const MIN_COMPACT: usize = 4096;
+
 /// Recent laser hits: per 5 cm cell, the last hit point and when it was seen.
 #[derive(Debug, Clone)]
 pub struct ObstacleMemory {
@@ -66,8 +69,13 @@ pub struct ObstacleMemory {
     /// Tick of the last hit plus one (0: never).
     stamp: Vec<u64>,
     point: Vec<[f32; 2]>,
-    /// Cells written by the latest scans, to scan without visiting the whole grid.
+    /// Every cell written within the memory length (and some expired ones, dropped in
+    /// batches), to list the points without visiting the whole grid.
     recent: Vec<u32>,
+    /// Whether a cell is in `recent`.
+    listed: Vec<bool>,
+    /// Length of `recent` at which expired cells are next dropped.
+    compact_at: usize,
     /// The latest scan, for clearing by newer beams.
     latest: Option<Scan>,
     /// Memory length, ticks.
@@ -91,6 +99,8 @@ impl ObstacleMemory {
             explained: vec![false; width * height],
             point: vec![[0.0; 2]; width * height],
             recent: Vec::new(),
+            listed: vec![false; width * height],
+            compact_at: MIN_COMPACT,
             latest: None,
             keep: keep_ticks,
             obstacle_range,
@@ -131,10 +141,18 @@ impl ObstacleMemory {
     pub fn insert(&mut self, scan: Scan, tick: u64) {
         let now = tick + 1;
         let keep = self.keep;
-        // Drop cells whose stamp expired from the recent list.
-        let stamp = &self.stamp;
-        self.recent
-            .retain(|&k| stamp[k as usize] + keep >= now && stamp[k as usize] != 0);
+        // Drop expired cells from the list once it has doubled, not at every scan: the
+        // list is only read through `points`, which skips them anyway.
+        if self.recent.len() >= self.compact_at {
+            let (stamp, listed) = (&self.stamp, &mut self.listed);
+            self.recent.retain(|&k| {
+                let s = stamp[k as usize];
+                let alive = s != 0 && s + keep >= now;
+                listed[k as usize] = alive;
+                alive
+            });
+            self.compact_at = (2 * self.recent.len()).max(MIN_COMPACT);
+        }
         for k in 0..scan.ranges.len() {
             if scan.ranges[k] > self.obstacle_range {
                 continue;
@@ -149,12 +167,11 @@ impl ObstacleMemory {
             };
             let Some((i, j)) = self.cell(p) else { continue };
             let c = j * self.width + i;
-            if self.stamp[c] != now {
-                if self.stamp[c] == 0 || self.stamp[c] + keep < now {
-                    self.recent.push(c as u32);
-                }
-                self.stamp[c] = now;
+            if !self.listed[c] {
+                self.listed[c] = true;
+                self.recent.push(c as u32);
             }
+            self.stamp[c] = now;
             self.point[c] = [p.x as f32, p.y as f32];
         }
         self.latest = Some(scan);
