@@ -30,7 +30,7 @@ use crate::explore::params::Strategy;
 use crate::kinematics::{self, Pose, Twist};
 use crate::laser::LaserModel;
 use crate::mapping::OccupancyGrid;
-use crate::navigator::{NavState, Navigator};
+use crate::navigator::{NavEvent, NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::run::{NOISE_STREAM, PLANNER_STREAM, TICKS_PER_SECOND};
 use crate::scenario::Scenario;
@@ -73,6 +73,44 @@ pub struct Snapshot {
     pub map: OccupancyGrid,
 }
 
+/// Why a goal stopped being the goal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum GoalEnd {
+    /// The navigator reached it.
+    Reached,
+    /// The navigator gave up (no plan, or blocked again, `max_failures` times in a row).
+    GaveUp,
+    /// The robot did not move 0.2 m for `stuck_after` seconds.
+    Stuck,
+    /// The filter's costmap test failed on it (an obstacle came near).
+    Cost,
+    /// The filter's gain test failed on it (its unknown area was seen).
+    Gain,
+    /// Still the goal when the run ended.
+    Open,
+}
+
+/// One goal's story, for the diagnosis of what an exploration left unknown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GoalRecord {
+    /// When it was sent, s.
+    pub t: f64,
+    /// The goal sent to the navigator.
+    pub goal: Point2,
+    /// When it stopped being the goal, s.
+    pub ended: f64,
+    /// Why.
+    pub end: GoalEnd,
+    /// Plans the navigator made for it (first plan and re-plans).
+    pub plans: u32,
+    /// Planning failures (no path, or blocked again at once).
+    pub failures: u32,
+    /// Stops for a blocked path.
+    pub stops: u32,
+    /// Distance driven while it was the goal, m.
+    pub driven: f64,
+}
+
 /// Everything an exploration produced.
 #[derive(Debug, Clone)]
 pub struct ExploreOutcome {
@@ -90,6 +128,8 @@ pub struct ExploreOutcome {
     pub goals: Vec<(f64, Point2)>,
     /// Goals the navigator gave up on.
     pub blacklisted: Vec<Point2>,
+    /// Every goal, in order: when and why it ended, what the navigator did for it.
+    pub goal_log: Vec<GoalRecord>,
     /// Frontier points the detectors published.
     pub published: usize,
     /// Snapshots at the scenario's chosen times (and one at the end).
@@ -325,6 +365,7 @@ pub fn explore_with(
     let mut track = Vec::new();
     let mut goals = Vec::new();
     let mut failed = Vec::new();
+    let mut goal_log: Vec<GoalRecord> = Vec::new();
     let mut snapshots = Vec::new();
     let mut frames = Vec::new();
     let frame_every = ex
@@ -444,13 +485,29 @@ pub fn explore_with(
                 if (here - anchor.0).norm() >= 0.2 {
                     anchor = (here, tick);
                 }
-                if state == NavState::Failed || tick - anchor.1 >= stuck_ticks {
-                    failed.push(g);
+                let end = if state == NavState::Failed {
+                    Some(GoalEnd::GaveUp)
+                } else if tick - anchor.1 >= stuck_ticks {
+                    Some(GoalEnd::Stuck)
+                } else if state == NavState::Reached {
+                    Some(GoalEnd::Reached)
+                } else if cost(g) > ex.costmap_threshold {
+                    Some(GoalEnd::Cost)
+                } else if !still_good {
+                    Some(GoalEnd::Gain)
+                } else {
+                    None
+                };
+                if let Some(end) = end {
+                    if matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck) {
+                        failed.push(g);
+                    }
                     assigner.blacklist.push(g);
                     goal = None;
-                } else if state == NavState::Reached || !still_good {
-                    assigner.blacklist.push(g);
-                    goal = None;
+                    if let Some(r) = goal_log.last_mut() {
+                        r.ended = t;
+                        r.end = end;
+                    }
                 }
             }
             if goal.is_none() {
@@ -469,6 +526,16 @@ pub fn explore_with(
                     anchor = (here, tick);
                     nav.set_goal(g);
                     goals.push((t, g));
+                    goal_log.push(GoalRecord {
+                        t,
+                        goal: g,
+                        ended: t,
+                        end: GoalEnd::Open,
+                        plans: 0,
+                        failures: 0,
+                        stops: 0,
+                        driven: 0.0,
+                    });
                 }
             }
             if goal.is_none() {
@@ -527,16 +594,33 @@ pub fn explore_with(
                 TICKS_PER_SECOND as f64,
                 &mut nav_events,
             );
+            if let Some(r) = goal_log.last_mut().filter(|r| r.end == GoalEnd::Open) {
+                for e in &nav_events {
+                    match e {
+                        NavEvent::Plan | NavEvent::Replan => r.plans += 1,
+                        NavEvent::Failure => r.failures += 1,
+                        NavEvent::Stop => r.stops += 1,
+                        NavEvent::GoalReached | NavEvent::GaveUp => {}
+                    }
+                }
+            }
             track.push((t, pose));
         }
         let next = kinematics::integrate(pose, twist, dt);
         if let Some(a) = turned.as_mut() {
             *a += kinematics::wrap_angle(next.phi - pose.phi).abs();
         }
-        distance += ((next.x - pose.x).powi(2) + (next.y - pose.y).powi(2)).sqrt();
+        let step = ((next.x - pose.x).powi(2) + (next.y - pose.y).powi(2)).sqrt();
+        distance += step;
+        if let Some(r) = goal_log.last_mut().filter(|r| r.end == GoalEnd::Open) {
+            r.driven += step;
+        }
         pose = next;
     }
     let end_time = end_tick as f64 * dt;
+    if let Some(r) = goal_log.last_mut().filter(|r| r.end == GoalEnd::Open) {
+        r.ended = end_time;
+    }
     if coverage.last().is_none_or(|c: &Coverage| c.t < end_time) {
         coverage.push(sample(free_count, end_time));
     }
@@ -559,6 +643,7 @@ pub fn explore_with(
         track,
         goals,
         blacklisted: failed,
+        goal_log,
         published: all_published.len(),
         snapshots,
         map,
