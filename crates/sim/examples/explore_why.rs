@@ -47,8 +47,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("goals:");
     for g in &out.goal_log {
         println!(
-            "  {:6.1}-{:6.1} s ({:6.3}, {:6.3}) {:?}: plans {} failures {} stops {} driven {:.2} m",
-            g.t, g.ended, g.goal.x, g.goal.y, g.end, g.plans, g.failures, g.stops, g.driven
+            "  {:6.1}-{:6.1} s ({:6.3}, {:6.3}) for ({:6.3}, {:6.3}) {:?}: plans {} failures {} stops {} driven {:.2} m",
+            g.t, g.ended, g.goal.x, g.goal.y, g.target.x, g.target.y, g.end, g.plans, g.failures, g.stops, g.driven
         );
     }
     let map = &out.map;
@@ -80,6 +80,31 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         steps.get(v * cw + u).copied().unwrap_or(u32::MAX)
     };
     let inflation = costmaps.inflation();
+    let reachable_cells = steps.iter().filter(|&&s| s != u32::MAX).count();
+    let views = sim::explore::ViewPoints {
+        costmap: &costmap,
+        steps: &steps,
+        max_cost: scenario.exploration.costmap_threshold,
+        range: scenario.exploration.view_range,
+        min_range: scenario.laser.range_min
+            + scenario.laser.mount_offset.abs()
+            + scenario.robot.body_radius,
+        slack: scenario.exploration.bandwidth,
+    };
+    let frontier_points: Vec<Point2> = sim::explore::frontier_clusters(map)
+        .into_iter()
+        .filter(|c| c.len() >= scenario.exploration.min_frontier_cells)
+        .flatten()
+        .map(|(i, j)| centre(i, j))
+        .collect();
+    println!(
+        "final pose ({:.2}, {:.2}): {reachable_cells} costmap cells reachable (built map only, no laser memory); {} frontier cells in clusters of >= {}; nearest view point: {:?}",
+        here.x,
+        here.y,
+        frontier_points.len(),
+        scenario.exploration.min_frontier_cells,
+        views.nearest(map, &frontier_points, |p| out.goal_log.iter().map(|g| g.target).any(|b| (b - p).norm() <= scenario.exploration.blacklist_radius)),
+    );
     let mut seen = vec![false; w * h];
     let mut patches = Vec::new();
     for c0 in 0..w * h {
@@ -196,7 +221,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             least_cost,
             nearest_reach,
             last.frontiers.iter().filter(|p| near(p)).count(),
-            out.blacklisted.iter().filter(|p| near(p)).count(),
+            out.goal_log.iter().filter(|g| g.end != sim::explore::GoalEnd::Open && near(&g.target)).count(),
         );
     }
     if draw {

@@ -18,6 +18,7 @@
 //! - [`explore()`]: the exploration loop, [`Exploration`] (parameters), [`Strategy`],
 //!   [`ExploreOutcome`], [`Coverage`].
 //! - [`figure`]: the map with track, trees and frontiers as SVG.
+//! - [`viewpoint`]: [`ViewPoints`], [`sees`]: where to stand to see a frontier.
 //! - [`selfmap`]: [`explore_then_navigate`]: a navigation scenario on the map the robot
 //!   built itself.
 //!
@@ -34,6 +35,7 @@ pub mod frontier;
 mod params;
 mod run;
 pub mod selfmap;
+pub mod viewpoint;
 
 pub use assigner::{Assigner, revenue};
 pub use detector::{Edge, GlobalRrtDetector, LocalRrtDetector, Region, RegionError, edge_check};
@@ -45,3 +47,4 @@ pub use run::{
     reachable_free, region_of,
 };
 pub use selfmap::{SelfMapped, explore_then_navigate};
+pub use viewpoint::{ViewPoints, sees};

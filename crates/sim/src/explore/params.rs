@@ -86,6 +86,14 @@ pub struct Exploration {
     /// rescue; our navigator can stand still in `Following` when the controller finds no
     /// command, see the docs page).
     pub stuck_after: f64,
+    /// Send the robot to a view point of the frontier (a reachable, low-cost cell within
+    /// `view_range` that sees it on the built map) rather than onto the frontier, and
+    /// turn it to face the frontier there (ours, true; the reference sends the robot onto
+    /// the frontier point). Both the RRT assigner and the baseline use it.
+    pub view_points: bool,
+    /// Greatest distance from a view point to its frontier, m (ours, 2.5: within the
+    /// mapping range, so that the cells behind the frontier are mapped from there too).
+    pub view_range: f64,
     /// Baseline: frontier clusters of fewer cells are ignored (ours, 5 cells = 0.25 m).
     pub min_frontier_cells: usize,
     /// Turn a full circle on the spot before exploring (ours, true): a laser narrower
@@ -117,6 +125,8 @@ impl Default for Exploration {
             hysteresis_gain: 2.0,
             cycle: 0.5,
             blacklist_radius: 0.5,
+            view_points: true,
+            view_range: 2.5,
             finish_after: 10.0,
             stuck_after: 15.0,
             min_frontier_cells: 5,
@@ -147,6 +157,7 @@ impl Exploration {
             ("hysteresis_radius", self.hysteresis_radius),
             ("cycle", self.cycle),
             ("blacklist_radius", self.blacklist_radius),
+            ("view_range", self.view_range),
             ("finish_after", self.finish_after),
             ("stuck_after", self.stuck_after),
         ] {

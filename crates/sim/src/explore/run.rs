@@ -25,11 +25,12 @@ use crate::costmap::rasterize;
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
 use crate::explore::filter::{Filter, built_cost, information_gain};
-use crate::explore::frontier::nearest_frontier;
+use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
+use crate::explore::viewpoint::ViewPoints;
 use crate::explore::params::Strategy;
 use crate::kinematics::{self, Pose, Twist};
 use crate::laser::LaserModel;
-use crate::mapping::OccupancyGrid;
+use crate::mapping::{OccupancyGrid, UNKNOWN};
 use crate::navigator::{NavEvent, NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::run::{NOISE_STREAM, PLANNER_STREAM, TICKS_PER_SECOND};
@@ -97,6 +98,9 @@ pub struct GoalRecord {
     pub t: f64,
     /// The goal sent to the navigator.
     pub goal: Point2,
+    /// The frontier it was chosen for (the goal itself without view points); blacklisted
+    /// when the goal ends, whatever the reason.
+    pub target: Point2,
     /// When it stopped being the goal, s.
     pub ended: f64,
     /// Why.
@@ -199,9 +203,34 @@ impl ExploreOutcome {
 
 /// The cells of a `res` grid over `bounds` that are free in the true world (no obstacle
 /// reaches into them) and 4-connected to `start`'s cell: (columns, mask).
+///
+/// "Reaches into" is [`rasterize`]'s rule for shapes, a cell whose centre lies within half
+/// a cell diagonal of an obstacle's outline, applied to a loaded map's obstacle outline
+/// too (the boundaries of its forbidden pixels): so a free pixel that shares an edge or a
+/// corner with a forbidden one is not counted, as a cell a wall's face runs along is not
+/// counted in a world of shapes. Without it, a map aligned with the mapping grid counts
+/// the row of cells in front of every wall, which the laser's hits on the wall's face
+/// mark occupied (a hit on a cell boundary falls on either side with the range noise, and
+/// on the near side when the beam travels towards -x or -y).
 #[must_use]
 pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<bool>) {
-    let (w, h, occupied) = rasterize(world.bounds, &world.statics, res);
+    let (w, h, mut occupied) = rasterize(world.bounds, &world.statics, res);
+    let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
+    let o = world.bounds.min;
+    for s in &world.statics.grid_segments {
+        let lo = |a: f64, b: f64, o: f64| ((a.min(b) - half_diag - o) / res).floor().max(0.0) as usize;
+        let hi = |a: f64, b: f64, o: f64, n: usize| {
+            (((a.max(b) + half_diag - o) / res).floor() + 1.0).clamp(0.0, n as f64) as usize
+        };
+        for j in lo(s.a.y, s.b.y, o.y)..hi(s.a.y, s.b.y, o.y, h) {
+            for i in lo(s.a.x, s.b.x, o.x)..hi(s.a.x, s.b.x, o.x, w) {
+                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                if (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag {
+                    occupied[j * w + i] = true;
+                }
+            }
+        }
+    }
     let mut reach = vec![false; w * h];
     let u = ((start.x - world.bounds.min.x) / res).floor();
     let v = ((start.y - world.bounds.min.y) / res).floor();
@@ -236,6 +265,43 @@ pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<boo
         }
     }
     (w, reach)
+}
+
+/// The centres of the unknown 4-neighbours of `frontier` cells, each once, in order:
+/// what the baseline wants to see.
+fn unknown_beside(
+    map: &OccupancyGrid,
+    frontier: impl Iterator<Item = (usize, usize)>,
+) -> Vec<Point2> {
+    let (w, h) = (map.width(), map.height());
+    let res = map.params.resolution;
+    let o = map.origin();
+    let mut seen = std::collections::HashSet::new();
+    let mut out = Vec::new();
+    for (i, j) in frontier {
+        for (a, b) in [
+            (i + 1, j),
+            (i.wrapping_sub(1), j),
+            (i, j + 1),
+            (i, j.wrapping_sub(1)),
+        ] {
+            if a < w && b < h && map.value(a, b) == UNKNOWN && seen.insert((a, b)) {
+                out.push(Point2::new(
+                    o.x + (a as f64 + 0.5) * res,
+                    o.y + (b as f64 + 0.5) * res,
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// The turn at a view point: whether the frontier is in view, and the map version when
+/// the robot stood still facing it (the look is over at the next map update).
+#[derive(Debug, Clone, Copy, Default)]
+struct Look {
+    aligned: bool,
+    settled: Option<u64>,
 }
 
 fn stream(seed: u64, s: u64) -> ChaCha8Rng {
@@ -372,6 +438,16 @@ pub fn explore_with(
         .frame_period
         .map(|f| ((f * TICKS_PER_SECOND as f64).round() as u64).max(1));
     let mut goal: Option<Point2> = None;
+    // With view points: the frontier the goal looks at, and the turn towards it there.
+    let mut target: Option<Point2> = None;
+    let mut look: Option<Look> = None;
+    let min_view = scenario.laser.range_min + scenario.laser.mount_offset.abs() + robot.body_radius;
+    let half_fov = scenario.laser.fov_deg.to_radians() / 2.0;
+    let look_tolerance = if half_fov >= std::f64::consts::PI {
+        std::f64::consts::PI
+    } else {
+        (half_fov - 20f64.to_radians()).max(5f64.to_radians())
+    };
     let mut candidates: Vec<Point2> = Vec::new();
     let mut idle_since: Option<u64> = None;
     let mut map_version = 0u64;
@@ -466,44 +542,72 @@ pub fn explore_with(
             }
         }
         if tick % cycle_every == 0 && turned.is_none() {
-            // The baseline needs the whole costmap (its reachability); the RRT filter and
-            // the goal test ask about a few points (`built_cost`). The map changes once
-            // per map period: build once per change.
-            if !rrt && cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
-                cached = Some((map_version, costmaps.build(Some(&map), &[])));
+            // The baseline and the view points need the whole costmap (reachability);
+            // the RRT filter and the goal test without view points ask about a few points
+            // (`built_cost`). The map changes once per map period: build once per change.
+            if (!rrt || ex.view_points)
+                && cached.as_ref().is_none_or(|(at, _)| *at != map_version)
+            {
+                // The view points' reachability must be the planner's: its costmap holds
+                // the remembered laser hits too, which can close a gap the map leaves.
+                let hits = if ex.view_points {
+                    memory.points(tick)
+                } else {
+                    Vec::new()
+                };
+                cached = Some((map_version, costmaps.build(Some(&map), &hits)));
             }
             let cost = |p: Point2| built_cost(&map, &inflation, p);
+            // With view points the robot never stands on a frontier: only a frontier on
+            // an occupied cell is dropped for its cost (see the module doc).
+            let frontier_cost = |p: Point2| {
+                if !ex.view_points {
+                    cost(p)
+                } else if map.occupied_at(p) {
+                    100
+                } else {
+                    0
+                }
+            };
             if rrt {
                 all_published.extend_from_slice(&published);
-                candidates = filter.update(&published, &map, cost).to_vec();
+                candidates = filter.update(&published, &map, frontier_cost).to_vec();
                 published.clear();
             }
             if let Some(g) = goal {
                 let state = nav.state();
-                let still_good = cost(g) <= ex.costmap_threshold
-                    && information_gain(&map, g, ex.filter_radius) >= ex.min_gain;
-                if (here - anchor.0).norm() >= 0.2 {
+                // The frontier sought: the goal itself, or the target of its view point.
+                let f = target.unwrap_or(g);
+                let still_good = frontier_cost(f) <= ex.costmap_threshold
+                    && information_gain(&map, f, ex.filter_radius) >= ex.min_gain;
+                if (here - anchor.0).norm() >= 0.2 || look.is_some() {
                     anchor = (here, tick);
                 }
+                let looked = look.is_some_and(|l| l.settled.is_some_and(|v| map_version > v));
                 let end = if state == NavState::Failed {
                     Some(GoalEnd::GaveUp)
                 } else if tick - anchor.1 >= stuck_ticks {
                     Some(GoalEnd::Stuck)
-                } else if state == NavState::Reached {
-                    Some(GoalEnd::Reached)
-                } else if cost(g) > ex.costmap_threshold {
+                } else if frontier_cost(f) > ex.costmap_threshold {
                     Some(GoalEnd::Cost)
                 } else if !still_good {
                     Some(GoalEnd::Gain)
+                } else if state == NavState::Reached && (target.is_none() || looked) {
+                    Some(GoalEnd::Reached)
                 } else {
                     None
                 };
+                if state == NavState::Reached && target.is_some() && look.is_none() {
+                    look = Some(Look::default());
+                }
                 if let Some(end) = end {
                     if matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck) {
-                        failed.push(g);
+                        failed.push(f);
                     }
-                    assigner.blacklist.push(g);
+                    assigner.blacklist.push(f);
                     goal = None;
+                    target = None;
+                    look = None;
                     if let Some(r) = goal_log.last_mut() {
                         r.ended = t;
                         r.end = end;
@@ -511,24 +615,60 @@ pub fn explore_with(
                 }
             }
             if goal.is_none() {
-                goal = if rrt {
-                    assigner.choose(here, &candidates, &map)
-                } else {
-                    let next = cached.as_ref().and_then(|(_, costmap)| {
-                        nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
-                            assigner.blacklisted(p)
-                        })
-                    });
-                    candidates = next.into_iter().collect();
-                    next
+                let costmap = cached.as_ref().map(|(_, c)| c);
+                let steps = match costmap {
+                    Some(c) if ex.view_points => costmap_steps(c, here),
+                    _ => Vec::new(),
                 };
-                if let Some(g) = goal {
+                let views = costmap.map(|costmap| ViewPoints {
+                    costmap,
+                    steps: &steps,
+                    max_cost: ex.costmap_threshold,
+                    range: ex.view_range,
+                    min_range: min_view,
+                    // A baseline target is an unknown cell's centre: that cell must be
+                    // the first one not free. An RRT target is a cluster's centre of
+                    // such cells: one of them within the mean-shift bandwidth.
+                    slack: if rrt { ex.bandwidth } else { 0.5 * res },
+                });
+                let next = match (rrt, views.filter(|_| ex.view_points)) {
+                    (true, None) => assigner.choose(here, &candidates, &map).map(|f| (f, f)),
+                    (true, Some(views)) => assigner
+                        .ranked(here, &candidates, &map)
+                        .into_iter()
+                        .find_map(|f| views.best(&map, f).map(|(_, v)| (f, v))),
+                    (false, None) => {
+                        let next = costmap.and_then(|costmap| {
+                            nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
+                                assigner.blacklisted(p)
+                            })
+                        });
+                        next.map(|f| (f, f))
+                    }
+                    (false, Some(views)) => {
+                        let cells = unknown_beside(
+                            &map,
+                            frontier_clusters(&map)
+                                .into_iter()
+                                .filter(|c| c.len() >= ex.min_frontier_cells)
+                                .flatten(),
+                        );
+                        views.nearest(&map, &cells, |p| assigner.blacklisted(p))
+                    }
+                };
+                if !rrt {
+                    candidates = next.map(|(f, _)| f).into_iter().collect();
+                }
+                if let Some((f, g)) = next {
+                    goal = Some(g);
+                    target = ex.view_points.then_some(f);
                     anchor = (here, tick);
                     nav.set_goal(g);
                     goals.push((t, g));
                     goal_log.push(GoalRecord {
                         t,
                         goal: g,
+                        target: f,
                         ended: t,
                         end: GoalEnd::Open,
                         plans: 0,
@@ -581,6 +721,27 @@ pub fn explore_with(
                 if a >= std::f64::consts::TAU && twist == Twist::default() {
                     turned = None;
                 }
+            }
+        } else if let (Some(f), Some(l)) = (target, look.as_mut()) {
+            if tick % control_every == 0 {
+                // At the view point: turn until the frontier is well inside the laser's
+                // field of view, stop, and let one more map update happen.
+                let (o, h) = laser.origin(&pose);
+                let err = kinematics::wrap_angle((f.y - o.y).atan2(f.x - o.x) - h);
+                let want = if !l.aligned && err.abs() > look_tolerance {
+                    Twist {
+                        v: 0.0,
+                        omega: scenario.controller.rotate_speed.copysign(err),
+                    }
+                } else {
+                    l.aligned = true;
+                    Twist::default()
+                };
+                twist = nav.controller.limit(&robot, twist, want);
+                if l.aligned && twist == Twist::default() && l.settled.is_none() {
+                    l.settled = Some(map_version);
+                }
+                track.push((t, pose));
             }
         } else if tick % control_every == 0 {
             nav_events.clear();
