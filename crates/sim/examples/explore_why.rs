@@ -84,7 +84,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let views = sim::explore::ViewPoints {
         costmap: &costmap,
         steps: &steps,
-        max_cost: scenario.exploration.costmap_threshold,
+        max_cost: scenario.exploration.view_max_cost,
         range: scenario.exploration.view_range,
         min_range: scenario.laser.range_min
             + scenario.laser.mount_offset.abs()

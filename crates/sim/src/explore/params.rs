@@ -94,6 +94,9 @@ pub struct Exploration {
     /// Greatest distance from a view point to its frontier, m (ours, 2.5: within the
     /// mapping range, so that the cells behind the frontier are mapped from there too).
     pub view_range: f64,
+    /// Costmap value (0-100) above which a cell is no view point (ours, 70: the filter's
+    /// `costmap_threshold`).
+    pub view_max_cost: i8,
     /// Baseline: frontier clusters of fewer cells are ignored (ours, 5 cells = 0.25 m).
     pub min_frontier_cells: usize,
     /// Turn a full circle on the spot before exploring (ours, true): a laser narrower
@@ -127,6 +130,7 @@ impl Default for Exploration {
             blacklist_radius: 0.5,
             view_points: true,
             view_range: 2.5,
+            view_max_cost: 20,
             finish_after: 10.0,
             stuck_after: 15.0,
             min_frontier_cells: 5,
@@ -174,12 +178,13 @@ impl Exploration {
                 return bad(f, v.to_string(), "must be finite and >= 0");
             }
         }
-        if !(0..=100).contains(&self.costmap_threshold) {
-            return bad(
-                "costmap_threshold",
-                self.costmap_threshold.to_string(),
-                "must be in 0..=100",
-            );
+        for (f, v) in [
+            ("costmap_threshold", self.costmap_threshold),
+            ("view_max_cost", self.view_max_cost),
+        ] {
+            if !(0..=100).contains(&v) {
+                return bad(f, v.to_string(), "must be in 0..=100");
+            }
         }
         if let Some(t) = self
             .snapshots

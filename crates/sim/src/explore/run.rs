@@ -563,10 +563,10 @@ pub fn explore_with(
             let frontier_cost = |p: Point2| {
                 if !ex.view_points {
                     cost(p)
-                } else if map.occupied_at(p) {
-                    100
                 } else {
-                    0
+                    let t: i8 = std::env::var("FCT").ok().and_then(|v| v.parse().ok()).unwrap_or(100);
+                    let c = cost(p);
+                    if c > t || map.occupied_at(p) { 100 } else { 0 }
                 }
             };
             if rrt {
@@ -623,7 +623,7 @@ pub fn explore_with(
                 let views = costmap.map(|costmap| ViewPoints {
                     costmap,
                     steps: &steps,
-                    max_cost: ex.costmap_threshold,
+                    max_cost: ex.view_max_cost,
                     range: ex.view_range,
                     min_range: min_view,
                     // A baseline target is an unknown cell's centre: that cell must be

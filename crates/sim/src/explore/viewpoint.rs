@@ -5,11 +5,12 @@
 //! that a robot sent onto it cannot plan there or stands still; yet the robot only needs
 //! to *see* it. A view point of a target is a costmap cell the robot's centre can reach
 //! (breadth-first from the robot over cells below the inscribed cost, [`costmap_steps`])
-//! whose cost is at most a threshold, between `min_range` and `range` from the target, and from whose centre
-//! the segment to the target meets no occupied cell of the built map before it reaches
-//! the target or unknown space ([`edge_check`]). The view point chosen is the one fewest
-//! costmap steps away (ties to the nearer one to the target, then row-major order), as
-//! frontier exploration systems with view-point sampling do.
+//! whose cost is at most a threshold, between `min_range` and `range` from the target,
+//! and from whose centre the segment to the target crosses only free cells of the built
+//! map before it reaches the target or the unknown space next to it ([`sees`]). The view
+//! point chosen is the one with the least travel to the target through it (costmap steps
+//! to it, then the straight line on): the nearest place to the frontier on the robot's
+//! way there that sees it, so that the robot still drives towards what it explores.
 //!
 //! [`costmap_steps`]: crate::explore::frontier::costmap_steps
 
@@ -69,10 +70,18 @@ impl ViewPoints<'_> {
         self.steps[c] != u32::MAX && ros_cost(self.costmap.costs[c]) <= self.max_cost
     }
 
-    /// The view point of `target` fewest steps away, with its steps; `None` when no
-    /// usable cell within `range` sees it.
+    /// Travel to `target` through the view point in cell `c`, m: the costmap steps to it
+    /// times the cell side, plus the straight line on to the target.
+    fn key(&self, c: usize, p: Point2, target: Point2) -> f64 {
+        f64::from(self.steps[c]) * self.costmap.map.resolution() + (p - target).norm()
+    }
+
+    /// The view point of `target` with the least travel to the target through it (steps
+    /// to the view point times the cell side, plus the straight line on to the target;
+    /// ties to the first cell in row-major order), with that travel, m; `None` when no
+    /// usable cell within range sees it.
     #[must_use]
-    pub fn best(&self, map: &OccupancyGrid, target: Point2) -> Option<(u32, Point2)> {
+    pub fn best(&self, map: &OccupancyGrid, target: Point2) -> Option<(f64, Point2)> {
         let b = self.costmap.map.bounds();
         let res = self.costmap.map.resolution();
         let (w, h) = (self.costmap.map.width(), self.costmap.map.height());
@@ -80,7 +89,7 @@ impl ViewPoints<'_> {
         let hi = |x: f64, o: f64, n: usize| {
             (((x + self.range - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize
         };
-        let mut best: Option<(u32, f64, Point2)> = None;
+        let mut best: Option<(f64, Point2)> = None;
         for v in lo(target.y, b.min.y)..hi(target.y, b.min.y, h) {
             for u in lo(target.x, b.min.x)..hi(target.x, b.min.x, w) {
                 let c = v * w + u;
@@ -89,22 +98,23 @@ impl ViewPoints<'_> {
                 }
                 let p = self.centre(u, v);
                 let d = (p - target).norm();
-                let s = self.steps[c];
-                if d > self.range || d < self.min_range || best.is_some_and(|(bs, bd, _)| (s, d) >= (bs, bd)) {
+                let k = self.key(c, p, target);
+                if d > self.range || d < self.min_range || best.is_some_and(|(bk, _)| k >= bk) {
                     continue;
                 }
                 if sees(map, p, target, self.slack) {
-                    best = Some((s, d, p));
+                    best = Some((k, p));
                 }
             }
         }
-        best.map(|(s, _, p)| (s, p))
+        best
     }
 
-    /// Of `targets` (skipping those for which `skip` holds), the one whose view point is
-    /// fewest steps away (ties to the nearer target from the view point, then the first),
-    /// as `(target, view point)`. Reachable cells are visited in order of steps, so the
-    /// search stops at the first cell that sees a target.
+    /// Of `targets` (skipping those for which `skip` holds), the one with the least
+    /// travel through a view point (as [`ViewPoints::best`]; ties to the cell fewer steps
+    /// away, then the first target), as `(target, view point)`. Reachable cells are
+    /// visited in order of steps, and the search stops once the steps alone exceed the
+    /// best travel found.
     #[must_use]
     pub fn nearest(
         &self,
@@ -117,23 +127,26 @@ impl ViewPoints<'_> {
             return None;
         }
         let w = self.costmap.map.width();
+        let res = self.costmap.map.resolution();
         let mut order: Vec<usize> = (0..self.steps.len()).filter(|&c| self.usable(c)).collect();
         order.sort_by_key(|&c| (self.steps[c], c));
-        let r2 = self.range * self.range;
-        let min2 = self.min_range * self.min_range;
+        let mut best: Option<(f64, Point2, Point2)> = None;
         for c in order {
+            if best.is_some_and(|(bk, _, _)| f64::from(self.steps[c]) * res + self.min_range >= bk) {
+                break;
+            }
             let p = self.centre(c % w, c / w);
-            let mut found: Option<(f64, Point2)> = None;
             for &t in &targets {
-                let d2 = (t - p).norm_squared();
-                if d2 <= r2 && d2 >= min2 && found.is_none_or(|(fd, _)| d2 < fd) && sees(map, p, t, self.slack) {
-                    found = Some((d2, t));
+                let d = (t - p).norm();
+                if d > self.range || d < self.min_range {
+                    continue;
+                }
+                let k = self.key(c, p, t);
+                if best.is_none_or(|(bk, _, _)| k < bk) && sees(map, p, t, self.slack) {
+                    best = Some((k, t, p));
                 }
             }
-            if let Some((_, t)) = found {
-                return Some((t, p));
-            }
         }
-        None
+        best.map(|(_, t, p)| (t, p))
     }
 }
