@@ -542,20 +542,12 @@ pub fn explore_with(
             }
         }
         if tick % cycle_every == 0 && turned.is_none() {
-            // The baseline and the view points need the whole costmap (reachability);
-            // the RRT filter and the goal test without view points ask about a few points
-            // (`built_cost`). The map changes once per map period: build once per change.
-            if (!rrt || ex.view_points)
-                && cached.as_ref().is_none_or(|(at, _)| *at != map_version)
+            // The baseline without view points needs the whole costmap (reachability);
+            // the RRT filter and the goal test ask about a few points (`built_cost`). The
+            // map changes once per map period: build once per change.
+            if !rrt && !ex.view_points && cached.as_ref().is_none_or(|(at, _)| *at != map_version)
             {
-                // The view points' reachability must be the planner's: its costmap holds
-                // the remembered laser hits too, which can close a gap the map leaves.
-                let hits = if ex.view_points {
-                    memory.points(tick)
-                } else {
-                    Vec::new()
-                };
-                cached = Some((map_version, costmaps.build(Some(&map), &hits)));
+                cached = Some((map_version, costmaps.build(Some(&map), &[])));
             }
             let cost = |p: Point2| built_cost(&map, &inflation, p);
             // With view points the robot never stands on a frontier: only a frontier on
@@ -613,6 +605,12 @@ pub fn explore_with(
                         r.end = end;
                     }
                 }
+            }
+            if goal.is_none() && ex.view_points {
+                // The view points' reachability must be the planner's, which plans on the
+                // next control step: its costmap holds the remembered laser hits too,
+                // which can close a gap the map leaves open.
+                cached = Some((map_version, costmaps.build(Some(&map), &memory.points(tick))));
             }
             if goal.is_none() {
                 let costmap = cached.as_ref().map(|(_, c)| c);
