@@ -86,16 +86,19 @@ pub struct Exploration {
     /// rescue; our navigator can stand still in `Following` when the controller finds no
     /// command, see the docs page).
     pub stuck_after: f64,
-    /// Send the robot to a view point of the frontier (a reachable, low-cost cell within
-    /// `view_range` that sees it on the built map) rather than onto the frontier, and
-    /// turn it to face the frontier there (ours, true; the reference sends the robot onto
-    /// the frontier point). Both the RRT assigner and the baseline use it.
+    /// Send the robot to a view point of the frontier (a reachable cell clear of
+    /// obstacles within `view_range` that sees it on the built map) rather than onto the
+    /// frontier, turn it to face the frontier there, and drop a frontier for its cost
+    /// only when it lies on an occupied cell (default false: the reference sends the
+    /// robot onto the frontier point and drops frontiers near obstacles; see
+    /// [`crate::explore::viewpoint`]). Both the RRT assigner and the baseline use it.
     pub view_points: bool,
     /// Greatest distance from a view point to its frontier, m (ours, 2.5: within the
     /// mapping range, so that the cells behind the frontier are mapped from there too).
     pub view_range: f64,
-    /// Costmap value (0-100) above which a cell is no view point (ours, 70: the filter's
-    /// `costmap_threshold`).
+    /// Costmap value (0-100) above which a cell is no view point (ours, 20: about 0.5 m
+    /// from the nearest obstacle cell, the costmap's preferred clearance, so that the
+    /// robot does not stop in a gap its inflation nearly closes).
     pub view_max_cost: i8,
     /// Baseline: frontier clusters of fewer cells are ignored (ours, 5 cells = 0.25 m).
     pub min_frontier_cells: usize,
@@ -128,7 +131,7 @@ impl Default for Exploration {
             hysteresis_gain: 2.0,
             cycle: 0.5,
             blacklist_radius: 0.5,
-            view_points: true,
+            view_points: false,
             view_range: 2.5,
             view_max_cost: 20,
             finish_after: 10.0,

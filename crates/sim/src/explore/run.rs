@@ -555,10 +555,10 @@ pub fn explore_with(
             let frontier_cost = |p: Point2| {
                 if !ex.view_points {
                     cost(p)
+                } else if map.occupied_at(p) {
+                    100
                 } else {
-                    let t: i8 = std::env::var("FCT").ok().and_then(|v| v.parse().ok()).unwrap_or(100);
-                    let c = cost(p);
-                    if c > t || map.occupied_at(p) { 100 } else { 0 }
+                    0
                 }
             };
             if rrt {
