@@ -225,7 +225,9 @@ pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<boo
         for j in lo(s.a.y, s.b.y, o.y)..hi(s.a.y, s.b.y, o.y, h) {
             for i in lo(s.a.x, s.b.x, o.x)..hi(s.a.x, s.b.x, o.x, w) {
                 let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
-                if (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag {
+                // The margin keeps a cell that only touches a corner on the same side
+                // of the rule whatever the rounding.
+                if (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag + 1e-9 {
                     occupied[j * w + i] = true;
                 }
             }
