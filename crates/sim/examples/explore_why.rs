@@ -48,7 +48,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for g in &out.goal_log {
         println!(
             "  {:6.1}-{:6.1} s ({:6.3}, {:6.3}) for ({:6.3}, {:6.3}) {:?}: plans {} failures {} stops {} driven {:.2} m",
-            g.t, g.ended, g.goal.x, g.goal.y, g.target.x, g.target.y, g.end, g.plans, g.failures, g.stops, g.driven
+            g.t,
+            g.ended,
+            g.goal.x,
+            g.goal.y,
+            g.target.x,
+            g.target.y,
+            g.end,
+            g.plans,
+            g.failures,
+            g.stops,
+            g.driven
         );
     }
     let map = &out.map;
@@ -103,7 +113,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         here.y,
         frontier_points.len(),
         scenario.exploration.min_frontier_cells,
-        views.nearest(map, &frontier_points, |p| out.goal_log.iter().map(|g| g.target).any(|b| (b - p).norm() <= scenario.exploration.blacklist_radius)),
+        views.nearest(map, &frontier_points, |p| out
+            .goal_log
+            .iter()
+            .map(|g| g.target)
+            .any(|b| (b - p).norm() <= scenario.exploration.blacklist_radius)),
     );
     let mut seen = vec![false; w * h];
     let mut patches = Vec::new();
@@ -173,7 +187,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let mut border = Vec::new();
         for &c in cells {
             let (i, j) = (c % w, c / w);
-            for (a, b) in [(i + 1, j), (i.wrapping_sub(1), j), (i, j + 1), (i, j.wrapping_sub(1))] {
+            for (a, b) in [
+                (i + 1, j),
+                (i.wrapping_sub(1), j),
+                (i, j + 1),
+                (i, j.wrapping_sub(1)),
+            ] {
                 if a < w && b < h && map.value(a, b) == FREE && !border.contains(&(a, b)) {
                     border.push((a, b));
                 }
@@ -207,7 +226,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .iter()
             .filter(|&&(a, b)| steps_at(centre(a, b)) != u32::MAX)
             .count();
-        let near = |p: &Point2| cells.iter().any(|&c| (centre(c % w, c / w) - p).norm() <= 0.5);
+        let near = |p: &Point2| {
+            cells
+                .iter()
+                .any(|&c| (centre(c % w, c / w) - p).norm() <= 0.5)
+        };
         println!(
             "  {:4} cells ({:.3} m2, {} occupied) at ({:.2}, {:.2}): frontier cells {} ({} reachable), best gain {:.3} m2, least cost {:?}; nearest reachable cell {:.2} m; filter frontiers near {}, blacklisted near {}",
             cells.len(),
@@ -221,7 +244,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             least_cost,
             nearest_reach,
             last.frontiers.iter().filter(|p| near(p)).count(),
-            out.goal_log.iter().filter(|g| g.end != sim::explore::GoalEnd::Open && near(&g.target)).count(),
+            out.goal_log
+                .iter()
+                .filter(|g| g.end != sim::explore::GoalEnd::Open && near(&g.target))
+                .count(),
         );
     }
     if draw {

@@ -404,7 +404,9 @@ fn view_point_sees_past_a_pillar() {
         ..views
     };
     assert_eq!(
-        views.nearest(&g, &[hidden, target], |_| false).map(|(t, _)| t),
+        views
+            .nearest(&g, &[hidden, target], |_| false)
+            .map(|(t, _)| t),
         Some(target)
     );
     // A point inside the pillar: the pillar's face hides it from the robot's side; from

@@ -43,8 +43,8 @@ pub use filter::{Filter, information_gain, mean_shift};
 pub use frontier::{frontier_cells, frontier_clusters, nearest_frontier};
 pub use params::{Exploration, Strategy};
 pub use run::{
-    Coverage, ExploreOutcome, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM, Snapshot, explore, explore_with,
-    reachable_free, region_of,
+    Coverage, ExploreOutcome, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM, Snapshot, explore,
+    explore_with, reachable_free, region_of,
 };
 pub use selfmap::{SelfMapped, explore_then_navigate};
 pub use viewpoint::{ViewPoints, sees};

@@ -16,6 +16,12 @@
 //! fell below `min_gain`), where the reference keeps driving to it; goals the navigator
 //! reached or gave up on are blacklisted; exploration ends after `finish_after` seconds
 //! without any frontier and without a goal.
+//!
+//! With `view_points` ([`crate::explore::viewpoint`]) the navigator's goal is a view point
+//! of the frontier: the filter's test and the blacklist apply to the frontier, the
+//! robot turns to face it on arrival, and the goal ends at the next map update after
+//! that (or earlier, when the frontier is seen on the way). Every goal's story is kept in
+//! [`ExploreOutcome::goal_log`] (the `explore_why` example prints it).
 
 use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
@@ -26,8 +32,8 @@ use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
 use crate::explore::filter::{Filter, built_cost, information_gain};
 use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
-use crate::explore::viewpoint::ViewPoints;
 use crate::explore::params::Strategy;
+use crate::explore::viewpoint::ViewPoints;
 use crate::kinematics::{self, Pose, Twist};
 use crate::laser::LaserModel;
 use crate::mapping::{OccupancyGrid, UNKNOWN};
@@ -130,7 +136,8 @@ pub struct ExploreOutcome {
     pub track: Vec<(f64, Pose)>,
     /// Goals sent to the navigator, with the time.
     pub goals: Vec<(f64, Point2)>,
-    /// Goals the navigator gave up on.
+    /// The frontiers of the goals the navigator gave up on (no plan, or stuck): the goals
+    /// themselves without view points.
     pub blacklisted: Vec<Point2>,
     /// Every goal, in order: when and why it ended, what the navigator did for it.
     pub goal_log: Vec<GoalRecord>,
@@ -218,7 +225,8 @@ pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<boo
     let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
     let o = world.bounds.min;
     for s in &world.statics.grid_segments {
-        let lo = |a: f64, b: f64, o: f64| ((a.min(b) - half_diag - o) / res).floor().max(0.0) as usize;
+        let lo =
+            |a: f64, b: f64, o: f64| ((a.min(b) - half_diag - o) / res).floor().max(0.0) as usize;
         let hi = |a: f64, b: f64, o: f64, n: usize| {
             (((a.max(b) + half_diag - o) / res).floor() + 1.0).clamp(0.0, n as f64) as usize
         };
@@ -547,8 +555,7 @@ pub fn explore_with(
             // The baseline without view points needs the whole costmap (reachability);
             // the RRT filter and the goal test ask about a few points (`built_cost`). The
             // map changes once per map period: build once per change.
-            if !rrt && !ex.view_points && cached.as_ref().is_none_or(|(at, _)| *at != map_version)
-            {
+            if !rrt && !ex.view_points && cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
                 cached = Some((map_version, costmaps.build(Some(&map), &[])));
             }
             let cost = |p: Point2| built_cost(&map, &inflation, p);
@@ -612,7 +619,10 @@ pub fn explore_with(
                 // The view points' reachability must be the planner's, which plans on the
                 // next control step: its costmap holds the remembered laser hits too,
                 // which can close a gap the map leaves open.
-                cached = Some((map_version, costmaps.build(Some(&map), &memory.points(tick))));
+                cached = Some((
+                    map_version,
+                    costmaps.build(Some(&map), &memory.points(tick)),
+                ));
             }
             if goal.is_none() {
                 let costmap = cached.as_ref().map(|(_, c)| c);

@@ -132,7 +132,8 @@ impl ViewPoints<'_> {
         order.sort_by_key(|&c| (self.steps[c], c));
         let mut best: Option<(f64, Point2, Point2)> = None;
         for c in order {
-            if best.is_some_and(|(bk, _, _)| f64::from(self.steps[c]) * res + self.min_range >= bk) {
+            if best.is_some_and(|(bk, _, _)| f64::from(self.steps[c]) * res + self.min_range >= bk)
+            {
                 break;
             }
             let p = self.centre(c % w, c / w);
