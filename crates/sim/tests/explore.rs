@@ -479,6 +479,14 @@ fn bad_input_names_the_field() {
         "exploration.filter_radius"
     );
     assert_eq!(
+        field_of(&base("view_points: true, view_range: 0.0", "")),
+        "exploration.view_range"
+    );
+    assert_eq!(
+        field_of(&base("view_max_cost: 101", "")),
+        "exploration.view_max_cost"
+    );
+    assert_eq!(
         field_of(&base(
             "region: [(2.0, 0.0), (6.0, 0.0), (6.0, 3.0), (2.0, 3.0)]",
             ""
