@@ -248,10 +248,9 @@ fn tb3_path() -> PathBuf {
 }
 
 /// On a map we did not draw (the public TurtleBot3 world: a 4 m hexagon with nine
-/// pillars), every detector ends by itself, without contact, at 99 % or more (seed 1;
-/// docs/papers/004-exploration.md, section 5.2, has seeds 0-2 and the causes where a seed
-/// falls short). Before view points the RRT detectors stopped at 93 % and the baseline at
-/// 96 % of the same reachable area.
+/// pillars), every detector ends by itself, without contact, at 99 % or more, seeds 0-2
+/// (docs/papers/004-exploration.md, section 5.2, has seeds 3-7 too, and the causes where a
+/// seed falls short). With the reference's goals 4 of these 12 runs reach 99 %.
 #[test]
 fn turtlebot3_world_is_explored_without_contact() {
     let path = tb3_path();
@@ -260,16 +259,18 @@ fn turtlebot3_world_is_explored_without_contact() {
         return;
     }
     let (scenario, world) = Scenario::load(&path).unwrap();
-    for strategy in Strategy::ALL {
-        let out = sim::explore(&scenario, &world, 1, strategy).unwrap();
-        assert!(out.finished, "{strategy:?} ended by the time limit");
-        assert_eq!(out.contact_ticks, 0, "{strategy:?}");
-        assert!(
-            out.final_coverage() >= 0.99,
-            "{strategy:?}: coverage {} (missed {} m^2)",
-            out.final_coverage(),
-            out.missed_area()
-        );
+    for seed in 0..=2 {
+        for strategy in Strategy::ALL {
+            let out = sim::explore(&scenario, &world, seed, strategy).unwrap();
+            assert!(out.finished, "{strategy:?} {seed}: ended by the time limit");
+            assert_eq!(out.contact_ticks, 0, "{strategy:?} {seed}");
+            assert!(
+                out.final_coverage() >= 0.99,
+                "{strategy:?} {seed}: coverage {} (missed {} m^2)",
+                out.final_coverage(),
+                out.missed_area()
+            );
+        }
     }
 }
 

@@ -20,7 +20,11 @@
 //! With `view_points` ([`crate::explore::viewpoint`]) the navigator's goal is a view point
 //! of the frontier: the filter's test and the blacklist apply to the frontier, the
 //! robot turns to face it on arrival, and the goal ends at the next map update after
-//! that (or earlier, when the frontier is seen on the way). Every goal's story is kept in
+//! that (or earlier, when the frontier is seen on the way); after a goal given up (no
+//! plan, or stuck) with less than 0.2 m driven, the next goal is a step into the open
+//! ([`crate::explore::ViewPoints::open_cell`]: the nearest reachable cell out of every
+//! obstacle's inflation, at least 0.5 m away), which is neither tested nor blacklisted.
+//! Every goal's story is kept in
 //! [`ExploreOutcome::goal_log`] (the `explore_why` example prints it).
 
 use hyplan_core::{Bounds, Point2};
@@ -451,6 +455,8 @@ pub fn explore_with(
     // With view points: the frontier the goal looks at, and the turn towards it there.
     let mut target: Option<Point2> = None;
     let mut look: Option<Look> = None;
+    // After a goal given up without moving: the next goal is a step into the open.
+    let mut recovering = false;
     let min_view = scenario.laser.range_min + scenario.laser.mount_offset.abs() + robot.body_radius;
     let half_fov = scenario.laser.fov_deg.to_radians() / 2.0;
     let look_tolerance = if half_fov >= std::f64::consts::PI {
@@ -589,6 +595,8 @@ pub fn explore_with(
                     Some(GoalEnd::GaveUp)
                 } else if tick - anchor.1 >= stuck_ticks {
                     Some(GoalEnd::Stuck)
+                } else if recovering {
+                    (state == NavState::Reached).then_some(GoalEnd::Reached)
                 } else if frontier_cost(f) > ex.costmap_threshold {
                     Some(GoalEnd::Cost)
                 } else if !still_good {
@@ -602,10 +610,17 @@ pub fn explore_with(
                     look = Some(Look::default());
                 }
                 if let Some(end) = end {
-                    if matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck) {
-                        failed.push(f);
+                    let pinned = matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck)
+                        && goal_log.last().is_some_and(|r| r.driven < 0.2);
+                    if recovering {
+                        recovering = false;
+                    } else {
+                        if matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck) {
+                            failed.push(f);
+                        }
+                        assigner.blacklist.push(f);
+                        recovering = pinned && ex.view_points;
                     }
-                    assigner.blacklist.push(f);
                     goal = None;
                     target = None;
                     look = None;
@@ -641,7 +656,9 @@ pub fn explore_with(
                     // such cells: one of them within the mean-shift bandwidth.
                     slack: if rrt { ex.bandwidth } else { 0.5 * res },
                 });
-                let next = match (rrt, views.filter(|_| ex.view_points)) {
+                let views = views.filter(|_| ex.view_points);
+                let next = match (rrt, views) {
+                    (_, Some(views)) if recovering => views.open_cell(here, 0.5).map(|v| (v, v)),
                     (true, None) => assigner.choose(here, &candidates, &map).map(|f| (f, f)),
                     (true, Some(views)) => assigner
                         .ranked(here, &candidates, &map)
@@ -671,7 +688,7 @@ pub fn explore_with(
                 }
                 if let Some((f, g)) = next {
                     goal = Some(g);
-                    target = ex.view_points.then_some(f);
+                    target = (ex.view_points && !recovering).then_some(f);
                     anchor = (here, tick);
                     nav.set_goal(g);
                     goals.push((t, g));

@@ -150,4 +150,18 @@ impl ViewPoints<'_> {
         }
         best.map(|(_, t, p)| (t, p))
     }
+
+    /// The usable cell fewest steps from the robot, at least `away` (m) from `robot`,
+    /// whose cost is zero (out of every obstacle's inflation): where a robot its
+    /// navigator could not move may step back into the open.
+    #[must_use]
+    pub fn open_cell(&self, robot: Point2, away: f64) -> Option<Point2> {
+        let w = self.costmap.map.width();
+        (0..self.steps.len())
+            .filter(|&c| self.usable(c) && self.costmap.costs[c] == 0)
+            .map(|c| (self.steps[c], c, self.centre(c % w, c / w)))
+            .filter(|(_, _, p)| (p - robot).norm() >= away)
+            .min_by_key(|&(s, c, _)| (s, c))
+            .map(|(_, _, p)| p)
+    }
 }
