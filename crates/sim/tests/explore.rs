@@ -7,8 +7,8 @@ use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use sim::explore::{
-    Assigner, Edge, LocalRrtDetector, Region, RegionError, edge_check, frontier_clusters,
-    information_gain, mean_shift, revenue,
+    Assigner, Edge, LocalRrtDetector, Region, RegionError, ViewPoints, edge_check,
+    frontier_clusters, information_gain, mean_shift, revenue, sees,
 };
 use sim::mapping::{FREE, OCCUPIED, UNKNOWN};
 use sim::{Mapping, OccupancyGrid, Scenario, ScenarioError, Strategy};
@@ -243,30 +243,179 @@ fn one_exploration_reaches_99_percent() {
     assert!(out.time_to(0.95).unwrap() <= out.time_to(0.99).unwrap());
 }
 
+fn tb3_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-tb3.ron")
+}
+
 /// On a map we did not draw (the public TurtleBot3 world: a 4 m hexagon with nine
-/// pillars), exploration ends by itself, without contact, but short of 99 %: the
-/// pillars' shadows are small frontiers that the reference's gain threshold (0.2 m^2)
-/// and the baseline's minimum cluster drop. The figures are in
-/// docs/papers/004-exploration.md, section 5.2; this guards them from getting worse.
+/// pillars), every detector ends by itself, without contact, at 99 % or more, seeds 0-2
+/// (docs/papers/004-exploration.md, section 5.2, has seeds 3-7 too, and the causes where a
+/// seed falls short). With the reference's goals 4 of these 12 runs reach 99 %.
 #[test]
 fn turtlebot3_world_is_explored_without_contact() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-tb3.ron");
+    let path = tb3_path();
     if !path.with_file_name("../../../shared/data").exists() {
         eprintln!("SKIPPED: ../shared/data is missing");
         return;
     }
     let (scenario, world) = Scenario::load(&path).unwrap();
-    for (strategy, at_least) in [(Strategy::Both, 0.92), (Strategy::Frontier, 0.95)] {
+    for seed in 0..=2 {
+        for strategy in Strategy::ALL {
+            let out = sim::explore(&scenario, &world, seed, strategy).unwrap();
+            assert!(out.finished, "{strategy:?} {seed}: ended by the time limit");
+            assert_eq!(out.contact_ticks, 0, "{strategy:?} {seed}");
+            assert!(
+                out.final_coverage() >= 0.99,
+                "{strategy:?} {seed}: coverage {} (missed {} m^2)",
+                out.final_coverage(),
+                out.missed_area()
+            );
+        }
+    }
+}
+
+/// A second map we did not draw, the MovingAI benchmark's `arena` at 0.2 m per cell: an
+/// RRT detector and the baseline end by themselves at 99 % or more (seed 1).
+#[test]
+fn movingai_arena_is_explored_without_contact() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-arena.ron");
+    if !path.with_file_name("../../../shared/data").exists() {
+        eprintln!("SKIPPED: ../shared/data is missing");
+        return;
+    }
+    let (scenario, world) = Scenario::load(&path).unwrap();
+    for strategy in [Strategy::Both, Strategy::Frontier] {
         let out = sim::explore(&scenario, &world, 1, strategy).unwrap();
         assert!(out.finished, "{strategy:?} ended by the time limit");
         assert_eq!(out.contact_ticks, 0, "{strategy:?}");
         assert!(
-            out.final_coverage() >= at_least,
-            "{strategy:?}: coverage {} (missed {} m^2)",
-            out.final_coverage(),
-            out.missed_area()
+            out.final_coverage() >= 0.99,
+            "{strategy:?}: coverage {}",
+            out.final_coverage()
         );
     }
+}
+
+/// The coverage's truth for a loaded map: no reachable cell shares an edge or a corner
+/// with a forbidden pixel (the rule for shapes: a cell whose centre lies within half a
+/// diagonal of an obstacle's outline is not free), and the cells that rule removes are
+/// the band in front of the walls, not the room.
+#[test]
+fn reachable_free_of_a_loaded_map_leaves_out_cells_touching_a_wall() {
+    let path = tb3_path();
+    if !path.with_file_name("../../../shared/data").exists() {
+        eprintln!("SKIPPED: ../shared/data is missing");
+        return;
+    }
+    let (scenario, world) = Scenario::load(&path).unwrap();
+    let res = scenario.mapping.resolution;
+    let (w, reach) =
+        sim::explore::reachable_free(&world, res, Point2::new(scenario.start.0, scenario.start.1));
+    let grid = world.statics.grid.as_ref().unwrap();
+    let o = world.bounds.min;
+    let forbidden = |i: i64, j: i64| {
+        let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+        grid.world_to_cell(c)
+            .is_some_and(|(a, b)| grid.cell_zone(a, b) == hyplan_core::Zone::Forbidden)
+    };
+    let mut count = 0;
+    for (k, _) in reach.iter().enumerate().filter(|(_, r)| **r) {
+        count += 1;
+        let (i, j) = ((k % w) as i64, (k / w) as i64);
+        for dj in -1..=1 {
+            for di in -1..=1 {
+                assert!(!forbidden(i + di, j + dj), "cell ({i}, {j}) touches a wall");
+            }
+        }
+    }
+    // The hexagon's free area (about 20 m^2) less a band one cell wide along its walls
+    // and round nine pillars: between 16 and 20 m^2.
+    let area = count as f64 * res * res;
+    assert!((16.0..20.0).contains(&area), "{area} m^2");
+}
+
+/// A view point sees its target past an obstacle: a pillar hides an unknown patch from the
+/// robot, the view point is a reachable cell, clear of the pillar, within range, from
+/// which the line to the target crosses only free cells.
+#[test]
+fn view_point_sees_past_a_pillar() {
+    // A 4 m x 2 m room, all free but an unknown patch behind a pillar.
+    let bounds = Bounds::new(p(0.0, 0.0), p(4.0, 2.0));
+    let mut g = OccupancyGrid::new(bounds, Mapping::default());
+    for j in 0..g.height() {
+        for i in 0..g.width() {
+            g.set_value(i, j, FREE);
+        }
+    }
+    // Pillar: x 1.8-2.2, y 0.8-1.2; the unknown patch: x 2.2-2.6, y 0.9-1.1.
+    for j in 16..24 {
+        for i in 36..44 {
+            g.set_value(i, j, OCCUPIED);
+        }
+    }
+    for j in 18..22 {
+        for i in 44..52 {
+            g.set_value(i, j, UNKNOWN);
+        }
+    }
+    let target = p(2.475, 1.025);
+    let robot = p(0.5, 1.0);
+    // Hidden from the robot: the pillar stands between.
+    assert!(!sees(&g, robot, target, 0.3));
+    let builder = sim::CostmapBuilder::new(
+        bounds,
+        &sim::world::StaticWorld::default(),
+        sim::CostmapParams::default(),
+        0.178,
+    );
+    let costmap = builder.build(Some(&g), &[]);
+    let views = ViewPoints {
+        costmap: &costmap,
+        steps: &sim::explore::frontier::costmap_steps(&costmap, robot),
+        max_cost: 20,
+        range: 2.5,
+        min_range: 0.4,
+        slack: 0.3,
+    };
+    let (travel, v) = views.best(&g, target).expect("a view point");
+    assert!(sees(&g, v, target, 0.3), "{v:?}");
+    let d = (v - target).norm();
+    assert!((0.4..=2.5).contains(&d), "{d}");
+    // The travel is the steps to the view point (8-connected steps of one cell: at least
+    // its straight distance over sqrt 2, less a cell for the cell centres) plus the line
+    // on to the target.
+    let straight = (v - robot).norm();
+    assert!(
+        travel >= straight / std::f64::consts::SQRT_2 - 0.15 + d && travel <= 2.0 * straight + d,
+        "{travel}"
+    );
+    // The baseline's search finds the same target among others it cannot see: an unknown
+    // cell walled in by occupied ones.
+    for j in 4..=8 {
+        for i in 70..=74 {
+            let ring = i == 70 || i == 74 || j == 4 || j == 8;
+            g.set_value(i, j, if ring { OCCUPIED } else { UNKNOWN });
+        }
+    }
+    let hidden = p(3.6, 0.3);
+    let costmap = builder.build(Some(&g), &[]);
+    let views = ViewPoints {
+        costmap: &costmap,
+        steps: &sim::explore::frontier::costmap_steps(&costmap, robot),
+        ..views
+    };
+    assert_eq!(
+        views
+            .nearest(&g, &[hidden, target], |_| false)
+            .map(|(t, _)| t),
+        Some(target)
+    );
+    // A point inside the pillar: the pillar's face hides it from the robot's side; from
+    // the other side the first unknown cell met is the patch's far end, 0.58 m from it,
+    // beyond the slack.
+    let inside = p(2.0, 1.0);
+    assert!(!sees(&g, robot, inside, 0.3));
+    assert!(!sees(&g, p(3.5, 1.0), inside, 0.3));
 }
 
 #[test]
@@ -329,6 +478,14 @@ fn bad_input_names_the_field() {
     assert_eq!(
         field_of(&base("filter_radius: -0.5", "")),
         "exploration.filter_radius"
+    );
+    assert_eq!(
+        field_of(&base("view_points: true, view_range: 0.0", "")),
+        "exploration.view_range"
+    );
+    assert_eq!(
+        field_of(&base("view_max_cost: 101", "")),
+        "exploration.view_max_cost"
     );
     assert_eq!(
         field_of(&base(

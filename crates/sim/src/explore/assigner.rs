@@ -65,23 +65,29 @@ impl Assigner {
         frontiers: &[Point2],
         map: &OccupancyGrid,
     ) -> Option<Point2> {
-        let mut best: Option<(f64, Point2)> = None;
-        for &f in frontiers {
-            if self.blacklisted(f) {
-                continue;
-            }
-            let gain = information_gain(map, f, self.info_radius);
-            let r = revenue(
-                gain,
-                (f - robot).norm(),
-                self.info_multiplier,
-                self.hysteresis_radius,
-                self.hysteresis_gain,
-            );
-            if best.is_none_or(|(b, _)| r > b) {
-                best = Some((r, f));
-            }
-        }
-        best.map(|(_, f)| f)
+        self.ranked(robot, frontiers, map).first().copied()
+    }
+
+    /// The frontiers not blacklisted, best revenue first (ties in the given order).
+    #[must_use]
+    pub fn ranked(&self, robot: Point2, frontiers: &[Point2], map: &OccupancyGrid) -> Vec<Point2> {
+        let mut scored: Vec<(f64, Point2)> = frontiers
+            .iter()
+            .filter(|&&f| !self.blacklisted(f))
+            .map(|&f| {
+                let gain = information_gain(map, f, self.info_radius);
+                let r = revenue(
+                    gain,
+                    (f - robot).norm(),
+                    self.info_multiplier,
+                    self.hysteresis_radius,
+                    self.hysteresis_gain,
+                );
+                (r, f)
+            })
+            .collect();
+        // Stable: equal revenues keep the filter's order, as the reference's first-max.
+        scored.sort_by(|a, b| b.0.total_cmp(&a.0));
+        scored.into_iter().map(|(_, f)| f).collect()
     }
 }

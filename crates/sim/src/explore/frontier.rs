@@ -86,7 +86,9 @@ pub fn frontier_clusters(map: &OccupancyGrid) -> Vec<Vec<(usize, usize)>> {
 }
 
 /// Breadth-first steps from `from` over the costmap cells below the inscribed cost
-/// (`u32::MAX` where unreachable); the start cell is always entered.
+/// (`u32::MAX` where unreachable); the start cell is always entered, or, when it is at
+/// the inscribed cost or above, the nearest cell below it within 5 cells (the planner's
+/// rule).
 #[must_use]
 pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
     let (w, h) = (costmap.map.width(), costmap.map.height());
@@ -98,7 +100,39 @@ pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
     if !(u >= 0.0 && v >= 0.0 && (u as usize) < w && (v as usize) < h) {
         return dist;
     }
-    let start = v as usize * w + u as usize;
+    let (u, v) = (u as usize, v as usize);
+    let passable = |i: usize, j: usize| costmap.costs[j * w + i] < INSCRIBED_INFLATED_OBSTACLE;
+    // As the planner does: a robot on an inscribed cell (its centre a little too near an
+    // obstacle on the coarse costmap) starts from the nearest passable cell within 5
+    // cells, else every cell would look unreachable.
+    let mut start = v * w + u;
+    if !passable(u, v) {
+        let ring = (1..=5i64).find_map(|r| {
+            let mut best: Option<(i64, usize)> = None;
+            for dj in -r..=r {
+                for di in -r..=r {
+                    let (i, j) = (u as i64 + di, v as i64 + dj);
+                    if di.abs().max(dj.abs()) != r
+                        || i < 0
+                        || j < 0
+                        || i as usize >= w
+                        || j as usize >= h
+                        || !passable(i as usize, j as usize)
+                    {
+                        continue;
+                    }
+                    let d = di * di + dj * dj;
+                    if best.is_none_or(|b| d < b.0) {
+                        best = Some((d, j as usize * w + i as usize));
+                    }
+                }
+            }
+            best.map(|(_, c)| c)
+        });
+        if let Some(c) = ring {
+            start = c;
+        }
+    }
     dist[start] = 0;
     // Breadth-first distances do not depend on the order neighbours are visited in: a
     // plain vector is the queue, and cells off the border skip the bounds tests.

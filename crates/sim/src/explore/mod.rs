@@ -18,6 +18,7 @@
 //! - [`explore()`]: the exploration loop, [`Exploration`] (parameters), [`Strategy`],
 //!   [`ExploreOutcome`], [`Coverage`].
 //! - [`figure`]: the map with track, trees and frontiers as SVG.
+//! - [`viewpoint`]: [`ViewPoints`], [`sees`]: where to stand to see a frontier.
 //! - [`selfmap`]: [`explore_then_navigate`]: a navigation scenario on the map the robot
 //!   built itself.
 //!
@@ -34,6 +35,7 @@ pub mod frontier;
 mod params;
 mod run;
 pub mod selfmap;
+pub mod viewpoint;
 
 pub use assigner::{Assigner, revenue};
 pub use detector::{Edge, GlobalRrtDetector, LocalRrtDetector, Region, RegionError, edge_check};
@@ -41,7 +43,8 @@ pub use filter::{Filter, information_gain, mean_shift};
 pub use frontier::{frontier_cells, frontier_clusters, nearest_frontier};
 pub use params::{Exploration, Strategy};
 pub use run::{
-    Coverage, ExploreOutcome, GLOBAL_STREAM, LOCAL_STREAM, Snapshot, explore, explore_with,
-    reachable_free, region_of,
+    Coverage, ExploreOutcome, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM, Snapshot, explore,
+    explore_with, reachable_free, region_of,
 };
 pub use selfmap::{SelfMapped, explore_then_navigate};
+pub use viewpoint::{ViewPoints, sees};

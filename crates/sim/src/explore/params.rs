@@ -86,6 +86,20 @@ pub struct Exploration {
     /// rescue; our navigator can stand still in `Following` when the controller finds no
     /// command, see the docs page).
     pub stuck_after: f64,
+    /// Send the robot to a view point of the frontier (a reachable cell clear of
+    /// obstacles within `view_range` that sees it on the built map) rather than onto the
+    /// frontier, turn it to face the frontier there, and drop a frontier for its cost
+    /// only when it lies on an occupied cell (default false: the reference sends the
+    /// robot onto the frontier point and drops frontiers near obstacles; see
+    /// [`crate::explore::viewpoint`]). Both the RRT assigner and the baseline use it.
+    pub view_points: bool,
+    /// Greatest distance from a view point to its frontier, m (ours, 2.5: within the
+    /// mapping range, so that the cells behind the frontier are mapped from there too).
+    pub view_range: f64,
+    /// Costmap value (0-100) above which a cell is no view point (ours, 20: about 0.5 m
+    /// from the nearest obstacle cell, the costmap's preferred clearance, so that the
+    /// robot does not stop in a gap its inflation nearly closes).
+    pub view_max_cost: i8,
     /// Baseline: frontier clusters of fewer cells are ignored (ours, 5 cells = 0.25 m).
     pub min_frontier_cells: usize,
     /// Turn a full circle on the spot before exploring (ours, true): a laser narrower
@@ -117,6 +131,9 @@ impl Default for Exploration {
             hysteresis_gain: 2.0,
             cycle: 0.5,
             blacklist_radius: 0.5,
+            view_points: false,
+            view_range: 2.5,
+            view_max_cost: 20,
             finish_after: 10.0,
             stuck_after: 15.0,
             min_frontier_cells: 5,
@@ -147,6 +164,7 @@ impl Exploration {
             ("hysteresis_radius", self.hysteresis_radius),
             ("cycle", self.cycle),
             ("blacklist_radius", self.blacklist_radius),
+            ("view_range", self.view_range),
             ("finish_after", self.finish_after),
             ("stuck_after", self.stuck_after),
         ] {
@@ -163,12 +181,13 @@ impl Exploration {
                 return bad(f, v.to_string(), "must be finite and >= 0");
             }
         }
-        if !(0..=100).contains(&self.costmap_threshold) {
-            return bad(
-                "costmap_threshold",
-                self.costmap_threshold.to_string(),
-                "must be in 0..=100",
-            );
+        for (f, v) in [
+            ("costmap_threshold", self.costmap_threshold),
+            ("view_max_cost", self.view_max_cost),
+        ] {
+            if !(0..=100).contains(&v) {
+                return bad(f, v.to_string(), "must be in 0..=100");
+            }
         }
         if let Some(t) = self
             .snapshots

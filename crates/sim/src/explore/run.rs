@@ -16,6 +16,16 @@
 //! fell below `min_gain`), where the reference keeps driving to it; goals the navigator
 //! reached or gave up on are blacklisted; exploration ends after `finish_after` seconds
 //! without any frontier and without a goal.
+//!
+//! With `view_points` ([`crate::explore::viewpoint`]) the navigator's goal is a view point
+//! of the frontier: the filter's test and the blacklist apply to the frontier, the
+//! robot turns to face it on arrival, and the goal ends at the next map update after
+//! that (or earlier, when the frontier is seen on the way); after a goal given up (no
+//! plan, or stuck) with less than 0.2 m driven, the next goal is a step into the open
+//! ([`crate::explore::ViewPoints::open_cell`]: the nearest reachable cell out of every
+//! obstacle's inflation, at least 0.5 m away), which is neither tested nor blacklisted.
+//! Every goal's story is kept in
+//! [`ExploreOutcome::goal_log`] (the `explore_why` example prints it).
 
 use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
@@ -25,12 +35,13 @@ use crate::costmap::rasterize;
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
 use crate::explore::filter::{Filter, built_cost, information_gain};
-use crate::explore::frontier::nearest_frontier;
+use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
 use crate::explore::params::Strategy;
+use crate::explore::viewpoint::ViewPoints;
 use crate::kinematics::{self, Pose, Twist};
 use crate::laser::LaserModel;
-use crate::mapping::OccupancyGrid;
-use crate::navigator::{NavState, Navigator};
+use crate::mapping::{OccupancyGrid, UNKNOWN};
+use crate::navigator::{NavEvent, NavState, Navigator};
 use crate::planner::GlobalPlanner;
 use crate::run::{NOISE_STREAM, PLANNER_STREAM, TICKS_PER_SECOND};
 use crate::scenario::Scenario;
@@ -73,6 +84,47 @@ pub struct Snapshot {
     pub map: OccupancyGrid,
 }
 
+/// Why a goal stopped being the goal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum GoalEnd {
+    /// The navigator reached it.
+    Reached,
+    /// The navigator gave up (no plan, or blocked again, `max_failures` times in a row).
+    GaveUp,
+    /// The robot did not move 0.2 m for `stuck_after` seconds.
+    Stuck,
+    /// The filter's costmap test failed on it (an obstacle came near).
+    Cost,
+    /// The filter's gain test failed on it (its unknown area was seen).
+    Gain,
+    /// Still the goal when the run ended.
+    Open,
+}
+
+/// One goal's story, for the diagnosis of what an exploration left unknown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GoalRecord {
+    /// When it was sent, s.
+    pub t: f64,
+    /// The goal sent to the navigator.
+    pub goal: Point2,
+    /// The frontier it was chosen for (the goal itself without view points); blacklisted
+    /// when the goal ends, whatever the reason.
+    pub target: Point2,
+    /// When it stopped being the goal, s.
+    pub ended: f64,
+    /// Why.
+    pub end: GoalEnd,
+    /// Plans the navigator made for it (first plan and re-plans).
+    pub plans: u32,
+    /// Planning failures (no path, or blocked again at once).
+    pub failures: u32,
+    /// Stops for a blocked path.
+    pub stops: u32,
+    /// Distance driven while it was the goal, m.
+    pub driven: f64,
+}
+
 /// Everything an exploration produced.
 #[derive(Debug, Clone)]
 pub struct ExploreOutcome {
@@ -88,8 +140,11 @@ pub struct ExploreOutcome {
     pub track: Vec<(f64, Pose)>,
     /// Goals sent to the navigator, with the time.
     pub goals: Vec<(f64, Point2)>,
-    /// Goals the navigator gave up on.
+    /// The frontiers of the goals the navigator gave up on (no plan, or stuck): the goals
+    /// themselves without view points.
     pub blacklisted: Vec<Point2>,
+    /// Every goal, in order: when and why it ended, what the navigator did for it.
+    pub goal_log: Vec<GoalRecord>,
     /// Frontier points the detectors published.
     pub published: usize,
     /// Snapshots at the scenario's chosen times (and one at the end).
@@ -159,9 +214,37 @@ impl ExploreOutcome {
 
 /// The cells of a `res` grid over `bounds` that are free in the true world (no obstacle
 /// reaches into them) and 4-connected to `start`'s cell: (columns, mask).
+///
+/// "Reaches into" is [`rasterize`]'s rule for shapes, a cell whose centre lies within half
+/// a cell diagonal of an obstacle's outline, applied to a loaded map's obstacle outline
+/// too (the boundaries of its forbidden pixels): so a free pixel that shares an edge or a
+/// corner with a forbidden one is not counted, as a cell a wall's face runs along is not
+/// counted in a world of shapes. Without it, a map aligned with the mapping grid counts
+/// the row of cells in front of every wall, which the laser's hits on the wall's face
+/// mark occupied (a hit on a cell boundary falls on either side with the range noise, and
+/// on the near side when the beam travels towards -x or -y).
 #[must_use]
 pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<bool>) {
-    let (w, h, occupied) = rasterize(world.bounds, &world.statics, res);
+    let (w, h, mut occupied) = rasterize(world.bounds, &world.statics, res);
+    let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
+    let o = world.bounds.min;
+    for s in &world.statics.grid_segments {
+        let lo =
+            |a: f64, b: f64, o: f64| ((a.min(b) - half_diag - o) / res).floor().max(0.0) as usize;
+        let hi = |a: f64, b: f64, o: f64, n: usize| {
+            (((a.max(b) + half_diag - o) / res).floor() + 1.0).clamp(0.0, n as f64) as usize
+        };
+        for j in lo(s.a.y, s.b.y, o.y)..hi(s.a.y, s.b.y, o.y, h) {
+            for i in lo(s.a.x, s.b.x, o.x)..hi(s.a.x, s.b.x, o.x, w) {
+                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                // The margin keeps a cell that only touches a corner on the same side
+                // of the rule whatever the rounding.
+                if (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag + 1e-9 {
+                    occupied[j * w + i] = true;
+                }
+            }
+        }
+    }
     let mut reach = vec![false; w * h];
     let u = ((start.x - world.bounds.min.x) / res).floor();
     let v = ((start.y - world.bounds.min.y) / res).floor();
@@ -196,6 +279,43 @@ pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<boo
         }
     }
     (w, reach)
+}
+
+/// The centres of the unknown 4-neighbours of `frontier` cells, each once, in order:
+/// what the baseline wants to see.
+fn unknown_beside(
+    map: &OccupancyGrid,
+    frontier: impl Iterator<Item = (usize, usize)>,
+) -> Vec<Point2> {
+    let (w, h) = (map.width(), map.height());
+    let res = map.params.resolution;
+    let o = map.origin();
+    let mut seen = std::collections::HashSet::new();
+    let mut out = Vec::new();
+    for (i, j) in frontier {
+        for (a, b) in [
+            (i + 1, j),
+            (i.wrapping_sub(1), j),
+            (i, j + 1),
+            (i, j.wrapping_sub(1)),
+        ] {
+            if a < w && b < h && map.value(a, b) == UNKNOWN && seen.insert((a, b)) {
+                out.push(Point2::new(
+                    o.x + (a as f64 + 0.5) * res,
+                    o.y + (b as f64 + 0.5) * res,
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// The turn at a view point: whether the frontier is in view, and the map version when
+/// the robot stood still facing it (the look is over at the next map update).
+#[derive(Debug, Clone, Copy, Default)]
+struct Look {
+    aligned: bool,
+    settled: Option<u64>,
 }
 
 fn stream(seed: u64, s: u64) -> ChaCha8Rng {
@@ -325,12 +445,25 @@ pub fn explore_with(
     let mut track = Vec::new();
     let mut goals = Vec::new();
     let mut failed = Vec::new();
+    let mut goal_log: Vec<GoalRecord> = Vec::new();
     let mut snapshots = Vec::new();
     let mut frames = Vec::new();
     let frame_every = ex
         .frame_period
         .map(|f| ((f * TICKS_PER_SECOND as f64).round() as u64).max(1));
     let mut goal: Option<Point2> = None;
+    // With view points: the frontier the goal looks at, and the turn towards it there.
+    let mut target: Option<Point2> = None;
+    let mut look: Option<Look> = None;
+    // After a goal given up without moving: the next goal is a step into the open.
+    let mut recovering = false;
+    let min_view = scenario.laser.range_min + scenario.laser.mount_offset.abs() + robot.body_radius;
+    let half_fov = scenario.laser.fov_deg.to_radians() / 2.0;
+    let look_tolerance = if half_fov >= std::f64::consts::PI {
+        std::f64::consts::PI
+    } else {
+        (half_fov - 20f64.to_radians()).max(5f64.to_radians())
+    };
     let mut candidates: Vec<Point2> = Vec::new();
     let mut idle_since: Option<u64> = None;
     let mut map_version = 0u64;
@@ -426,49 +559,153 @@ pub fn explore_with(
         }
         if tick % cycle_every == 0 && turned.is_none() {
             let cost = |p: Point2| built_cost(&map, &inflation, p);
+            // With view points the robot never stands on a frontier: only a frontier on
+            // an occupied cell is dropped for its cost (see the module doc).
+            let frontier_cost = |p: Point2| {
+                if !ex.view_points {
+                    cost(p)
+                } else if map.occupied_at(p) {
+                    100
+                } else {
+                    0
+                }
+            };
             if rrt {
                 all_published.extend_from_slice(&published);
-                candidates = filter.update(&published, &map, cost).to_vec();
+                candidates = filter.update(&published, &map, frontier_cost).to_vec();
                 published.clear();
             }
             if let Some(g) = goal {
                 let state = nav.state();
-                let still_good = cost(g) <= ex.costmap_threshold
-                    && information_gain(&map, g, ex.filter_radius) >= ex.min_gain;
-                if (here - anchor.0).norm() >= 0.2 {
+                // The frontier sought: the goal itself, or the target of its view point.
+                let f = target.unwrap_or(g);
+                let still_good = frontier_cost(f) <= ex.costmap_threshold
+                    && information_gain(&map, f, ex.filter_radius) >= ex.min_gain;
+                if (here - anchor.0).norm() >= 0.2 || look.is_some() {
                     anchor = (here, tick);
                 }
-                if state == NavState::Failed || tick - anchor.1 >= stuck_ticks {
-                    failed.push(g);
-                    assigner.blacklist.push(g);
+                let looked = look.is_some_and(|l| l.settled.is_some_and(|v| map_version > v));
+                let end = if state == NavState::Failed {
+                    Some(GoalEnd::GaveUp)
+                } else if tick - anchor.1 >= stuck_ticks {
+                    Some(GoalEnd::Stuck)
+                } else if recovering {
+                    (state == NavState::Reached).then_some(GoalEnd::Reached)
+                } else if frontier_cost(f) > ex.costmap_threshold {
+                    Some(GoalEnd::Cost)
+                } else if !still_good {
+                    Some(GoalEnd::Gain)
+                } else if state == NavState::Reached && (target.is_none() || looked) {
+                    Some(GoalEnd::Reached)
+                } else {
+                    None
+                };
+                if state == NavState::Reached && target.is_some() && look.is_none() {
+                    look = Some(Look::default());
+                }
+                if let Some(end) = end {
+                    let pinned = matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck)
+                        && goal_log.last().is_some_and(|r| r.driven < 0.2);
+                    if recovering {
+                        recovering = false;
+                    } else {
+                        if matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck) {
+                            failed.push(f);
+                        }
+                        assigner.blacklist.push(f);
+                        recovering = pinned && ex.view_points;
+                    }
                     goal = None;
-                } else if state == NavState::Reached || !still_good {
-                    assigner.blacklist.push(g);
-                    goal = None;
+                    target = None;
+                    look = None;
+                    if let Some(r) = goal_log.last_mut() {
+                        r.ended = t;
+                        r.end = end;
+                    }
                 }
             }
+            if goal.is_none() && ex.view_points {
+                // The view points' reachability must be the planner's, which plans on the
+                // next control step: its costmap holds the remembered laser hits too,
+                // which can close a gap the map leaves open.
+                cached = Some((
+                    map_version,
+                    costmaps.build(Some(&map), &memory.points(tick)),
+                ));
+            }
             if goal.is_none() {
-                goal = if rrt {
-                    assigner.choose(here, &candidates, &map)
-                } else {
-                    // The baseline needs the whole costmap (its reachability); the RRT
-                    // filter and the goal test ask about a few points (`built_cost`). Built
-                    // only when a goal is chosen, and once per map change.
-                    if cached.as_ref().is_none_or(|(at, _)| *at != map_version) {
-                        cached = Some((map_version, costmaps.build(Some(&map), &[])));
-                    }
-                    let next = cached.as_ref().and_then(|(_, costmap)| {
-                        nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
-                            assigner.blacklisted(p)
-                        })
-                    });
-                    candidates = next.into_iter().collect();
-                    next
+                // The baseline without view points needs the whole costmap (reachability);
+                // the RRT filter and the goal test ask about a few points (`built_cost`).
+                // Built only when a goal is chosen, and once per map change.
+                if !rrt
+                    && !ex.view_points
+                    && cached.as_ref().is_none_or(|(at, _)| *at != map_version)
+                {
+                    cached = Some((map_version, costmaps.build(Some(&map), &[])));
+                }
+                let costmap = cached.as_ref().map(|(_, c)| c);
+                let steps = match costmap {
+                    Some(c) if ex.view_points => costmap_steps(c, here),
+                    _ => Vec::new(),
                 };
-                if let Some(g) = goal {
+                let views = costmap.map(|costmap| ViewPoints {
+                    costmap,
+                    steps: &steps,
+                    max_cost: ex.view_max_cost,
+                    range: ex.view_range,
+                    min_range: min_view,
+                    // A baseline target is an unknown cell's centre: that cell must be
+                    // the first one not free. An RRT target is a cluster's centre of
+                    // such cells: one of them within the mean-shift bandwidth.
+                    slack: if rrt { ex.bandwidth } else { 0.5 * res },
+                });
+                let views = views.filter(|_| ex.view_points);
+                let next = match (rrt, views) {
+                    (_, Some(views)) if recovering => views.open_cell(here, 0.5).map(|v| (v, v)),
+                    (true, None) => assigner.choose(here, &candidates, &map).map(|f| (f, f)),
+                    (true, Some(views)) => assigner
+                        .ranked(here, &candidates, &map)
+                        .into_iter()
+                        .find_map(|f| views.best(&map, f).map(|(_, v)| (f, v))),
+                    (false, None) => {
+                        let next = costmap.and_then(|costmap| {
+                            nearest_frontier(&map, costmap, here, ex.min_frontier_cells, |p| {
+                                assigner.blacklisted(p)
+                            })
+                        });
+                        next.map(|f| (f, f))
+                    }
+                    (false, Some(views)) => {
+                        let cells = unknown_beside(
+                            &map,
+                            frontier_clusters(&map)
+                                .into_iter()
+                                .filter(|c| c.len() >= ex.min_frontier_cells)
+                                .flatten(),
+                        );
+                        views.nearest(&map, &cells, |p| assigner.blacklisted(p))
+                    }
+                };
+                if !rrt {
+                    candidates = next.map(|(f, _)| f).into_iter().collect();
+                }
+                if let Some((f, g)) = next {
+                    goal = Some(g);
+                    target = (ex.view_points && !recovering).then_some(f);
                     anchor = (here, tick);
                     nav.set_goal(g);
                     goals.push((t, g));
+                    goal_log.push(GoalRecord {
+                        t,
+                        goal: g,
+                        target: f,
+                        ended: t,
+                        end: GoalEnd::Open,
+                        plans: 0,
+                        failures: 0,
+                        stops: 0,
+                        driven: 0.0,
+                    });
                 }
             }
             if goal.is_none() {
@@ -515,6 +752,27 @@ pub fn explore_with(
                     turned = None;
                 }
             }
+        } else if let (Some(f), Some(l)) = (target, look.as_mut()) {
+            if tick % control_every == 0 {
+                // At the view point: turn until the frontier is well inside the laser's
+                // field of view, stop, and let one more map update happen.
+                let (o, h) = laser.origin(&pose);
+                let err = kinematics::wrap_angle((f.y - o.y).atan2(f.x - o.x) - h);
+                let want = if !l.aligned && err.abs() > look_tolerance {
+                    Twist {
+                        v: 0.0,
+                        omega: scenario.controller.rotate_speed.copysign(err),
+                    }
+                } else {
+                    l.aligned = true;
+                    Twist::default()
+                };
+                twist = nav.controller.limit(&robot, twist, want);
+                if l.aligned && twist == Twist::default() && l.settled.is_none() {
+                    l.settled = Some(map_version);
+                }
+                track.push((t, pose));
+            }
         } else if tick % control_every == 0 {
             nav_events.clear();
             twist = nav.step(
@@ -527,16 +785,33 @@ pub fn explore_with(
                 TICKS_PER_SECOND as f64,
                 &mut nav_events,
             );
+            if let Some(r) = goal_log.last_mut().filter(|r| r.end == GoalEnd::Open) {
+                for e in &nav_events {
+                    match e {
+                        NavEvent::Plan | NavEvent::Replan => r.plans += 1,
+                        NavEvent::Failure => r.failures += 1,
+                        NavEvent::Stop => r.stops += 1,
+                        NavEvent::GoalReached | NavEvent::GaveUp => {}
+                    }
+                }
+            }
             track.push((t, pose));
         }
         let next = kinematics::integrate(pose, twist, dt);
         if let Some(a) = turned.as_mut() {
             *a += kinematics::wrap_angle(next.phi - pose.phi).abs();
         }
-        distance += ((next.x - pose.x).powi(2) + (next.y - pose.y).powi(2)).sqrt();
+        let step = ((next.x - pose.x).powi(2) + (next.y - pose.y).powi(2)).sqrt();
+        distance += step;
+        if let Some(r) = goal_log.last_mut().filter(|r| r.end == GoalEnd::Open) {
+            r.driven += step;
+        }
         pose = next;
     }
     let end_time = end_tick as f64 * dt;
+    if let Some(r) = goal_log.last_mut().filter(|r| r.end == GoalEnd::Open) {
+        r.ended = end_time;
+    }
     if coverage.last().is_none_or(|c: &Coverage| c.t < end_time) {
         coverage.push(sample(free_count, end_time));
     }
@@ -559,6 +834,7 @@ pub fn explore_with(
         track,
         goals,
         blacklisted: failed,
+        goal_log,
         published: all_published.len(),
         snapshots,
         map,

@@ -1,0 +1,287 @@
+//! What an exploration left unknown, and why: `cargo run --release -p sim --example
+//! explore_why -- SCENARIO.ron [local|global|both|frontier] [SEED] [--map]`.
+//!
+//! Prints every goal (when, why it ended, what the navigator did for it), then each
+//! patch of reachable free space (8-connected) not known free at the end: its size, where
+//! it is, how much of it is unknown or wrongly occupied, and what stood between it and
+//! the robot: the frontier cells bordering it (how many, their best filter gain, their
+//! built-map cost), the distance from the patch to the nearest cell the robot's centre
+//! may reach (breadth-first on the final costmap from the final pose), and the final
+//! filter frontiers and blacklisted goals near it. `--map` draws the final map around the
+//! reachable space (`#` occupied, `.` free, ` ` unknown, `?` reachable but unknown, `!`
+//! reachable but occupied, `o` robot, `g` goals, `x` given up).
+
+use hyplan_core::Point2;
+use sim::explore::frontier::costmap_steps;
+use sim::explore::{information_gain, reachable_free};
+use sim::mapping::{FREE, OCCUPIED};
+use sim::{CostmapBuilder, Scenario, Strategy};
+
+#[allow(clippy::too_many_lines)]
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let path = std::path::PathBuf::from(
+        args.get(1)
+            .ok_or("usage: SCENARIO.ron [strategy] [seed] [--map]")?,
+    );
+    let (scenario, world) = Scenario::load(&path)?;
+    let strategy = args
+        .get(2)
+        .map_or(Some(Strategy::Both), |s| Strategy::parse(s))
+        .ok_or("strategy: local, global, both or frontier")?;
+    let seed: u64 = args.get(3).map_or(Ok(1), |s| s.parse())?;
+    let draw = args.iter().any(|a| a == "--map");
+    let out = sim::explore(&scenario, &world, seed, strategy)?;
+    println!(
+        "{} seed {seed}: end {:.1} s (finished {}), coverage {:.4}, t95 {:?}, t99 {:?}, missed {:.3} m2, driven {:.1} m, contacts {}",
+        strategy.name(),
+        out.end_time,
+        out.finished,
+        out.final_coverage(),
+        out.time_to(0.95),
+        out.time_to(0.99),
+        out.missed_area(),
+        out.distance,
+        out.contact_ticks,
+    );
+    println!("goals:");
+    for g in &out.goal_log {
+        println!(
+            "  {:6.1}-{:6.1} s ({:6.3}, {:6.3}) for ({:6.3}, {:6.3}) {:?}: plans {} failures {} stops {} driven {:.2} m",
+            g.t,
+            g.ended,
+            g.goal.x,
+            g.goal.y,
+            g.target.x,
+            g.target.y,
+            g.end,
+            g.plans,
+            g.failures,
+            g.stops,
+            g.driven
+        );
+    }
+    let map = &out.map;
+    let res = map.params.resolution;
+    let o = map.origin();
+    let (w, h) = (map.width(), map.height());
+    let centre = |i: usize, j: usize| {
+        Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res)
+    };
+    let start = Point2::new(scenario.start.0, scenario.start.1);
+    let (_, reach) = reachable_free(&world, res, start);
+    let missing = |c: usize| reach[c] && map.value(c % w, c / w) != FREE;
+    let last = out.snapshots.last().ok_or("no snapshot")?;
+    let costmaps = CostmapBuilder::new(
+        world.bounds,
+        &world.mapped,
+        scenario.costmap,
+        scenario.robot.body_radius,
+    );
+    let costmap = costmaps.build(Some(map), &[]);
+    let here = Point2::new(last.pose.x, last.pose.y);
+    let steps = costmap_steps(&costmap, here);
+    let cb = costmap.map.bounds();
+    let cres = costmap.map.resolution();
+    let cw = costmap.map.width();
+    let steps_at = |p: Point2| {
+        let u = ((p.x - cb.min.x) / cres) as usize;
+        let v = ((p.y - cb.min.y) / cres) as usize;
+        steps.get(v * cw + u).copied().unwrap_or(u32::MAX)
+    };
+    let inflation = costmaps.inflation();
+    let reachable_cells = steps.iter().filter(|&&s| s != u32::MAX).count();
+    let views = sim::explore::ViewPoints {
+        costmap: &costmap,
+        steps: &steps,
+        max_cost: scenario.exploration.view_max_cost,
+        range: scenario.exploration.view_range,
+        min_range: scenario.laser.range_min
+            + scenario.laser.mount_offset.abs()
+            + scenario.robot.body_radius,
+        slack: scenario.exploration.bandwidth,
+    };
+    let frontier_points: Vec<Point2> = sim::explore::frontier_clusters(map)
+        .into_iter()
+        .filter(|c| c.len() >= scenario.exploration.min_frontier_cells)
+        .flatten()
+        .map(|(i, j)| centre(i, j))
+        .collect();
+    println!(
+        "final pose ({:.2}, {:.2}): {reachable_cells} costmap cells reachable (built map only, no laser memory); {} frontier cells in clusters of >= {}; nearest view point: {:?}",
+        here.x,
+        here.y,
+        frontier_points.len(),
+        scenario.exploration.min_frontier_cells,
+        views.nearest(map, &frontier_points, |p| out
+            .goal_log
+            .iter()
+            .map(|g| g.target)
+            .any(|b| (b - p).norm() <= scenario.exploration.blacklist_radius)),
+    );
+    let mut seen = vec![false; w * h];
+    let mut patches = Vec::new();
+    for c0 in 0..w * h {
+        if seen[c0] || !missing(c0) {
+            continue;
+        }
+        seen[c0] = true;
+        let mut cells = vec![c0];
+        let mut k = 0;
+        while k < cells.len() {
+            let c = cells[k];
+            k += 1;
+            let (i, j) = ((c % w) as i64, (c / w) as i64);
+            for dj in -1..=1 {
+                for di in -1..=1 {
+                    let (a, b) = (i + di, j + dj);
+                    if a < 0 || b < 0 || a as usize >= w || b as usize >= h {
+                        continue;
+                    }
+                    let n = b as usize * w + a as usize;
+                    if !seen[n] && missing(n) {
+                        seen[n] = true;
+                        cells.push(n);
+                    }
+                }
+            }
+        }
+        patches.push(cells);
+    }
+    patches.sort_by_key(|p| std::cmp::Reverse(p.len()));
+    let total: usize = patches.iter().map(Vec::len).sum();
+    println!(
+        "reachable cells not known free: {total} ({:.3} m2) in {} patches",
+        total as f64 * res * res,
+        patches.len()
+    );
+    let wrongly_occupied: usize = patches
+        .iter()
+        .flatten()
+        .filter(|&&c| map.value(c % w, c / w) == OCCUPIED)
+        .count();
+    println!(
+        "  of which occupied on the built map: {wrongly_occupied} ({:.3} m2, {:.2} % of the reachable area); unknown: {} ({:.3} m2, {:.2} %)",
+        wrongly_occupied as f64 * res * res,
+        100.0 * wrongly_occupied as f64 * res * res / out.reachable_area,
+        total - wrongly_occupied,
+        (total - wrongly_occupied) as f64 * res * res,
+        100.0 * (total - wrongly_occupied) as f64 * res * res / out.reachable_area,
+    );
+    println!("patches with unknown cells:");
+    for cells in &patches {
+        let occupied = cells
+            .iter()
+            .filter(|&&c| map.value(c % w, c / w) == OCCUPIED)
+            .count();
+        if occupied == cells.len() {
+            continue;
+        }
+        let n = cells.len() as f64;
+        let (sx, sy) = cells.iter().fold((0.0, 0.0), |(x, y), &c| {
+            let p = centre(c % w, c / w);
+            (x + p.x, y + p.y)
+        });
+        let mid = Point2::new(sx / n, sy / n);
+        // Free cells of the built map touching the patch (4-neighbours): its frontier.
+        let mut border = Vec::new();
+        for &c in cells {
+            let (i, j) = (c % w, c / w);
+            for (a, b) in [
+                (i + 1, j),
+                (i.wrapping_sub(1), j),
+                (i, j + 1),
+                (i, j.wrapping_sub(1)),
+            ] {
+                if a < w && b < h && map.value(a, b) == FREE && !border.contains(&(a, b)) {
+                    border.push((a, b));
+                }
+            }
+        }
+        let best_gain = border
+            .iter()
+            .map(|&(a, b)| information_gain(map, centre(a, b), scenario.exploration.filter_radius))
+            .fold(0.0, f64::max);
+        let least_cost = border
+            .iter()
+            .map(|&(a, b)| sim::explore::filter::built_cost(map, &inflation, centre(a, b)))
+            .min();
+        // Reachable costmap cell nearest to the patch (straight line).
+        let mut nearest_reach = f64::INFINITY;
+        for v in 0..costmap.map.height() {
+            for u in 0..cw {
+                if steps[v * cw + u] == u32::MAX {
+                    continue;
+                }
+                let q = Point2::new(
+                    cb.min.x + (u as f64 + 0.5) * cres,
+                    cb.min.y + (v as f64 + 0.5) * cres,
+                );
+                for &c in cells {
+                    nearest_reach = nearest_reach.min((centre(c % w, c / w) - q).norm());
+                }
+            }
+        }
+        let border_reachable = border
+            .iter()
+            .filter(|&&(a, b)| steps_at(centre(a, b)) != u32::MAX)
+            .count();
+        let near = |p: &Point2| {
+            cells
+                .iter()
+                .any(|&c| (centre(c % w, c / w) - p).norm() <= 0.5)
+        };
+        println!(
+            "  {:4} cells ({:.3} m2, {} occupied) at ({:.2}, {:.2}): frontier cells {} ({} reachable), best gain {:.3} m2, least cost {:?}; nearest reachable cell {:.2} m; filter frontiers near {}, blacklisted near {}",
+            cells.len(),
+            n * res * res,
+            occupied,
+            mid.x,
+            mid.y,
+            border.len(),
+            border_reachable,
+            best_gain,
+            least_cost,
+            nearest_reach,
+            last.frontiers.iter().filter(|p| near(p)).count(),
+            out.goal_log
+                .iter()
+                .filter(|g| g.end != sim::explore::GoalEnd::Open && near(&g.target))
+                .count(),
+        );
+    }
+    if draw {
+        let (mut i0, mut i1, mut j0, mut j1) = (w, 0, h, 0);
+        for c in (0..w * h).filter(|&c| reach[c]) {
+            i0 = i0.min(c % w);
+            i1 = i1.max(c % w);
+            j0 = j0.min(c / w);
+            j1 = j1.max(c / w);
+        }
+        let cell = |p: &Point2| map.cell_of(*p);
+        for j in (j0.saturating_sub(2)..=(j1 + 2).min(h - 1)).rev() {
+            let mut line = String::new();
+            for i in i0.saturating_sub(2)..=(i1 + 2).min(w - 1) {
+                let c = j * w + i;
+                let ch = if cell(&here) == Some((i, j)) {
+                    'o'
+                } else if out.blacklisted.iter().any(|p| cell(p) == Some((i, j))) {
+                    'x'
+                } else if out.goals.iter().any(|(_, p)| cell(p) == Some((i, j))) {
+                    'g'
+                } else {
+                    match (reach[c], map.value(i, j)) {
+                        (true, OCCUPIED) => '!',
+                        (true, v) if v != FREE => '?',
+                        (_, OCCUPIED) => '#',
+                        (_, FREE) => '.',
+                        _ => ' ',
+                    }
+                };
+                line.push(ch);
+            }
+            println!("{line}");
+        }
+    }
+    Ok(())
+}
