@@ -84,34 +84,8 @@ impl DistanceField {
 #[must_use]
 pub fn distance_transform(mask: &Mask) -> DistanceField {
     let (w, h) = (mask.width(), mask.height());
-    let cells = mask.cells();
-    const INF: u32 = u32::MAX;
-    // Vertical pass, in the output buffer: distance (in cells) to the nearest obstacle in
-    // the same column. Row by row, so memory is read in order.
-    let mut out = vec![INF; w * h];
-    for j in 0..h {
-        let (done, rest) = out.split_at_mut(j * w);
-        let row = &mut rest[..w];
-        let m = &cells[j * w..(j + 1) * w];
-        if j == 0 {
-            for (c, &o) in row.iter_mut().zip(m) {
-                *c = if o { 0 } else { INF };
-            }
-        } else {
-            let below = &done[(j - 1) * w..j * w];
-            for ((c, &o), &b) in row.iter_mut().zip(m).zip(below) {
-                *c = if o { 0 } else { b.saturating_add(1) };
-            }
-        }
-    }
-    for j in (0..h.saturating_sub(1)).rev() {
-        let (lo, hi) = out.split_at_mut((j + 1) * w);
-        let row = &mut lo[j * w..];
-        let above = &hi[..w];
-        for (c, &a) in row.iter_mut().zip(above) {
-            *c = (*c).min(a.saturating_add(1));
-        }
-    }
+    // Vertical pass, in the output buffer.
+    let mut out = column_distances(mask, u32::MAX, |d| d.saturating_add(1));
     // Horizontal pass, in place: lower envelope of parabolas (x - q)^2 + g(q)^2 per row.
     let mut env = Envelope::with_capacity(w);
     for row in out.chunks_exact_mut(w.max(1)) {
@@ -122,6 +96,44 @@ pub fn distance_transform(mask: &Mask) -> DistanceField {
         height: h,
         dist_sq: out,
     }
+}
+
+/// Distance in cells from each cell to the nearest obstacle of its column, row-major:
+/// 0 on an obstacle, `next` of the neighbour's distance otherwise, `far` where no obstacle
+/// is below (before the downward sweep) or above (`next` saturates at `far`, which must
+/// be its fixed point). Row by row, so memory is read in order.
+pub(crate) fn column_distances<T: Copy + Ord + Default>(
+    mask: &Mask,
+    far: T,
+    next: impl Fn(T) -> T,
+) -> Vec<T> {
+    let (w, h) = (mask.width(), mask.height());
+    let cells = mask.cells();
+    let mut out = vec![far; w * h];
+    for j in 0..h {
+        let (done, rest) = out.split_at_mut(j * w);
+        let row = &mut rest[..w];
+        let m = &cells[j * w..(j + 1) * w];
+        if j == 0 {
+            for (c, &o) in row.iter_mut().zip(m) {
+                *c = if o { T::default() } else { far };
+            }
+        } else {
+            let below = &done[(j - 1) * w..j * w];
+            for ((c, &o), &b) in row.iter_mut().zip(m).zip(below) {
+                *c = if o { T::default() } else { next(b) };
+            }
+        }
+    }
+    for j in (0..h.saturating_sub(1)).rev() {
+        let (lo, hi) = out.split_at_mut((j + 1) * w);
+        let row = &mut lo[j * w..];
+        let above = &hi[..w];
+        for (c, &a) in row.iter_mut().zip(above) {
+            *c = (*c).min(next(a));
+        }
+    }
+    out
 }
 
 /// Buffers of the 1-D lower envelope, reused across rows.

@@ -124,33 +124,9 @@ impl Inflation {
             .map(|d| self.cost(f64::from(d).sqrt() * resolution))
             .collect();
         let (w, h) = (obstacles.width(), obstacles.height());
-        let cells = obstacles.cells();
         // Vertical distance to the nearest obstacle in the column, capped at `far`.
         let far = reach as i16 + 1;
-        let mut g = vec![far; w * h];
-        for j in 0..h {
-            let (done, rest) = g.split_at_mut(j * w);
-            let row = &mut rest[..w];
-            let m = &cells[j * w..(j + 1) * w];
-            if j == 0 {
-                for (c, &o) in row.iter_mut().zip(m) {
-                    *c = if o { 0 } else { far };
-                }
-            } else {
-                let below = &done[(j - 1) * w..j * w];
-                for ((c, &o), &b) in row.iter_mut().zip(m).zip(below) {
-                    *c = if o { 0 } else { (b + 1).min(far) };
-                }
-            }
-        }
-        for j in (0..h.saturating_sub(1)).rev() {
-            let (lo, hi) = g.split_at_mut((j + 1) * w);
-            let row = &mut lo[j * w..];
-            let above = &hi[..w];
-            for (c, &a) in row.iter_mut().zip(above) {
-                *c = (*c).min(a + 1);
-            }
-        }
+        let g = crate::edt::column_distances(obstacles, far, |d| (d + 1).min(far));
         // Beyond the reach: any value above reach^2 that cannot overflow when dx^2 is added.
         let beyond = 2 * reach_sq + 1;
         let mut out = vec![0u8; w * h];
