@@ -129,7 +129,7 @@ impl ObstacleMemory {
     /// lies within `radius` of `p` at `tick`.
     #[must_use]
     pub fn loose_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
-        self.cells_near(p, radius).any(|c| {
+        self.cells_near(p, radius, tick).any(|c| {
             !self.explained[c]
                 && self
                     .remembered(c, tick)
@@ -215,21 +215,33 @@ impl ObstacleMemory {
     /// Whether any remembered obstacle lies within `radius` of `p` at `tick`.
     #[must_use]
     pub fn any_within(&self, p: Point2, radius: f64, tick: u64) -> bool {
-        self.cells_near(p, radius).any(|c| {
+        self.cells_near(p, radius, tick).any(|c| {
             self.remembered(c, tick)
                 .is_some_and(|q| (q - p).norm() <= radius && !self.cleared(c, q, tick))
         })
     }
 
-    /// The cells of the square around `p` that holds every point within `radius`.
-    fn cells_near(&self, p: Point2, radius: f64) -> impl Iterator<Item = usize> + '_ {
+    /// The cells of the square around `p` that holds every point within `radius` whose
+    /// memory has not expired at `tick` (one comparison per cell, on a row at a time).
+    fn cells_near(&self, p: Point2, radius: f64, tick: u64) -> impl Iterator<Item = usize> + '_ {
         let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
         let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
         let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
         let (w, h) = (self.width as i64, self.height as i64);
+        let (i0, i1) = ((ci - r).max(0), (ci + r).min(w - 1));
+        // Alive: stamped (not 0) and `stamp + keep >= tick + 1`.
+        let oldest = (tick + 1).saturating_sub(self.keep).max(1);
         ((cj - r).max(0)..=(cj + r).min(h - 1)).flat_map(move |j| {
-            ((ci - r).max(0)..=(ci + r).min(w - 1))
-                .map(move |i| j as usize * self.width + i as usize)
+            let start = j as usize * self.width;
+            let row = if i0 <= i1 {
+                &self.stamp[start + i0 as usize..=start + i1 as usize]
+            } else {
+                &[]
+            };
+            row.iter()
+                .enumerate()
+                .filter(move |&(_, &s)| s >= oldest)
+                .map(move |(k, _)| start + i0 as usize + k)
         })
     }
 
@@ -237,7 +249,7 @@ impl ObstacleMemory {
     #[must_use]
     pub fn nearest_within(&self, p: Point2, radius: f64, tick: u64) -> Option<(f64, Point2)> {
         let mut best: Option<(f64, Point2)> = None;
-        for c in self.cells_near(p, radius) {
+        for c in self.cells_near(p, radius, tick) {
             if let Some(q) = self.remembered(c, tick) {
                 let d = (q - p).norm();
                 if d <= radius && best.is_none_or(|b| d < b.0) && !self.cleared(c, q, tick) {
