@@ -202,7 +202,10 @@ impl OccupancyGrid {
         for _ in 0..steps {
             if !checked || inside(i, j) {
                 let l = &mut self.logodds[(j * w + i) as usize];
-                *l = (*l + miss).max(lo);
+                // `max` without its NaN handling (no log-odds is NaN; `lo` < 0 is no tie
+                // between zeros): on the critical path of every traced cell.
+                let x = *l + miss;
+                *l = if x < lo { lo } else { x };
             }
             // Written as selects: which axis steps next is a coin toss for the branch
             // predictor.
