@@ -296,6 +296,32 @@ impl OccupancyGrid {
         n
     }
 
+    /// The distance from `p` to the nearest centre of an occupied cell among the cells
+    /// `(ci +- reach, cj +- reach)` (`INFINITY` if none); rows are read as slices and
+    /// only occupied cells cost a distance.
+    #[must_use]
+    pub fn nearest_occupied_centre(
+        &self,
+        p: Point2,
+        (ci, cj): (usize, usize),
+        reach: usize,
+    ) -> f64 {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let (i0, i1) = (ci.saturating_sub(reach), (ci + reach + 1).min(self.width));
+        let mut best = f64::INFINITY;
+        for j in cj.saturating_sub(reach)..(cj + reach + 1).min(self.height) {
+            let row = &self.logodds[j * self.width..(j + 1) * self.width];
+            for (i, &l) in row.iter().enumerate().take(i1).skip(i0) {
+                if l > 0.0 {
+                    let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+                    best = best.min((c - p).norm());
+                }
+            }
+        }
+        best
+    }
+
     /// How many unknown cells have their centre within `radius` of `p`.
     #[must_use]
     pub fn count_unknown_within(&self, p: Point2, radius: f64) -> usize {

@@ -14,7 +14,7 @@ use sampling::NearestIndex;
 use envmap::Inflation;
 
 use crate::costmap::{Costmap, ros_cost};
-use crate::mapping::{OCCUPIED, OccupancyGrid};
+use crate::mapping::OccupancyGrid;
 
 /// Flat-kernel mean shift: each point climbs to the mean of the points within
 /// `bandwidth` until it moves less than `bandwidth / 1000` (at most 300 steps); centres
@@ -86,19 +86,8 @@ pub fn built_cost(map: &OccupancyGrid, inflation: &Inflation, p: Point2) -> i8 {
     let Some((ci, cj)) = map.cell_of(p) else {
         return 100;
     };
-    let res = map.params.resolution;
-    let o = map.origin();
-    let reach = (inflation.inflation_radius / res).ceil() as usize + 1;
-    let mut best = f64::INFINITY;
-    for j in cj.saturating_sub(reach)..(cj + reach + 1).min(map.height()) {
-        for i in ci.saturating_sub(reach)..(ci + reach + 1).min(map.width()) {
-            if map.value(i, j) == OCCUPIED {
-                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
-                best = best.min((c - p).norm());
-            }
-        }
-    }
-    ros_cost(inflation.cost(best))
+    let reach = (inflation.inflation_radius / map.params.resolution).ceil() as usize + 1;
+    ros_cost(inflation.cost(map.nearest_occupied_centre(p, (ci, cj), reach)))
 }
 
 /// The costmap's ROS value (0-100) at `p`; 100 off the map.
