@@ -177,9 +177,15 @@ impl LaserModel {
         let inc = self.inc;
         let last = (n - 1) as f64;
         // The beams k with u_k = k inc in [lo, lo + span] (mod 2 pi), with a margin on
-        // each side of one beam plus the arctangent's error: the exact intersection test
-        // decides, so a span may be wider than the obstacle but never narrower.
-        let margin = 1.0 + (FAST_ATAN2_ERROR / inc).ceil();
+        // each side: the exact intersection test decides, so a span may be wider than the
+        // obstacle but never narrower. One beam covers an error in the span's ends below
+        // one increment (each end is off by at most the arctangent's error, plus
+        // rounding); a laser finer than that gets more.
+        let margin = if 4.0 * FAST_ATAN2_ERROR < inc {
+            1.0
+        } else {
+            1.0 + (2.0 * FAST_ATAN2_ERROR / inc).ceil()
+        };
         let spans = |lo: f64, span: f64| {
             [0.0, -tau].map(|shift| {
                 let a = (((lo + shift) / inc).ceil() - margin).max(0.0);

@@ -136,6 +136,39 @@ proptest! {
             );
         }
     }
+
+    /// A laser finer than the cast's fast arctangent (beams 2.6e-5 rad apart, below its
+    /// error bound): the beam spans get a wider margin, and every beam still equals the
+    /// brute-force reference.
+    #[test]
+    fn a_very_fine_laser_equals_the_reference(
+        shapes in prop::collection::vec(shape_strategy(), 1..5),
+        ox in 0.0..10.0f64, oy in 0.0..10.0f64, heading in -3.2..3.2f64,
+    ) {
+        let w = world(&shapes);
+        let o = Point2::new(ox, oy);
+        prop_assume!(!w.inside(o));
+        let (fov, beams) = (30.0f64, 20_000usize);
+        let model = LaserModel::new(Laser { fov_deg: fov, beams, range_min: 0.0, range_max: 1e9, noise_sd: 0.0, ..Laser::default() });
+        let scan = model.cast(&w, &[], o, heading);
+        let inc = fov.to_radians() / (beams - 1) as f64;
+        for k in 0..beams {
+            let a = heading - fov.to_radians() / 2.0 + k as f64 * inc;
+            let d = Vector2::new(a.cos(), a.sin());
+            let mut best = f64::INFINITY;
+            for s in &w.segments {
+                if let Some(t) = ref_segment(o, d, s.a, s.b) { best = best.min(t); }
+            }
+            for c in &w.discs {
+                if let Some(t) = ref_disc(o, d, c.center, c.radius) { best = best.min(t); }
+            }
+            let got = scan.ranges[k];
+            prop_assert!(
+                (got.is_infinite() && best.is_infinite()) || (got - best).abs() <= 1e-9 * best.max(1.0),
+                "beam {} of {}: laser {} reference {}", k, beams, got, best
+            );
+        }
+    }
 }
 
 #[test]
