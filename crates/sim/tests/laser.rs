@@ -35,6 +35,23 @@ fn ref_disc(o: Point2, d: Vector2<f64>, c: Point2, r: f64) -> Option<f64> {
     (t >= 0.0).then_some(t)
 }
 
+/// The brute-force range of the ray from `o` along unit `d`: the nearest hit over every
+/// segment, disc and person.
+fn reference_range(w: &StaticWorld, people: &[Disc], o: Point2, d: Vector2<f64>) -> f64 {
+    let mut best = f64::INFINITY;
+    for s in &w.segments {
+        if let Some(t) = ref_segment(o, d, s.a, s.b) {
+            best = best.min(t);
+        }
+    }
+    for c in w.discs.iter().chain(people) {
+        if let Some(t) = ref_disc(o, d, c.center, c.radius) {
+            best = best.min(t);
+        }
+    }
+    best
+}
+
 fn shape_strategy() -> impl Strategy<Value = Shape> {
     prop_oneof![
         (
@@ -96,13 +113,7 @@ proptest! {
         for k in 0..beams {
             let a = heading - fov.to_radians() / 2.0 + k as f64 * inc;
             let d = Vector2::new(a.cos(), a.sin());
-            let mut best = f64::INFINITY;
-            for s in &w.segments {
-                if let Some(t) = ref_segment(o, d, s.a, s.b) { best = best.min(t); }
-            }
-            for c in w.discs.iter().chain(&people) {
-                if let Some(t) = ref_disc(o, d, c.center, c.radius) { best = best.min(t); }
-            }
+            let best = reference_range(&w, &people, o, d);
             let got = scan.ranges[k];
             prop_assert!(
                 (got.is_infinite() && best.is_infinite()) || (got - best).abs() <= 1e-9 * best.max(1.0),
@@ -155,13 +166,7 @@ proptest! {
         for k in 0..beams {
             let a = heading - fov.to_radians() / 2.0 + k as f64 * inc;
             let d = Vector2::new(a.cos(), a.sin());
-            let mut best = f64::INFINITY;
-            for s in &w.segments {
-                if let Some(t) = ref_segment(o, d, s.a, s.b) { best = best.min(t); }
-            }
-            for c in &w.discs {
-                if let Some(t) = ref_disc(o, d, c.center, c.radius) { best = best.min(t); }
-            }
+            let best = reference_range(&w, &[], o, d);
             let got = scan.ranges[k];
             prop_assert!(
                 (got.is_infinite() && best.is_infinite()) || (got - best).abs() <= 1e-9 * best.max(1.0),
