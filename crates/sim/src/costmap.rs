@@ -16,7 +16,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::laser::Scan;
 use crate::mapping::OccupancyGrid;
-use crate::world::StaticWorld;
+use crate::world::{Segment, StaticWorld};
 
 /// Costmap parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -364,12 +364,8 @@ impl CostmapBuilder {
             }
         };
         if let Some(g) = built {
-            let (gr, o) = (g.params.resolution, g.origin());
             for (i, j) in g.occupied_cells() {
-                mark(Point2::new(
-                    o.x + (i as f64 + 0.5) * gr,
-                    o.y + (j as f64 + 0.5) * gr,
-                ));
+                mark(g.cell_center(i, j));
             }
         }
         for &p in hits {
@@ -398,6 +394,41 @@ impl CostmapBuilder {
     }
 }
 
+/// Marks the cells of a `res`-sided grid at `origin` (`width` x `height`, row-major from
+/// the bottom row) whose centre lies within half a cell diagonal (plus `tolerance`) of one
+/// of `segments`: [`rasterize`]'s rule for an obstacle's outline.
+pub(crate) fn mark_near_segments(
+    cells: &mut [bool],
+    (width, height): (usize, usize),
+    origin: Point2,
+    res: f64,
+    segments: &[Segment],
+    tolerance: f64,
+) {
+    let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
+    let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
+        let a = ((lo - half_diag - o) / res).floor().max(0.0) as usize;
+        let b = (((hi + half_diag - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
+        a..b.max(a)
+    };
+    for s in segments {
+        for j in cell_range(s.a.y.min(s.b.y), s.a.y.max(s.b.y), origin.y, height) {
+            for i in cell_range(s.a.x.min(s.b.x), s.a.x.max(s.b.x), origin.x, width) {
+                let c = Point2::new(
+                    origin.x + (i as f64 + 0.5) * res,
+                    origin.y + (j as f64 + 0.5) * res,
+                );
+                if !cells[j * width + i]
+                    && (crate::world::closest_on_segment(c, s.a, s.b) - c).norm()
+                        <= half_diag + tolerance
+                {
+                    cells[j * width + i] = true;
+                }
+            }
+        }
+    }
+}
+
 /// The cells of a `res`-sided grid over `bounds` that the static geometry `mapped` reaches
 /// into (a cell whose centre lies within half a cell diagonal of an obstacle, or a cell a
 /// forbidden cell of a loaded map overlaps): (columns, rows, row-major cells from the
@@ -409,7 +440,15 @@ pub fn rasterize(bounds: Bounds, mapped: &StaticWorld, res: f64) -> (usize, usiz
     let origin = bounds.min;
     let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
     let mut prior = vec![false; width * height];
-    // Each shape marks the cells of its bounding box that it reaches into.
+    mark_near_segments(
+        &mut prior,
+        (width, height),
+        origin,
+        res,
+        &mapped.segments,
+        0.0,
+    );
+    // Each other shape marks the cells of its bounding box that it reaches into.
     let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
         let a = ((lo - o) / res).floor().max(0.0) as usize;
         let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
@@ -431,13 +470,6 @@ pub fn rasterize(bounds: Bounds, mapped: &StaticWorld, res: f64) -> (usize, usiz
         }
     };
     let pad = nalgebra::Vector2::new(half_diag, half_diag);
-    for s in &mapped.segments {
-        let lo = Point2::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)) - pad;
-        let hi = Point2::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)) + pad;
-        mark_box(lo, hi, &|c| {
-            (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag
-        });
-    }
     for poly in &mapped.polygons {
         let lo = poly
             .iter()

@@ -130,6 +130,34 @@ impl OccupancyGrid {
         self.logodds.iter().map(|&l| ros_value(l)).collect()
     }
 
+    /// The world position of the centre of cell `(i, j)`.
+    #[must_use]
+    pub fn cell_center(&self, i: usize, j: usize) -> Point2 {
+        let res = self.params.resolution;
+        Point2::new(
+            self.origin.x + (i as f64 + 0.5) * res,
+            self.origin.y + (j as f64 + 0.5) * res,
+        )
+    }
+
+    /// The columns and rows of the cells a square of half-side `reach` around `center`
+    /// overlaps, clamped to the grid.
+    fn window(
+        &self,
+        center: Point2,
+        reach: f64,
+    ) -> (std::ops::Range<usize>, std::ops::Range<usize>) {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let lo = |c: f64, o: f64| ((c - reach - o) / res).floor().max(0.0) as usize;
+        let hi =
+            |c: f64, o: f64, n: usize| (((c + reach - o) / res).ceil().max(0.0) as usize).min(n);
+        (
+            lo(center.x, o.x)..hi(center.x, o.x, self.width),
+            lo(center.y, o.y)..hi(center.y, o.y, self.height),
+        )
+    }
+
     /// The cell holding `p`, if inside.
     #[must_use]
     pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
@@ -278,16 +306,11 @@ impl OccupancyGrid {
     /// coverage of a growing map costs a window per scan instead of the whole grid.
     #[must_use]
     pub fn count_free_near(&self, mask: &[bool], center: Point2, reach: f64) -> usize {
-        let res = self.params.resolution;
-        let o = self.origin;
-        let lo_i = ((center.x - reach - o.x) / res).floor().max(0.0) as usize;
-        let lo_j = ((center.y - reach - o.y) / res).floor().max(0.0) as usize;
-        let hi_i = (((center.x + reach - o.x) / res).ceil().max(0.0) as usize).min(self.width);
-        let hi_j = (((center.y + reach - o.y) / res).ceil().max(0.0) as usize).min(self.height);
+        let (cols, rows) = self.window(center, reach);
         let mut n = 0;
-        for j in lo_j..hi_j {
+        for j in rows {
             let row = j * self.width;
-            let (a, b) = (row + lo_i, (row + hi_i).max(row + lo_i));
+            let (a, b) = (row + cols.start, (row + cols.end).max(row + cols.start));
             if a >= mask.len() {
                 break;
             }
@@ -306,16 +329,13 @@ impl OccupancyGrid {
         (ci, cj): (usize, usize),
         reach: usize,
     ) -> f64 {
-        let res = self.params.resolution;
-        let o = self.origin;
         let (i0, i1) = (ci.saturating_sub(reach), (ci + reach + 1).min(self.width));
         let mut best = f64::INFINITY;
         for j in cj.saturating_sub(reach)..(cj + reach + 1).min(self.height) {
             let row = &self.logodds[j * self.width..(j + 1) * self.width];
             for (i, &l) in row.iter().enumerate().take(i1).skip(i0) {
                 if l > 0.0 {
-                    let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
-                    best = best.min((c - p).norm());
+                    best = best.min((self.cell_center(i, j) - p).norm());
                 }
             }
         }
@@ -327,18 +347,15 @@ impl OccupancyGrid {
     pub fn count_unknown_within(&self, p: Point2, radius: f64) -> usize {
         let res = self.params.resolution;
         let o = self.origin;
-        let lo_i = ((p.x - radius - o.x) / res).floor().max(0.0) as usize;
-        let lo_j = ((p.y - radius - o.y) / res).floor().max(0.0) as usize;
-        let hi_i = (((p.x + radius - o.x) / res).ceil().max(0.0) as usize).min(self.width);
-        let hi_j = (((p.y + radius - o.y) / res).ceil().max(0.0) as usize).min(self.height);
+        let (cols, rows) = self.window(p, radius);
         let r2 = radius * radius;
         let mut n = 0usize;
-        for j in lo_j..hi_j {
+        for j in rows {
             let cy = o.y + (j as f64 + 0.5) * res - p.y;
             let row = &self.logodds[j * self.width..(j + 1) * self.width];
             // Branch-free (unknown is exactly -0.0, on the bits), so that it vectorises:
             // the filter and the assigner ask this of hundreds of points per cycle.
-            for (i, l) in row.iter().enumerate().take(hi_i).skip(lo_i) {
+            for (i, l) in row.iter().enumerate().take(cols.end).skip(cols.start) {
                 let cx = o.x + (i as f64 + 0.5) * res - p.x;
                 let inside = cx * cx + cy * cy <= r2;
                 n += usize::from(inside & (l.to_bits() == 0x8000_0000));
@@ -365,16 +382,11 @@ impl OccupancyGrid {
     /// sees but which the robot, standing there, knows to be free. Known cells keep
     /// their value.
     pub fn mark_footprint_free(&mut self, center: Point2, radius: f64) {
-        let res = self.params.resolution;
-        let o = self.origin;
-        let lo_i = ((center.x - radius - o.x) / res).floor().max(0.0) as usize;
-        let lo_j = ((center.y - radius - o.y) / res).floor().max(0.0) as usize;
-        let hi_i = (((center.x + radius - o.x) / res).ceil().max(0.0) as usize).min(self.width);
-        let hi_j = (((center.y + radius - o.y) / res).ceil().max(0.0) as usize).min(self.height);
-        for j in lo_j..hi_j {
-            for i in lo_i..hi_i {
-                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
-                if (c - center).norm() <= radius && self.value(i, j) == UNKNOWN {
+        let (cols, rows) = self.window(center, radius);
+        for j in rows {
+            for i in cols.clone() {
+                if (self.cell_center(i, j) - center).norm() <= radius && self.value(i, j) == UNKNOWN
+                {
                     self.logodds[j * self.width + i] = self.params.l_miss as f32;
                 }
             }

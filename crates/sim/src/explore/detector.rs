@@ -159,10 +159,7 @@ pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
             match map.value(i as usize, j as usize) {
                 OCCUPIED => return Edge::Occupied,
                 UNKNOWN => {
-                    return Edge::Unknown(Point2::new(
-                        o.x + (i as f64 + 0.5) * res,
-                        o.y + (j as f64 + 0.5) * res,
-                    ));
+                    return Edge::Unknown(map.cell_center(i as usize, j as usize));
                 }
                 _ => {}
             }

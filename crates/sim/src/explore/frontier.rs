@@ -200,15 +200,13 @@ pub fn nearest_frontier(
     let b = costmap.map.bounds();
     let cres = costmap.map.resolution();
     let cw = costmap.map.width();
-    let res = map.params.resolution;
-    let o = map.origin();
     let mut best: Option<(u32, Point2)> = None;
     for cluster in frontier_clusters(map) {
         if cluster.len() < min_cells {
             continue;
         }
         for (i, j) in cluster {
-            let p = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
+            let p = map.cell_center(i, j);
             let u = ((p.x - b.min.x) / cres) as usize;
             let v = ((p.y - b.min.y) / cres) as usize;
             let Some(&d) = steps.get(v * cw + u) else {

@@ -31,7 +31,7 @@ use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::costmap::rasterize;
+use crate::costmap::{mark_near_segments, rasterize};
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
 use crate::explore::filter::{Filter, built_cost, information_gain};
@@ -226,25 +226,16 @@ impl ExploreOutcome {
 #[must_use]
 pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<bool>) {
     let (w, h, mut occupied) = rasterize(world.bounds, &world.statics, res);
-    let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
-    let o = world.bounds.min;
-    for s in &world.statics.grid_segments {
-        let lo =
-            |a: f64, b: f64, o: f64| ((a.min(b) - half_diag - o) / res).floor().max(0.0) as usize;
-        let hi = |a: f64, b: f64, o: f64, n: usize| {
-            (((a.max(b) + half_diag - o) / res).floor() + 1.0).clamp(0.0, n as f64) as usize
-        };
-        for j in lo(s.a.y, s.b.y, o.y)..hi(s.a.y, s.b.y, o.y, h) {
-            for i in lo(s.a.x, s.b.x, o.x)..hi(s.a.x, s.b.x, o.x, w) {
-                let c = Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res);
-                // The margin keeps a cell that only touches a corner on the same side
-                // of the rule whatever the rounding.
-                if (crate::world::closest_on_segment(c, s.a, s.b) - c).norm() <= half_diag + 1e-9 {
-                    occupied[j * w + i] = true;
-                }
-            }
-        }
-    }
+    // The margin keeps a cell that only touches a corner on the same side of the rule
+    // whatever the rounding (on a map aligned with this grid, touching is the usual case).
+    mark_near_segments(
+        &mut occupied,
+        (w, h),
+        world.bounds.min,
+        res,
+        &world.statics.grid_segments,
+        1e-9,
+    );
     let mut reach = vec![false; w * h];
     let u = ((start.x - world.bounds.min.x) / res).floor();
     let v = ((start.y - world.bounds.min.y) / res).floor();
@@ -288,8 +279,6 @@ fn unknown_beside(
     frontier: impl Iterator<Item = (usize, usize)>,
 ) -> Vec<Point2> {
     let (w, h) = (map.width(), map.height());
-    let res = map.params.resolution;
-    let o = map.origin();
     let mut seen = std::collections::HashSet::new();
     let mut out = Vec::new();
     for (i, j) in frontier {
@@ -300,10 +289,7 @@ fn unknown_beside(
             (i, j.wrapping_sub(1)),
         ] {
             if a < w && b < h && map.value(a, b) == UNKNOWN && seen.insert((a, b)) {
-                out.push(Point2::new(
-                    o.x + (a as f64 + 0.5) * res,
-                    o.y + (b as f64 + 0.5) * res,
-                ));
+                out.push(map.cell_center(a, b));
             }
         }
     }
@@ -579,8 +565,9 @@ pub fn explore_with(
                 let state = nav.state();
                 // The frontier sought: the goal itself, or the target of its view point.
                 let f = target.unwrap_or(g);
-                let still_good = frontier_cost(f) <= ex.costmap_threshold
-                    && information_gain(&map, f, ex.filter_radius) >= ex.min_gain;
+                let too_costly = frontier_cost(f) > ex.costmap_threshold;
+                let too_little =
+                    !too_costly && information_gain(&map, f, ex.filter_radius) < ex.min_gain;
                 if (here - anchor.0).norm() >= 0.2 || look.is_some() {
                     anchor = (here, tick);
                 }
@@ -591,9 +578,9 @@ pub fn explore_with(
                     Some(GoalEnd::Stuck)
                 } else if recovering {
                     (state == NavState::Reached).then_some(GoalEnd::Reached)
-                } else if frontier_cost(f) > ex.costmap_threshold {
+                } else if too_costly {
                     Some(GoalEnd::Cost)
-                } else if !still_good {
+                } else if too_little {
                     Some(GoalEnd::Gain)
                 } else if state == NavState::Reached && (target.is_none() || looked) {
                     Some(GoalEnd::Reached)

@@ -58,12 +58,7 @@ pub struct ViewPoints<'a> {
 
 impl ViewPoints<'_> {
     fn centre(&self, u: usize, v: usize) -> Point2 {
-        let b = self.costmap.map.bounds();
-        let res = self.costmap.map.resolution();
-        Point2::new(
-            b.min.x + (u as f64 + 0.5) * res,
-            b.min.y + (v as f64 + 0.5) * res,
-        )
+        self.costmap.map.cell_center(u, v)
     }
 
     fn usable(&self, c: usize) -> bool {
