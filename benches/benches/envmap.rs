@@ -8,6 +8,9 @@
 //!   8-connected components, rectangles, EDT, zones. Target <= 20 ms.
 //! - `edt/N`: `distance_transform` of an N x N mask (the demo room binarized at N x N).
 //!   Linear time: doubling N should cost about 4x. Target for 4096: <= 400 ms.
+//! - `inflation/{inflate,full}/N`: Nav2 costs of an N x N mask (the demo room) at 0.1 m
+//!   per cell with sim's costmap radii (inscribed 0.27 m, inflation 0.55 m), by the bounded
+//!   `Inflation::inflate` and by `costs` of the full transform (equal, checked once).
 //! - `segment_free/{map}/{len}`: a segment of about `len` cells on an empty map of 64 x 64
 //!   or 4096 x 4096 cells; the cost should follow `len`, not the map size.
 
@@ -61,6 +64,30 @@ fn edt(c: &mut Criterion) {
     g.finish();
 }
 
+fn inflation(c: &mut Criterion) {
+    let mut g = c.benchmark_group("inflation");
+    g.sample_size(20);
+    let inf = envmap::Inflation {
+        inscribed_radius: 0.27,
+        inflation_radius: 0.55,
+        cost_scaling_factor: 10.0,
+    };
+    for n in [240usize, 1024] {
+        let mask: Mask = binarize(&demo_room(n, n), 100, false);
+        assert_eq!(
+            inf.inflate(&mask, 0.1).unwrap(),
+            inf.costs(&distance_transform(&mask), 0.1).unwrap()
+        );
+        g.bench_with_input(BenchmarkId::new("inflate", n), &mask, |b, mask| {
+            b.iter(|| inf.inflate(black_box(mask), 0.1))
+        });
+        g.bench_with_input(BenchmarkId::new("full", n), &mask, |b, mask| {
+            b.iter(|| inf.costs(&distance_transform(black_box(mask)), 0.1))
+        });
+    }
+    g.finish();
+}
+
 fn segment_free(c: &mut Criterion) {
     let mut g = c.benchmark_group("segment_free");
     for side in [64usize, 4096] {
@@ -103,6 +130,7 @@ fn benches() {
     let mut c = Criterion::default().configure_from_args();
     pipeline(&mut c);
     edt(&mut c);
+    inflation(&mut c);
     segment_free(&mut c);
 }
 

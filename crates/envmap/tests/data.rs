@@ -116,3 +116,47 @@ fn turtlebot3_pixel_rows_are_flipped() {
     }
     assert!(Path::new(&meta.image).ends_with("map.pgm"));
 }
+
+/// The bounded inflation equals the full transform's costs on maps we did not draw: the
+/// TurtleBot3 world's walls and pillars (occupied pixels only, and with the unknown
+/// outside as obstacles too) and the MovingAI arena, with Nav2's default radii and
+/// sim's costmap parameters.
+#[test]
+fn inflate_equals_the_full_costs_on_the_shared_maps() {
+    use envmap::{Inflation, Mask, distance_transform};
+    let mut masks: Vec<(Mask, f64)> = Vec::new();
+    if let Some(path) = data("ros_maps/turtlebot3_world/map.yaml") {
+        let meta = read_ros_yaml(&path).unwrap();
+        let pic = read_picture(&meta.image).unwrap();
+        // Occupied pixels only (dark ones), as the seed-000 pipeline binarizes.
+        masks.push((envmap::binarize(&pic, 50, false), meta.resolution));
+        let loaded = load_map(&path, &LoadOptions::default()).unwrap();
+        masks.push((
+            Mask::from_zones_at_least(&loaded.map, Zone::Forbidden),
+            meta.resolution,
+        ));
+    }
+    if let Some(path) = data("movingai/arena.map") {
+        let map = read_movingai(&path).unwrap();
+        masks.push((Mask::from_zones_at_least(&map, Zone::Forbidden), 0.2));
+    }
+    for (k, (mask, res)) in masks.iter().enumerate() {
+        assert!(mask.cells().iter().any(|&c| c) && mask.cells().iter().any(|&c| !c));
+        for inf in [
+            Inflation::default(),
+            Inflation {
+                inscribed_radius: 0.3,
+                inflation_radius: 0.55,
+                cost_scaling_factor: 10.0,
+            },
+            Inflation {
+                inscribed_radius: 0.1,
+                inflation_radius: 1.5,
+                cost_scaling_factor: 3.0,
+            },
+        ] {
+            let full = inf.costs(&distance_transform(mask), *res).unwrap();
+            assert_eq!(inf.inflate(mask, *res).unwrap(), full, "map {k}, {inf:?}");
+        }
+    }
+}
