@@ -72,7 +72,16 @@ pub struct OccupancyGrid {
     /// terms are), and `-0.0 + x = x`, so the first update needs no special case and the
     /// walk touches one array.
     logodds: Vec<f32>,
+    /// Updates so far (see [`OccupancyGrid::version`]).
+    version: u64,
+    /// Per block of `BLOCK` x `BLOCK` cells, the version of the last update that may have
+    /// changed one of its cells: lets callers keep what they computed from a part of the
+    /// map the robot has not seen again ([`OccupancyGrid::unchanged_near`]).
+    touched: Vec<u64>,
 }
+
+/// Side of a change-tracking block, cells.
+const BLOCK: usize = 16;
 
 impl OccupancyGrid {
     /// An all-unknown grid covering `bounds`.
@@ -86,6 +95,52 @@ impl OccupancyGrid {
             height,
             origin: bounds.min,
             logodds: vec![-0.0; width * height],
+            version: 0,
+            touched: vec![0; width.div_ceil(BLOCK) * height.div_ceil(BLOCK)],
+        }
+    }
+
+    /// How many updates the grid has had ([`integrate`](Self::integrate),
+    /// [`mark_footprint_free`](Self::mark_footprint_free), [`set_value`](Self::set_value)):
+    /// a stamp for [`unchanged_near`](Self::unchanged_near).
+    #[must_use]
+    pub const fn version(&self) -> u64 {
+        self.version
+    }
+
+    /// Whether no cell overlapping the square of half-side `reach` around `p` can have
+    /// changed after version `since`. Tracked per block of 16 x 16 cells, so a `false`
+    /// may be a cell nearby: what a caller computed from that square at version `since`
+    /// still holds when this is `true`.
+    #[must_use]
+    pub fn unchanged_near(&self, p: Point2, reach: f64, since: u64) -> bool {
+        if since >= self.version {
+            return true;
+        }
+        let (cols, rows) = self.window(p, reach);
+        if cols.is_empty() || rows.is_empty() {
+            return true;
+        }
+        let bw = self.width.div_ceil(BLOCK);
+        (rows.start / BLOCK..=(rows.end - 1) / BLOCK).all(|bj| {
+            self.touched[bj * bw + cols.start / BLOCK..=bj * bw + (cols.end - 1) / BLOCK]
+                .iter()
+                .all(|&v| v <= since)
+        })
+    }
+
+    /// A new version, stamped on the blocks the square of half-side `reach` around `p`
+    /// overlaps: every cell the caller is about to change lies in that square.
+    fn touch(&mut self, p: Point2, reach: f64) {
+        self.version += 1;
+        let (cols, rows) = self.window(p, reach);
+        if cols.is_empty() || rows.is_empty() {
+            return;
+        }
+        let bw = self.width.div_ceil(BLOCK);
+        for bj in rows.start / BLOCK..=(rows.end - 1) / BLOCK {
+            self.touched[bj * bw + cols.start / BLOCK..=bj * bw + (cols.end - 1) / BLOCK]
+                .fill(self.version);
         }
     }
 
@@ -170,6 +225,9 @@ impl OccupancyGrid {
     /// Updates the grid from one scan.
     pub fn integrate(&mut self, scan: &Scan) {
         let max = self.params.max_range;
+        // Every beam is traced at most `max` from the scanner; a cell of margin for the
+        // rounding of the ends.
+        self.touch(scan.origin, max + 2.0 * self.params.resolution);
         for k in 0..scan.ranges.len() {
             let r = scan.ranges[k];
             if r == f64::NEG_INFINITY {
@@ -369,6 +427,8 @@ impl OccupancyGrid {
     /// cell outside the grid is ignored.
     pub fn set_value(&mut self, i: usize, j: usize, v: i8) {
         if i < self.width && j < self.height {
+            let c = self.cell_center(i, j);
+            self.touch(c, 0.0);
             self.logodds[j * self.width + i] = match v {
                 UNKNOWN => -0.0,
                 FREE => self.params.l_miss as f32,
@@ -382,6 +442,7 @@ impl OccupancyGrid {
     /// sees but which the robot, standing there, knows to be free. Known cells keep
     /// their value.
     pub fn mark_footprint_free(&mut self, center: Point2, radius: f64) {
+        self.touch(center, radius);
         let (cols, rows) = self.window(center, radius);
         for j in rows {
             for i in cols.clone() {

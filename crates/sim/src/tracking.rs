@@ -223,20 +223,19 @@ impl Tracker {
                 continue;
             };
             let first = k;
-            let mut c = vec![p];
+            let (a, mut b) = (p, p);
             k += 1;
             while k < n
                 && let Some(q) = point(k)
-                && (q - c[c.len() - 1]).norm() <= CLUSTER_GAP
+                && (q - b).norm() <= CLUSTER_GAP
             {
-                c.push(q);
+                b = q;
                 k += 1;
             }
-            let (a, b) = (c[0], c[c.len() - 1]);
             // A cluster cut by the range or a too-close beam: its centroid slides as more
             // or less of the object shows, and says nothing of the object's motion.
             if (b - a).norm() > MAX_EXTENT
-                || c.len() < MIN_POINTS
+                || k - first < MIN_POINTS
                 || first.checked_sub(1).is_some_and(|j| cut(j, a))
                 || (k < n && cut(k, b))
             {
@@ -252,6 +251,9 @@ impl Tracker {
             } else {
                 None
             };
+            // Walls make most clusters, and fail the tests above: only a kept one's points
+            // are gathered (again: `point` is a pure function of the beam).
+            let c: Vec<Point2> = (first..k).filter_map(point).collect();
             let mean = c.iter().fold(Vector2::zeros(), |m, p| m + p.coords) / c.len() as f64;
             let centre = Point2::from(mean);
             let radius = c.iter().map(|p| (p - centre).norm()).fold(0.05, f64::max);

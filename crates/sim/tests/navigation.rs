@@ -129,3 +129,48 @@ fn soak_1000() {
     println!("{}", serde_json::to_string_pretty(&s).unwrap());
     assert_eq!(s.contacts_at_fault, 0, "{s:?}");
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+    /// What `unchanged_near` says has not changed since a version has not: every cell
+    /// overlapping the square is as it was then, whatever mix of scans, footprints and
+    /// hand-set cells came after.
+    #[test]
+    fn unchanged_near_means_unchanged(
+        ops in proptest::collection::vec((0u8..3, 0.3f64..9.7, 0.3f64..9.7, -3.2f64..3.2), 1..8),
+        queries in proptest::collection::vec((0.0f64..10.0, 0.0f64..10.0, 0.0f64..3.0, 0usize..8), 16),
+    ) {
+        let mut walls = StaticWorld::default();
+        walls.add_shape(&sim::Shape::Box { center: (5.0, 5.0), size: (1.0, 3.0), angle_deg: 15.0 });
+        let laser = LaserModel::new(Laser { noise_sd: 0.0, ..Laser::default() });
+        let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(10.0, 10.0));
+        let mut map = OccupancyGrid::new(bounds, Mapping::default());
+        let mut seen = vec![(map.version(), map.ros_values())];
+        for (kind, x, y, h) in ops {
+            let p = Point2::new(x, y);
+            match kind {
+                0 => map.integrate(&laser.cast(&walls, &[], p, h)),
+                1 => map.mark_footprint_free(p, h.abs() / 4.0),
+                _ => map.set_value((x * 20.0) as usize, (y * 20.0) as usize, 100),
+            }
+            seen.push((map.version(), map.ros_values()));
+        }
+        let now = map.ros_values();
+        let w = map.width();
+        for (x, y, r, k) in queries {
+            let (v, then) = &seen[k % seen.len()];
+            let p = Point2::new(x, y);
+            if !map.unchanged_near(p, r, *v) {
+                continue;
+            }
+            // The cells whose square overlaps the query's.
+            let lo = |c: f64| (((c - r) / 0.05).floor().max(0.0)) as usize;
+            let hi = |c: f64| ((((c + r) / 0.05).ceil()) as usize).min(w);
+            for j in lo(y)..hi(y) {
+                for i in lo(x)..hi(x) {
+                    proptest::prop_assert_eq!(now[j * w + i], then[j * w + i], "cell ({}, {}) near {:?} r {} since {}", i, j, p, r, v);
+                }
+            }
+        }
+    }
+}

@@ -8,6 +8,8 @@
 //! cell is above the threshold (on or near an obstacle) or when the unknown area within
 //! `filter_radius` is below `min_gain`.
 
+use std::collections::HashMap;
+
 use hyplan_core::Point2;
 use sampling::NearestIndex;
 
@@ -117,39 +119,62 @@ pub struct Filter {
     /// Least information gain kept, m^2.
     pub min_gain: f64,
     kept: Vec<Point2>,
+    /// The last cycle's verdicts on its centres, keyed by position, with the map version
+    /// they hold at: a centre far from the robot keeps its place and its verdict from
+    /// cycle to cycle, and its area of the map has not changed.
+    verdicts: HashMap<[u64; 2], (u64, bool)>,
 }
 
 impl Filter {
     /// A filter with nothing kept.
     #[must_use]
-    pub const fn new(bandwidth: f64, costmap_threshold: i8, radius: f64, min_gain: f64) -> Self {
+    pub fn new(bandwidth: f64, costmap_threshold: i8, radius: f64, min_gain: f64) -> Self {
         Self {
             bandwidth,
             costmap_threshold,
             radius,
             min_gain,
             kept: Vec::new(),
+            verdicts: HashMap::new(),
         }
     }
 
     /// One cycle: the kept frontiers and the `published` points since the last cycle are
     /// clustered, and the centres that pass on `map` (information gain) and `cost` (the
     /// costmap value at a point, e.g. [`built_cost`]) are kept (and returned).
+    ///
+    /// `cost_reach`: how far from a point `cost` reads `map`, m (for [`built_cost`], the
+    /// inflation radius and a cell). A centre found again at the same position keeps its
+    /// verdict while no cell within that distance or the gain's radius has changed
+    /// ([`OccupancyGrid::unchanged_near`]); the result is the same as testing it anew.
     pub fn update(
         &mut self,
         published: &[Point2],
         map: &OccupancyGrid,
         cost: impl Fn(Point2) -> i8,
+        cost_reach: f64,
     ) -> &[Point2] {
         let mut all = std::mem::take(&mut self.kept);
         all.extend_from_slice(published);
-        self.kept = mean_shift(&all, self.bandwidth)
-            .into_iter()
-            .filter(|&c| {
-                cost(c) <= self.costmap_threshold
-                    && information_gain(map, c, self.radius) >= self.min_gain
-            })
-            .collect();
+        let reach = cost_reach.max(self.radius) + map.params.resolution;
+        let version = map.version();
+        let before = std::mem::take(&mut self.verdicts);
+        let mut kept = Vec::new();
+        for c in mean_shift(&all, self.bandwidth) {
+            let key = [c.x.to_bits(), c.y.to_bits()];
+            let pass = match before.get(&key) {
+                Some(&(at, pass)) if map.unchanged_near(c, reach, at) => pass,
+                _ => {
+                    cost(c) <= self.costmap_threshold
+                        && information_gain(map, c, self.radius) >= self.min_gain
+                }
+            };
+            self.verdicts.insert(key, (version, pass));
+            if pass {
+                kept.push(c);
+            }
+        }
+        self.kept = kept;
         &self.kept
     }
 

@@ -558,7 +558,16 @@ pub fn explore_with(
             };
             if rrt {
                 all_published.extend_from_slice(&published);
-                candidates = filter.update(&published, &map, frontier_cost).to_vec();
+                // Where `frontier_cost` reads the map: `built_cost`'s square of `reach`
+                // cells and one, or the point's own cell.
+                let cost_reach = if ex.view_points {
+                    0.0
+                } else {
+                    ((inflation.inflation_radius / res).ceil() + 2.0) * res
+                };
+                candidates = filter
+                    .update(&published, &map, frontier_cost, cost_reach)
+                    .to_vec();
                 published.clear();
             }
             if let Some(g) = goal {
