@@ -6,7 +6,7 @@
 //! gives the few beams that can hit it, and only those are intersected. The result is the
 //! same as the beam-by-beam minimum (a property test checks it against parry2d's ray casts).
 
-use hyplan_core::Point2;
+use hyplan_core::{Bounds, Point2};
 use nalgebra::Vector2;
 use rand::Rng;
 use rand_distr::{Distribution, Normal};
@@ -85,6 +85,24 @@ impl Scan {
     pub fn hit(&self, k: usize) -> Option<Point2> {
         let r = self.ranges[k];
         r.is_finite().then(|| self.origin + self.directions[k] * r)
+    }
+
+    /// The box holding every segment a map update with range `max` traces from this scan
+    /// ([`crate::OccupancyGrid::integrate`]'s rule: to the hit, or `max` along a beam
+    /// without one within it; nothing for a beam too close to measure), and the origin.
+    #[must_use]
+    pub fn traced_bounds(&self, max: f64) -> Bounds {
+        let (mut lo, mut hi) = (self.origin, self.origin);
+        for (r, d) in self.ranges.iter().zip(&self.directions) {
+            if *r == f64::NEG_INFINITY {
+                continue;
+            }
+            let len = if r.is_finite() && *r <= max { *r } else { max };
+            let end = self.origin + d * len;
+            lo = Point2::new(lo.x.min(end.x), lo.y.min(end.y));
+            hi = Point2::new(hi.x.max(end.x), hi.y.max(end.y));
+        }
+        Bounds::new(lo, hi)
     }
 
     /// The beam pointing nearest to world direction `angle`, if inside the field of view.

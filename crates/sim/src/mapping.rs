@@ -202,14 +202,19 @@ impl OccupancyGrid {
         center: Point2,
         reach: f64,
     ) -> (std::ops::Range<usize>, std::ops::Range<usize>) {
+        let d = nalgebra::Vector2::new(reach, reach);
+        self.window_of(Bounds::new(center - d, center + d))
+    }
+
+    /// The columns and rows of the cells `area` overlaps, clamped to the grid.
+    fn window_of(&self, area: Bounds) -> (std::ops::Range<usize>, std::ops::Range<usize>) {
         let res = self.params.resolution;
         let o = self.origin;
-        let lo = |c: f64, o: f64| ((c - reach - o) / res).floor().max(0.0) as usize;
-        let hi =
-            |c: f64, o: f64, n: usize| (((c + reach - o) / res).ceil().max(0.0) as usize).min(n);
+        let lo = |c: f64, o: f64| ((c - o) / res).floor().max(0.0) as usize;
+        let hi = |c: f64, o: f64, n: usize| (((c - o) / res).ceil().max(0.0) as usize).min(n);
         (
-            lo(center.x, o.x)..hi(center.x, o.x, self.width),
-            lo(center.y, o.y)..hi(center.y, o.y, self.height),
+            lo(area.min.x, o.x)..hi(area.max.x, o.x, self.width),
+            lo(area.min.y, o.y)..hi(area.max.y, o.y, self.height),
         )
     }
 
@@ -365,6 +370,24 @@ impl OccupancyGrid {
     #[must_use]
     pub fn count_free_near(&self, mask: &[bool], center: Point2, reach: f64) -> usize {
         let (cols, rows) = self.window(center, reach);
+        self.count_free_window(mask, cols, rows)
+    }
+
+    /// [`Self::count_free`] over the cells `area` overlaps (clamped to the grid) only: as
+    /// [`Self::count_free_near`], for an update whose cells fit a box that is not a
+    /// square around a point ([`Scan::traced_bounds`]).
+    #[must_use]
+    pub fn count_free_in(&self, mask: &[bool], area: Bounds) -> usize {
+        let (cols, rows) = self.window_of(area);
+        self.count_free_window(mask, cols, rows)
+    }
+
+    fn count_free_window(
+        &self,
+        mask: &[bool],
+        cols: std::ops::Range<usize>,
+        rows: std::ops::Range<usize>,
+    ) -> usize {
         let mut n = 0;
         for j in rows {
             let row = j * self.width;

@@ -465,13 +465,6 @@ pub fn explore_with(
     let mut turned = ex.initial_turn.then_some(0.0);
     // Free reachable cells of the built map, kept up to date window by window.
     let mut free_count = map.count_free(&reach);
-    // Every cell a map update touches: the beams reach `max_range` from the scanner, the
-    // footprint `mount_offset + body_radius`; two cells of margin for the rounding.
-    let window = scenario
-        .mapping
-        .max_range
-        .max(scenario.laser.mount_offset.abs() + robot.body_radius)
-        + 2.0 * res;
     let sample = |n: usize, t: f64| Coverage {
         t,
         known_free: n as f64 * cell_area,
@@ -514,12 +507,25 @@ pub fn explore_with(
             let mut scan = laser.cast(&world.statics, &people, o, h);
             laser.add_noise(&mut scan, &mut noise_rng);
             if tick % map_every == 0 {
-                // Only cells within `window` of the scanner change: recount those.
-                let before = map.count_free_near(&reach, o, window);
+                // Only cells in the box of the traced beams and the footprint change
+                // (two cells of margin for the rounding): recount those.
+                let traced = scan.traced_bounds(scenario.mapping.max_range);
+                let (m, r) = (2.0 * res, robot.body_radius + 2.0 * res);
+                let area = Bounds::new(
+                    Point2::new(
+                        (traced.min.x - m).min(here.x - r),
+                        (traced.min.y - m).min(here.y - r),
+                    ),
+                    Point2::new(
+                        (traced.max.x + m).max(here.x + r),
+                        (traced.max.y + m).max(here.y + r),
+                    ),
+                );
+                let before = map.count_free_in(&reach, area);
                 map.integrate(&scan);
                 map_version += 1;
                 map.mark_footprint_free(here, robot.body_radius);
-                free_count = free_count - before + map.count_free_near(&reach, o, window);
+                free_count = free_count - before + map.count_free_in(&reach, area);
                 debug_assert_eq!(free_count, map.count_free(&reach), "window missed a cell");
                 coverage.push(sample(free_count, t));
                 progress(&coverage[coverage.len() - 1]);
