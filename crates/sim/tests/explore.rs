@@ -623,6 +623,8 @@ mod properties {
             }
             prop_assert_eq!(g.count_unknown_within(c, r), unknown);
             prop_assert_eq!(g.count_free_near(&mask, c, r), free);
+            let d = nalgebra::Vector2::new(r, r);
+            prop_assert_eq!(g.count_free_in(&mask, Bounds::new(c - d, c + d)), free);
         }
 
         /// Mean-shift centres lie in the points' bounding box, are at least a bandwidth

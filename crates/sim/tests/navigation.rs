@@ -174,3 +174,38 @@ proptest::proptest! {
         }
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+    /// A map update changes no cell outside the box of the scan's traced beams (two cells
+    /// of margin): the exploration recounts its coverage over that box only.
+    #[test]
+    fn integrate_stays_in_traced_bounds(
+        scans in proptest::collection::vec((0.3f64..9.7, 0.3f64..9.7, -3.2f64..3.2), 1..6),
+        range in 0.5f64..6.0,
+    ) {
+        let mut walls = StaticWorld::default();
+        walls.add_shape(&sim::Shape::Box { center: (5.0, 5.0), size: (1.0, 3.0), angle_deg: 15.0 });
+        let laser = LaserModel::new(Laser { noise_sd: 0.0, ..Laser::default() });
+        let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(10.0, 10.0));
+        let mut map = OccupancyGrid::new(bounds, Mapping { max_range: range, ..Mapping::default() });
+        let w = map.width();
+        for (x, y, h) in scans {
+            let scan = laser.cast(&walls, &[], Point2::new(x, y), h);
+            let b = scan.traced_bounds(range);
+            let before = map.ros_values();
+            map.integrate(&scan);
+            for (k, (a, z)) in before.iter().zip(map.ros_values()).enumerate() {
+                if *a == z {
+                    continue;
+                }
+                let c = map.cell_center(k % w, k / w);
+                let m = 2.0 * 0.05 + 0.025;
+                proptest::prop_assert!(
+                    c.x >= b.min.x - m && c.x <= b.max.x + m && c.y >= b.min.y - m && c.y <= b.max.y + m,
+                    "cell {:?} changed outside {:?}", c, b
+                );
+            }
+        }
+    }
+}
