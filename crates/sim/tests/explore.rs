@@ -627,6 +627,42 @@ mod properties {
             prop_assert_eq!(g.count_free_in(&mask, Bounds::new(c - d, c + d)), free);
         }
 
+        /// The filter's kept verdicts change nothing: cycle after cycle, it keeps the same
+        /// frontiers as a new filter (no verdicts) given its kept frontiers and the
+        /// published points. The same points are published every cycle, so their centres
+        /// keep their places while scans map the space around them (fails when a verdict
+        /// is kept regardless of the map).
+        #[test]
+        fn filter_verdicts_kept_only_while_valid(
+            points in proptest::collection::vec((1.0..9.0f64, 1.0..9.0f64), 1..16),
+            poses in proptest::collection::vec((-0.8..0.8f64, -0.8..0.8f64, -3.2..3.2f64), 1..24),
+        ) {
+            let mut walls = sim::StaticWorld::default();
+            walls.add_shape(&sim::Shape::Box { center: (3.0, 6.0), size: (0.6, 4.0), angle_deg: 0.0 });
+            walls.add_shape(&sim::Shape::Box { center: (7.0, 3.0), size: (2.0, 0.5), angle_deg: 30.0 });
+            let laser = sim::LaserModel::new(sim::Laser { noise_sd: 0.0, ..sim::Laser::default() });
+            // A short mapping range, so that an update leaves most of the map alone.
+            let mapping = Mapping { max_range: 1.0, ..Mapping::default() };
+            let mut map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(10.0, 10.0)), mapping);
+            let inflation = envmap::Inflation { inflation_radius: 0.6, ..envmap::Inflation::default() };
+            let reach = ((inflation.inflation_radius / 0.05).ceil() + 2.0) * 0.05;
+            // Half the gain's disc unknown to pass: one scan from beside a point can fail it.
+            let filter = || sim::explore::Filter::new(0.3, 70, 0.4, 0.25);
+            let mut kept = filter();
+            let mut fresh: Vec<Point2> = Vec::new();
+            let published: Vec<Point2> = points.into_iter().map(|(x, y)| p(x, y)).collect();
+            for (k, (dx, dy, h)) in poses.into_iter().enumerate() {
+                // Scan from beside one of the points, in turn.
+                let at = published[k % published.len()] + nalgebra::Vector2::new(dx, dy);
+                map.integrate(&laser.cast(&walls, &[], at, h));
+                let cost = |q: Point2| sim::explore::filter::built_cost(&map, &inflation, q);
+                let a = kept.update(&published, &map, cost, reach).to_vec();
+                fresh.extend_from_slice(&published);
+                fresh = filter().update(&fresh, &map, cost, reach).to_vec();
+                prop_assert_eq!(a, fresh.clone());
+            }
+        }
+
         /// Mean-shift centres lie in the points' bounding box, are at least a bandwidth
         /// apart, and number no more than the points.
         #[test]

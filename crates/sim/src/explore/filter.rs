@@ -143,10 +143,11 @@ impl Filter {
     /// clustered, and the centres that pass on `map` (information gain) and `cost` (the
     /// costmap value at a point, e.g. [`built_cost`]) are kept (and returned).
     ///
-    /// `cost_reach`: how far from a point `cost` reads `map`, m (for [`built_cost`], the
-    /// inflation radius and a cell). A centre found again at the same position keeps its
-    /// verdict while no cell within that distance or the gain's radius has changed
-    /// ([`OccupancyGrid::unchanged_near`]); the result is the same as testing it anew.
+    /// `cost` must read nothing but `map`, and that no farther than `cost_reach` m from
+    /// its point (for [`built_cost`]: the inflation radius and two cells). A centre found
+    /// again at the same position keeps its verdict while no cell within that distance
+    /// or the gain's radius has changed ([`OccupancyGrid::unchanged_near`]); the result is
+    /// the same as testing it anew.
     pub fn update(
         &mut self,
         published: &[Point2],
