@@ -268,19 +268,9 @@ impl LaserModel {
                         d += tau;
                     }
                     let (lo, span) = if d >= 0.0 { (ua, d) } else { (ub, -d) };
-                    let span = spans(lo, span);
-                    for range in span {
-                        for k in range {
-                            if ranges[k] < behind {
-                                continue;
-                            }
-                            if let Some(t) = ray_segment(dirs[k], pa, e)
-                                && t < ranges[k]
-                            {
-                                ranges[k] = t;
-                            }
-                        }
-                    }
+                    lower(&mut ranges, spans(lo, span), behind, |k| {
+                        ray_segment(dirs[k], pa, e)
+                    });
                 }
                 Obstacle::Disc(i) => {
                     let disc = if i < discs {
@@ -292,18 +282,9 @@ impl LaserModel {
                     let half = (disc.radius / rel.norm()).asin();
                     let mid = u_of(rel);
                     let span = spans((mid - half).rem_euclid(tau), 2.0 * half);
-                    for range in span {
-                        for k in range {
-                            if ranges[k] < behind {
-                                continue;
-                            }
-                            if let Some(t) = ray_disc(dirs[k], rel, disc.radius)
-                                && t < ranges[k]
-                            {
-                                ranges[k] = t;
-                            }
-                        }
-                    }
+                    lower(&mut ranges, span, behind, |k| {
+                        ray_disc(dirs[k], rel, disc.radius)
+                    });
                 }
             }
         }
@@ -338,6 +319,28 @@ impl LaserModel {
         for r in &mut scan.ranges {
             if r.is_finite() {
                 *r = (*r + noise.sample(rng)).clamp(lo, hi);
+            }
+        }
+    }
+}
+
+/// Lowers each range of the beams in `spans` to the obstacle's hit `hit(k)` where that is
+/// nearer; a beam already shorter than `behind` (the obstacle's distance) is skipped.
+fn lower(
+    ranges: &mut [f64],
+    spans: [std::ops::Range<usize>; 2],
+    behind: f64,
+    hit: impl Fn(usize) -> Option<f64>,
+) {
+    for range in spans {
+        for k in range {
+            if ranges[k] < behind {
+                continue;
+            }
+            if let Some(t) = hit(k)
+                && t < ranges[k]
+            {
+                ranges[k] = t;
             }
         }
     }

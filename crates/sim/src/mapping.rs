@@ -114,34 +114,37 @@ impl OccupancyGrid {
     /// still holds when this is `true`.
     #[must_use]
     pub fn unchanged_near(&self, p: Point2, reach: f64, since: u64) -> bool {
-        if since >= self.version {
-            return true;
-        }
-        let (cols, rows) = self.window(p, reach);
-        if cols.is_empty() || rows.is_empty() {
-            return true;
-        }
-        let bw = self.width.div_ceil(BLOCK);
-        (rows.start / BLOCK..=(rows.end - 1) / BLOCK).all(|bj| {
-            self.touched[bj * bw + cols.start / BLOCK..=bj * bw + (cols.end - 1) / BLOCK]
-                .iter()
-                .all(|&v| v <= since)
-        })
+        since >= self.version
+            || self
+                .blocks(p, reach)
+                .all(|r| self.touched[r].iter().all(|&v| v <= since))
     }
 
     /// A new version, stamped on the blocks the square of half-side `reach` around `p`
     /// overlaps: every cell the caller is about to change lies in that square.
     fn touch(&mut self, p: Point2, reach: f64) {
         self.version += 1;
+        for r in self.blocks(p, reach) {
+            self.touched[r].fill(self.version);
+        }
+    }
+
+    /// The blocks the square of half-side `reach` around `p` overlaps, as one range of
+    /// `touched` per row of blocks (none when the square misses the grid).
+    fn blocks(
+        &self,
+        p: Point2,
+        reach: f64,
+    ) -> impl Iterator<Item = std::ops::Range<usize>> + use<> {
         let (cols, rows) = self.window(p, reach);
-        if cols.is_empty() || rows.is_empty() {
-            return;
-        }
         let bw = self.width.div_ceil(BLOCK);
-        for bj in rows.start / BLOCK..=(rows.end - 1) / BLOCK {
-            self.touched[bj * bw + cols.start / BLOCK..=bj * bw + (cols.end - 1) / BLOCK]
-                .fill(self.version);
-        }
+        let (c0, c1) = (cols.start / BLOCK, cols.end.div_ceil(BLOCK));
+        let block_rows = if cols.is_empty() || rows.is_empty() {
+            0..0
+        } else {
+            rows.start / BLOCK..rows.end.div_ceil(BLOCK)
+        };
+        block_rows.map(move |bj| bj * bw + c0..bj * bw + c1)
     }
 
     /// Columns.

@@ -453,55 +453,34 @@ fn field_of(text: &str) -> String {
 
 #[test]
 fn bad_input_names_the_field() {
-    let base = |extra: &str, laser: &str| {
-        format!(
+    // (exploration fields, laser fields, the field the error must name)
+    let cases = [
+        ("eta_local: -1.0", "", "exploration.eta_local"),
+        ("eta_global: inf", "", "exploration.eta_global"),
+        ("eta_global: NaN", "", "exploration.eta_global"),
+        ("info_radius: 0.0", "", "exploration.info_radius"),
+        ("filter_radius: -0.5", "", "exploration.filter_radius"),
+        (
+            "view_points: true, view_range: 0.0",
+            "",
+            "exploration.view_range",
+        ),
+        ("view_max_cost: 101", "", "exploration.view_max_cost"),
+        (
+            "region: [(2.0, 0.0), (6.0, 0.0), (6.0, 3.0), (2.0, 3.0)]",
+            "",
+            "exploration.region",
+        ),
+        ("", "laser: (fov_deg: 0.0),", "laser.fov_deg"),
+        ("", "laser: (fov_deg: 400.0),", "laser.fov_deg"),
+    ];
+    for (extra, laser, field) in cases {
+        let text = format!(
             r#"SimScenario(name: "x", world: (size: (6.0, 3.0)), start: (1.0, 1.5), goal: (5.0, 1.5),
                known_map: false, {laser} exploration: ({extra}))"#
-        )
-    };
-    assert_eq!(
-        field_of(&base("eta_local: -1.0", "")),
-        "exploration.eta_local"
-    );
-    assert_eq!(
-        field_of(&base("eta_global: inf", "")),
-        "exploration.eta_global"
-    );
-    assert_eq!(
-        field_of(&base("eta_global: NaN", "")),
-        "exploration.eta_global"
-    );
-    assert_eq!(
-        field_of(&base("info_radius: 0.0", "")),
-        "exploration.info_radius"
-    );
-    assert_eq!(
-        field_of(&base("filter_radius: -0.5", "")),
-        "exploration.filter_radius"
-    );
-    assert_eq!(
-        field_of(&base("view_points: true, view_range: 0.0", "")),
-        "exploration.view_range"
-    );
-    assert_eq!(
-        field_of(&base("view_max_cost: 101", "")),
-        "exploration.view_max_cost"
-    );
-    assert_eq!(
-        field_of(&base(
-            "region: [(2.0, 0.0), (6.0, 0.0), (6.0, 3.0), (2.0, 3.0)]",
-            ""
-        )),
-        "exploration.region"
-    );
-    assert_eq!(
-        field_of(&base("", "laser: (fov_deg: 0.0),")),
-        "laser.fov_deg"
-    );
-    assert_eq!(
-        field_of(&base("", "laser: (fov_deg: 400.0),")),
-        "laser.fov_deg"
-    );
+        );
+        assert_eq!(field_of(&text), field, "{extra} {laser}");
+    }
 }
 
 #[test]
@@ -645,7 +624,7 @@ mod properties {
             let mapping = Mapping { max_range: 1.0, ..Mapping::default() };
             let mut map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(10.0, 10.0)), mapping);
             let inflation = envmap::Inflation { inflation_radius: 0.6, ..envmap::Inflation::default() };
-            let reach = ((inflation.inflation_radius / 0.05).ceil() + 2.0) * 0.05;
+            let reach = sim::explore::filter::built_cost_reach(&inflation, 0.05);
             // Half the gain's disc unknown to pass: one scan from beside a point can fail it.
             let filter = || sim::explore::Filter::new(0.3, 70, 0.4, 0.25);
             let mut kept = filter();

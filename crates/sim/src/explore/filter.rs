@@ -88,8 +88,20 @@ pub fn built_cost(map: &OccupancyGrid, inflation: &Inflation, p: Point2) -> i8 {
     let Some((ci, cj)) = map.cell_of(p) else {
         return 100;
     };
-    let reach = (inflation.inflation_radius / map.params.resolution).ceil() as usize + 1;
+    let reach = built_cost_cells(inflation, map.params.resolution);
     ros_cost(inflation.cost(map.nearest_occupied_centre(p, (ci, cj), reach)))
+}
+
+/// How far from its point [`built_cost`] reads the map, m: the square of cells it
+/// searches, with the point's own cell (the `cost_reach` of [`Filter::update`]).
+#[must_use]
+pub fn built_cost_reach(inflation: &Inflation, resolution: f64) -> f64 {
+    (built_cost_cells(inflation, resolution) + 1) as f64 * resolution
+}
+
+/// Half-side, in cells, of the square of cells [`built_cost`] searches.
+fn built_cost_cells(inflation: &Inflation, resolution: f64) -> usize {
+    (inflation.inflation_radius / resolution).ceil() as usize + 1
 }
 
 /// The costmap's ROS value (0-100) at `p`; 100 off the map.
@@ -144,7 +156,7 @@ impl Filter {
     /// costmap value at a point, e.g. [`built_cost`]) are kept (and returned).
     ///
     /// `cost` must read nothing but `map`, and that no farther than `cost_reach` m from
-    /// its point (for [`built_cost`]: the inflation radius and two cells). A centre found
+    /// its point (for [`built_cost`]: [`built_cost_reach`]). A centre found
     /// again at the same position keeps its verdict while no cell within that distance
     /// or the gain's radius has changed ([`OccupancyGrid::unchanged_near`]); the result is
     /// the same as testing it anew.

@@ -34,7 +34,7 @@ use rand_chacha::ChaCha8Rng;
 use crate::costmap::{mark_near_segments, rasterize};
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region, RegionError};
-use crate::explore::filter::{Filter, built_cost, information_gain};
+use crate::explore::filter::{Filter, built_cost, built_cost_reach, information_gain};
 use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
 use crate::explore::params::Strategy;
 use crate::explore::viewpoint::ViewPoints;
@@ -564,12 +564,12 @@ pub fn explore_with(
             };
             if rrt {
                 all_published.extend_from_slice(&published);
-                // Where `frontier_cost` reads the map: `built_cost`'s square of `reach`
-                // cells and one, or the point's own cell.
+                // Where `frontier_cost` reads the map: `built_cost`'s square, or the
+                // point's own cell.
                 let cost_reach = if ex.view_points {
                     0.0
                 } else {
-                    ((inflation.inflation_radius / res).ceil() + 2.0) * res
+                    built_cost_reach(&inflation, res)
                 };
                 candidates = filter
                     .update(&published, &map, frontier_cost, cost_reach)
