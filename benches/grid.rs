@@ -1,7 +1,7 @@
 //! Grid A* workloads shared by the `grid_search` bench and the `grid_astar_rounds`
 //! example: the MovingAI suites, the generated 512 x 512 maps, and the peer
-//! (`pathfinding::directed::astar::astar` written as `shared/peers/pathfinding-astar`
-//! writes it).
+//! (`pathfinding::directed::astar::astar` written as the stand-alone `pathfinding-astar`
+//! peer writes it).
 
 use std::path::{Path, PathBuf};
 
@@ -27,9 +27,9 @@ pub struct Suite {
     pub queries: Vec<Scenario>,
 }
 
-/// The `shared` folder beside the repository.
-pub fn shared() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared")
+/// The repository's `data` folder (public maps with their licences).
+pub fn data() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../data")
 }
 
 /// A MovingAI map and every scenario of its `.scen` file.
@@ -48,7 +48,7 @@ pub fn suite(name: &'static str, map: &Path, scen: &Path) -> Suite {
 }
 
 /// The peer: `pathfinding::directed::astar::astar` on the same grid and rules, as the
-/// stand-alone peer in `shared/peers/pathfinding-astar` runs it.
+/// stand-alone `pathfinding-astar` peer (outside this repository) runs it.
 pub fn peer_astar(map: &GridMap, start: (usize, usize), goal: (usize, usize)) -> Option<f64> {
     let (w, h) = (map.width() as i64, map.height() as i64);
     let free = |x: i64, y: i64| {
@@ -234,19 +234,19 @@ pub fn generated() -> Vec<Suite> {
         .collect()
 }
 
-/// The two MovingAI suites of the main group: `shared/data`'s arena pair (160 scenarios)
-/// and the peers' 101 x 101 maze (101 scenarios).
+/// The two MovingAI suites of the main group: `data/movingai`'s arena pair (160 scenarios)
+/// and the peers' 101 x 101 maze (`data/generated`) (101 scenarios).
 pub fn movingai() -> [Suite; 2] {
     [
         suite(
             "arena",
-            &shared().join("data/movingai/arena.map"),
-            &shared().join("data/movingai/arena.map.scen"),
+            &data().join("movingai/arena.map"),
+            &data().join("movingai/arena.map.scen"),
         ),
         suite(
             "maze",
-            &shared().join("peers/maps/maze.map"),
-            &shared().join("peers/maps/maze.scen"),
+            &data().join("generated/maze.map"),
+            &data().join("generated/maze.scen"),
         ),
     ]
 }

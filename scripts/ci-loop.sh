@@ -4,8 +4,8 @@
 #
 #   scripts/ci-loop.sh REPO COMMIT N WORKDIR
 #
-# Each pass clones REPO at COMMIT into WORKDIR/run (with WORKDIR/shared -> ../shared beside
-# it), runs .ci/run, and writes WORKDIR/log/pass-K.log, the per-test outcomes
+# Each pass clones REPO at COMMIT into WORKDIR/run (nothing beside it: the repository
+# carries its own data), runs .ci/run, and writes WORKDIR/log/pass-K.log, the per-test outcomes
 # (pass-K.tests: one `test NAME ... ok|FAILED|ignored` line per Rust test, sorted) and a
 # line in WORKDIR/log/summary.txt. The cargo target directories are carried from pass to
 # pass as a CI cache would carry them, and every source file gets one fixed mtime so that
@@ -14,8 +14,6 @@
 set -u
 REPO=$1; COMMIT=$2; N=$3; W=$4
 mkdir -p "$W/log"
-SHARED=$(cd "$(dirname "$0")/../../shared" 2>/dev/null && pwd)
-[ -e "$W/shared" ] || ln -s "${SHARED:?../shared not found beside the repo}" "$W/shared"
 for k in $(seq 1 "$N"); do
     rm -rf "$W/run"
     git clone -q "$REPO" "$W/run" && git -C "$W/run" checkout -q "$COMMIT"

@@ -2,7 +2,7 @@
 # Fixed hyplan plan --json runs for before/after comparisons: $1 = hyplan binary, $2 = output file.
 set -u
 B=$1; OUT=$2; : > "$OUT"
-M="$(dirname "$0")/../../shared/data/movingai/arena.map"
+M="$(dirname "$0")/../data/movingai/arena.map"
 for p in rrt rrt-star bi-rrt rrt-connect astar dijkstra theta-star rrt-astar-bt rrt-astar-refine hybrid-rrt-astar safe-rrt-star ga-pchip; do
   for sm in none pchip; do
     echo "## $p $sm" >> "$OUT"

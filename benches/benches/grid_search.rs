@@ -3,10 +3,10 @@
 //!
 //! Run with `cargo bench -p hyplan-benches --bench grid_search`.
 //!
-//! Both run the same MovingAI scenarios (all 160 of `shared/data/movingai/arena.map.scen`,
-//! all 101 of `shared/peers/maps/maze.scen`) on the same grid with the same rules: 8
+//! Both run the same MovingAI scenarios (all 160 of `data/movingai/arena.map.scen`,
+//! all 101 of `data/generated/maze.scen`) on the same grid with the same rules: 8
 //! neighbours, costs 1 and sqrt 2, no corner cutting, octile heuristic. The peer is written
-//! as `shared/peers/pathfinding-astar` writes it (`u32` cell ids, `OrderedFloat<f64>`
+//! as the stand-alone `pathfinding-astar` peer writes it (`u32` cell ids, `OrderedFloat<f64>`
 //! costs, successors in a fixed array). Before timing, every scenario is solved once by
 //! both and both costs are checked against the `.scen` optimum (`max(1e-3, 1e-5 len)`).
 //! One iteration = every scenario of the file once; throughput is counted in scenarios.

@@ -13,14 +13,14 @@ use sampling::{Rrt, RrtConnect};
 fn bench_rrt(c: &mut Criterion) {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/peers/maps/rects100.pgm"
+        "/../data/generated/rects100.pgm"
     );
     let opts = LoadOptions {
         threshold: 128,
         safety_radius: Some(0.0),
         ..LoadOptions::default()
     };
-    let loaded = load_map(path.as_ref(), &opts).expect("rects100.pgm loads (../shared)");
+    let loaded = load_map(path.as_ref(), &opts).unwrap_or_else(|e| panic!("{path}: {e}"));
     let map = loaded.map;
     let query = Query::new(
         loaded.frame.to_world(5.5, 5.5),

@@ -6,8 +6,8 @@
 //! cargo run --release -p hyplan-benches --example grid_astar_rounds [-- ROUNDS [--generated]]
 //! ```
 //!
-//! Without `--generated`: the bench's MovingAI suites (the arena pair of `shared/data` and
-//! the peers' maze); with it, the generated 512 x 512 maps as well.
+//! Without `--generated`: the bench's MovingAI suites (the arena pair of `data/movingai` and
+//! the peers' maze of `data/generated`); with it, the generated 512 x 512 maps as well.
 
 use std::hint::black_box;
 use std::time::Instant;

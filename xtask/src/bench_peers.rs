@@ -69,7 +69,7 @@ struct Case {
 const CASES: &[Case] = &[
     Case {
         name: "rects100",
-        map: "../shared/peers/maps/rects100.pgm",
+        map: "data/generated/rects100.pgm",
         start: (5.5, 5.5),
         goal: (94.5, 94.5),
         step: 5.0,
@@ -78,7 +78,7 @@ const CASES: &[Case] = &[
     },
     Case {
         name: "maze101",
-        map: "../shared/peers/maps/maze.pgm",
+        map: "data/generated/maze.pgm",
         start: (2.5, 2.5),
         goal: (98.5, 98.5),
         step: 3.0,
@@ -97,7 +97,7 @@ const CASES: &[Case] = &[
     },
     Case {
         name: "arena.map",
-        map: "../shared/data/movingai/arena.map",
+        map: "data/movingai/arena.map",
         start: (1.5, 45.5),
         goal: (47.5, 9.5),
         step: 3.0,
@@ -155,7 +155,12 @@ fn build_peer(root: &Path, rebuild: bool) -> anyhow::Result<PathBuf> {
     }
     let src = root.join("../shared/peers/ompl");
     std::fs::create_dir_all(&dir)?;
-    for entry in std::fs::read_dir(&src).with_context(|| format!("reading {}", src.display()))? {
+    for entry in std::fs::read_dir(&src).with_context(|| {
+        format!(
+            "reading {}: the OMPL peer's sources (the benchmark peers folder beside the repository)",
+            src.display()
+        )
+    })? {
         let entry = entry?;
         if entry.file_type()?.is_file() {
             std::fs::copy(entry.path(), dir.join(entry.file_name()))?;

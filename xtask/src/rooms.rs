@@ -96,7 +96,11 @@ pub fn shortest_safe(
     let s = hyplan_core::Point2::new(start.0, h - start.1);
     let g = hyplan_core::Point2::new(goal.0, h - goal.1);
     let query = hyplan_core::Query::new(s, hyplan_core::Goal::Point(g));
-    let theta = search::ThetaStar::default();
+    // The original (eager) Theta*: the rooms were fitted with its lengths.
+    let theta = search::ThetaStar {
+        lazy: false,
+        ..search::ThetaStar::default()
+    };
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
     let plan = theta
         .plan(&map, &query, &mut rng)

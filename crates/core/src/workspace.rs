@@ -65,6 +65,13 @@ pub trait Workspace {
         None
     }
 
+    /// The number of cells of a grid workspace (`None` for a workspace without cells, the
+    /// default): what the planners that sample size their default budget by
+    /// ([`Budget::samples_for`](crate::Budget::samples_for)).
+    fn cells(&self) -> Option<usize> {
+        None
+    }
+
     /// The concrete workspace, for planners that need more than this trait (grid searches
     /// downcast it to a grid map). `None` by default.
     fn as_any(&self) -> Option<&dyn std::any::Any> {
@@ -113,6 +120,9 @@ impl<W: Workspace + ?Sized> Workspace for &W {
     }
     fn disconnection(&self, query: &crate::Query) -> Option<crate::NoPathCause> {
         (**self).disconnection(query)
+    }
+    fn cells(&self) -> Option<usize> {
+        (**self).cells()
     }
     fn as_any(&self) -> Option<&dyn std::any::Any> {
         (**self).as_any()

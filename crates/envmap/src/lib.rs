@@ -32,7 +32,9 @@
 //! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension,
 //!   within a memory limit ([`DEFAULT_MAX_CELLS`]).
 //! - [`read_movingai`], [`parse_movingai`]: MovingAI `.map`.
-//! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`], [`write_ros`]: ROS map_server.
+//! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`]: ROS map_server; [`write_ros`]
+//!   (a three-zone map, `mode: scale`) and [`write_ros_occupancy`] (free / occupied /
+//!   unknown cells, `mode: trinary`, as map_saver): binary PGM (`P5`) plus YAML.
 //! - [`read_picture`], [`decode_picture`], [`write_picture`], [`render_zones`],
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
@@ -104,8 +106,9 @@ pub use io::image::{
 };
 pub use io::movingai::{parse_movingai, read_movingai};
 pub use io::ros::{
-    ROS_FREE, ROS_OCCUPIED, ROS_RISK, RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml,
-    ros_cell_counts, write_ros,
+    Occupancy, ROS_FREE, ROS_FREE_THRESH, ROS_OCCUPIED, ROS_OCCUPIED_THRESH, ROS_RISK, ROS_UNKNOWN,
+    RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml, ros_cell_counts, write_ros,
+    write_ros_occupancy,
 };
 pub use io::{DEFAULT_MAX_CELLS, LoadOptions, LoadedMap, MapKind, load_map};
 pub use mask::Mask;

@@ -338,6 +338,10 @@ impl Workspace for GridMap {
         crate::connectivity::disconnection(self, query, crate::connectivity::Moves::Four)
     }
 
+    fn cells(&self) -> Option<usize> {
+        Some(self.width() * self.height())
+    }
+
     fn as_any(&self) -> Option<&dyn std::any::Any> {
         Some(self)
     }

@@ -1,4 +1,4 @@
-//! The shared data maps load with the sizes and counts `/work/shared/data/README.md` gives.
+//! The repository's data maps load with the sizes and counts `data/README.md` gives.
 
 use std::path::{Path, PathBuf};
 
@@ -8,27 +8,19 @@ use envmap::{
 };
 use hyplan_core::{Point2, Zone};
 
-/// The shared data directory (`HYPLAN_DATA` overrides it).
-fn data_dir() -> PathBuf {
-    std::env::var_os("HYPLAN_DATA")
-        .map_or_else(|| PathBuf::from("/work/shared/data"), PathBuf::from)
-}
-
-fn data(rel: &str) -> Option<PathBuf> {
-    let p = data_dir().join(rel);
-    if p.exists() {
-        Some(p)
-    } else {
-        eprintln!("skipping: {} not found", p.display());
-        None
-    }
+/// The repository's `data` folder (public maps with their licences).
+fn data(rel: &str) -> PathBuf {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../data")
+        .join(rel);
+    // Missing data fails the test, naming the path: a test never passes without its input.
+    assert!(p.exists(), "test data missing: {}", p.display());
+    p
 }
 
 #[test]
 fn arena_has_2054_passable_cells() {
-    let Some(path) = data("movingai/arena.map") else {
-        return;
-    };
+    let path = data("movingai/arena.map");
     let map = read_movingai(&path).unwrap();
     assert_eq!((map.width(), map.height()), (49, 49));
     assert_eq!(map.zone_counts(), [2054, 0, 49 * 49 - 2054]);
@@ -42,9 +34,7 @@ fn arena_has_2054_passable_cells() {
 
 #[test]
 fn arena_through_load_map_uses_the_cell_frame() {
-    let Some(path) = data("movingai/arena.map") else {
-        return;
-    };
+    let path = data("movingai/arena.map");
     let loaded = load_map(&path, &LoadOptions::default()).unwrap();
     assert_eq!(loaded.kind, MapKind::MovingAi);
     assert_eq!(loaded.map.zone_counts(), [2054, 0, 49 * 49 - 2054]);
@@ -63,9 +53,7 @@ fn arena_through_load_map_uses_the_cell_frame() {
 
 #[test]
 fn turtlebot3_world_counts_match_map_server() {
-    let Some(path) = data("ros_maps/turtlebot3_world/map.yaml") else {
-        return;
-    };
+    let path = data("ros_maps/turtlebot3_world/map.yaml");
     let meta = read_ros_yaml(&path).unwrap();
     assert_eq!(meta.resolution, 0.05);
     assert_eq!(meta.origin, Point2::new(-10.0, -10.0));
@@ -92,9 +80,7 @@ fn turtlebot3_world_counts_match_map_server() {
 
 #[test]
 fn turtlebot3_pixel_rows_are_flipped() {
-    let Some(path) = data("ros_maps/turtlebot3_world/map.yaml") else {
-        return;
-    };
+    let path = data("ros_maps/turtlebot3_world/map.yaml");
     let meta = read_ros_yaml(&path).unwrap();
     let pic = read_picture(&meta.image).unwrap();
     let loaded = load_map(
@@ -125,21 +111,18 @@ fn turtlebot3_pixel_rows_are_flipped() {
 fn inflate_equals_the_full_costs_on_the_shared_maps() {
     use envmap::{Inflation, Mask, distance_transform};
     let mut masks: Vec<(Mask, f64)> = Vec::new();
-    if let Some(path) = data("ros_maps/turtlebot3_world/map.yaml") {
-        let meta = read_ros_yaml(&path).unwrap();
-        let pic = read_picture(&meta.image).unwrap();
-        // Occupied pixels only (dark ones), as the seed-000 pipeline binarizes.
-        masks.push((envmap::binarize(&pic, 50, false), meta.resolution));
-        let loaded = load_map(&path, &LoadOptions::default()).unwrap();
-        masks.push((
-            Mask::from_zones_at_least(&loaded.map, Zone::Forbidden),
-            meta.resolution,
-        ));
-    }
-    if let Some(path) = data("movingai/arena.map") {
-        let map = read_movingai(&path).unwrap();
-        masks.push((Mask::from_zones_at_least(&map, Zone::Forbidden), 0.2));
-    }
+    let path = data("ros_maps/turtlebot3_world/map.yaml");
+    let meta = read_ros_yaml(&path).unwrap();
+    let pic = read_picture(&meta.image).unwrap();
+    // Occupied pixels only (dark ones), as the seed-000 pipeline binarizes.
+    masks.push((envmap::binarize(&pic, 50, false), meta.resolution));
+    let loaded = load_map(&path, &LoadOptions::default()).unwrap();
+    masks.push((
+        Mask::from_zones_at_least(&loaded.map, Zone::Forbidden),
+        meta.resolution,
+    ));
+    let map = read_movingai(&data("movingai/arena.map")).unwrap();
+    masks.push((Mask::from_zones_at_least(&map, Zone::Forbidden), 0.2));
     for (k, (mask, res)) in masks.iter().enumerate() {
         assert!(mask.cells().iter().any(|&c| c) && mask.cells().iter().any(|&c| !c));
         for inf in [

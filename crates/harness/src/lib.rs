@@ -64,7 +64,8 @@ pub use postproc::Limits;
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
-    Claim, ClaimKind, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Source, World,
+    Claim, ClaimKind, MAX_RUNS, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Source,
+    World,
 };
 pub use stats::{Stat, Summary};
 

@@ -22,7 +22,13 @@ pub struct NoPathRecord {
     /// passage in the safe zone (the widest path's bottleneck).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_safety_radius: Option<f64>,
-    /// The planner's message.
+    /// For `budget`: the iteration cap the run had (absent when unlimited).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_iterations: Option<u64>,
+    /// For `budget`: the time limit the run had, seconds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub time_limit_s: Option<f64>,
+    /// The planner's message; for `budget`, with the budget used and how to raise it.
     pub message: String,
 }
 
@@ -54,7 +60,48 @@ impl NoPathRecord {
             cause,
             band_radius: band,
             max_safety_radius: max,
+            max_iterations: None,
+            time_limit_s: None,
             message: e.to_string(),
         }
+    }
+
+    /// For a `budget` record: names the budget the run had (`budget`, as
+    /// [`PlannerConfig::budget_on`](crate::PlannerConfig::budget_on) gives it) and how the
+    /// caller raises it (`raise`, e.g. "--max-iter N or --time-limit S"); other records are
+    /// returned unchanged.
+    ///
+    /// ```
+    /// use hyplan_core::{Budget, PlanError, PlanStats};
+    /// let e = PlanError::BudgetExhausted { stats: PlanStats::default() };
+    /// let r = harness::NoPathRecord::new(&e, 1.0)
+    ///     .with_budget(Some(Budget::iterations(100_000)), "--max-iter N");
+    /// assert_eq!(r.max_iterations, Some(100_000));
+    /// assert!(r.message.contains("100000 iterations") && r.message.contains("--max-iter N"));
+    /// ```
+    #[must_use]
+    pub fn with_budget(mut self, budget: Option<hyplan_core::Budget>, raise: &str) -> Self {
+        let Some(b) = budget.filter(|_| self.kind == "budget") else {
+            return self;
+        };
+        self.max_iterations = b.max_iterations.filter(|&n| n != u64::MAX);
+        self.time_limit_s = b.max_time.map(|t| t.as_secs_f64());
+        let mut limits = Vec::new();
+        if let Some(n) = self.max_iterations {
+            limits.push(format!("{n} iterations"));
+        }
+        if let Some(t) = self.time_limit_s {
+            limits.push(format!("{t} s"));
+        }
+        self.message = format!(
+            "{}; the budget was {}: raise it with {raise}",
+            self.message,
+            if limits.is_empty() {
+                "unlimited".to_string()
+            } else {
+                limits.join(" and ")
+            }
+        );
+        self
     }
 }

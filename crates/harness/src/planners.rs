@@ -203,14 +203,23 @@ impl PlannerConfig {
         )
     }
 
-    /// Whether the planner's library default step (1 world unit) is a placeholder the
-    /// command line should replace by a map-sized step (the plain sampling planners; the
-    /// hybrids keep their papers' steps).
+    /// Whether the planner's library default step (1 to 3 world units) is a placeholder the
+    /// command line (and `hyplan bench`, the Python bindings) replaces by a map-sized step
+    /// when the user gives none: the plain sampling planners, RRT + A* refinement, Hybrid
+    /// RRT-A* and safe RRT*, whose few-unit steps need millions of samples to cross a
+    /// building-sized map. RRT-A*-BT keeps its 40 units. Scenario files replaying a paper
+    /// give the paper's steps themselves.
     #[must_use]
     pub fn wants_default_step(&self) -> bool {
         matches!(
             self,
-            Self::Rrt(_) | Self::RrtStar(_) | Self::BiRrt(_) | Self::RrtConnect(_)
+            Self::Rrt(_)
+                | Self::RrtStar(_)
+                | Self::BiRrt(_)
+                | Self::RrtConnect(_)
+                | Self::RrtAstarRefine(_)
+                | Self::HybridRrtAstar(_)
+                | Self::SafeRrtStar(_)
         )
     }
 
@@ -252,10 +261,55 @@ impl PlannerConfig {
         }
     }
 
-    /// The budget (every planner takes one; the grid searches' is unlimited by default).
+    /// The budget (every planner takes one; unset by default: see
+    /// [`budget_on`](Self::budget_on)).
     #[must_use]
     pub fn budget(&self) -> Option<Budget> {
         self.clone().budget_mut().map(|b| *b)
+    }
+
+    /// The budget the planner runs with on `ws`: its own, with an unset iteration cap
+    /// replaced by the planner's rule. The grid searches search to the end
+    /// ([`Budget::for_search`]); GA-PCHIP's iterations are generations (200); the other
+    /// planners sample, [`Budget::samples_for`] the map's cells.
+    ///
+    /// ```
+    /// use harness::PlannerConfig;
+    /// use hyplan_core::Budget;
+    /// let map = envmap::GridMap::from_ascii(&"....\n".repeat(4)).unwrap();
+    /// let astar = PlannerConfig::by_name("astar").unwrap();
+    /// assert_eq!(astar.budget_on(&map), Some(Budget::unlimited()));
+    /// let rrt = PlannerConfig::by_name("rrt").unwrap();
+    /// assert_eq!(rrt.budget_on(&map), Some(Budget::iterations(100_000)));
+    /// ```
+    #[must_use]
+    pub fn budget_on(&self, ws: &dyn hyplan_core::Workspace) -> Option<Budget> {
+        let own = self.budget()?;
+        Some(match self {
+            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) => own.for_search(),
+            Self::GaPchip(_) => Budget {
+                max_iterations: own
+                    .max_iterations
+                    .or(GaPchip::default().budget.max_iterations),
+                ..own
+            },
+            _ => own.for_sampling(ws.cells()),
+        })
+    }
+
+    /// Applies a command line's `--max-iter` / `--time-limit` (the Python bindings'
+    /// `max_iter` / `time_limit`) to the planner's budget by [`Budget::with_limits`]:
+    /// neither given keeps the planner's own budget and its default rule.
+    #[must_use]
+    pub fn with_limits(
+        mut self,
+        max_iterations: Option<u64>,
+        time_limit: Option<std::time::Duration>,
+    ) -> Self {
+        if let Some(b) = self.budget_mut() {
+            *b = b.with_limits(max_iterations, time_limit);
+        }
+        self
     }
 
     fn budget_mut(&mut self) -> Option<&mut Budget> {

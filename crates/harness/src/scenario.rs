@@ -73,6 +73,10 @@ pub struct Scenario {
     pub baseline: Option<String>,
 }
 
+/// The most runs a scenario may ask for (`runs`, `quick_runs`): every run's record is kept
+/// in memory, so an input's run count is capped like its map's cells.
+pub const MAX_RUNS: u32 = 1_000_000;
+
 fn default_quick_runs() -> u32 {
     10
 }
@@ -343,6 +347,27 @@ pub enum ScenarioError {
         /// What the parser says.
         message: String,
     },
+    /// The map would have more cells than the memory limit (the `max_cells` of
+    /// [`Scenario::load_limited`]): refused before it is drawn or decoded.
+    #[error(
+        "{path}: field `{field}` = {value}: the map is {width} x {height} = {} cells, above the memory limit of {limit} cells",
+        (*width as u128) * (*height as u128)
+    )]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// The field that sets the size (`map.width x map.height`, or `map.path` for a
+        /// map file).
+        field: String,
+        /// Its value as given.
+        value: String,
+        /// Columns.
+        width: usize,
+        /// Rows.
+        height: usize,
+        /// The limit, cells.
+        limit: usize,
+    },
     /// A field has a value the scenario cannot use.
     #[error("{path}: field `{field}` = {value}: {reason}")]
     Invalid {
@@ -366,13 +391,28 @@ impl Scenario {
     ///
     /// [`ScenarioError`] naming the file, and the line or field.
     pub fn load(path: &Path) -> Result<(Self, World), ScenarioError> {
+        Self::load_limited(path, envmap::DEFAULT_MAX_CELLS)
+    }
+
+    /// [`Scenario::load`] with a memory limit: a map of more than `max_cells` cells (a
+    /// grid's or room's `width x height`, or a map file's size) is refused with
+    /// [`ScenarioError::TooLarge`] before it is drawn or decoded.
+    ///
+    /// # Errors
+    ///
+    /// As [`Scenario::load`].
+    pub fn load_limited(path: &Path, max_cells: usize) -> Result<(Self, World), ScenarioError> {
         let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Io {
             path: path.to_path_buf(),
             source,
         })?;
         let scenario = Self::parse(&text, path)?;
         scenario.validate(path)?;
-        let world = scenario.build_world(path.parent().unwrap_or(Path::new(".")), path)?;
+        let world = scenario.build_world_limited(
+            path.parent().unwrap_or(Path::new(".")),
+            path,
+            max_cells,
+        )?;
         Ok((scenario, world))
     }
 
@@ -411,11 +451,14 @@ impl Scenario {
         let bad = |field: &str, value: &dyn ToString, reason: &str| {
             Err(Self::invalid(path, field, value.to_string(), reason))
         };
-        if self.runs == 0 {
-            return bad("runs", &0, "must be at least 1");
-        }
-        if self.quick_runs == 0 {
-            return bad("quick_runs", &0, "must be at least 1");
+        for (field, n) in [("runs", self.runs), ("quick_runs", self.quick_runs)] {
+            if n == 0 {
+                return bad(field, &0, "must be at least 1");
+            }
+            // The runs' records are kept in memory: a cap, as for the map's cells.
+            if n > MAX_RUNS {
+                return bad(field, &n, "must be at most 1000000 (harness::MAX_RUNS)");
+            }
         }
         if self.planners.is_empty() {
             return bad("planners", &"[]", "at least one planner is needed");
@@ -490,9 +533,57 @@ impl Scenario {
     /// # Errors
     ///
     /// [`ScenarioError::Invalid`] for a map that cannot be read or built, or a start or goal
-    /// outside the map or blocked.
+    /// outside the map or blocked; [`ScenarioError::TooLarge`] for a map of more than
+    /// [`envmap::DEFAULT_MAX_CELLS`] cells.
     pub fn build_world(&self, dir: &Path, path: &Path) -> Result<World, ScenarioError> {
+        self.build_world_limited(dir, path, envmap::DEFAULT_MAX_CELLS)
+    }
+
+    /// [`Scenario::build_world`] with a memory limit of `max_cells` cells (see
+    /// [`Scenario::load_limited`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Scenario::build_world`].
+    pub fn build_world_limited(
+        &self,
+        dir: &Path,
+        path: &Path,
+        max_cells: usize,
+    ) -> Result<World, ScenarioError> {
         let map_err = |e: &dyn std::fmt::Display| Self::invalid(path, "map", "", &e.to_string());
+        // A map file above the limit: the file's size, named as the scenario's field.
+        let load_err = |file: &str, e: envmap::MapError| match e {
+            envmap::MapError::TooLarge {
+                width,
+                height,
+                limit,
+                ..
+            } => ScenarioError::TooLarge {
+                path: path.to_path_buf(),
+                field: "map.path".into(),
+                value: file.to_string(),
+                width,
+                height,
+                limit,
+            },
+            e => map_err(&e),
+        };
+        // A drawn map above the limit, before a pixel or cell is allocated.
+        let check_size = |width: usize, height: usize| {
+            if width.checked_mul(height).is_none_or(|n| n > max_cells) {
+                Err(ScenarioError::TooLarge {
+                    path: path.to_path_buf(),
+                    field: "map.width x map.height".into(),
+                    value: format!("{width} x {height}"),
+                    width,
+                    height,
+                    limit: max_cells,
+                })
+            } else {
+                Ok(())
+            }
+        };
         let (mut map, y_down, rectangles) = match &self.map {
             MapSpec::Picture {
                 path: file,
@@ -505,9 +596,11 @@ impl Scenario {
                     threshold: *threshold,
                     rectangles: *rectangles,
                     safety_radius: Some(*safety_radius_px),
+                    max_cells,
                     ..LoadOptions::default()
                 };
-                let loaded = envmap::load_map(&dir.join(file), &opts).map_err(|e| map_err(&e))?;
+                let loaded =
+                    envmap::load_map(&dir.join(file), &opts).map_err(|e| load_err(file, e))?;
                 let rects = if *rectangles {
                     loaded.components.iter().map(|c| c.rect).collect()
                 } else {
@@ -528,6 +621,7 @@ impl Scenario {
                 safety_radius_px,
                 resolution,
             } => {
+                check_size(*width, *height)?;
                 let picture = crate::draw_room(*width, *height, furniture);
                 let pipeline = Pipeline {
                     threshold: *threshold,
@@ -556,6 +650,7 @@ impl Scenario {
                 padding_cells,
                 y_down,
             } => {
+                check_size(*width, *height)?;
                 let raster = Raster {
                     width: *width,
                     height: *height,
@@ -574,9 +669,11 @@ impl Scenario {
             } => {
                 let opts = LoadOptions {
                     safety_radius: *safety_radius,
+                    max_cells,
                     ..LoadOptions::default()
                 };
-                let loaded = envmap::load_map(&dir.join(file), &opts).map_err(|e| map_err(&e))?;
+                let loaded =
+                    envmap::load_map(&dir.join(file), &opts).map_err(|e| load_err(file, e))?;
                 let y_down = matches!(loaded.frame, envmap::InputFrame::Cells { .. });
                 (loaded.map, y_down, Vec::new())
             }

@@ -1,7 +1,8 @@
 //! The OMPL log of a benchmark, read back by OMPL's own `ompl_benchmark_statistics`
 //! (Debian package `ompl-demos`): every run lands in the database with our values.
 //!
-//! Skipped, loudly, when the script or python3 is not installed.
+//! Skipped, in one printed line, when the script or python3 is not installed; with
+//! `HYPLAN_REQUIRE_TOOLS` set (as `.ci/run` sets it) a missing script fails the test.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -20,6 +21,10 @@ fn ompl_script() -> Option<&'static str> {
     if found {
         Some(script)
     } else {
+        assert!(
+            std::env::var_os("HYPLAN_REQUIRE_TOOLS").is_none(),
+            "`{script}` not found (apt-get install ompl-demos) and HYPLAN_REQUIRE_TOOLS is set"
+        );
         eprintln!(
             "SKIPPED: `{script}` not found (apt-get install ompl-demos); the OMPL log was not \
              checked against OMPL's reader"

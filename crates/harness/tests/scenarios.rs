@@ -108,6 +108,16 @@ fn zero_runs_is_refused() {
     assert!(m.contains("`runs`"), "{m}");
 }
 
+/// Every run's record is kept in memory: a run count the input controls is capped.
+#[test]
+fn too_many_runs_is_refused() {
+    let m = message("manyruns", &GOOD.replace("runs: 4", "runs: 4000000000"));
+    assert!(
+        m.contains("`runs`") && m.contains("4000000000") && m.contains("MAX_RUNS"),
+        "{m}"
+    );
+}
+
 #[test]
 fn a_claim_across_scenarios_names_one_planner() {
     let text = GOOD.replace(
@@ -119,4 +129,79 @@ fn a_claim_across_scenarios_names_one_planner() {
         m.contains("claims.order") && m.contains("exactly one planner"),
         "{m}"
     );
+}
+
+/// A grid, a room or a map file above the memory limit is refused before it is drawn or
+/// decoded, naming the file, the field, its value and the counts.
+#[test]
+fn maps_above_the_memory_limit_are_refused() {
+    let grid = "Grid(width: 20, height: 10, obstacles: [Rect(x: 8.0, y: 0.0, w: 2.0, h: 7.0)])";
+    let limit = envmap::DEFAULT_MAX_CELLS;
+    for (name, map, needles) in [
+        (
+            "huge_grid",
+            "Grid(width: 100000, height: 100000, obstacles: [])".to_string(),
+            vec![
+                "huge_grid.ron",
+                "`map.width x map.height` = 100000 x 100000",
+                "10000000000 cells",
+            ],
+        ),
+        (
+            "overflow_grid",
+            format!("Grid(width: {0}, height: {0}, obstacles: [])", usize::MAX),
+            vec!["overflow_grid.ron", "`map.width x map.height`"],
+        ),
+        (
+            "huge_room",
+            "Room(width: 200000, height: 1000, furniture: [])".to_string(),
+            vec!["huge_room.ron", "= 200000 x 1000", "200000000 cells"],
+        ),
+    ] {
+        let m = message(name, &GOOD.replace(grid, &map));
+        for n in needles {
+            assert!(m.contains(n), "{n:?} not in {m}");
+        }
+        assert!(m.contains(&format!("limit of {limit} cells")), "{m}");
+    }
+    // A map file: the loader's limit, named as the scenario's `map.path`.
+    let dir = std::env::temp_dir().join(format!("hyplan-harness-{}-limit", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("small.pgm"),
+        [&b"P5\n20 10\n255\n"[..], &[255; 200]].concat(),
+    )
+    .unwrap();
+    let path = dir.join("file.ron");
+    std::fs::write(
+        &path,
+        GOOD.replace(grid, "File(path: \"small.pgm\", safety_radius: Some(0.0))"),
+    )
+    .unwrap();
+    let e = Scenario::load_limited(&path, 199).unwrap_err();
+    let m = e.to_string();
+    assert!(
+        matches!(
+            e,
+            ScenarioError::TooLarge {
+                width: 20,
+                height: 10,
+                limit: 199,
+                ..
+            }
+        ),
+        "{m}"
+    );
+    assert!(
+        m.contains("file.ron") && m.contains("`map.path` = small.pgm"),
+        "{m}"
+    );
+    Scenario::load_limited(&path, 200).unwrap();
+    // The grid's own limit, at the edge.
+    let text = GOOD.to_string();
+    let good = dir.join("good.ron");
+    std::fs::write(&good, text).unwrap();
+    Scenario::load_limited(&good, 200).unwrap();
+    let e = Scenario::load_limited(&good, 199).unwrap_err();
+    assert!(matches!(e, ScenarioError::TooLarge { .. }), "{e}");
 }

@@ -119,10 +119,13 @@ impl Default for GaPchip {
             sample_tries: 1000,
             curve_spacing: 1.0,
             smoothing: true,
-            budget: Budget::iterations(200),
+            budget: Budget::iterations(GENERATIONS),
         }
     }
 }
+
+/// The default number of generations.
+const GENERATIONS: u64 = 200;
 
 /// One individual: its via-points and what they cost.
 #[derive(Debug, Clone)]
@@ -254,11 +257,16 @@ impl GaPchip {
         }
 
         let diagonal = bounds.diagonal();
-        let generations = self.budget.max_iterations;
+        // Generations, not samples: an unset cap is the default 200, whatever the map.
+        let budget = Budget {
+            max_iterations: Some(self.budget.max_iterations.unwrap_or(GENERATIONS)),
+            ..self.budget
+        };
+        let generations = budget.max_iterations.unwrap_or(GENERATIONS);
         let mut best_length = f64::INFINITY;
         let mut stall = 0;
         let mut generation = 0_u64;
-        'generations: while !population.is_empty() && !self.budget.exhausted(generation, started) {
+        'generations: while !population.is_empty() && !budget.exhausted(generation, started) {
             generation += 1;
             population.sort_by(|a, b| {
                 if a.beats(b) {

@@ -101,8 +101,9 @@ pub struct HybridRrtAstar {
     /// Nodes a sub-search may expand before it gives up, >= 1. Default 150 (the paper's
     /// "Steps-threshold", Fig. 2).
     pub astar_max_visited: usize,
-    /// The RRT's iteration and optional time limits. Default 30 000 iterations (the
-    /// paper's).
+    /// The RRT's iteration and optional time limits. Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more);
+    /// the paper's 30 000 is in `scenarios/002-*.ron`.
     pub budget: Budget,
 }
 
@@ -115,7 +116,7 @@ impl Default for HybridRrtAstar {
             astar_spacing: 7.0,
             spacing_rule: SpacingRule::All,
             astar_max_visited: 150,
-            budget: Budget::iterations(30_000),
+            budget: Budget::default(),
         }
     }
 }
@@ -161,7 +162,8 @@ impl HybridRrtAstar {
         let ws = map;
         let started = Instant::now();
         self.validate_params()?;
-        sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        let budget = self.budget.for_sampling(ws.cells());
+        sampling::validate_step_and_budget(self.step, &budget, ws, query)?;
         sampling::check_connected(ws, query, started)?;
         let goal = query.goal;
         let target = goal.center();
@@ -182,7 +184,7 @@ impl HybridRrtAstar {
             done = Some((0, Vec::new()));
         }
 
-        while done.is_none() && !self.budget.exhausted(iterations, started) {
+        while done.is_none() && !budget.exhausted(iterations, started) {
             iterations += 1;
             // Phase 1 (Algorithm 1): goal-biased sample, nearest vertex, one step.
             let sample = sampling::sample_goal_biased(ws, target, self.goal_bias, rng);

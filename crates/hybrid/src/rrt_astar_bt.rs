@@ -148,8 +148,9 @@ pub struct RrtAstarBt {
     pub smoothing: bool,
     /// Spacing of the curve samples, world units, finite and > 0. Default 1 (one pixel).
     pub curve_spacing: f64,
-    /// K_max: the iteration (rounds of candidates) and optional time limits. Default 10 000
-    /// iterations (the paper's).
+    /// K_max: the iteration (rounds of candidates) and optional time limits. Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more);
+    /// the paper's 10 000 is in `scenarios/000-*.ron`.
     pub budget: Budget,
 }
 
@@ -165,7 +166,7 @@ impl Default for RrtAstarBt {
             backtracking: true,
             smoothing: true,
             curve_spacing: 1.0,
-            budget: Budget::iterations(10_000),
+            budget: Budget::default(),
         }
     }
 }
@@ -224,7 +225,8 @@ impl RrtAstarBt {
     ) -> Result<Staged, PlanError> {
         let started = Instant::now();
         self.validate_params()?;
-        sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        let budget = self.budget.for_sampling(ws.cells());
+        sampling::validate_step_and_budget(self.step, &budget, ws, query)?;
         sampling::check_connected(ws, query, started)?;
         let goal = query.goal;
         let target = goal.center();
@@ -253,7 +255,7 @@ impl RrtAstarBt {
         if (query.start - target).norm() <= reach || goal.contains(query.start) {
             reached = common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e));
         }
-        while reached.is_none() && !self.budget.exhausted(iterations, started) {
+        while reached.is_none() && !budget.exhausted(iterations, started) {
             iterations += 1;
             // Without back-tracking only the head's own options count (RRT-A* alone).
             if !self.backtracking {

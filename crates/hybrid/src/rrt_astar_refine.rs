@@ -86,7 +86,8 @@ pub struct RrtAstarRefine {
     pub grid: GridOptions,
     /// Shortcut the refined path greedily (the paper's last step). Default `true`.
     pub shortcut: bool,
-    /// The RRT's iteration and optional time limits. Default 10 000 iterations (ours).
+    /// The RRT's iteration and optional time limits. Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more).
     pub budget: Budget,
 }
 
@@ -98,7 +99,7 @@ impl Default for RrtAstarRefine {
             near_radius: 5.0,
             grid: GridOptions::default(),
             shortcut: true,
-            budget: Budget::iterations(10_000),
+            budget: Budget::default(),
         }
     }
 }

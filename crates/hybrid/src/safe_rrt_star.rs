@@ -107,7 +107,9 @@ pub struct SafeRrtStar {
     pub curve_spacing: f64,
     /// Smooth the pruned path (default `true`); `false` returns the pruned polyline.
     pub smoothing: bool,
-    /// N: iteration and optional time limits. Default 3000 iterations (the paper's).
+    /// N: iteration and optional time limits. Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more);
+    /// the paper's 3000 is in `scenarios/003-*.ron`.
     pub budget: Budget,
 }
 
@@ -125,7 +127,7 @@ impl Default for SafeRrtStar {
             spline_max_spacing: 5.0,
             curve_spacing: 0.05,
             smoothing: true,
-            budget: Budget::iterations(3000),
+            budget: Budget::default(),
         }
     }
 }
@@ -207,7 +209,8 @@ impl SafeRrtStar {
     ) -> Result<Staged, PlanError> {
         let started = Instant::now();
         self.validate_params()?;
-        sampling::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        let budget = self.budget.for_sampling(ws.cells());
+        sampling::validate_step_and_budget(self.step, &budget, ws, query)?;
         self.check_connected(ws, query, started)?;
         let goal = query.goal;
         let target = goal.center();
@@ -234,7 +237,7 @@ impl SafeRrtStar {
         let mut candidates: Vec<(f64, usize)> = Vec::new();
 
         while (!self.stop_at_first_solution || links.is_empty())
-            && !self.budget.exhausted(iterations, started)
+            && !budget.exhausted(iterations, started)
         {
             iterations += 1;
             // Sample: the goal, or a point in the Free zone (no samples in Risk, 2.2).

@@ -16,7 +16,7 @@ import numpy as np  # noqa: E402
 import hyplan  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
-MAP = HERE.parents[2] / ".." / "shared" / "data" / "ros_maps" / "turtlebot3_world" / "map.yaml"
+MAP = HERE.parents[2] / "data" / "ros_maps" / "turtlebot3_world" / "map.yaml"
 
 m = hyplan.GridMap.load(MAP)  # metres, y up (the map's own frame)
 start, goal = (-1.8, -0.5), (1.8, 0.5)

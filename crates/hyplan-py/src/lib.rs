@@ -10,16 +10,18 @@
 //! runs), so Python threads plan in parallel.
 
 use std::path::PathBuf;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use envmap::{GridMap, InputFrame, LoadOptions, Mask};
-use hyplan_core::{Budget, Goal, PlanError, Point2, Query, Zone};
-use numpy::ndarray::{Array2, ArrayView2, Axis};
-use numpy::{IntoPyArray, PyArray2, PyReadonlyArray2, PyUntypedArrayMethods};
+use hyplan_core::{Goal, Plan, PlanError, Point2, Query, Zone};
+use numpy::ndarray::{ArrayView2, Axis};
+use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use postproc::{Limits, PostprocError, Smoothing};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString};
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyType};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
 
@@ -57,14 +59,29 @@ impl PyGridMap {
             .collect()
     }
     fn points_from_world<'py>(&self, py: Python<'py>, pts: &[Point2]) -> Bound<'py, PyArray2<f64>> {
-        let mut a = Array2::<f64>::zeros((pts.len(), 2));
-        for (k, &p) in pts.iter().enumerate() {
-            let (x, y) = self.frame.from_world(p);
-            a[[k, 0]] = x;
-            a[[k, 1]] = y;
-        }
-        a.into_pyarray(py)
+        points_array(py, pts.iter().map(|&p| self.frame.from_world(p)), pts.len())
     }
+}
+
+/// An `(n, 2)` float64 array of the `n` points of `xy`, written in place into a new NumPy
+/// array (no Rust-side buffer, no copy).
+fn points_array<'py>(
+    py: Python<'py>,
+    xy: impl Iterator<Item = (f64, f64)>,
+    n: usize,
+) -> Bound<'py, PyArray2<f64>> {
+    // SAFETY: a new C-contiguous array that nothing else references yet; every element is
+    // written below before the array is handed out (`xy` yields exactly `n` points).
+    let arr = unsafe { PyArray2::<f64>::new(py, [n, 2], false) };
+    let out = unsafe { arr.as_slice_mut() }.expect("a new array is contiguous");
+    let mut filled = 0;
+    for (slot, (x, y)) in out.chunks_exact_mut(2).zip(xy) {
+        slot[0] = x;
+        slot[1] = y;
+        filled += 1;
+    }
+    assert_eq!(filled, n, "points_array: fewer points than announced");
+    arr
 }
 
 /// `occupied` as zones, bottom row first: the one copy of the array.
@@ -339,15 +356,121 @@ fn ron_value(v: &Bound<'_, PyAny>) -> PyResult<String> {
     }
 }
 
-fn no_path_dict<'py>(py: Python<'py>, e: &PlanError, scale: f64) -> PyResult<Bound<'py, PyDict>> {
+/// How a Python caller raises a spent budget, named in the "no path within the budget"
+/// message.
+const RAISE_BUDGET: &str = "max_iter=N, time_limit=S, or max_iterations=N";
+
+/// `NoPathError.result.no_path`: the record `hyplan plan --json` prints, with the budget the
+/// run had.
+fn no_path_dict<'py>(py: Python<'py>, r: &harness::NoPathRecord) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    let r = harness::NoPathRecord::new(e, scale);
     d.set_item("kind", r.kind)?;
     d.set_item("cause", r.cause)?;
     d.set_item("band_radius", r.band_radius)?;
     d.set_item("max_safety_radius", r.max_safety_radius)?;
-    d.set_item("message", r.message)?;
+    d.set_item("max_iterations", r.max_iterations)?;
+    d.set_item("time_limit_s", r.time_limit_s)?;
+    d.set_item("message", &r.message)?;
     Ok(d)
+}
+
+/// The inputs of one `plan` call's planner configuration (floats by their bits).
+#[derive(PartialEq, Eq)]
+struct ConfigKey {
+    planner: String,
+    step: Option<u64>,
+    scale: u64,
+    diagonal: u64,
+    size: (usize, usize),
+    goal_bias: u64,
+    goal_radius: u64,
+    max_iter: Option<u64>,
+    time_limit: Option<Duration>,
+    pairs: Vec<(String, String)>,
+}
+
+/// The last few configurations `plan` made, most recent first: a call repeated with the
+/// same planner, flags and parameters skips the registry's parsing (and the RON round trip
+/// of `key=value` parameters, tens of microseconds).
+struct ConfigCache(Mutex<Vec<(ConfigKey, harness::PlannerConfig)>>);
+
+impl ConfigCache {
+    const CAPACITY: usize = 16;
+
+    fn get(&self, key: &ConfigKey) -> Option<harness::PlannerConfig> {
+        let mut entries = self
+            .0
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let at = entries.iter().position(|(k, _)| k == key)?;
+        entries[..=at].rotate_right(1);
+        Some(entries[0].1.clone())
+    }
+
+    fn put(&self, key: ConfigKey, config: harness::PlannerConfig) {
+        let mut entries = self
+            .0
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        entries.truncate(Self::CAPACITY - 1);
+        entries.insert(0, (key, config));
+    }
+}
+
+static CONFIGS: ConfigCache = ConfigCache(Mutex::new(Vec::new()));
+
+/// What `plan` keeps of post-processing.
+struct Post {
+    /// The checked curve, when a smoothing was asked for.
+    smoothed: Option<Vec<Point2>>,
+    /// Turns of the final path's nodes.
+    turns: usize,
+    /// Transfer time under the limits, s.
+    transfer_time_s: Option<f64>,
+}
+
+/// `harness::post_process`, as `hyplan plan` runs it, with a short cut for `smooth="none"`.
+///
+/// Left as it is, a polyline plan (and, without limits, a curve plan) needs none of the
+/// quarter-cell samples `harness::post_process` builds: it checks the path with
+/// `postproc::check_polyline`, the input checks of `postproc::smooth_checked` (the same
+/// errors),
+/// counts the turns of the plan's nodes and times the polyline on them, which are the
+/// figures `post_process` reports. What it skips is the re-check of the samples between
+/// the nodes, segments that lie on segments just found free, and the samples' metrics,
+/// which nothing here reads: a fixed cost per call of about a millisecond on a 1000-cell
+/// path. `tests/test_plan.py` compares the turns and transfer times with the CLI.
+fn post_process(
+    plan: &Plan,
+    method: Smoothing,
+    spacing: f64,
+    limits: Option<&Limits>,
+    mut segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Result<Post, PostprocError> {
+    let curve_plan = !plan.waypoints.is_empty();
+    if method != Smoothing::None || (curve_plan && limits.is_some()) {
+        let p = harness::post_process(plan, method, spacing, limits, segment_free)?;
+        return Ok(Post {
+            smoothed: (method != Smoothing::None).then_some(p.smoothed.points),
+            turns: p.metrics.turns,
+            transfer_time_s: p.transfer_time_s,
+        });
+    }
+    let path = &plan.path;
+    postproc::check_polyline(path, spacing, &mut segment_free)?;
+    let turns = postproc::count_turns(
+        plan.nodes(),
+        postproc::DEFAULT_TURN_THRESHOLD_DEG.to_radians(),
+    );
+    let transfer_time_s = match limits {
+        None => None,
+        Some(l) => Some(postproc::time_polyline(path, l)?.transfer_time),
+    };
+    Ok(Post {
+        smoothed: None,
+        turns,
+        transfer_time_s,
+    })
 }
 
 /// Plans from `start` to `goal` on `map`, as `hyplan plan` does for run `run` of `--seed
@@ -390,44 +513,69 @@ fn plan(
                 })
         })
         .transpose()?;
-    let budget = Budget::of_limits(max_iter, time_limit);
     if !(0.0..=1.0).contains(&goal_bias) {
         return Err(PyValueError::new_err(format!(
             "goal_bias {goal_bias}: invalid parameter goal_bias, must be a probability in [0, 1]"
         )));
     }
-    let named: harness::PlannerConfig = planner.parse().map_err(value_err)?;
-    let step = match step {
-        Some(s) => Some(s * scale),
-        None if named.wants_default_step() => Some(0.05 * map.map.bounds().diagonal()),
-        None => None,
-    };
-    let mut config = harness::PlannerConfig::from_spec(planner, |mut c| {
-        if let Some(step) = step {
-            c = c.with_step(step);
-        }
-        c = c.with_goal_bias(goal_bias).with_budget(budget);
-        if goal_radius > 0.0 {
-            c = c.with_goal_radius(goal_radius * scale);
-        }
-        c
-    })
-    .map_err(value_err)?;
+    let mut pairs = Vec::new();
     if let Some(params) = params {
-        let mut pairs = Vec::new();
         for (k, v) in params.iter() {
             pairs.push((k.extract::<String>()?, ron_value(&v)?));
         }
-        config = config
-            .with_params(pairs.iter().map(|(k, v)| (k.as_str(), v.as_str())))
-            .map_err(value_err)?;
     }
-    let smoothing: postproc::Smoothing = smooth
+    // Everything the configuration is made of: the map enters through its scale and its
+    // diagonal (the default step); its size too, should a default ever follow it.
+    let key = ConfigKey {
+        planner: planner.to_string(),
+        step: step.map(f64::to_bits),
+        scale: scale.to_bits(),
+        diagonal: map.map.bounds().diagonal().to_bits(),
+        size: (map.map.width(), map.map.height()),
+        goal_bias: goal_bias.to_bits(),
+        goal_radius: goal_radius.to_bits(),
+        max_iter,
+        time_limit,
+        pairs,
+    };
+    let config = match CONFIGS.get(&key) {
+        Some(c) => c,
+        None => {
+            let named: harness::PlannerConfig = planner.parse().map_err(value_err)?;
+            let step = match step {
+                Some(s) => Some(s * scale),
+                None if named.wants_default_step() => Some(0.05 * map.map.bounds().diagonal()),
+                None => None,
+            };
+            let mut config = harness::PlannerConfig::from_spec(planner, |mut c| {
+                if let Some(step) = step {
+                    c = c.with_step(step);
+                }
+                // No max_iter / time_limit: the planner's own budget rule, as on the CLI.
+                c = c
+                    .with_goal_bias(goal_bias)
+                    .with_limits(max_iter, time_limit);
+                if goal_radius > 0.0 {
+                    c = c.with_goal_radius(goal_radius * scale);
+                }
+                c
+            })
+            .map_err(value_err)?;
+            if !key.pairs.is_empty() {
+                config = config
+                    .with_params(key.pairs.iter().map(|(k, v)| (k.as_str(), v.as_str())))
+                    .map_err(value_err)?;
+            }
+            CONFIGS.put(key, config.clone());
+            config
+        }
+    };
+    let smoothing: Smoothing = smooth
         .parse()
         .map_err(|e| PyValueError::new_err(format!("smooth {smooth:?}: {e}")))?;
     let limits = match (vmax, wmax, amax) {
         (Some(v), Some(w), Some(a)) => Some(
-            postproc::Limits::new(v * scale, w, a * scale)
+            Limits::new(v * scale, w, a * scale)
                 .map_err(|e| PyValueError::new_err(format!("vmax/wmax/amax: {e}")))?,
         ),
         (None, None, None) => None,
@@ -459,6 +607,7 @@ fn plan(
     let run_seed = harness::run_seed(seed, run);
     let grid = Arc::clone(&map.map);
     let built = config.build();
+    let budget_used = config.budget_on(&*map.map);
     // The planner runs without the GIL; post-processing too.
     let (outcome, time_s, post) = py.detach(move || {
         let mut rng = ChaCha8Rng::seed_from_u64(run_seed);
@@ -466,7 +615,7 @@ fn plan(
         let outcome = built.plan(&*grid, &query, &mut rng);
         let time_s = started.elapsed().as_secs_f64();
         let post = outcome.as_ref().ok().map(|p| {
-            harness::post_process(
+            post_process(
                 p,
                 smoothing,
                 0.25 * grid.resolution(),
@@ -492,20 +641,23 @@ fn plan(
                 nodes: p.stats.nodes,
                 iterations: p.stats.iterations,
                 collision_checks: p.stats.collision_checks,
-                smoothed: (smoothing != postproc::Smoothing::None)
-                    .then(|| map.points_from_world(py, &post.smoothed.points).unbind()),
-                turns: Some(post.metrics.turns),
+                smoothed: post
+                    .smoothed
+                    .map(|c| map.points_from_world(py, &c).unbind()),
+                turns: Some(post.turns),
                 transfer_time_s: post.transfer_time_s,
                 no_path: None,
             })
         }
         Err(e) if e.is_no_path() => {
             let stats = e.stats().copied().unwrap_or_default();
+            let record =
+                harness::NoPathRecord::new(&e, scale).with_budget(budget_used, RAISE_BUDGET);
             let result = PlanResult {
                 planner: name,
                 seed: run_seed,
                 solved: false,
-                path: Array2::<f64>::zeros((0, 2)).into_pyarray(py).unbind(),
+                path: PyArray2::<f64>::zeros(py, [0, 2], false).unbind(),
                 length: f64::NAN,
                 time_s,
                 nodes: stats.nodes,
@@ -514,10 +666,11 @@ fn plan(
                 smoothed: None,
                 turns: None,
                 transfer_time_s: None,
-                no_path: Some(no_path_dict(py, &e, scale)?.unbind()),
+                no_path: Some(no_path_dict(py, &record)?.unbind()),
             };
-            let cls = py.import("hyplan")?.getattr("NoPathError")?;
-            Err(PyErr::from_value(cls.call1((e.to_string(), result))?))
+            static NO_PATH_ERROR: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+            let cls = NO_PATH_ERROR.import(py, "hyplan", "NoPathError")?;
+            Err(PyErr::from_value(cls.call1((record.message, result))?))
         }
         Err(e) => Err(value_err(e)),
     }
@@ -653,5 +806,7 @@ fn _hyplan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(planners, m)?)?;
     m.add_function(wrap_pyfunction!(planner_params, m)?)?;
+    // For the timing tests, which mean nothing on a debug build (`maturin develop`).
+    m.add("_debug_build", cfg!(debug_assertions))?;
     Ok(())
 }

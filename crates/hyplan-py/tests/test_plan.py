@@ -48,6 +48,7 @@ def test_every_planner_solves_the_maze_as_the_cli(tmp_path, hyplan_bin, planner)
     assert r.iterations == rec["iterations"]
     assert r.collision_checks == rec["collision_checks"]
     assert r.length == pytest.approx(rec["length"], rel=1e-12)
+    assert r.turns == rec["turns"]  # smooth="none": counted on the plan's nodes
     cli_path = np.array(rec["path"])
     assert r.path.shape == cli_path.shape
     np.testing.assert_allclose(r.path[:, 0], cli_path[:, 0], atol=1e-9)
@@ -58,6 +59,60 @@ def test_every_planner_solves_the_maze_as_the_cli(tmp_path, hyplan_bin, planner)
     assert lm.frame == "cells"
     r2 = hyplan.plan(lm, start, goal, planner=planner, seed=7)
     np.testing.assert_allclose(r2.path, cli_path, atol=1e-9)
+    assert r2.turns == rec["turns"]
+
+
+@pytest.mark.parametrize("planner", ["rrt-connect", "astar", "rrt-astar-bt"])
+def test_unsmoothed_turns_and_transfer_time_match_the_cli(tmp_path, hyplan_bin, planner):
+    # smooth="none" takes a short cut past the quarter-cell samples; a polyline plan
+    # (rrt-connect, astar) and a curve plan (rrt-astar-bt) give the CLI's figures.
+    occ = maze()
+    pgm = tmp_path / "maze.pgm"
+    write_pgm(pgm, occ)
+    m = hyplan.GridMap.load(pgm, safety_radius=0)
+    for seed in (3, 4):
+        rec = cli_plan(hyplan_bin, pgm, planner, seed, "--vmax", "2", "--wmax", "1.5",
+                       "--amax", "0.5")
+        r = hyplan.plan(m, START_CELL, GOAL_CELL, planner=planner, seed=seed, vmax=2,
+                        wmax=1.5, amax=0.5)
+        np.testing.assert_allclose(r.path, np.array(rec["path"]), atol=1e-9)
+        assert r.turns == rec["turns"]
+        assert r.transfer_time_s == pytest.approx(rec["transfer_time_s"], rel=1e-12)
+        assert r.smoothed is None
+        plain = hyplan.plan(m, START_CELL, GOAL_CELL, planner=planner, seed=seed)
+        assert plain.turns == rec["turns"] and plain.transfer_time_s is None
+
+
+def test_repeated_calls_reuse_nothing_they_should_not():
+    # `plan` keeps the configurations it made; the same call gives the same result, and a
+    # change of parameter, flag or map (the default step follows the map's size) is seen.
+    occ = maze()
+    m = hyplan.GridMap.from_array(occ)
+    big = hyplan.GridMap.from_array(np.pad(occ, ((0, 40), (0, 40))))
+    args = (m, (5, 75), (74, 6))
+    kw = dict(planner="rrt", seed=2, max_iterations=50000, goal_bias=0.1)
+    a = hyplan.plan(*args, **kw)
+    b = hyplan.plan(*args, **kw)
+    assert a.nodes == b.nodes and a.iterations == b.iterations
+    np.testing.assert_array_equal(a.path, b.path)
+    c = hyplan.plan(*args, **{**kw, "step": 1.0})
+    assert c.nodes != a.nodes
+    d = hyplan.plan(*args, **{**kw, "goal_bias": 0.3})
+    assert d.nodes != a.nodes
+    with pytest.raises(hyplan.NoPathError) as e:
+        hyplan.plan(*args, **{**kw, "max_iterations": 7})
+    assert e.value.result.iterations == 7
+    # The default step is 5 % of the map's diagonal: another map, another step.
+    f = hyplan.plan(big, (5, 115), (74, 46), **kw)
+    g = hyplan.plan(big, (5, 115), (74, 46), **{**kw, "step": 0.05 * np.hypot(120, 120)})
+    assert f.nodes == g.nodes
+    np.testing.assert_array_equal(f.path, g.path)
+    h = hyplan.plan(*args, **{**kw, "step": 0.05 * np.hypot(80, 80)})
+    np.testing.assert_array_equal(h.path, a.path)
+    # A bad parameter is refused every time.
+    for _ in range(2):
+        with pytest.raises(ValueError, match="bogus"):
+            hyplan.plan(*args, planner="rrt", bogus=1.0)
 
 
 def test_flags_and_params_match_the_cli(tmp_path, hyplan_bin):
@@ -123,6 +178,12 @@ def test_no_path_error_carries_statistics():
     assert e.value.result.solved is False
     assert e.value.result.iterations == 5
     assert e.value.result.path.shape == (0, 2)
+    # The spent budget is named, with the way to raise it.
+    assert e.value.result.no_path["max_iterations"] == 5
+    assert "the budget was 5 iterations" in str(e.value)
+    assert "max_iter=N" in str(e.value)
+    # Without max_iter the planner's rule applies: A* searches to the end and finds it.
+    assert hyplan.plan(m, (5, 75), (74, 6), planner="astar").solved
     # A closed wall: proved disconnected before planning.
     occ2 = occ.copy()
     occ2[:, 20:22] = True

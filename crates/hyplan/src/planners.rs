@@ -2,12 +2,15 @@
 //! registry.
 //!
 //! The command line and the scenario files share one registry, [`harness::PlannerConfig`]:
-//! here the shared flags (`--step`, `--goal-bias`, `--goal-radius`, the budget) are applied
+//! here the shared flags (`--step`, `--goal-bias`, `--goal-radius`, `--max-iter`,
+//! `--time-limit`) are applied
 //! to the planners that have those fields, then the `key=value` pairs of `--planner` set any
 //! field of the planner's struct (a pair wins over a flag).
 
 use harness::PlannerConfig;
-use hyplan_core::{Budget, Planner};
+use std::time::Duration;
+
+use hyplan_core::Planner;
 
 /// The planner flags shared by every planner; each planner takes what it uses.
 #[derive(Debug, Clone, Copy)]
@@ -19,8 +22,10 @@ pub struct PlannerFlags {
     pub goal_bias: f64,
     /// Goal radius, world units (0: the exact goal point).
     pub goal_radius: f64,
-    /// Iteration and time budget.
-    pub budget: Budget,
+    /// `--max-iter`: the iteration cap, when given (else each planner's default rule).
+    pub max_iterations: Option<u64>,
+    /// `--time-limit`, when given.
+    pub time_limit: Option<Duration>,
 }
 
 /// The planner `spec` names with its defaults and its own `key=value` pairs, before any
@@ -47,7 +52,9 @@ pub fn configure(spec: &str, flags: &PlannerFlags) -> anyhow::Result<PlannerConf
         if let Some(step) = flags.step {
             c = c.with_step(step);
         }
-        c = c.with_goal_bias(flags.goal_bias).with_budget(flags.budget);
+        c = c
+            .with_goal_bias(flags.goal_bias)
+            .with_limits(flags.max_iterations, flags.time_limit);
         // The planners whose own goal region is a parameter get the query's radius.
         if flags.goal_radius > 0.0 {
             c = c.with_goal_radius(flags.goal_radius);
@@ -76,7 +83,8 @@ mod tests {
             step: Some(1.0),
             goal_bias: 0.05,
             goal_radius: 1.0,
-            budget: Budget::default(),
+            max_iterations: None,
+            time_limit: None,
         };
         for name in PlannerConfig::names() {
             assert_eq!(build(name, &flags).unwrap().info().name, name);
@@ -86,6 +94,15 @@ mod tests {
         assert_eq!(c.step(), Some(3.5));
         let c = configure("rrt-connect", &flags).unwrap();
         assert_eq!(c.step(), Some(1.0));
-        assert_eq!(c.budget(), Some(Budget::default()));
+        // No --max-iter: the planner keeps its own (unset) budget and default rule.
+        assert_eq!(c.budget(), Some(hyplan_core::Budget::default()));
+        let capped = PlannerFlags {
+            max_iterations: Some(500),
+            ..flags
+        };
+        let c = configure("astar", &capped).unwrap();
+        assert_eq!(c.budget(), Some(hyplan_core::Budget::iterations(500)));
+        let c = configure("astar:max_iterations=9", &capped).unwrap();
+        assert_eq!(c.budget(), Some(hyplan_core::Budget::iterations(9)));
     }
 }

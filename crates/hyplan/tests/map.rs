@@ -154,13 +154,14 @@ fn rectangles_and_writers() {
 }
 
 #[test]
-fn shared_data_maps() {
-    let arena = "/work/shared/data/movingai/arena.map";
-    let ros = "/work/shared/data/ros_maps/turtlebot3_world/map.yaml";
-    if !Path::new(arena).exists() || !Path::new(ros).exists() {
-        eprintln!("skipping: shared data not found");
-        return;
+fn repository_data_maps() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data");
+    let arena = data.join("movingai/arena.map");
+    let ros = data.join("ros_maps/turtlebot3_world/map.yaml");
+    for p in [&arena, &ros] {
+        assert!(p.exists(), "test data missing: {}", p.display());
     }
+    let (arena, ros) = (arena.to_str().unwrap(), ros.to_str().unwrap());
     let v = json(&hyplan(&["map", arena, "--json"]));
     assert_eq!(
         (v["width"].as_u64(), v["height"].as_u64()),
@@ -314,4 +315,57 @@ fn maps_above_the_memory_limit_name_size_limit_and_flag() {
         "{}",
         stderr(&o)
     );
+}
+
+/// `--out X.pgm` and `--yaml` write binary PGM (`P5`, what Pillow and map_server read),
+/// and Nav2's trinary rule on their grey levels gives back the zones `--json` counts:
+/// safe free, forbidden occupied, high-risk unknown (for `--yaml`: between the thresholds,
+/// a graded cost in its scale mode). With `--rectangles`, the blue outlines lie on
+/// forbidden cells and read as occupied too.
+#[test]
+fn pgm_outputs_are_p5_and_read_back_by_nav2s_rule() {
+    let pic = picture();
+    for rectangles in [false, true] {
+        let out = tmp(&format!("zones_{rectangles}.pgm"));
+        let yaml = tmp(&format!("zones_ros_{rectangles}.yaml"));
+        let mut args = vec![
+            "map",
+            &pic,
+            "--safety-radius",
+            "3",
+            "--out",
+            out.to_str().unwrap(),
+            "--yaml",
+            yaml.to_str().unwrap(),
+            "--json",
+        ];
+        if rectangles {
+            args.push("--rectangles");
+        }
+        let o = hyplan(&args);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let v = json(&o);
+        let want = [&v["free"], &v["forbidden"], &v["risk"]].map(|x| x.as_u64().unwrap() as usize);
+        assert!(want.iter().all(|&n| n > 0), "{want:?}");
+        let yaml_text = std::fs::read_to_string(&yaml).unwrap();
+        assert!(yaml_text.lines().any(|l| l == "mode: scale"), "{yaml_text}");
+        for file in [out.clone(), yaml.with_extension("pgm")] {
+            let bytes = std::fs::read(&file).unwrap();
+            assert!(bytes.starts_with(b"P5\n"), "{}: not P5", file.display());
+            let grey = envmap::read_picture(&file).unwrap();
+            assert_eq!((grey.width(), grey.height(), grey.channels()), (50, 40, 1));
+            let mut n = [0usize; 3];
+            for &g in grey.data() {
+                let occ = (255.0 - f64::from(g)) / 255.0;
+                n[if occ < 0.196 {
+                    0
+                } else if occ > 0.65 {
+                    1
+                } else {
+                    2
+                }] += 1;
+            }
+            assert_eq!(n, want, "{}: [free, occupied, unknown]", file.display());
+        }
+    }
 }

@@ -544,3 +544,117 @@ fn a_closed_pipe_ends_quietly() {
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(out.status.code(), Some(0), "{err}");
 }
+
+/// A generated floor plan (rooms, corridors, 60-cell doors) written as a PNG picture, with
+/// its start and goal in the picture's frame (column, row from the top).
+fn floor_plan_picture(name: &str, side: usize) -> (String, String, String) {
+    use rand_chacha::rand_core::SeedableRng;
+    let g = envmap::generate::floor_plan(
+        side,
+        side,
+        60,
+        4,
+        &mut rand_chacha::ChaCha8Rng::seed_from_u64(1),
+    );
+    let (w, h) = (g.map.width(), g.map.height());
+    let mut data = vec![255_u8; w * h];
+    for j in 0..h {
+        for i in 0..w {
+            if g.map.cell_zone(i, j) == hyplan_core::Zone::Forbidden {
+                data[(h - 1 - j) * w + i] = 0;
+            }
+        }
+    }
+    let path = tmp_path(name);
+    envmap::write_picture(&envmap::Picture::grey(w, h, data).unwrap(), &path).unwrap();
+    let xy = |p: hyplan_core::Point2| format!("{},{}", p.x, h as f64 - p.y);
+    (path.display().to_string(), xy(g.start), xy(g.goal))
+}
+
+/// No planner gives up by default: with no budget flag, every planner of the registry
+/// solves a generated floor plan and seed 000's Table 2 room with `--avoid-risk`, except
+/// GA-PCHIP on the floor plan, whose six via-points cannot thread its doors (its budget is
+/// generations; the message then names that budget and the flags that raise it). The
+/// release binary's times on the 2000 x 2000 plan are in docs/measurements/.
+#[test]
+fn every_registry_planner_solves_a_floor_plan_and_the_room_at_its_defaults() {
+    let (plan_map, start, goal) = floor_plan_picture("floor_plan_1000.png", 1000);
+    let room = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../scenarios/maps/room_960x640.png")
+        .display()
+        .to_string();
+    for name in harness::PlannerConfig::names() {
+        let o = hyplan_plan(&[
+            "--map",
+            &plan_map,
+            "--start",
+            &start,
+            "--goal",
+            &goal,
+            "--planner",
+            name,
+        ]);
+        if name == "ga-pchip" {
+            assert_eq!(o.status.code(), Some(1), "{name}: {}", stderr(&o));
+            let out = stdout(&o);
+            assert!(
+                out.contains("the budget was 200 iterations") && out.contains("--max-iter N"),
+                "{out}"
+            );
+        } else {
+            assert_eq!(
+                o.status.code(),
+                Some(0),
+                "{name} on the floor plan: {}{}",
+                stdout(&o),
+                stderr(&o)
+            );
+        }
+        let o = hyplan_plan(&[
+            "--map",
+            &room,
+            "--start",
+            "12,308",
+            "--goal",
+            "868,206",
+            "--avoid-risk",
+            "--planner",
+            name,
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name} in the room: {}{}",
+            stdout(&o),
+            stderr(&o)
+        );
+    }
+}
+
+/// A spent budget says which budget it was and how to raise it.
+#[test]
+fn a_spent_budget_names_itself_and_the_flag() {
+    let map = walled("a_spent_budget_names_itself_and_the_flag");
+    let o = hyplan_plan(&[
+        "--map",
+        &map,
+        "--start",
+        "2.5,2.5",
+        "--goal",
+        "17.5,2.5",
+        "--planner",
+        "astar",
+        "--max-iter",
+        "3",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    assert_eq!(v["no_path"]["kind"], "budget");
+    assert_eq!(v["no_path"]["max_iterations"], 3);
+    let msg = v["no_path"]["message"].as_str().unwrap();
+    assert!(
+        msg.contains("the budget was 3 iterations") && msg.contains("--max-iter"),
+        "{msg}"
+    );
+}

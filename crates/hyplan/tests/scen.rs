@@ -10,12 +10,13 @@ fn hyplan(args: &[&str]) -> Output {
         .expect("the hyplan binary runs")
 }
 
-fn shared(rel: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared")
-        .join(rel)
-        .display()
-        .to_string()
+/// A file of the repository's `data` folder; a missing one fails the test with its path.
+fn data(rel: &str) -> String {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../data")
+        .join(rel);
+    assert!(p.exists(), "test data missing: {}", p.display());
+    p.display().to_string()
 }
 
 fn tmp_file(name: &str, text: &str) -> String {
@@ -36,8 +37,8 @@ const TINY_MAP: &str = "type octile\nheight 4\nwidth 4\nmap\n.@..\n....\n..@.\n.
 
 #[test]
 fn arena_all_scenarios_match() {
-    let arena = shared("data/movingai/arena.map");
-    let scen = shared("data/movingai/arena.map.scen");
+    let arena = data("movingai/arena.map");
+    let scen = data("movingai/arena.map.scen");
     for algo in ["astar", "dijkstra"] {
         let o = hyplan(&["scen", "--map", &arena, "--scen", &scen, "--algo", algo]);
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -70,9 +71,9 @@ fn limit_takes_the_first_scenarios() {
     let o = hyplan(&[
         "scen",
         "--map",
-        &shared("peers/maps/tiny.map"),
+        &data("generated/tiny.map"),
         "--scen",
-        &shared("peers/maps/tiny.scen"),
+        &data("generated/tiny.scen"),
         "--limit",
         "2",
     ]);

@@ -58,6 +58,12 @@ fn reaches_the_goal_and_writes_outputs() {
     }
     let csv = std::fs::read_to_string(out.join("trace.csv")).unwrap();
     assert!(csv.starts_with("t,x,y,phi,v,omega,wheel_right,wheel_left,d_obstacle,d_person,events"));
+    let [free, occupied, unknown] = trinary_counts(&out.join("map.yaml"));
+    assert_eq!(free + occupied + unknown, 120 * 60);
+    assert!(
+        free > 0 && occupied > 0 && unknown > 0,
+        "{free} {occupied} {unknown}"
+    );
     assert!(
         std::fs::read_to_string(out.join("animation.svg"))
             .unwrap()
@@ -211,6 +217,15 @@ fn explore_writes_coverage_map_and_figures() {
         for name in ["track.csv", "map.yaml", "map.pgm", "animation.png"] {
             assert!(out.join(name).is_file(), "{name}");
         }
+        // The map file, read by Nav2's trinary rule, has the cells the summary counts.
+        let counts = trinary_counts(&out.join("map.yaml"));
+        let [f, o, u] = counts;
+        let line =
+            format!("built map: 120 x 80 cells of 0.05 m: {f} free, {o} occupied, {u} unknown");
+        assert!(
+            stdout.lines().any(|l| l == line),
+            "{line:?} not in {stdout}"
+        );
         check_animation(&out.join("animation.png"));
         let svgs = std::fs::read_dir(&out)
             .unwrap()
@@ -294,4 +309,130 @@ fn explore_bad_input_exits_2_naming_the_field() {
         "{}",
         stderr(&o)
     );
+}
+
+/// The cells of a ROS map written by `hyplan sim` / `hyplan explore` as Nav2's trinary
+/// rule reads them: `[free, occupied, unknown]`. Checks on the way that the files are what
+/// map_saver writes: a YAML in trinary mode with its thresholds, and a binary PGM (`P5`)
+/// of 254 / 0 / 205.
+fn trinary_counts(yaml: &Path) -> [usize; 3] {
+    let text = std::fs::read_to_string(yaml).unwrap();
+    for line in [
+        "image: map.pgm",
+        "mode: trinary",
+        "negate: 0",
+        "occupied_thresh: 0.65",
+        "free_thresh: 0.196",
+    ] {
+        assert!(text.lines().any(|l| l == line), "{line:?} not in {text}");
+    }
+    let bytes = std::fs::read(yaml.with_extension("pgm")).unwrap();
+    assert!(bytes.starts_with(b"P5\n# CREATOR: hyplan"), "a binary PGM");
+    let pic = envmap::read_picture(&yaml.with_extension("pgm")).unwrap();
+    assert_eq!(pic.channels(), 1);
+    let mut n = [0; 3];
+    for &v in pic.data() {
+        assert!([254, 0, 205].contains(&v), "grey {v} is not map_saver's");
+        let occ = (255.0 - f64::from(v)) / 255.0;
+        n[if occ > 0.65 {
+            1
+        } else if occ < 0.196 {
+            0
+        } else {
+            2
+        }] += 1;
+    }
+    n
+}
+
+/// A world whose grids (or map file) exceed the memory limit: exit 2 before anything is
+/// allocated, naming the file, the field, its value and the flag that raises the limit;
+/// `--max-cells` raises it.
+#[test]
+fn grids_above_the_memory_limit_exit_2_naming_the_flag() {
+    let huge_img = Path::new(&tmp_file("huge_img.pgm", "P5\n30000 30000\n255\n")).to_path_buf();
+    tmp_file(
+        "huge.yaml",
+        &format!(
+            "image: {}\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n\
+             occupied_thresh: 0.65\nfree_thresh: 0.196\n",
+            huge_img.file_name().unwrap().to_string_lossy()
+        ),
+    );
+    let cases: [(&str, String, &[&str]); 5] = [
+        (
+            "huge_laser.ron",
+            hall("", "\n    laser: (beams: 1000000000000),", "(0.5, 1.5)"),
+            &[
+                "huge_laser.ron",
+                "`laser.beams` = 1000000000000",
+                "--max-cells 1000000000000",
+            ],
+        ),
+        (
+            "huge_world.ron",
+            hall("", "", "(0.5, 1.5)").replace("size: (6.0, 3.0)", "size: (1e6, 3.0)"),
+            &[
+                "huge_world.ron",
+                "`world.size` = (1000000, 3)",
+                "--max-cells 1200000000",
+            ],
+        ),
+        (
+            "tiny_map_res.ron",
+            hall("", "\n    mapping: (resolution: 0.0001),", "(0.5, 1.5)"),
+            &[
+                "tiny_map_res.ron",
+                "`mapping.resolution` = 0.0001",
+                "60000 x 30000",
+                "--max-cells 1800000000",
+            ],
+        ),
+        (
+            "tiny_cost_res.ron",
+            hall("", "\n    costmap: (resolution: 0.0002),", "(0.5, 1.5)"),
+            &[
+                "tiny_cost_res.ron",
+                "`costmap.resolution` = 0.0002",
+                "--max-cells 450000000",
+            ],
+        ),
+        (
+            "huge_map.ron",
+            hall("", "", "(0.5, 1.5)").replace(
+                "world: (size: (6.0, 3.0),",
+                "world: (map: Some(Ros(\"huge.yaml\")), size: (6.0, 3.0),",
+            ),
+            &[
+                "huge_map.ron",
+                "world.map",
+                "huge_img.pgm",
+                "30000 x 30000",
+                "--max-cells 900000000",
+            ],
+        ),
+    ];
+    for (name, text, needles) in cases {
+        let f = tmp_file(name, &text);
+        for cmd in ["sim", "explore"] {
+            let o = hyplan(&[cmd, &f]);
+            let err = stderr(&o);
+            assert_eq!(o.status.code(), Some(2), "{cmd} {name}: {err}");
+            for n in needles {
+                assert!(err.contains(n), "{cmd} {name}: {n:?} not in {err}");
+            }
+        }
+    }
+    // The hall's largest grids are 120 x 60 cells: a limit one below refuses it, naming
+    // the value that is enough; that value runs.
+    let f = tmp_file("limit.ron", &hall("", "", "(0.5, 1.5)"));
+    let o = hyplan(&["sim", &f, "--max-cells", "7199"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--max-cells 7200"), "{}", stderr(&o));
+    let o = hyplan(&["sim", &f, "--max-cells", "7200"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let f = tmp_file("limit_room.ron", &room(""));
+    let o = hyplan(&["explore", &f, "--max-cells", "9599"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--max-cells 9600"), "{}", stderr(&o));
 }

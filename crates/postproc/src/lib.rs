@@ -95,8 +95,8 @@ pub use pchip::Pchip;
 pub use prune::{prune_pairwise, prune_pairwise_passes, shortcut_farthest, shortcut_greedy};
 pub use resample::{Curve, MAX_SAMPLES, densify};
 pub use smooth::{
-    Fit, FitOptions, INSERT_ROUNDS, OnFailure, Repair, Smoothed, Smoothing, fit_checked,
-    smooth_checked,
+    Fit, FitOptions, INSERT_ROUNDS, OnFailure, Repair, Smoothed, Smoothing, check_polyline,
+    fit_checked, smooth_checked,
 };
 pub use timing::{Limits, ProfilePoint, Timing, straight_time, time_curve, time_polyline};
 

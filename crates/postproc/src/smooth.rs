@@ -244,6 +244,44 @@ impl Default for FitOptions {
     }
 }
 
+/// The checks [`smooth_checked`] makes of its input before smoothing: at least two nodes,
+/// finite coordinates, no repeated consecutive node, a `spacing` that samples the path
+/// within [`MAX_SAMPLES`](crate::MAX_SAMPLES) points, and every segment free for
+/// `segment_free`. A caller that keeps a path as it is (`Smoothing::None`) and needs no
+/// samples runs only these.
+///
+/// ```
+/// use hyplan_core::Point2;
+/// let path = [Point2::new(0.0, 0.0), Point2::new(4.0, 0.0)];
+/// assert!(postproc::check_polyline(&path, 0.25, |_, _| true).is_ok());
+/// assert!(postproc::check_polyline(&path[..1], 0.25, |_, _| true).is_err());
+/// assert!(postproc::check_polyline(&path, 0.25, |_, _| false).is_err());
+/// ```
+///
+/// # Errors
+///
+/// As [`smooth_checked`]'s input errors: [`PostprocError::TooFewNodes`],
+/// [`PostprocError::NonFinite`], [`PostprocError::RepeatedNode`],
+/// [`PostprocError::InvalidSpacing`], [`PostprocError::SegmentNotFree`].
+pub fn check_polyline(
+    path: &[Point2],
+    spacing: f64,
+    mut segment_free: impl FnMut(Point2, Point2) -> bool,
+) -> Result<(), PostprocError> {
+    validate_path(path)?;
+    check_spacing(spacing, hyplan_core::path_length(path))?;
+    for (index, w) in path.windows(2).enumerate() {
+        if !segment_free(w[0], w[1]) {
+            return Err(PostprocError::SegmentNotFree {
+                index,
+                from: w[0],
+                to: w[1],
+            });
+        }
+    }
+    Ok(())
+}
+
 /// Smooths `path` with `method` and returns the curve sampled at most `spacing` apart,
 /// with every sample pair accepted by `segment_free`.
 ///
@@ -303,22 +341,12 @@ pub fn smooth_checked(
     spacing: f64,
     mut segment_free: impl FnMut(Point2, Point2) -> bool,
 ) -> Result<Smoothed, PostprocError> {
-    validate_path(path)?;
-    check_spacing(spacing, hyplan_core::path_length(path))?;
     let mut calls = 0usize;
     let mut oracle = |a: Point2, b: Point2| {
         calls += 1;
         segment_free(a, b)
     };
-    for (index, w) in path.windows(2).enumerate() {
-        if !oracle(w[0], w[1]) {
-            return Err(PostprocError::SegmentNotFree {
-                index,
-                from: w[0],
-                to: w[1],
-            });
-        }
-    }
+    check_polyline(path, spacing, &mut oracle)?;
     let mut repairs = Vec::new();
     let (nodes, mut points, curve) = match method {
         Smoothing::None | Smoothing::Prune => {

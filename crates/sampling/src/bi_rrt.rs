@@ -49,7 +49,8 @@ pub struct BiRrt {
     /// Default 1.0.
     pub step: f64,
     /// Iteration (samples drawn, one tree extended per iteration) and optional time limits.
-    /// Default 10 000 iterations.
+    /// Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more).
     pub budget: Budget,
 }
 

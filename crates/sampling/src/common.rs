@@ -144,6 +144,7 @@ where
     G: FnMut(&mut [GrowTree; 2], usize, Point2, &mut CountingChecker<'_, W>) -> Option<Join>,
 {
     let started = Instant::now();
+    let budget = &budget.for_sampling(ws.cells());
     toolkit::validate_step_and_budget(step, budget, ws, query)?;
     toolkit::check_connected(ws, query, started)?;
     let mut checker = CountingChecker::new(ws);

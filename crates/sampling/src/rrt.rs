@@ -59,7 +59,9 @@ pub struct Rrt {
     /// Probability in [0, 1] of sampling the goal centre instead of a uniform point.
     /// Default 0.05 (OMPL's).
     pub goal_bias: f64,
-    /// Iteration (samples drawn) and optional time limits. Default 10 000 iterations.
+    /// Iteration (samples drawn) and optional time limits.
+    /// Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more).
     pub budget: Budget,
 }
 
@@ -111,7 +113,8 @@ impl Rrt {
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
         let started = Instant::now();
-        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        let budget = self.budget.for_sampling(ws.cells());
+        toolkit::validate_step_and_budget(self.step, &budget, ws, query)?;
         hyplan_core::check::probability("goal_bias", self.goal_bias)?;
         toolkit::check_connected(ws, query, started)?;
         let goal = query.goal;
@@ -120,7 +123,7 @@ impl Rrt {
         let mut iterations = 0_u64;
         let mut reached = goal.contains(query.start).then_some(0_usize);
 
-        while reached.is_none() && !self.budget.exhausted(iterations, started) {
+        while reached.is_none() && !budget.exhausted(iterations, started) {
             iterations += 1;
             if iterations.is_multiple_of(common::OBSERVE_EVERY) {
                 let progress = Progress {

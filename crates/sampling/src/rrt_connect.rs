@@ -58,7 +58,9 @@ enum ExtendStatus {
 pub struct RrtConnect {
     /// Maximum length of one edge, world units, finite and > 0. Default 1.0.
     pub step: f64,
-    /// Iteration (samples drawn) and optional time limits. Default 10 000 iterations.
+    /// Iteration (samples drawn) and optional time limits.
+    /// Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more).
     pub budget: Budget,
 }
 

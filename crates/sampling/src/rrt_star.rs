@@ -76,7 +76,9 @@ pub struct RrtStar {
     pub step: f64,
     /// Probability in [0, 1] of sampling the goal centre. Default 0.05 (OMPL's).
     pub goal_bias: f64,
-    /// Iteration (samples drawn) and optional time limits. Default 10 000 iterations.
+    /// Iteration (samples drawn) and optional time limits.
+    /// Default: unset, [`Budget::samples_for`](hyplan_core::Budget::samples_for) the map
+    /// (100 000 iterations, or one per four cells of a grid map when that is more).
     pub budget: Budget,
     /// Neighbourhood rule for choose-parent and rewiring. Default [`RewireRadius::Auto`].
     pub rewire: RewireRadius,
@@ -153,7 +155,8 @@ impl RrtStar {
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
         let started = Instant::now();
-        toolkit::validate_step_and_budget(self.step, &self.budget, ws, query)?;
+        let budget = self.budget.for_sampling(ws.cells());
+        toolkit::validate_step_and_budget(self.step, &budget, ws, query)?;
         hyplan_core::check::probability("goal_bias", self.goal_bias)?;
         self.validate_rewire()?;
         toolkit::check_connected(ws, query, started)?;
@@ -179,7 +182,7 @@ impl RrtStar {
         let mut candidates: Vec<(f64, usize, f64)> = Vec::new();
 
         while (!self.stop_at_first_solution || goal_nodes.is_empty())
-            && !self.budget.exhausted(iterations, started)
+            && !budget.exhausted(iterations, started)
         {
             iterations += 1;
             if iterations.is_multiple_of(common::OBSERVE_EVERY) {

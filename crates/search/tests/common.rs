@@ -7,20 +7,20 @@ use envmap::GridMap;
 /// Seed of the random-grid tests.
 pub const SEED: u64 = 0x5eed_0003;
 
-/// `shared/data` beside the repository.
+/// The repository's `data` folder (public maps with their licences, `data/README.md`).
 pub fn data_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data")
 }
 
-/// `shared/peers/maps` beside the repository.
+/// The benchmark peers' generated maps, `data/generated`.
 pub fn peer_maps_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/peers/maps")
+    data_dir().join("generated")
 }
 
-/// Reads a MovingAI `.map` with envmap's loader, saying where the data was looked for.
+/// Reads a MovingAI `.map` with envmap's loader; a missing file fails the test with its
+/// path (the error names it).
 pub fn load_movingai(path: &std::path::Path) -> GridMap {
-    envmap::read_movingai(path)
-        .unwrap_or_else(|e| panic!("{e} (is shared/ beside the repository?)"))
+    envmap::read_movingai(path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Whether every consecutive pair of cells is one legal 8-connected move without corner

@@ -1,4 +1,4 @@
-//! MovingAI optimality: every scenario of the shared arena pair, and the peers' maze.
+//! MovingAI optimality: every scenario of the repository's arena pair, and the peers' maze.
 
 use std::path::Path;
 

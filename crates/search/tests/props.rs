@@ -104,6 +104,28 @@ proptest! {
     }
 
     #[test]
+    fn lazy_theta_star_is_free_and_its_cost_is_its_length((map, s, g) in scenario()) {
+        let mut search = GridSearch::new(&map, GridOptions::default()).unwrap();
+        let a = search.astar(s, g);
+        let t = search.lazy_theta_star(&map, s, g);
+        match (a, t) {
+            (Ok(_), Ok(t)) => {
+                prop_assert_eq!(t.cells.first(), Some(&s));
+                prop_assert_eq!(t.cells.last(), Some(&g));
+                let mut length = 0.0;
+                for w in t.cells.windows(2) {
+                    let (p, q) = (map.cell_center(w[0].0, w[0].1), map.cell_center(w[1].0, w[1].1));
+                    prop_assert!(map.segment_free(p, q), "{:?}", w);
+                    length += (q - p).norm();
+                }
+                prop_assert!((length - t.cost).abs() < 1e-6, "length {} cost {}", length, t.cost);
+            }
+            (Err(_), Err(_)) => {}
+            other => prop_assert!(false, "{:?}", other),
+        }
+    }
+
+    #[test]
     fn planner_paths_pass_segment_free((map, s, g) in scenario(), dx in 0.05f64..0.95, dy in 0.05f64..0.95) {
         let start = Point2::new(s.0 as f64 + dx, s.1 as f64 + dy);
         let goal = Point2::new(g.0 as f64 + 1.0 - dx, g.1 as f64 + 1.0 - dy);

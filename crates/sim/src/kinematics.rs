@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 /// The robot's geometry and limits.
 ///
 /// Defaults: the Kobuki base (TurtleBot 2) that the paper's ROS set-up most likely ran
-/// (`../shared/docs/SIM-NOTES.md`): wheel radius 0.035 m and body radius 0.178 m (paper),
+/// (rrt_exploration_tutorials' Kobuki launch files): wheel radius 0.035 m and body radius 0.178 m (paper),
 /// track 0.23 m (Kobuki URDF; the paper's "height 0.23 m"), speed limits of the
 /// `base_local_planner` set-up (0.3 m/s, 1.0 rad/s), accelerations 1.0 m/s^2 and
 /// 2.0 rad/s^2 (TurtleBot 2 navigation parameters, our choice where the tutorial is

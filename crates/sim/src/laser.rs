@@ -18,7 +18,7 @@ use crate::world::{Disc, StaticWorld};
 /// Scanner parameters.
 ///
 /// Defaults: the 180-degree laser of the paper with the Kobuki tutorial's scanner
-/// (`../shared/docs/SIM-NOTES.md`): 720 beams, 40 Hz, 0.10-60 m, noise sigma 0.01 m,
+/// (rrt_exploration_tutorials' Kobuki set-up): 720 beams, 40 Hz, 0.10-60 m, noise sigma 0.01 m,
 /// mounted 0.115 m ahead of the base centre.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]

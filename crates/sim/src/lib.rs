@@ -93,3 +93,8 @@ pub use run::{NOISE_STREAM, Outcome, PLANNER_STREAM, TICKS_PER_SECOND, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
 pub use tracking::{Mover, Tracker};
 pub use world::{Person, Shape, StaticWorld, Walk, World};
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -327,7 +327,8 @@ impl OccupancyGrid {
     }
 
     /// The grid as a [`GridMap`]: free -> `Free`, occupied -> `Forbidden`, unknown ->
-    /// `Risk` (so [`envmap::write_ros`] writes unknown as its middle grey).
+    /// `Risk` (the occupied cells are the obstacles of a map made by exploring; unknown
+    /// cells are neither).
     #[must_use]
     pub fn to_grid_map(&self) -> GridMap {
         let zones = self
@@ -349,14 +350,49 @@ impl OccupancyGrid {
         .expect("the grid's own size and frame are valid")
     }
 
-    /// Writes the grid as a ROS map (YAML + PGM beside it) through
-    /// [`envmap::write_ros`]: free 254, occupied 0, unknown 128.
+    /// Every cell as free, occupied or unknown, row-major from the bottom row.
+    #[must_use]
+    pub fn occupancy(&self) -> Vec<envmap::Occupancy> {
+        self.logodds
+            .iter()
+            .map(|&l| match ros_value(l) {
+                FREE => envmap::Occupancy::Free,
+                OCCUPIED => envmap::Occupancy::Occupied,
+                _ => envmap::Occupancy::Unknown,
+            })
+            .collect()
+    }
+
+    /// How many cells are `[free, occupied, unknown]`.
+    #[must_use]
+    pub fn counts(&self) -> [usize; 3] {
+        let mut n = [0; 3];
+        for &l in &self.logodds {
+            n[match ros_value(l) {
+                FREE => 0,
+                OCCUPIED => 1,
+                _ => 2,
+            }] += 1;
+        }
+        n
+    }
+
+    /// Writes the grid as map_saver writes a map (YAML + PGM beside it, through
+    /// [`envmap::write_ros_occupancy`]): free 254, occupied 0, unknown 205,
+    /// `mode: trinary`, so ROS tools read the unknown cells as unknown.
     ///
     /// # Errors
     ///
     /// The writer's [`envmap::MapError`].
     pub fn write_ros(&self, yaml_path: &std::path::Path) -> Result<(), envmap::MapError> {
-        envmap::write_ros(&self.to_grid_map(), yaml_path)
+        envmap::write_ros_occupancy(
+            &self.occupancy(),
+            self.width,
+            self.height,
+            self.params.resolution,
+            self.origin,
+            yaml_path,
+        )
     }
 
     /// How many cells are free among those `mask` selects (row-major from the bottom row,
@@ -513,4 +549,58 @@ fn free_cells(logodds: &[f32], mask: &[bool]) -> usize {
             usize::from(free & m)
         })
         .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The built map is written as map_saver writes one (P5, 254 / 0 / 205, trinary) and
+    /// envmap's loader reads it back with its documented rule for unknown cells.
+    #[test]
+    fn write_ros_is_map_saver_trinary() {
+        let bounds = Bounds::new(Point2::new(-1.0, 2.0), Point2::new(0.5, 3.0));
+        let params = Mapping {
+            resolution: 0.5,
+            ..Mapping::default()
+        };
+        let mut g = OccupancyGrid::new(bounds, params);
+        assert_eq!((g.width(), g.height()), (3, 2));
+        g.set_value(0, 0, FREE);
+        g.set_value(1, 0, OCCUPIED);
+        g.set_value(2, 1, FREE);
+        assert_eq!(g.counts(), [2, 1, 3]);
+        let dir = std::env::temp_dir().join(format!("sim-mapping-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let yaml = dir.join("map.yaml");
+        g.write_ros(&yaml).unwrap();
+        let pgm = std::fs::read(dir.join("map.pgm")).unwrap();
+        assert!(pgm.starts_with(b"P5\n# CREATOR: hyplan"));
+        // Top row (j = 1) first: unknown, unknown, free; then free, occupied, unknown.
+        assert!(pgm.ends_with(b"\n3 2\n255\n\xcd\xcd\xfe\xfe\x00\xcd"));
+        let text = std::fs::read_to_string(&yaml).unwrap();
+        for line in [
+            "mode: trinary",
+            "negate: 0",
+            "occupied_thresh: 0.65",
+            "free_thresh: 0.196",
+            "origin: [-1.0, 2.0, 0.0]",
+        ] {
+            assert!(text.lines().any(|l| l == line), "{line:?} not in {text}");
+        }
+        for (unknown_free, unknown) in [(false, Zone::Forbidden), (true, Zone::Free)] {
+            let opts = envmap::LoadOptions {
+                unknown_free,
+                ..envmap::LoadOptions::default()
+            };
+            let back = envmap::load_map(&yaml, &opts).unwrap().map;
+            let zones: Vec<Zone> = (0..2)
+                .flat_map(|j| (0..3).map(move |i| (i, j)))
+                .map(|(i, j)| back.cell_zone(i, j))
+                .collect();
+            let (f, x, u) = (Zone::Free, Zone::Forbidden, unknown);
+            assert_eq!(zones, [f, x, u, u, u, f], "unknown_free {unknown_free}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }

@@ -18,7 +18,7 @@ use hyplan_core::{Bounds, Point2};
 use serde::{Deserialize, Serialize};
 
 use crate::control::Controller;
-use crate::costmap::CostmapParams;
+use crate::costmap::{CostmapParams, MEMORY_RESOLUTION};
 use crate::explore::Exploration;
 use crate::kinematics::{Pose, Robot, wrap_angle};
 use crate::laser::Laser;
@@ -162,6 +162,27 @@ pub enum ScenarioError {
         /// What it must be.
         reason: String,
     },
+    /// A grid the run would allocate over the world, or the laser's scan, has more cells
+    /// (beams) than the memory limit (the `max_cells` of [`Scenario::load_limited`]):
+    /// refused before any is allocated.
+    #[error("{path}: field `{field}` = {value}: {what}, above the memory limit of {limit} cells")]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// The field that makes it this large: a grid's resolution when the scenario
+        /// changed it from its default, else where the world's size comes from
+        /// (`world.size`, `world.map`, `world.map.resolution`); `laser.beams`.
+        field: String,
+        /// Its value as given.
+        value: String,
+        /// What would be allocated, with its size (the grid, the world, the resolution,
+        /// columns x rows = cells).
+        what: String,
+        /// How many cells (a float: the count may exceed every integer type).
+        cells: f64,
+        /// The limit, cells.
+        limit: usize,
+    },
     /// The map file could not be loaded.
     #[error("{path}: world.map: {source}")]
     Map {
@@ -180,12 +201,23 @@ impl Scenario {
     ///
     /// Any [`ScenarioError`].
     pub fn load(path: &Path) -> Result<(Self, World), ScenarioError> {
+        Self::load_limited(path, envmap::DEFAULT_MAX_CELLS)
+    }
+
+    /// [`Scenario::load`] with a memory limit: no map file, and no grid the run allocates
+    /// over the world (built map, costmap, obstacle memory), may have more than
+    /// `max_cells` cells (see [`Scenario::build_world_limited`]).
+    ///
+    /// # Errors
+    ///
+    /// Any [`ScenarioError`]; [`ScenarioError::TooLarge`] above the limit.
+    pub fn load_limited(path: &Path, max_cells: usize) -> Result<(Self, World), ScenarioError> {
         let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
             path: path.to_path_buf(),
             source,
         })?;
         let scenario = Self::parse(&text, path)?;
-        let world = scenario.build_world(path)?;
+        let world = scenario.build_world_limited(path, max_cells)?;
         Ok((scenario, world))
     }
 
@@ -219,8 +251,28 @@ impl Scenario {
     ///
     /// # Errors
     ///
-    /// [`ScenarioError::Field`] or [`ScenarioError::Map`].
+    /// [`ScenarioError::Field`], [`ScenarioError::Map`] or [`ScenarioError::TooLarge`]
+    /// (with the limit [`envmap::DEFAULT_MAX_CELLS`]).
     pub fn build_world(&self, path: &Path) -> Result<World, ScenarioError> {
+        self.build_world_limited(path, envmap::DEFAULT_MAX_CELLS)
+    }
+
+    /// [`Scenario::build_world`] with a memory limit of `max_cells` cells for the map file
+    /// (as [`envmap::LoadOptions::max_cells`]) and for every grid a run allocates over the
+    /// world's bounds: the built map (`mapping.resolution`), the costmap
+    /// (`costmap.resolution`) and the obstacle memory and people tracker
+    /// ([`MEMORY_RESOLUTION`](crate::costmap::MEMORY_RESOLUTION)); the laser's beams count
+    /// against the same limit. A huge world, a tiny resolution or a huge laser is refused
+    /// here, before anything is allocated.
+    ///
+    /// # Errors
+    ///
+    /// As [`Scenario::build_world`].
+    pub fn build_world_limited(
+        &self,
+        path: &Path,
+        max_cells: usize,
+    ) -> Result<World, ScenarioError> {
         self.validate_values(path)?;
         let field = |f: &str, v: String, r: &str| ScenarioError::Field {
             path: path.to_path_buf(),
@@ -231,11 +283,15 @@ impl Scenario {
         let mut statics = StaticWorld::default();
         let mut mapped = StaticWorld::default();
         let mut bounds = None;
+        let opts = envmap::LoadOptions {
+            max_cells,
+            ..envmap::LoadOptions::default()
+        };
         if let Some(map) = &self.world.map {
             let base = path.parent().unwrap_or(Path::new(""));
             let grid = match map {
                 MapSpec::Ros(file) => {
-                    envmap::load_map(&base.join(file), &envmap::LoadOptions::default())
+                    envmap::load_map(&base.join(file), &opts)
                         .map_err(|source| ScenarioError::Map {
                             path: path.to_path_buf(),
                             source,
@@ -246,7 +302,7 @@ impl Scenario {
                     path: file,
                     resolution,
                     origin,
-                } => envmap::load_map(&base.join(file), &envmap::LoadOptions::default())
+                } => envmap::load_map(&base.join(file), &opts)
                     .map_err(|source| ScenarioError::Map {
                         path: path.to_path_buf(),
                         source,
@@ -271,6 +327,7 @@ impl Scenario {
         }
         let bounds =
             bounds.ok_or_else(|| field("world.size", "missing".into(), "give a size or a map"))?;
+        self.check_sizes(path, bounds, max_cells)?;
         for s in &self.world.shapes {
             statics.add_shape(s);
             mapped.add_shape(s);
@@ -313,6 +370,88 @@ impl Scenario {
             mapped,
             people: self.people.clone(),
         })
+    }
+
+    /// Refuses a world whose grids would exceed `max_cells` cells: the obstacle memory's
+    /// (fixed 5 cm cells, so only the world's size can be at fault), then the built map's
+    /// and the costmap's; and a laser of more than `max_cells` beams (each scan holds a
+    /// range and a direction per beam). Counts are computed as the grids compute them, in
+    /// floating point so that no product overflows.
+    fn check_sizes(
+        &self,
+        path: &Path,
+        bounds: Bounds,
+        max_cells: usize,
+    ) -> Result<(), ScenarioError> {
+        let too_large =
+            |field: String, value: String, what: String, cells: f64| ScenarioError::TooLarge {
+                path: path.to_path_buf(),
+                field,
+                value,
+                what,
+                cells,
+                limit: max_cells,
+            };
+        let beams = self.laser.beams as f64;
+        if beams > max_cells as f64 {
+            return Err(too_large(
+                "laser.beams".into(),
+                self.laser.beams.to_string(),
+                format!(
+                    "a scan of {} beams, each counted as a cell",
+                    show_count(beams)
+                ),
+                beams,
+            ));
+        }
+        let size_source = || match (&self.world.size, &self.world.map) {
+            (Some((w, h)), _) => ("world.size".to_string(), format!("({w}, {h})")),
+            (None, Some(MapSpec::Picture { resolution, .. })) => {
+                ("world.map.resolution".to_string(), resolution.to_string())
+            }
+            (None, Some(MapSpec::Ros(file))) => ("world.map".to_string(), file.clone()),
+            (None, None) => ("world.size".to_string(), "missing".to_string()),
+        };
+        // (which grid, the field of its resolution, the resolution, its default)
+        let grids = [
+            ("the obstacle memory", None, MEMORY_RESOLUTION, None),
+            (
+                "the built map (mapping.resolution)",
+                Some("mapping.resolution"),
+                self.mapping.resolution,
+                Some(Mapping::default().resolution),
+            ),
+            (
+                "the costmap (costmap.resolution)",
+                Some("costmap.resolution"),
+                self.costmap.resolution,
+                Some(CostmapParams::default().resolution),
+            ),
+        ];
+        for (grid, res_field, res, default) in grids {
+            // As `OccupancyGrid::new` and `costmap::rasterize` size their grids.
+            let columns = (bounds.width() / res).ceil().max(1.0);
+            let rows = (bounds.height() / res).ceil().max(1.0);
+            let cells = columns * rows;
+            if cells <= max_cells as f64 {
+                continue;
+            }
+            // A resolution the scenario changed is the likely culprit; else the size.
+            let (field, value) = match (res_field, default) {
+                (Some(f), Some(d)) if res != d => (f.to_string(), res.to_string()),
+                _ => size_source(),
+            };
+            let what = format!(
+                "{grid} over the {} m x {} m world at {res} m per cell would be {} x {} = {} cells",
+                bounds.width(),
+                bounds.height(),
+                show_count(columns),
+                show_count(rows),
+                show_count(cells)
+            );
+            return Err(too_large(field, value, what, cells));
+        }
+        Ok(())
     }
 
     /// Range checks of every number.
@@ -519,5 +658,138 @@ impl Scenario {
                 value,
                 reason,
             })
+    }
+}
+
+/// A cell count for messages: exact below 10^15, else in scientific notation (a count
+/// computed in floating point is not exact beyond that).
+fn show_count(n: f64) -> String {
+    if n < 1e15 {
+        format!("{n:.0}")
+    } else {
+        format!("{n:.3e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scenario(world: &str, extra: &str) -> Scenario {
+        let text = format!(
+            "SimScenario(name: \"t\", world: ({world}), start: (1.0, 1.0), goal: (2.0, 2.0),{extra})"
+        );
+        Scenario::parse(&text, Path::new("t.ron")).unwrap()
+    }
+
+    fn too_large(sc: &Scenario, max_cells: usize) -> (String, String, String) {
+        match sc.build_world_limited(Path::new("big.ron"), max_cells) {
+            Err(e @ ScenarioError::TooLarge { .. }) => {
+                let text = e.to_string();
+                let ScenarioError::TooLarge { field, value, .. } = e else {
+                    unreachable!()
+                };
+                (field, value, text)
+            }
+            other => panic!("expected TooLarge, got {other:?}"),
+        }
+    }
+
+    /// Every grid a run allocates over the world is counted before it is allocated: the
+    /// message names the file, the field at fault, its value and the cell counts.
+    #[test]
+    fn grids_above_the_limit_are_refused() {
+        let limit = envmap::DEFAULT_MAX_CELLS;
+        // A huge world: the obstacle memory's fixed 5 cm cells.
+        let (field, value, text) = too_large(&scenario("size: (1e6, 1e6)", ""), limit);
+        assert_eq!(
+            (field.as_str(), value.as_str()),
+            ("world.size", "(1000000, 1000000)")
+        );
+        assert!(text.starts_with("big.ron: field `world.size`"), "{text}");
+        assert!(
+            text.contains("20000000 x 20000000 = 400000000000000 cells"),
+            "{text}"
+        );
+        assert!(text.contains(&format!("limit of {limit} cells")), "{text}");
+        // A size beyond every integer: no overflow, a count in scientific notation.
+        let (field, _, text) = too_large(&scenario("size: (1e300, 1.0)", ""), limit);
+        assert_eq!(field, "world.size");
+        assert!(text.contains("e301"), "{text}");
+        // A tiny resolution on a small world names the resolution.
+        let sc = scenario("size: (22.0, 22.0)", " mapping: (resolution: 0.0001)");
+        let (field, value, text) = too_large(&sc, limit);
+        assert_eq!(
+            (field.as_str(), value.as_str()),
+            ("mapping.resolution", "0.0001")
+        );
+        assert!(text.contains("220000 x 220000"), "{text}");
+        let sc = scenario("size: (22.0, 22.0)", " costmap: (resolution: 0.0001)");
+        let (field, value, _) = too_large(&sc, limit);
+        assert_eq!(
+            (field.as_str(), value.as_str()),
+            ("costmap.resolution", "0.0001")
+        );
+        // A laser of more beams than the limit.
+        let sc = scenario("size: (6.0, 3.0)", " laser: (beams: 1000000000000)");
+        let (field, value, text) = too_large(&sc, limit);
+        assert_eq!(
+            (field.as_str(), value.as_str()),
+            ("laser.beams", "1000000000000")
+        );
+        assert!(text.contains("a scan of 1000000000000 beams"), "{text}");
+        // A lower limit: the hall's 5 cm grids (120 x 60) fit exactly.
+        let sc = scenario("size: (6.0, 3.0)", "");
+        assert!(sc.build_world_limited(Path::new("t.ron"), 7200).is_ok());
+        let (field, _, text) = too_large(&sc, 7199);
+        assert_eq!(field, "world.size");
+        assert!(text.contains("120 x 60 = 7200 cells"), "{text}");
+        assert!(sc.build_world(Path::new("t.ron")).is_ok());
+    }
+
+    /// A map file above the limit is refused by the loader (naming the map file); a small
+    /// picture stretched by a huge resolution is refused by its grids, naming the field.
+    #[test]
+    fn map_files_count_too() {
+        let dir = std::env::temp_dir().join(format!("sim-scenario-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("room.pgm"),
+            b"P5\n4 3\n255\n\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff",
+        )
+        .unwrap();
+        let path = dir.join("t.ron");
+        let sc = scenario(
+            "map: Some(Picture(path: \"room.pgm\", resolution: 1.0))",
+            "",
+        );
+        match sc.build_world_limited(&path, 11) {
+            Err(ScenarioError::Map {
+                source:
+                    envmap::MapError::TooLarge {
+                        width: 4,
+                        height: 3,
+                        ..
+                    },
+                ..
+            }) => {}
+            other => panic!("expected the loader's TooLarge, got {other:?}"),
+        }
+        // The 4 m x 3 m world's obstacle memory: 80 x 60 cells.
+        assert!(sc.build_world_limited(&path, 4800).is_ok());
+        let sc = scenario(
+            "map: Some(Picture(path: \"room.pgm\", resolution: 1e4))",
+            "",
+        );
+        match sc.build_world_limited(&path, envmap::DEFAULT_MAX_CELLS) {
+            Err(ScenarioError::TooLarge { field, value, .. }) => {
+                assert_eq!(
+                    (field.as_str(), value.as_str()),
+                    ("world.map.resolution", "10000")
+                );
+            }
+            other => panic!("expected TooLarge, got {other:?}"),
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -254,11 +254,8 @@ fn tb3_path() -> PathBuf {
 #[test]
 fn turtlebot3_world_is_explored_without_contact() {
     let path = tb3_path();
-    if !path.with_file_name("../../../shared/data").exists() {
-        eprintln!("SKIPPED: ../shared/data is missing");
-        return;
-    }
-    let (scenario, world) = Scenario::load(&path).unwrap();
+    let (scenario, world) =
+        Scenario::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     for seed in 0..=2 {
         for strategy in Strategy::ALL {
             let out = sim::explore(&scenario, &world, seed, strategy).unwrap();
@@ -279,11 +276,8 @@ fn turtlebot3_world_is_explored_without_contact() {
 #[test]
 fn movingai_arena_is_explored_without_contact() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-arena.ron");
-    if !path.with_file_name("../../../shared/data").exists() {
-        eprintln!("SKIPPED: ../shared/data is missing");
-        return;
-    }
-    let (scenario, world) = Scenario::load(&path).unwrap();
+    let (scenario, world) =
+        Scenario::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     for strategy in [Strategy::Both, Strategy::Frontier] {
         let out = sim::explore(&scenario, &world, 1, strategy).unwrap();
         assert!(out.finished, "{strategy:?} ended by the time limit");
@@ -303,11 +297,8 @@ fn movingai_arena_is_explored_without_contact() {
 #[test]
 fn reachable_free_of_a_loaded_map_leaves_out_cells_touching_a_wall() {
     let path = tb3_path();
-    if !path.with_file_name("../../../shared/data").exists() {
-        eprintln!("SKIPPED: ../shared/data is missing");
-        return;
-    }
-    let (scenario, world) = Scenario::load(&path).unwrap();
+    let (scenario, world) =
+        Scenario::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let res = scenario.mapping.resolution;
     let (w, reach) =
         sim::explore::reachable_free(&world, res, Point2::new(scenario.start.0, scenario.start.1));

@@ -104,14 +104,28 @@ pub(crate) fn decode_picture_limited(
     }
 }
 
-/// Writes a picture; the format follows the extension (`.png`, `.pgm`, `.ppm`; PNM files
-/// are written binary).
+/// Writes a picture; the format follows the extension (case-insensitive).
+///
+/// `.pgm`, `.ppm` and `.pnm` are written here as binary netpbm, the formats every reader
+/// knows (the `image` crate's own encoder writes PAM, `P7`, which Pillow and ROS's
+/// map_server refuse): `.pgm` is `P5` (grey; an RGB picture is written as the rounded
+/// mean of its channels, the shade ROS map readers compute), `.ppm` is `P6` (RGB; a grey
+/// picture is written with three equal channels), `.pnm` is `P5` or `P6` by the picture's
+/// channels. Other extensions (`.png`, ...) go through the `image` crate.
 ///
 /// # Errors
 ///
-/// [`MapError::Encode`] (unknown extension, io failure), [`MapError::NoImageSupport`]
+/// [`MapError::Write`] (io failure of a netpbm file), [`MapError::Encode`] (unknown
+/// extension, io failure), [`MapError::NoImageSupport`] for formats other than netpbm
 /// without the `image` feature.
 pub fn write_picture(picture: &Picture, path: &Path) -> Result<(), MapError> {
+    if let Some(kind) = Pnm::of(path) {
+        let bytes = encode_pnm(picture, kind, "");
+        return std::fs::write(path, bytes).map_err(|source| MapError::Write {
+            path: path.to_path_buf(),
+            source,
+        });
+    }
     #[cfg(feature = "image")]
     {
         let (w, h) = (picture.width() as u32, picture.height() as u32);
@@ -132,6 +146,67 @@ pub fn write_picture(picture: &Picture, path: &Path) -> Result<(), MapError> {
             path: path.to_path_buf(),
         })
     }
+}
+
+/// The binary netpbm formats [`write_picture`] writes itself.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Pnm {
+    /// `P5`, one grey byte per pixel.
+    Grey,
+    /// `P6`, three bytes per pixel.
+    Rgb,
+    /// `P5` or `P6`, as the picture's channels.
+    AsIs,
+}
+
+impl Pnm {
+    /// The netpbm format of `path`'s extension, if it names one we write.
+    fn of(path: &Path) -> Option<Self> {
+        match path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase())
+            .as_deref()
+        {
+            Some("pgm") => Some(Self::Grey),
+            Some("ppm") => Some(Self::Rgb),
+            Some("pnm") => Some(Self::AsIs),
+            _ => None,
+        }
+    }
+}
+
+/// A picture as a binary netpbm file: the magic number, a `# CREATOR: hyplan` comment
+/// (with `note` after it, when given), `width height`, the maximum value 255, one newline,
+/// then the rows top first (the header map_saver writes, so every PGM reader takes it).
+pub(crate) fn encode_pnm(picture: &Picture, kind: Pnm, note: &str) -> Vec<u8> {
+    let (w, h) = (picture.width(), picture.height());
+    let grey = match kind {
+        Pnm::Grey => true,
+        Pnm::Rgb => false,
+        Pnm::AsIs => picture.channels() == 1,
+    };
+    let note = if note.is_empty() {
+        String::new()
+    } else {
+        format!(" {note}")
+    };
+    let header = format!(
+        "{}\n# CREATOR: hyplan {}{note}\n{w} {h}\n255\n",
+        if grey { "P5" } else { "P6" },
+        env!("CARGO_PKG_VERSION"),
+    );
+    let mut bytes = Vec::with_capacity(header.len() + w * h * if grey { 1 } else { 3 });
+    bytes.extend_from_slice(header.as_bytes());
+    match (grey, picture.channels()) {
+        (true, 1) | (false, 3) => bytes.extend_from_slice(picture.data()),
+        (true, _) => bytes.extend(picture.data().chunks_exact(3).map(|p| {
+            // Rounded mean: the shade `channel_mean` gives, to the nearest integer.
+            let sum = u32::from(p[0]) + u32::from(p[1]) + u32::from(p[2]);
+            ((sum + 1) / 3) as u8
+        })),
+        (false, _) => bytes.extend(picture.data().iter().flat_map(|&v| [v, v, v])),
+    }
+    bytes
 }
 
 /// Colour of safe cells in [`render_zones`]: white.

@@ -292,32 +292,55 @@ pub fn ros_cell_counts(meta: &RosMapMeta, picture: &Picture) -> [usize; 4] {
     counts
 }
 
-/// Grey value written for free cells by [`write_ros`] (map_saver's value).
+/// Grey value of free cells in the files [`write_ros`] and [`write_ros_occupancy`] write
+/// (map_saver's value): `occ` = 0.004, below `free_thresh`.
 pub const ROS_FREE: u8 = 254;
-/// Grey value written for high-risk cells by [`write_ros`]: `occ` = 0.498, between the
-/// thresholds, read back as graded (`Risk`) in `scale` mode.
+/// Grey value of high-risk cells in the files [`write_ros`] writes: `occ` = 0.498, strictly
+/// between the thresholds, so `mode: scale` reads it as a graded cost (hyplan: `Risk`;
+/// Nav2: occupancy 67 of 100) and the trinary rule as unknown.
 pub const ROS_RISK: u8 = 128;
-/// Grey value written for forbidden cells by [`write_ros`] (map_saver's value).
+/// Grey value of forbidden / occupied cells in the files [`write_ros`] and
+/// [`write_ros_occupancy`] write (map_saver's value): `occ` = 1, above `occupied_thresh`.
 pub const ROS_OCCUPIED: u8 = 0;
+/// Grey value of unknown cells in the files [`write_ros_occupancy`] writes (map_saver's
+/// value in trinary mode): `occ` = 0.19608, just above `free_thresh` 0.196 and below
+/// `occupied_thresh`, hence unknown.
+pub const ROS_UNKNOWN: u8 = 205;
+/// `occupied_thresh` in the YAML files hyplan writes (map_saver's).
+pub const ROS_OCCUPIED_THRESH: f64 = 0.65;
+/// `free_thresh` in the YAML files hyplan writes (map_saver's).
+pub const ROS_FREE_THRESH: f64 = 0.196;
 
-/// Writes `map` as a ROS map: `yaml_path` plus a binary PGM beside it with the same stem.
+/// One cell of an occupancy grid as ROS's `nav_msgs/OccupancyGrid` knows it (values 0,
+/// 100 and -1), for [`write_ros_occupancy`].
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Occupancy {
+    /// Seen and free (ROS 0).
+    Free,
+    /// Seen and occupied (ROS 100).
+    Occupied,
+    /// Never seen (ROS -1).
+    Unknown,
+}
+
+/// Writes a three-zone `map` as a ROS map: `yaml_path` plus a binary PGM (`P5`) beside it
+/// with the same stem.
 ///
-/// The YAML says `mode: scale`, `negate: 0`, `occupied_thresh: 0.65`,
-/// `free_thresh: 0.196` and the map's resolution and origin (yaw 0). Free cells are 254,
-/// forbidden 0 (as map_saver writes them) and high-risk 128, which `scale` mode reads as a
-/// graded cost between the thresholds, so all three zones survive the round trip through
-/// [`load_map`](crate::load_map) (a trinary reader would see high-risk cells as unknown).
+/// Encoding (ours: map_saver has no notion of a high-risk zone): `mode: scale`,
+/// `negate: 0`, `occupied_thresh: 0.65`, `free_thresh: 0.196` and the map's resolution and
+/// origin (yaw 0); safe cells are [`ROS_FREE`] (254) and forbidden cells [`ROS_OCCUPIED`]
+/// (0), as map_saver writes free and occupied cells, and high-risk cells [`ROS_RISK`]
+/// (128), whose occupancy 0.498 lies strictly between the thresholds. So every reader
+/// keeps the zones apart: [`load_map`](crate::load_map) and map_server in `scale` mode read
+/// high-risk cells as a graded cost (hyplan's `Risk`, Nav2's occupancy 67), and a reader
+/// applying the trinary rule sees them as unknown, never as free. Rows are written top
+/// (highest y) first, as map_server expects. For an occupancy grid with unknown cells, use
+/// [`write_ros_occupancy`].
 ///
 /// # Errors
 ///
-/// [`MapError::Write`] / [`MapError::Encode`] on io failures,
-/// [`MapError::NoImageSupport`] without the `image` feature.
+/// [`MapError::Write`] on io failures.
 pub fn write_ros(map: &GridMap, yaml_path: &Path) -> Result<(), MapError> {
-    let pgm_path = yaml_path.with_extension("pgm");
-    let pgm_name = pgm_path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "map.pgm".into());
     let (w, h) = (map.width(), map.height());
     let mut data = vec![0u8; w * h];
     for j in 0..h {
@@ -329,17 +352,139 @@ pub fn write_ros(map: &GridMap, yaml_path: &Path) -> Result<(), MapError> {
             };
         }
     }
-    let pic = Picture::grey(w, h, data).expect("w * h bytes");
-    crate::write_picture(&pic, &pgm_path)?;
-    let o = map.origin();
-    let pgm_name = serde_yaml_ng::to_string(&Value::String(pgm_name)).unwrap_or_default();
-    let yaml = format!(
-        "image: {}\nmode: scale\nresolution: {:?}\norigin: [{:?}, {:?}, 0.0]\n\
-         negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n",
-        pgm_name.trim(),
+    write_pair(
+        yaml_path,
+        (w, h, data),
         map.resolution(),
-        o.x,
-        o.y
+        map.origin(),
+        RosMode::Scale,
+    )
+}
+
+/// Writes an occupancy grid of free, occupied and unknown cells as map_saver writes one: a
+/// binary PGM (`P5`) with free cells [`ROS_FREE`] (254), occupied cells [`ROS_OCCUPIED`]
+/// (0) and unknown cells [`ROS_UNKNOWN`] (205), and `yaml_path` beside it saying
+/// `mode: trinary`, `negate: 0`, `occupied_thresh: 0.65`, `free_thresh: 0.196`,
+/// `resolution` and `origin` (yaw 0). Every ROS map reader gives back the three classes;
+/// [`load_map`](crate::load_map) reads unknown cells as `Forbidden`, or `Free` with
+/// [`LoadOptions::unknown_free`](crate::LoadOptions).
+///
+/// `cells` is row-major from the bottom row (cell `(i, j)` at `j * width + i`, as
+/// `nav_msgs/OccupancyGrid` and [`GridMap`] store them); rows are written top (highest y)
+/// first. `origin` is the lower-left corner of cell (0, 0), metres.
+///
+/// # Errors
+///
+/// [`MapError::InvalidParameter`] when `cells` does not hold `width x height` cells, a
+/// side is 0, or `resolution` is not finite and > 0, or `origin` is not finite;
+/// [`MapError::Write`] on io failures.
+///
+/// ```
+/// use envmap::{Occupancy, RosCell, write_ros_occupancy};
+/// use hyplan_core::Point2;
+/// let dir = std::env::temp_dir().join(format!("envmap-doc-{}", std::process::id()));
+/// std::fs::create_dir_all(&dir)?;
+/// let yaml = dir.join("built.yaml");
+/// let cells = [Occupancy::Free, Occupancy::Occupied, Occupancy::Unknown];
+/// write_ros_occupancy(&cells, 3, 1, 0.05, Point2::new(-1.0, 2.0), &yaml)?;
+/// let pgm = std::fs::read(dir.join("built.pgm"))?;
+/// assert!(pgm.starts_with(b"P5\n"));
+/// assert!(pgm.ends_with(&[254, 0, 205]));
+/// let meta = envmap::read_ros_yaml(&yaml)?;
+/// assert_eq!(meta.classify(205.0), RosCell::Unknown);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_ros_occupancy(
+    cells: &[Occupancy],
+    width: usize,
+    height: usize,
+    resolution: f64,
+    origin: Point2,
+    yaml_path: &Path,
+) -> Result<(), MapError> {
+    let invalid = |name: &'static str, value: String, reason: &str| MapError::InvalidParameter {
+        name,
+        value,
+        reason: reason.to_string(),
+    };
+    if width == 0 || height == 0 || width.checked_mul(height) != Some(cells.len()) {
+        return Err(invalid(
+            "cells",
+            format!("{} cells for {width} x {height}", cells.len()),
+            "must hold width x height >= 1 cells",
+        ));
+    }
+    if !(resolution.is_finite() && resolution > 0.0) {
+        return Err(invalid(
+            "resolution",
+            resolution.to_string(),
+            "must be finite and > 0",
+        ));
+    }
+    if !(origin.x.is_finite() && origin.y.is_finite()) {
+        return Err(invalid(
+            "origin",
+            format!("({}, {})", origin.x, origin.y),
+            "must be finite",
+        ));
+    }
+    let mut data = vec![0u8; cells.len()];
+    for (j, row) in cells.chunks_exact(width).enumerate() {
+        let out = &mut data[(height - 1 - j) * width..(height - j) * width];
+        for (px, c) in out.iter_mut().zip(row) {
+            *px = match c {
+                Occupancy::Free => ROS_FREE,
+                Occupancy::Occupied => ROS_OCCUPIED,
+                Occupancy::Unknown => ROS_UNKNOWN,
+            };
+        }
+    }
+    write_pair(
+        yaml_path,
+        (width, height, data),
+        resolution,
+        origin,
+        RosMode::Trinary,
+    )
+}
+
+/// Writes the PGM (`P5`, rows top first in `data`) beside `yaml_path` and the YAML naming
+/// it, in `mode` with map_saver's thresholds.
+fn write_pair(
+    yaml_path: &Path,
+    (w, h, data): (usize, usize, Vec<u8>),
+    resolution: f64,
+    origin: Point2,
+    mode: RosMode,
+) -> Result<(), MapError> {
+    let pgm_path = yaml_path.with_extension("pgm");
+    let pgm_name = pgm_path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "map.pgm".into());
+    let pic = Picture::grey(w, h, data).expect("w * h bytes");
+    let bytes = crate::io::image::encode_pnm(
+        &pic,
+        crate::io::image::Pnm::Grey,
+        &format!("{resolution:?} m/pix"),
+    );
+    std::fs::write(&pgm_path, bytes).map_err(|source| MapError::Write {
+        path: pgm_path.clone(),
+        source,
+    })?;
+    let pgm_name = serde_yaml_ng::to_string(&Value::String(pgm_name)).unwrap_or_default();
+    let mode = match mode {
+        RosMode::Trinary => "trinary",
+        RosMode::Scale => "scale",
+        RosMode::Raw => "raw",
+    };
+    let yaml = format!(
+        "image: {}\nmode: {mode}\nresolution: {:?}\norigin: [{:?}, {:?}, 0.0]\n\
+         negate: 0\noccupied_thresh: {ROS_OCCUPIED_THRESH:?}\nfree_thresh: {ROS_FREE_THRESH:?}\n",
+        pgm_name.trim(),
+        resolution,
+        origin.x,
+        origin.y
     );
     std::fs::write(yaml_path, yaml).map_err(|source| MapError::Write {
         path: yaml_path.to_path_buf(),

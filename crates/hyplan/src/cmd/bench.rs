@@ -17,7 +17,7 @@ use anyhow::{Context as _, bail};
 use envmap::{GridMap, InputFrame, LoadOptions};
 use harness::bench::{self, BenchRun, Comparison, ExperimentInfo, SummaryRow};
 use harness::{Explored, PlannerConfig, PlannerSpec, Scoring};
-use hyplan_core::{Budget, Goal, PlanError, Planner, Query, Zone};
+use hyplan_core::{Goal, PlanError, Planner, Query, Zone};
 use serde::{Deserialize, Serialize};
 
 /// Options of `hyplan bench`.
@@ -143,23 +143,18 @@ pub fn planner_spec(
     map_diagonal: f64,
     time_limit: Option<f64>,
 ) -> Result<(PlannerSpec, Box<dyn Planner>), String> {
-    let budget = match time_limit {
-        Some(t) => Some(
-            Budget::iterations(u64::MAX).with_time(
-                std::time::Duration::try_from_secs_f64(t)
-                    .map_err(|_| format!("time limit {t}: not a duration"))?,
-            ),
-        ),
-        None => None,
-    };
+    let time_limit = time_limit
+        .map(|t| {
+            std::time::Duration::try_from_secs_f64(t)
+                .map_err(|_| format!("time limit {t}: not a duration"))
+        })
+        .transpose()?;
     let config = PlannerConfig::from_spec(text, |mut c| {
         if c.wants_default_step() {
             c = c.with_step(0.05 * map_diagonal);
         }
-        if let Some(b) = budget {
-            c = c.with_budget(b);
-        }
-        c
+        // No time limit: every planner keeps its own budget rule (`hyplan plan`'s too).
+        c.with_limits(None, time_limit)
     })
     .map_err(|e| e.to_string())?;
     let planner = config.build();
@@ -809,7 +804,7 @@ mod tests {
         assert_eq!(spec.planner.step(), Some(2.0));
         let budget = spec.planner.budget().unwrap();
         assert_eq!(budget.max_time, Some(std::time::Duration::from_millis(500)));
-        assert_eq!(budget.max_iterations, u64::MAX);
+        assert_eq!(budget.max_iterations, Some(u64::MAX));
         // The map-sized default step for the plain sampling planners only.
         let (spec, _) = planner_spec("rrt", 100.0, None).unwrap();
         assert_eq!(spec.planner.step(), Some(5.0));

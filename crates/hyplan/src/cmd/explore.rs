@@ -30,16 +30,25 @@ pub struct Args {
     /// Folder for coverage.csv, track.csv, the final map (map.yaml + map.pgm), the
     /// figures (map, track, trees and frontiers at the scenario's snapshot times and at
     /// the end; SVG) and animation.png (the map being built, an animated PNG with a
-    /// frame every 10 s of simulated time unless the scenario sets `frame_period`).
+    /// frame every 10 s of simulated time unless the scenario sets `frame_period`). The
+    /// map is written as map_saver writes one: free 254, occupied 0, unknown 205,
+    /// `mode: trinary`.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Memory limit, cells: the scenario's map file and every grid the run keeps over the
+    /// world (the built map, the costmap, the obstacle memory: the world's size over each
+    /// grid's resolution) may have at most this many cells; larger ones are refused
+    /// before they are allocated.
+    #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
+    pub max_cells: usize,
 }
 
 /// Runs `hyplan explore`: progress on stderr, a summary on stdout; exit 0 when the
 /// exploration ended by itself (no frontier left), 1 when the time limit stopped it,
 /// 2 on bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let (mut scenario, _) = sim::Scenario::load(&args.scenario)?;
+    let (mut scenario, _) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
+        .map_err(super::sim_scenario_error)?;
     if let Some(d) = &args.detector {
         scenario.exploration.strategy = sim::Strategy::parse(d).with_context(|| {
             format!("--detector = {d:?}: must be one of local, global, both, frontier")
@@ -62,7 +71,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         scenario.exploration.frame_period = Some(10.0);
     }
     // The overrides are checked with the rest of the scenario.
-    let world = scenario.build_world(&args.scenario)?;
+    let world = scenario
+        .build_world_limited(&args.scenario, args.max_cells)
+        .map_err(super::sim_scenario_error)?;
     let strategy = scenario.exploration.strategy;
     let mut next_line = 0.0;
     let outcome = sim::explore::explore_with(&scenario, &world, args.seed, strategy, &mut |c| {
@@ -109,6 +120,13 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         outcome.blacklisted.len(),
         outcome.published,
         outcome.contact_ticks
+    )?;
+    let [free, occupied, unknown] = outcome.map.counts();
+    outln!(
+        "built map: {} x {} cells of {} m: {free} free, {occupied} occupied, {unknown} unknown",
+        outcome.map.width(),
+        outcome.map.height(),
+        outcome.map.params.resolution
     )?;
     if let Some(dir) = &args.out {
         std::fs::create_dir_all(dir)

@@ -28,10 +28,15 @@ pub struct Args {
     /// ROS maps: unknown cells are free (default: forbidden).
     #[arg(long)]
     pub unknown_free: bool,
-    /// Write the zones as a PNG (white safe, grey high-risk, black forbidden, blue rectangles).
-    #[arg(long, value_name = "PNG")]
+    /// Write the zones as a picture, format by extension: PNG (white safe, grey high-risk,
+    /// black forbidden, blue rectangles), binary PGM (`.pgm`, `P5`: the same colours as
+    /// grey levels 255, 160, 0 and 85, which Nav2's trinary rule reads as free, unknown,
+    /// occupied and occupied) or PPM (`.ppm`, `P6`).
+    #[arg(long, value_name = "PICTURE")]
     pub out: Option<PathBuf>,
-    /// Write the map as a ROS map: this YAML plus a PGM with the same stem.
+    /// Write the map as a ROS map: this YAML (`mode: scale`) plus a binary PGM with the
+    /// same stem: safe 254, high-risk 128 (between the thresholds: a graded cost in scale
+    /// mode, unknown in trinary mode), forbidden 0.
     #[arg(long, value_name = "YAML")]
     pub yaml: Option<PathBuf>,
     /// Print one JSON object instead of a summary.

@@ -24,6 +24,26 @@ pub fn load_map(
     })
 }
 
+/// A simulation scenario's error, with the flag that raises the memory limit named when
+/// a grid of the run or the scenario's map file is refused for its size.
+pub fn sim_scenario_error(e: ::sim::ScenarioError) -> anyhow::Error {
+    let cells = match &e {
+        ::sim::ScenarioError::TooLarge { cells, .. } => *cells,
+        ::sim::ScenarioError::Map {
+            source: envmap::MapError::TooLarge { width, height, .. },
+            ..
+        } => *width as f64 * *height as f64,
+        _ => return e.into(),
+    };
+    if cells <= usize::MAX as f64 {
+        anyhow::anyhow!("{e}; raise the limit with --max-cells {cells:.0}")
+    } else {
+        anyhow::anyhow!(
+            "{e}; no --max-cells value can hold that many cells: coarsen the resolution or shrink the world"
+        )
+    }
+}
+
 pub mod bench;
 pub mod explore;
 pub mod map;

@@ -13,7 +13,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use envmap::{GridMap, InputFrame, LoadOptions};
-use hyplan_core::{Budget, Goal, Plan, PlanError, Point2, Query};
+use hyplan_core::{Goal, Plan, PlanError, Point2, Query};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
 use serde::Serialize;
@@ -48,7 +48,9 @@ pub struct Args {
     /// Goal tolerance in the input's units; 0 means the path must end exactly on the goal.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub goal_radius: f64,
-    /// Iterations (samples drawn) per run [default: 100000, or unlimited with --time-limit].
+    /// Iteration cap per run (samples drawn, cells expanded) [default: the planner's rule:
+    /// grid searches run to the end; sampling planners take 100000 samples, or one per four
+    /// map cells when that is more; unlimited with --time-limit alone].
     #[arg(long)]
     pub max_iter: Option<u64>,
     /// Wall-clock limit per run, seconds.
@@ -98,6 +100,9 @@ pub struct Args {
     #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
     pub max_cells: usize,
 }
+
+/// How a user raises a spent budget, named in the "no path within the budget" message.
+const RAISE_BUDGET: &str = "--max-iter N, --time-limit S, or --planner NAME:max_iterations=N";
 
 /// What one run produced; one CSV row, one JSON line, one human line.
 #[derive(Debug, Clone, Serialize)]
@@ -196,7 +201,8 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     if args.csv {
         outln!("planner,run,solved,exact,time_s,length,states_in_path,graph_vertices")?;
     }
-    let mut records = Vec::with_capacity(args.runs as usize);
+    // Records grow with the runs done, not with the number asked for.
+    let mut records = Vec::with_capacity(args.runs.min(1024) as usize);
     let mut first: Option<Outcome> = None;
     for run in 0..args.runs {
         let outcome = run_once(args, &setup, run)?;
@@ -256,7 +262,6 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
                 .with_context(|| format!("--time-limit {t}: must be a positive number of seconds"))
         })
         .transpose()?;
-    let budget = Budget::of_limits(args.max_iter, time_limit);
     let step = match args.step {
         Some(s) => Some(s * scale),
         None if planners::named(&args.planner)?.wants_default_step() => {
@@ -268,7 +273,8 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
         step,
         goal_bias: args.goal_bias,
         goal_radius: args.goal_radius * scale,
-        budget,
+        max_iterations: args.max_iter,
+        time_limit,
     };
     let limits = match (args.vmax, args.wmax, args.amax) {
         (Some(v), Some(w), Some(a)) => Some(
@@ -403,7 +409,10 @@ fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
                 smoothed: None,
                 turns: None,
                 transfer_time_s: None,
-                no_path: Some(harness::NoPathRecord::new(e, scale)),
+                no_path: Some(
+                    harness::NoPathRecord::new(e, scale)
+                        .with_budget(config.budget_on(map), RAISE_BUDGET),
+                ),
             }
         }
         Err(e) => return Err(anyhow::Error::new(e.clone()).context("planning")),
@@ -459,7 +468,10 @@ fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::
             "run {} (seed {}): {}, {} nodes, {:.3} ms",
             r.run,
             r.seed,
-            err.map_or_else(|| "no path".to_string(), ToString::to_string),
+            r.no_path.as_ref().map_or_else(
+                || err.map_or_else(|| "no path".to_string(), ToString::to_string),
+                |n| n.message.clone()
+            ),
             r.nodes,
             r.time_s * 1e3
         )?;

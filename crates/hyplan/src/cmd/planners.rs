@@ -24,5 +24,13 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         let pairs: Vec<String> = c.params().iter().map(|(k, v)| format!("{k}={v}")).collect();
         outln!("{:<18} defaults: {}", "", pairs.join(", "))?;
     }
+    outln!(
+        "\nbudget.max_iterations=None: the planner's rule. Grid searches run until they find \
+         the path or prove there is none; the others sample max(100000, cells / 4) times \
+         (GA-PCHIP: 200 generations). --max-iter N or --time-limit S set a budget.\n\
+         A step of a few units (rrt, rrt-star, bi-rrt, rrt-connect, rrt-astar-refine, \
+         hybrid-rrt-astar, safe-rrt-star) is replaced by 5% of the map's diagonal unless \
+         --step or NAME:step=X is given."
+    )?;
     Ok(ExitCode::SUCCESS)
 }

@@ -17,10 +17,17 @@ pub struct Args {
     /// `hyplan plan` (astar, theta-star, rrt, rrt-star, rrt-connect, the hybrids, ...).
     #[arg(long, default_value = "dijkstra")]
     pub planner: String,
-    /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM) and the figures
+    /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver
+    /// writes it: free 254, occupied 0, unknown 205, `mode: trinary`) and the figures
     /// (trajectory, v and omega, animation; SVG).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Memory limit, cells: the scenario's map file and every grid the run keeps over the
+    /// world (the built map, the costmap, the obstacle memory: the world's size over each
+    /// grid's resolution) may have at most this many cells; larger ones are refused
+    /// before they are allocated.
+    #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
+    pub max_cells: usize,
 }
 
 /// The global planner called `name`: the single place where the CLI's planner registry
@@ -34,7 +41,9 @@ fn global_planner(name: &str) -> anyhow::Result<sim::GlobalPlanner> {
         step: Some(0.25),
         goal_bias: 0.05,
         goal_radius: 0.0,
-        budget: hyplan_core::Budget::iterations(20_000),
+        // The sim re-plans at every blocked path inside its control loop: a fixed cap.
+        max_iterations: Some(20_000),
+        time_limit: None,
     };
     Ok(sim::GlobalPlanner::Other(crate::planners::build(
         name, &flags,
@@ -43,7 +52,8 @@ fn global_planner(name: &str) -> anyhow::Result<sim::GlobalPlanner> {
 
 /// Runs `hyplan sim`: a summary on stdout; exit 0 goal reached, 1 not reached, 2 bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let (scenario, world) = sim::Scenario::load(&args.scenario)?;
+    let (scenario, world) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
+        .map_err(super::sim_scenario_error)?;
     let planner = global_planner(&args.planner)?;
     let outcome = sim::run(&scenario, &world, args.seed, planner);
     let m = &outcome.trace.summary;

@@ -99,8 +99,11 @@ impl GridSearch {
         let t0 = self.check(goal, false)?;
         match (kind, map) {
             (Kind::Astar, _) => self.grid_search(s0, t0, true),
-            (Kind::Dijkstra, _) | (Kind::ThetaStar, None) => self.grid_search(s0, t0, false),
-            (Kind::ThetaStar, Some(map)) => self.theta_search(map, s0, t0),
+            (Kind::Dijkstra, _) | (Kind::ThetaStar | Kind::LazyThetaStar, None) => {
+                self.grid_search(s0, t0, false)
+            }
+            (Kind::ThetaStar, Some(map)) => self.theta_search(map, s0, t0, false),
+            (Kind::LazyThetaStar, Some(map)) => self.theta_search(map, s0, t0, true),
         }
     }
 }

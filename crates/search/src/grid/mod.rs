@@ -173,6 +173,7 @@ enum Kind {
     Astar,
     Dijkstra,
     ThetaStar,
+    LazyThetaStar,
 }
 
 /// Flat-array grid searches on one [`GridMap`], with scratch memory reused across queries.

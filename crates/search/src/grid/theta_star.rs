@@ -30,6 +30,26 @@ impl GridSearch {
         self.run(Some(map), start, goal, Kind::ThetaStar)
     }
 
+    /// Any-angle path from `start` to `goal` by Lazy Theta* (Nash, Koenig and Tovey,
+    /// 2010): Theta* that assumes a new cell sees its predecessor's parent and checks that
+    /// line of sight once, when the cell is expanded; where it fails, the cell's parent
+    /// becomes its cheapest expanded grid neighbour. One line-of-sight test per expansion
+    /// instead of one per neighbour, so it is several times faster on open maps; paths
+    /// are as exact as [`theta_star`](GridSearch::theta_star)'s (every parent link is
+    /// checked before it is used) and usually of about the same length.
+    ///
+    /// # Errors
+    ///
+    /// As [`astar`](GridSearch::astar).
+    pub fn lazy_theta_star(
+        &mut self,
+        map: &GridMap,
+        start: (usize, usize),
+        goal: (usize, usize),
+    ) -> Result<GridPath, GridSearchError> {
+        self.run(Some(map), start, goal, Kind::LazyThetaStar)
+    }
+
     /// Starts a Theta* query from `s` on its own nodes (allocated by the first query),
     /// with g = 0.
     pub(super) fn begin_theta(&mut self, s: u32, stats: &mut SearchStats) {
@@ -67,12 +87,14 @@ impl GridSearch {
         (p - y * self.pw as u32, y)
     }
 
-    /// Theta*'s loop, on `f64` costs (stored as bits in `g`) and keys of `f64` bits.
+    /// Theta*'s loop (Lazy Theta*'s with `lazy`), on `f64` costs (stored as bits in `g`)
+    /// and keys of `f64` bits.
     pub(super) fn theta_search(
         &mut self,
         map: &GridMap,
         s0: u32,
         t0: u32,
+        lazy: bool,
     ) -> Result<GridPath, GridSearchError> {
         let mut stats = SearchStats::default();
         let (gx, gy) = self.xy(t0);
@@ -93,6 +115,9 @@ impl GridSearch {
                 continue;
             }
             self.theta_nodes[p as usize].stamp = closed;
+            if lazy {
+                self.lazy_set_parent(map, p);
+            }
             let g = f64::from_bits(self.theta_nodes[p as usize].g);
             if p == t0 {
                 return Ok(self.trace(t0, g, stats));
@@ -104,23 +129,40 @@ impl GridSearch {
                 check_at = limit.next_check(stats.expansions);
             }
             stats.expansions += 1;
-            self.theta_expand(map, p, g, &mut stats, euclid);
+            self.theta_expand(map, p, g, &mut stats, euclid, lazy);
         }
         Err(GridSearchError::NoPath { stats })
     }
 
-    /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
-    /// parent when it sees q (path 2 of the paper), else p (path 1).
-    pub(super) fn theta_expand(
-        &mut self,
-        map: &GridMap,
-        p: u32,
-        g: f64,
-        stats: &mut SearchStats,
-        h: impl Fn(u32, u32) -> f64,
-    ) {
-        // The grid moves, with the same rules as A* but never cutting corners: Theta*'s
-        // segments are checked exactly, so a diagonal must not touch a blocked corner.
+    /// Lazy Theta*'s check when `p` is expanded: if `p` does not see the parent it was
+    /// given, its parent becomes the expanded grid neighbour through which it is cheapest
+    /// (one exists: the cell whose expansion reached `p`).
+    fn lazy_set_parent(&mut self, map: &GridMap, p: u32) {
+        let pp = self.theta_nodes[p as usize].parent;
+        if pp == NONE || self.line_of_sight(map, pp, p) {
+            return;
+        }
+        let closed = self.theta_generation | CLOSED;
+        let (moves, k) = self.theta_moves(p);
+        let mut best = (f64::INFINITY, NONE);
+        for &(q, c) in &moves[..k] {
+            let node = &self.theta_nodes[q as usize];
+            if node.stamp == closed {
+                let via = f64::from_bits(node.g) + c;
+                if via < best.0 {
+                    best = (via, q);
+                }
+            }
+        }
+        let node = &mut self.theta_nodes[p as usize];
+        node.g = best.0.to_bits();
+        node.parent = best.1;
+    }
+
+    /// The legal grid moves from `p` and their costs: the same as A*'s, except that a
+    /// diagonal never cuts a corner (Theta*'s segments are checked exactly, so a diagonal
+    /// must not touch a blocked corner).
+    fn theta_moves(&self, p: u32) -> ([(u32, f64); 8], usize) {
         let pw = self.pw as u32;
         let pu = p as usize;
         let pass = &self.passable;
@@ -151,6 +193,24 @@ impl GridSearch {
                 }
             }
         }
+        (moves, k)
+    }
+
+    /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
+    /// parent when it sees q (path 2 of the paper), else p (path 1). With `lazy`, p's
+    /// parent is taken without the test, which q's own expansion makes
+    /// ([`lazy_set_parent`](Self::lazy_set_parent)).
+    pub(super) fn theta_expand(
+        &mut self,
+        map: &GridMap,
+        p: u32,
+        g: f64,
+        stats: &mut SearchStats,
+        h: impl Fn(u32, u32) -> f64,
+        lazy: bool,
+    ) {
+        let (moves, k) = self.theta_moves(p);
+        let pu = p as usize;
         let open = self.theta_generation;
         let pp = self.theta_nodes[pu].parent;
         for &(q, c) in &moves[..k] {
@@ -160,7 +220,7 @@ impl GridSearch {
                 continue;
             }
             let (mut ng, mut parent) = (g + c, p);
-            if pp != NONE && self.line_of_sight(map, pp, q) {
+            if pp != NONE && (lazy || self.line_of_sight(map, pp, q)) {
                 let (a, b) = (self.cell(pp), self.cell(q));
                 let d = (a.0 as f64 - b.0 as f64).hypot(a.1 as f64 - b.1 as f64);
                 let via = f64::from_bits(self.theta_nodes[pp as usize].g) + d;
@@ -183,10 +243,51 @@ impl GridSearch {
     }
 
     /// Whether the segment between the centres of cells `a` and `b` touches only passable
-    /// cells (corner touches included).
-    pub(super) fn line_of_sight(&self, map: &GridMap, a: u32, b: u32) -> bool {
-        let (a, b) = (self.cell(a), self.cell(b));
-        let (pa, pb) = (map.cell_center(a.0, a.1), map.cell_center(b.0, b.1));
-        map.segment_cells(pa, pb, |i, j| self.cell_passable(i, j))
+    /// cells (corner touches included): the cells [`GridMap::segment_cells`] visits,
+    /// computed in integers. Between cell centres every crossing of a grid line is a
+    /// multiple of `1 / (2 d)` (d the longer side of the segment's box), so the closed
+    /// cells touched are found exactly without floating point (the property tests check
+    /// the paths against the map's `segment_free`). The padded border is blocked, and
+    /// a segment between centres never leaves the map, so no bounds test is needed.
+    pub(super) fn line_of_sight(&self, _map: &GridMap, a: u32, b: u32) -> bool {
+        let ((ax, ay), (bx, by)) = (self.xy(a), self.xy(b));
+        let (dx, dy) = (i64::from(bx) - i64::from(ax), i64::from(by) - i64::from(ay));
+        let pw = self.pw as i64;
+        // Sweep along the major axis u, in increasing u; v is the minor axis. `su`, `sv`:
+        // index strides of one step along u and v.
+        let (u0, v0, du, dv, su, sv) = if dx.abs() >= dy.abs() {
+            if dx >= 0 {
+                (i64::from(ax), i64::from(ay), dx, dy, 1, pw)
+            } else {
+                (i64::from(bx), i64::from(by), -dx, -dy, 1, pw)
+            }
+        } else if dy >= 0 {
+            (i64::from(ay), i64::from(ax), dy, dx, pw, 1)
+        } else {
+            (i64::from(by), i64::from(bx), -dy, -dx, pw, 1)
+        };
+        if du == 0 {
+            return self.passable[a as usize];
+        }
+        let pass = &self.passable;
+        // In units of 1 / (2 du): the minor coordinate at doubled major coordinate t is
+        // n(t) = (2 v0 + 1) du + (t - 2 u0 - 1) dv.
+        let d = 2 * du;
+        let n = |t: i64| (2 * v0 + 1) * du + (t - 2 * u0 - 1) * dv;
+        for c in u0..=u0 + du {
+            let t0 = (2 * c).max(2 * u0 + 1);
+            let t1 = (2 * c + 2).min(2 * (u0 + du) + 1);
+            let (na, nb) = (n(t0), n(t1));
+            let (lo, hi) = (na.min(nb), na.max(nb));
+            // Rows r with r <= v <= r + 1 for some v in [lo / d, hi / d].
+            let r_first = lo.div_euclid(d) + i64::from(lo.rem_euclid(d) != 0) - 1;
+            let r_last = hi.div_euclid(d);
+            for r in r_first..=r_last {
+                if !pass[(c * su + r * sv) as usize] {
+                    return false;
+                }
+            }
+        }
+        true
     }
 }
