@@ -261,7 +261,7 @@ impl Scenario {
     /// (as [`envmap::LoadOptions::max_cells`]) and for every grid a run allocates over the
     /// world's bounds: the built map (`mapping.resolution`), the costmap
     /// (`costmap.resolution`) and the obstacle memory and people tracker
-    /// ([`MEMORY_RESOLUTION`](crate::costmap::MEMORY_RESOLUTION)); the laser's beams count
+    /// ([`MEMORY_RESOLUTION`]); the laser's beams count
     /// against the same limit. A huge world, a tiny resolution or a huge laser is refused
     /// here, before anything is allocated.
     ///

@@ -15,8 +15,8 @@ impl GridSearch {
     /// the Euclidean distance. Theta* is not guaranteed to find the shortest any-angle
     /// path, and nodes may be re-expanded when their cost drops.
     ///
-    /// `map` must be the map this search was built from (its frame is used for the line of
-    /// sight; which cells are passable comes from this search).
+    /// `map` is the map this search was built from; the line of sight is computed on this
+    /// search's own passable cells, in cell coordinates.
     ///
     /// # Errors
     ///
@@ -91,7 +91,6 @@ impl GridSearch {
     /// and keys of `f64` bits.
     pub(super) fn theta_search(
         &mut self,
-        map: &GridMap,
         s0: u32,
         t0: u32,
         lazy: bool,
@@ -116,7 +115,7 @@ impl GridSearch {
             }
             self.theta_nodes[p as usize].stamp = closed;
             if lazy {
-                self.lazy_set_parent(map, p);
+                self.lazy_set_parent(p);
             }
             let g = f64::from_bits(self.theta_nodes[p as usize].g);
             if p == t0 {
@@ -129,7 +128,7 @@ impl GridSearch {
                 check_at = limit.next_check(stats.expansions);
             }
             stats.expansions += 1;
-            self.theta_expand(map, p, g, &mut stats, euclid, lazy);
+            self.theta_expand(p, g, &mut stats, euclid, lazy);
         }
         Err(GridSearchError::NoPath { stats })
     }
@@ -137,9 +136,9 @@ impl GridSearch {
     /// Lazy Theta*'s check when `p` is expanded: if `p` does not see the parent it was
     /// given, its parent becomes the expanded grid neighbour through which it is cheapest
     /// (one exists: the cell whose expansion reached `p`).
-    fn lazy_set_parent(&mut self, map: &GridMap, p: u32) {
+    fn lazy_set_parent(&mut self, p: u32) {
         let pp = self.theta_nodes[p as usize].parent;
-        if pp == NONE || self.line_of_sight(map, pp, p) {
+        if pp == NONE || self.line_of_sight(pp, p) {
             return;
         }
         let closed = self.theta_generation | CLOSED;
@@ -202,7 +201,6 @@ impl GridSearch {
     /// ([`lazy_set_parent`](Self::lazy_set_parent)).
     pub(super) fn theta_expand(
         &mut self,
-        map: &GridMap,
         p: u32,
         g: f64,
         stats: &mut SearchStats,
@@ -220,7 +218,7 @@ impl GridSearch {
                 continue;
             }
             let (mut ng, mut parent) = (g + c, p);
-            if pp != NONE && (lazy || self.line_of_sight(map, pp, q)) {
+            if pp != NONE && (lazy || self.line_of_sight(pp, q)) {
                 let (a, b) = (self.cell(pp), self.cell(q));
                 let d = (a.0 as f64 - b.0 as f64).hypot(a.1 as f64 - b.1 as f64);
                 let via = f64::from_bits(self.theta_nodes[pp as usize].g) + d;
@@ -249,7 +247,7 @@ impl GridSearch {
     /// cells touched are found exactly without floating point (the property tests check
     /// the paths against the map's `segment_free`). The padded border is blocked, and
     /// a segment between centres never leaves the map, so no bounds test is needed.
-    pub(super) fn line_of_sight(&self, _map: &GridMap, a: u32, b: u32) -> bool {
+    pub(super) fn line_of_sight(&self, a: u32, b: u32) -> bool {
         let ((ax, ay), (bx, by)) = (self.xy(a), self.xy(b));
         let (dx, dy) = (i64::from(bx) - i64::from(ax), i64::from(by) - i64::from(ay));
         let pw = self.pw as i64;
