@@ -25,10 +25,11 @@ use anyhow::{Context as _, bail};
 use envmap::{GridMap, LoadOptions, load_map};
 use harness::Scoring;
 use harness::bench::{self, BenchRun, ExperimentInfo, RunId};
-use hyplan_core::{Budget, Goal, Plan, PlanError, Query, Workspace};
+use harness::stats::median;
+use hyplan_core::{Budget, Goal, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use sampling::{BiRrt, Rrt, RrtConnect, RrtStar};
+use registry::{PlannerConfig, PlannerKind};
 
 /// Options of `cargo xtask bench-peers`.
 #[derive(clap::Args)]
@@ -42,9 +43,10 @@ pub struct Args {
     /// Only the cases whose name contains this text.
     #[arg(long)]
     pub only: Option<String>,
-    /// Only these planners (comma separated: rrt, rrt-connect, rrt-star, bi-rrt).
-    #[arg(long, value_delimiter = ',')]
-    pub planners: Option<Vec<String>>,
+    /// Only these planners (comma separated: rrt, rrt-connect, rrt-star, bi-rrt; the
+    /// registry's names).
+    #[arg(long, value_delimiter = ',', value_parser = compared_planner)]
+    pub planners: Option<Vec<PlannerKind>>,
     /// Rebuild the OMPL peer even if it is already built.
     #[arg(long)]
     pub rebuild: bool,
@@ -106,13 +108,39 @@ const CASES: &[Case] = &[
     },
 ];
 
-/// (our name, OMPL's name or None when OMPL has no such planner).
-const PLANNERS: &[(&str, Option<&str>)] = &[
-    ("rrt", Some("rrt")),
-    ("rrt-connect", Some("rrtconnect")),
-    ("rrt-star", Some("rrtstar")),
-    ("bi-rrt", None),
+/// (our planner, OMPL's name or None when OMPL has no such planner).
+const PLANNERS: &[(PlannerKind, Option<&str>)] = &[
+    (PlannerKind::Rrt, Some("rrt")),
+    (PlannerKind::RrtConnect, Some("rrtconnect")),
+    (PlannerKind::RrtStar, Some("rrtstar")),
+    (PlannerKind::BiRrt, None),
 ];
+
+/// `--planners`' value: a registry name of a planner this comparison runs.
+fn compared_planner(name: &str) -> Result<PlannerKind, String> {
+    let kind = PlannerConfig::by_name(name)
+        .map_err(|e| e.to_string())?
+        .kind();
+    if PLANNERS.iter().any(|(k, _)| *k == kind) {
+        Ok(kind)
+    } else {
+        let compared: Vec<&str> = PLANNERS.iter().map(|(k, _)| k.name()).collect();
+        Err(format!(
+            "{name} is not compared with OMPL (compared: {})",
+            compared.join(", ")
+        ))
+    }
+}
+
+/// Our side of a case: `kind` with its defaults, the case's step and goal bias (for the
+/// planners that have one) and `budget`. RRT* stops at its first solution (its default),
+/// as OMPL's peer does.
+fn our_config(kind: PlannerKind, case: &Case, budget: Budget) -> PlannerConfig {
+    PlannerConfig::from(kind)
+        .with_step(case.step)
+        .with_goal_bias(case.goal_bias)
+        .with_budget(budget)
+}
 
 /// Medians and counts of one side of one row.
 #[derive(Default, Clone, Copy)]
@@ -124,19 +152,6 @@ struct Summary {
     /// Solved paths that cross a blocked cell (OMPL's `--check-exact`; ours are checked
     /// here with `segment_free` and must be 0).
     cut: usize,
-}
-
-fn median(mut v: Vec<f64>) -> Option<f64> {
-    if v.is_empty() {
-        return None;
-    }
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    Some(if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    })
 }
 
 fn root() -> PathBuf {
@@ -281,33 +296,14 @@ fn run_ours(
     map: &GridMap,
     query: &Query,
     case: &Case,
-    planner: &str,
+    planner: PlannerKind,
     args: &Args,
     records: Option<&mut Vec<BenchRun>>,
 ) -> anyhow::Result<Summary> {
     let limit = Duration::try_from_secs_f64(args.time_limit).context("--time-limit")?;
     let budget = Budget::iterations(u64::MAX).with_time(limit);
-    let (step, goal_bias) = (case.step, case.goal_bias);
-    let plan = |rng: &mut ChaCha8Rng| -> Result<Plan, PlanError> {
-        match planner {
-            "rrt" => Rrt {
-                step,
-                goal_bias,
-                budget,
-            }
-            .plan(map, query, rng),
-            "rrt-connect" => RrtConnect { step, budget }.plan(map, query, rng),
-            "rrt-star" => RrtStar {
-                step,
-                goal_bias,
-                budget,
-                stop_at_first_solution: true,
-                ..RrtStar::default()
-            }
-            .plan(map, query, rng),
-            _ => BiRrt { step, budget }.plan(map, query, rng),
-        }
-    };
+    let ours = our_config(planner, case, budget).build();
+    let plan = |rng: &mut ChaCha8Rng| ours.plan(map, query, rng);
     let mut times = Vec::new();
     let mut lengths = Vec::new();
     let mut cut = 0;
@@ -420,11 +416,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .validate(&loaded.map)
             .with_context(|| format!("case {}", case.name))?;
         for &(ours, ompl) in PLANNERS {
-            if args
-                .planners
-                .as_ref()
-                .is_some_and(|ps| !ps.iter().any(|p| p == ours))
-            {
+            if args.planners.as_ref().is_some_and(|ps| !ps.contains(&ours)) {
                 continue;
             }
             let mut records = args.db.as_ref().map(|_| Vec::new());
@@ -506,7 +498,7 @@ fn write_our_log(
     path: &Path,
     case: &Case,
     map: &Path,
-    planner: &str,
+    planner: PlannerKind,
     args: &Args,
     records: &[BenchRun],
     started: Instant,
@@ -562,4 +554,44 @@ fn load_logs(db: &Path, logs: &[PathBuf]) -> anyhow::Result<()> {
         db.display()
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The registry's planners, set up as the comparison sets them, are the structs OMPL's
+    /// settings describe: the case's range and goal bias, the budget, RRT* to its first
+    /// solution.
+    #[test]
+    fn our_planners_carry_the_case_settings() {
+        let case = &CASES[0];
+        let budget = Budget::iterations(u64::MAX).with_time(Duration::from_secs(2));
+        let (step, goal_bias) = (case.step, case.goal_bias);
+        let set = |kind| our_config(kind, case, budget);
+        let rrt = sampling::Rrt {
+            step,
+            goal_bias,
+            budget,
+        };
+        assert_eq!(set(PlannerKind::Rrt), PlannerConfig::Rrt(rrt));
+        let star = sampling::RrtStar {
+            step,
+            goal_bias,
+            budget,
+            stop_at_first_solution: true,
+            ..sampling::RrtStar::default()
+        };
+        assert_eq!(set(PlannerKind::RrtStar), PlannerConfig::RrtStar(star));
+        let connect = sampling::RrtConnect { step, budget };
+        assert_eq!(
+            set(PlannerKind::RrtConnect),
+            PlannerConfig::RrtConnect(connect)
+        );
+        let bi = sampling::BiRrt { step, budget };
+        assert_eq!(set(PlannerKind::BiRrt), PlannerConfig::BiRrt(bi));
+        assert!(compared_planner("rrt-connect").is_ok());
+        assert!(compared_planner("astar").is_err());
+        assert!(compared_planner("nope").is_err());
+    }
 }

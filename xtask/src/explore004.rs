@@ -12,8 +12,8 @@ use std::path::Path;
 
 use anyhow::Context;
 use rayon::prelude::*;
-use sim::replay::Claim;
 use sim::{Scenario, Strategy};
+use viz::{Claim, Table, claims_held, claims_markdown};
 
 /// eta values of the sweep, m.
 const ETAS: [f64; 7] = [2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 15.0];
@@ -95,66 +95,15 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
     } else {
         &[Strategy::Local, Strategy::Global, Strategy::Both]
     };
-    let mut specs = Vec::new();
-    for &strategy in sweep_strategies {
-        for &eta in etas {
-            for &seed in &seeds {
-                specs.push(Spec {
-                    strategy,
-                    eta: Some(eta),
-                    fov: 180.0,
-                    seed,
-                });
-            }
-        }
-    }
     let fovs: &[f64] = if quick { &[] } else { &FOVS };
-    for &fov in fovs {
-        for &seed in &seeds {
-            specs.push(Spec {
-                strategy: Strategy::Both,
-                eta: None,
-                fov,
-                seed,
-            });
-        }
-    }
-    for &seed in &seeds {
-        specs.push(Spec {
-            strategy: Strategy::Frontier,
-            eta: None,
-            fov: 180.0,
-            seed,
-        });
-    }
-    let results: Vec<Result> = specs
+    let results: Vec<Result> = specs(&seeds, etas, sweep_strategies, fovs)
         .par_iter()
         .map(|&s| run(&base, &world, s))
         .collect::<anyhow::Result<_>>()?;
     let elapsed = started.elapsed().as_secs_f64();
     let dir = figures.join("004-exploration");
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
-    let mut csv = String::from(
-        "detector,eta_m,fov_deg,seed,t95_s,t99_s,end_s,finished,coverage,missed_m2,distance_m\n",
-    );
-    for r in &results {
-        let _ = writeln!(
-            csv,
-            "{},{},{},{},{},{},{:.1},{},{:.5},{:.3},{:.1}",
-            r.spec.strategy.name(),
-            r.spec.eta.map_or("default".into(), |e| e.to_string()),
-            r.spec.fov,
-            r.spec.seed,
-            fmt_t(r.t95),
-            fmt_t(r.t99),
-            r.end,
-            r.finished,
-            r.coverage,
-            r.missed,
-            r.distance
-        );
-    }
-    std::fs::write(dir.join("sweep.csv"), &csv)
+    std::fs::write(dir.join("sweep.csv"), sweep_csv(&results))
         .with_context(|| format!("writing {}", dir.join("sweep.csv").display()))?;
 
     let mut s = String::new();
@@ -172,43 +121,145 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             ""
         },
     );
-    // Fig. 5d.
     let _ = writeln!(
         s,
         "Fig. 5d, mean over seeds (runs not reaching 99 % counted at their end time; `n<99` says how many):\n"
     );
-    let _ = write!(s, "| detector |");
-    for e in etas {
-        let _ = write!(s, " eta {e} |");
+    let (table, best) = fig5d(&results, etas, sweep_strategies);
+    s.push_str(&table);
+    let _ = writeln!(s, "\nRuns that did not reach 99 %: {}.\n", not_99(&results));
+    let claims = claims(&best);
+    s.push_str(&claims_markdown(&claims));
+    let held = claims_held(&claims);
+    let _ = writeln!(
+        s,
+        "\nClaims held: {held} of {}. A least mean over {} seed(s) is a ranking, not a significance test.\n",
+        claims.len(),
+        seeds.len()
+    );
+    let _ = writeln!(
+        s,
+        "Field of view (Fig. 5a-c: the paper shows maps, no numbers) and the nearest-frontier baseline, mean over seeds:\n"
+    );
+    s.push_str(&fov_table(&results, fovs));
+    // The navigation scenarios on the map the robot built itself (full runs only).
+    if !quick {
+        s.push_str(&self_mapped(root)?);
     }
-    let _ = writeln!(s, "\n|---|{}", "---|".repeat(etas.len()));
-    let group = |st: Strategy, eta: Option<f64>, fov: f64| -> Vec<&Result> {
-        results
-            .iter()
-            .filter(|r| r.spec.strategy == st && r.spec.eta == eta && r.spec.fov == fov)
-            .collect()
-    };
+    eprintln!(
+        "004-exploration: {} runs in {elapsed:.1} s, claims held {held}/{}",
+        results.len(),
+        claims.len()
+    );
+    Ok((s, held, claims.len()))
+}
+
+/// The runs: the eta sweep of each detector, the fields of view (both detectors, default
+/// etas) and the nearest-frontier baseline, each on every seed.
+fn specs(seeds: &[u64], etas: &[f64], strategies: &[Strategy], fovs: &[f64]) -> Vec<Spec> {
+    let mut specs = Vec::new();
+    for &strategy in strategies {
+        for &eta in etas {
+            for &seed in seeds {
+                specs.push(Spec {
+                    strategy,
+                    eta: Some(eta),
+                    fov: 180.0,
+                    seed,
+                });
+            }
+        }
+    }
+    for &fov in fovs {
+        for &seed in seeds {
+            specs.push(Spec {
+                strategy: Strategy::Both,
+                eta: None,
+                fov,
+                seed,
+            });
+        }
+    }
+    for &seed in seeds {
+        specs.push(Spec {
+            strategy: Strategy::Frontier,
+            eta: None,
+            fov: 180.0,
+            seed,
+        });
+    }
+    specs
+}
+
+/// `sweep.csv`: one line per run.
+fn sweep_csv(results: &[Result]) -> String {
+    let mut csv = Table::new([
+        "detector",
+        "eta_m",
+        "fov_deg",
+        "seed",
+        "t95_s",
+        "t99_s",
+        "end_s",
+        "finished",
+        "coverage",
+        "missed_m2",
+        "distance_m",
+    ]);
+    for r in results {
+        csv.row([
+            r.spec.strategy.name().to_string(),
+            r.spec.eta.map_or("default".into(), |e| e.to_string()),
+            r.spec.fov.to_string(),
+            r.spec.seed.to_string(),
+            fmt_t(r.t95),
+            fmt_t(r.t99),
+            format!("{:.1}", r.end),
+            r.finished.to_string(),
+            format!("{:.5}", r.coverage),
+            format!("{:.3}", r.missed),
+            format!("{:.1}", r.distance),
+        ]);
+    }
+    csv.to_csv()
+}
+
+/// The runs of one detector, eta (`None`: the defaults) and field of view.
+fn group(results: &[Result], st: Strategy, eta: Option<f64>, fov: f64) -> Vec<&Result> {
+    results
+        .iter()
+        .filter(|r| r.spec.strategy == st && r.spec.eta == eta && r.spec.fov == fov)
+        .collect()
+}
+
+/// A detector's eta of least mean time to 99 %, with each eta's mean.
+type Best = (Strategy, f64, Vec<(f64, f64)>);
+
+/// Fig. 5d's table (a row per detector, a column per eta), and each detector's best eta.
+fn fig5d(results: &[Result], etas: &[f64], strategies: &[Strategy]) -> (String, Vec<Best>) {
+    let mut table = Table::new(
+        std::iter::once("detector".to_string()).chain(etas.iter().map(|e| format!("eta {e}"))),
+    );
     let mut best = Vec::new();
-    for &st in sweep_strategies {
-        let _ = write!(s, "| {} t95 / t99 / missed m^2 |", st.name());
+    for &st in strategies {
+        let mut cells = vec![format!("{} t95 / t99 / missed m^2", st.name())];
         let mut rows = Vec::new();
         for &e in etas {
-            let g = group(st, Some(e), 180.0);
+            let g = group(results, st, Some(e), 180.0);
             let (t99, miss99) = mean_t99(&g);
             let t95 = mean(g.iter().map(|r| r.t95.unwrap_or(r.end)));
             let missed = mean(g.iter().map(|r| r.missed));
             rows.push((e, t99));
-            let _ = write!(
-                s,
-                " {t95:.0} / {t99:.0}{} / {missed:.2} |",
+            cells.push(format!(
+                "{t95:.0} / {t99:.0}{} / {missed:.2}",
                 if miss99 > 0 {
                     format!(" (n<99 {miss99})")
                 } else {
                     String::new()
                 }
-            );
+            ));
         }
-        let _ = writeln!(s);
+        table.row(cells);
         let b = rows
             .iter()
             .copied()
@@ -216,6 +267,11 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             .map_or(f64::NAN, |(e, _)| e);
         best.push((st, b, rows));
     }
+    (table.to_markdown(), best)
+}
+
+/// The runs that did not reach 99 %, `none` when every run did.
+fn not_99(results: &[Result]) -> String {
     let not99: Vec<String> = results
         .iter()
         .filter(|r| r.t99.is_none())
@@ -236,15 +292,15 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             )
         })
         .collect();
-    let _ = writeln!(
-        s,
-        "\nRuns that did not reach 99 %: {}.\n",
-        if not99.is_empty() {
-            "none".to_string()
-        } else {
-            not99.join("; ")
-        }
-    );
+    if not99.is_empty() {
+        "none".to_string()
+    } else {
+        not99.join("; ")
+    }
+}
+
+/// The paper's claims on the sweep: each detector's best eta.
+fn claims(best: &[Best]) -> Vec<Claim> {
     let mut claims = Vec::new();
     for (st, paper_eta, text) in [
         (Strategy::Global, 10.0, "global detector best at eta = 10"),
@@ -266,106 +322,99 @@ pub fn section(root: &Path, figures: &Path, quick: bool) -> anyhow::Result<(Stri
             held: *b == paper_eta,
         });
     }
-    let _ = writeln!(s, "| claim | paper | ours | held |\n|---|---|---|---|");
-    for c in &claims {
-        let _ = writeln!(
-            s,
-            "| {} | {} | {} | {} |",
-            c.text,
-            c.paper,
-            c.ours,
-            if c.held { "held" } else { "not held" }
-        );
-    }
-    let held = claims.iter().filter(|c| c.held).count();
-    let _ = writeln!(
-        s,
-        "\nClaims held: {held} of {}. A least mean over {} seed(s) is a ranking, not a significance test.\n",
-        claims.len(),
-        seeds.len()
-    );
-    // Fig. 5a-c and the baseline.
-    let _ = writeln!(
-        s,
-        "Field of view (Fig. 5a-c: the paper shows maps, no numbers) and the nearest-frontier baseline, mean over seeds:\n"
-    );
-    let _ = writeln!(
-        s,
-        "| run | t95 (s) | t99 (s) | end (s) | missed (m^2) | distance (m) |\n|---|---|---|---|---|---|"
-    );
+    claims
+}
+
+/// Fig. 5a-c (both detectors per field of view) and the nearest-frontier baseline.
+fn fov_table(results: &[Result], fovs: &[f64]) -> String {
+    let mut table = Table::new([
+        "run",
+        "t95 (s)",
+        "t99 (s)",
+        "end (s)",
+        "missed (m^2)",
+        "distance (m)",
+    ]);
     let mut rows: Vec<(String, Vec<&Result>)> = fovs
         .iter()
         .map(|&f| {
             (
                 format!("both, default etas, fov {f}"),
-                group(Strategy::Both, None, f),
+                group(results, Strategy::Both, None, f),
             )
         })
         .collect();
     rows.push((
         "nearest frontier (baseline), fov 180".into(),
-        group(Strategy::Frontier, None, 180.0),
+        group(results, Strategy::Frontier, None, 180.0),
     ));
     for (name, g) in rows {
         let (t99, n) = mean_t99(&g);
-        let _ = writeln!(
-            s,
-            "| {name} | {:.0} | {t99:.0}{} | {:.0} | {:.2} | {:.1} |",
-            mean(g.iter().map(|r| r.t95.unwrap_or(r.end))),
-            if n > 0 {
-                format!(" (n<99 {n})")
-            } else {
-                String::new()
-            },
-            mean(g.iter().map(|r| r.end)),
-            mean(g.iter().map(|r| r.missed)),
-            mean(g.iter().map(|r| r.distance)),
-        );
+        table.row([
+            name,
+            format!("{:.0}", mean(g.iter().map(|r| r.t95.unwrap_or(r.end)))),
+            format!(
+                "{t99:.0}{}",
+                if n > 0 {
+                    format!(" (n<99 {n})")
+                } else {
+                    String::new()
+                }
+            ),
+            format!("{:.0}", mean(g.iter().map(|r| r.end))),
+            format!("{:.2}", mean(g.iter().map(|r| r.missed))),
+            format!("{:.1}", mean(g.iter().map(|r| r.distance))),
+        ]);
     }
-    // The navigation scenarios on the map the robot built itself (full runs only).
-    if !quick {
-        let t0 = std::time::Instant::now();
-        let runs: Vec<(String, sim::explore::SelfMapped)> = sim::replay::FILES
-            .par_iter()
-            .map(|f| {
-                let path = root.join("scenarios/sim").join(f);
-                let (sc, _) = Scenario::load(&path)?;
-                let r = sim::explore::explore_then_navigate(&sc, &path, 0, Strategy::Both, 1500.0)?;
-                Ok((sc.name, r))
-            })
-            .collect::<anyhow::Result<_>>()?;
-        let _ = writeln!(
-            s,
-            "\nThe three navigation scenarios on the map the robot built itself (each scenario's mapped world explored with both detectors, seed 0; then Dijkstra on the built map, unknown cells passable; {:.1} s of computing):\n",
-            t0.elapsed().as_secs_f64()
-        );
-        let _ = writeln!(
-            s,
-            "| scenario | exploration: coverage / end (s) | true map: reached / travel (s) / distance (m) | built map: reached / travel (s) / distance (m) | contacts at fault (true / built) |\n|---|---|---|---|---|"
-        );
-        for (name, r) in &runs {
-            let (a, b) = (&r.on_true.trace.summary, &r.on_built.trace.summary);
-            let t = |m: &sim::Summary| m.travel_time.map_or("-".into(), |t| format!("{t:.1}"));
-            let _ = writeln!(
-                s,
-                "| {name} | {:.2} % / {:.0} | {} / {} / {:.2} | {} / {} / {:.2} | {} / {} |",
-                100.0 * r.exploration.final_coverage(),
-                r.exploration.end_time,
-                if a.reached { "yes" } else { "no" },
-                t(a),
-                a.distance,
-                if b.reached { "yes" } else { "no" },
-                t(b),
-                b.distance,
-                a.contacts_at_fault,
-                b.contacts_at_fault
-            );
-        }
-    }
-    eprintln!(
-        "004-exploration: {} runs in {elapsed:.1} s, claims held {held}/{}",
-        results.len(),
-        claims.len()
+    table.to_markdown()
+}
+
+/// The three navigation scenarios on the map the robot built itself: the paragraph and
+/// its table.
+fn self_mapped(root: &Path) -> anyhow::Result<String> {
+    let t0 = std::time::Instant::now();
+    let runs: Vec<(String, sim::explore::SelfMapped)> = sim::replay::FILES
+        .par_iter()
+        .map(|f| {
+            let path = root.join("scenarios/sim").join(f);
+            let (sc, _) = Scenario::load(&path)?;
+            let r = sim::explore::explore_then_navigate(&sc, &path, 0, Strategy::Both, 1500.0)?;
+            Ok((sc.name, r))
+        })
+        .collect::<anyhow::Result<_>>()?;
+    let mut s = format!(
+        "\nThe three navigation scenarios on the map the robot built itself (each scenario's mapped world explored with both detectors, seed 0; then Dijkstra on the built map, unknown cells passable; {:.1} s of computing):\n\n",
+        t0.elapsed().as_secs_f64()
     );
-    Ok((s, held, claims.len()))
+    let mut table = Table::new([
+        "scenario",
+        "exploration: coverage / end (s)",
+        "true map: reached / travel (s) / distance (m)",
+        "built map: reached / travel (s) / distance (m)",
+        "contacts at fault (true / built)",
+    ]);
+    let drive = |m: &sim::Summary| {
+        format!(
+            "{} / {} / {:.2}",
+            if m.reached { "yes" } else { "no" },
+            m.travel_time.map_or("-".into(), |t| format!("{t:.1}")),
+            m.distance
+        )
+    };
+    for (name, r) in &runs {
+        let (a, b) = (&r.on_true.trace.summary, &r.on_built.trace.summary);
+        table.row([
+            name.clone(),
+            format!(
+                "{:.2} % / {:.0}",
+                100.0 * r.exploration.final_coverage(),
+                r.exploration.end_time
+            ),
+            drive(a),
+            drive(b),
+            format!("{} / {}", a.contacts_at_fault, b.contacts_at_fault),
+        ]);
+    }
+    s.push_str(&table.to_markdown());
+    Ok(s)
 }

@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 
 use hyplan_core::{Bounds, Point2, Zone};
 
-use crate::{DistanceField, Mask, distance_transform};
+use crate::{CellFrame, DistanceField, Mask, distance_transform};
 
 /// A grid map whose cells are [`Zone::Free`], [`Zone::Risk`] or [`Zone::Forbidden`].
 ///
@@ -322,6 +322,13 @@ impl GridMap {
             self.origin.x + (i as f64 + 0.5) * self.resolution,
             self.origin.y + (j as f64 + 0.5) * self.resolution,
         )
+    }
+
+    /// Where the cells lie in the world (without [`GridMap::world_to_cell`]'s rule for
+    /// points on the upper and right borders).
+    #[must_use]
+    pub const fn frame(&self) -> CellFrame {
+        CellFrame::new(self.origin, self.resolution, self.width, self.height)
     }
 
     /// The world box the map covers.

@@ -73,11 +73,13 @@
 //! - `serde`: derives for the plain data types.
 
 mod binarize;
+mod cell_frame;
 mod components;
 pub mod connectivity;
 mod demo;
 mod edt;
 mod error;
+mod flood;
 mod frame;
 pub mod generate;
 mod grid_map;
@@ -93,10 +95,12 @@ mod workspace;
 mod zones;
 
 pub use binarize::binarize;
+pub use cell_frame::CellFrame;
 pub use components::{Component, Labels, components, label_components};
 pub use demo::demo_room;
 pub use edt::{DistanceField, distance_transform};
 pub use error::MapError;
+pub use flood::{Connectivity, clusters, flood_fill, nearest_passable, steps_from};
 pub use frame::InputFrame;
 pub use grid_map::{GridError, GridMap};
 pub use inflation::{INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE};

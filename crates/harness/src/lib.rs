@@ -14,9 +14,9 @@
 //!   file, line and field of a problem.
 //! - [`World`]: a scenario's map built and its query placed; [`Scenario::build_world`].
 //! - [`Furniture`], [`draw_room`]: room pictures drawn in code from their furniture.
-//! - [`PlannerConfig`]: the planner registry, one typed configuration per planner, by
-//!   name; [`PlannerConfig::build`] makes the planner, `"rrt:step=2".parse()` reads the
-//!   command line's form.
+//! - [`PlannerConfig`]: the planner registry (crate `registry`, re-exported), one typed
+//!   configuration per planner, by name; [`PlannerConfig::build`] makes the planner,
+//!   `"rrt:step=2".parse()` reads the command line's form.
 //! - [`RunMetrics`], [`measure`]: what one run is scored on; [`post_process`]: smoothing,
 //!   node metrics and transfer time of one plan, shared with `hyplan plan`;
 //!   [`NoPathRecord`]: why a plan ended without a path.
@@ -27,22 +27,21 @@
 //! - [`report`]: the replay's claims decided on the runs, and its Markdown report.
 //! - [`bench`](mod@bench): `hyplan bench`'s runs on a user's problems: [`bench::run_once`], the
 //!   summary and pairwise rank tests, and [`bench::ompl_log`], OMPL's benchmark log format.
-//! - `Scene`, `draw_world` (feature `plot`): the world figure (zones, rectangles, trees,
-//!   raw path, smoothed curve) as PNG or SVG, one composition for both; `chart_metrics`,
-//!   `chart_box`, `chart_success`: box plots and success bars (SVG).
+//! - `world_figure`, `draw_world`, `chart_metrics` (feature `plot`): a scenario's world
+//!   with a run's trees and path (PNG or SVG), box plots of run metrics (SVG), drawn by
+//!   crate `viz`; `Scene` (`viz::PlanFigure`), `chart_box`, `chart_success` re-exported.
 //!
 //! # Features
 //!
 //! - `parallel` (default): runs spread over threads with rayon; results equal the serial run's.
-//! - `plot` (default): world figures (PNG with tiny-skia, SVG with the zone picture
-//!   embedded) and charts (SVG, plotters).
+//! - `plot` (default): world figures and charts, through crate `viz`.
 
 pub mod bench;
 #[cfg(feature = "plot")]
 mod figure;
+mod map_build;
 mod metrics;
 mod no_path;
-mod planners;
 pub mod report;
 mod room;
 mod runner;
@@ -52,15 +51,13 @@ pub mod stats;
 /// An obstacle of a scenario's drawn grid: `envmap`'s shapes.
 pub use envmap::shapes::Shape;
 #[cfg(feature = "plot")]
-pub use figure::{
-    CURVE_COLOUR, FigureError, Mark, PATH_COLOUR, START_COLOUR, Scene, TREE_COLOURS, chart_box,
-    chart_metrics, chart_success, draw_world,
-};
+pub use figure::{chart_metrics, draw_world, world_figure};
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};
 pub use no_path::NoPathRecord;
-pub use planners::{Explored, PlannerConfig, RegistryError, ron_options};
 /// Robot limits of a scenario (speed, turn rate, acceleration): `postproc`'s type.
 pub use postproc::Limits;
+/// The planner registry (crate `registry`): one typed configuration per planner, by name.
+pub use registry::{Explored, PlannerConfig, RegistryError, ron_options};
 pub use room::{Furniture, draw_room};
 pub use runner::{run_planner, run_seed};
 pub use scenario::{
@@ -68,6 +65,12 @@ pub use scenario::{
     World,
 };
 pub use stats::{Stat, Summary};
+/// The plan figure and charts are `viz`'s; `Scene` is the plan figure's old name here.
+#[cfg(feature = "plot")]
+pub use viz::{
+    CURVE_COLOUR, FigureError, Mark, PATH_COLOUR, PlanFigure as Scene, START_COLOUR, TREE_COLOURS,
+    chart_box, chart_success,
+};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -58,19 +58,42 @@ impl Stat {
         } else {
             0.0
         };
-        let median = if n % 2 == 1 {
-            v[n / 2]
-        } else {
-            0.5 * (v[n / 2 - 1] + v[n / 2])
-        };
         Self {
             mean,
             std: var.sqrt(),
-            median,
+            median: sorted_median(&v),
             min: v[0],
             max: v[n - 1],
             count: n,
         }
+    }
+}
+
+/// The median of `values` (the mean of the two middle values for an even count; values
+/// ordered by `f64::total_cmp`), `None` when there is none: the one median of the
+/// workspace.
+///
+/// ```
+/// assert_eq!(harness::stats::median([3.0, 1.0, 2.0, 10.0]), Some(2.5));
+/// assert_eq!(harness::stats::median([]), None);
+/// ```
+#[must_use]
+pub fn median(values: impl IntoIterator<Item = f64>) -> Option<f64> {
+    let mut v: Vec<f64> = values.into_iter().collect();
+    if v.is_empty() {
+        return None;
+    }
+    v.sort_by(f64::total_cmp);
+    Some(sorted_median(&v))
+}
+
+/// The median of sorted, non-empty values.
+fn sorted_median(v: &[f64]) -> f64 {
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
     }
 }
 

@@ -1,10 +1,10 @@
-//! Pieces the four planners share beyond `sampling`'s toolkit (steer, uniform sampling,
-//! the counted collision checker, step/budget validation, branches): the grid downcast,
-//! the goal join, zone queries and path assembly.
+//! Pieces the four planners share beyond `sampling`'s toolkit (the tree, the run frame,
+//! steer, sampling, the counted collision checker, branches): the goal join, zone
+//! queries, grid A* and path assembly.
 
 use envmap::GridMap;
 use hyplan_core::{Goal, Point2, Workspace, Zone};
-use sampling::CountingChecker;
+use sampling::{CountingChecker, GrowTree};
 use search::{Connectivity, GridOptions};
 
 /// How a node that came within the planner's goal radius finishes the path.
@@ -53,6 +53,19 @@ pub(crate) fn anchor_cell_path<W: Workspace + ?Sized>(
     out.windows(2)
         .all(|w| checker.segment_free(w[0], w[1]))
         .then(|| out.split_off(1))
+}
+
+/// The raw path of a tree search: the branch from the root to `leaf`, then `end` (the
+/// points after it to the goal), without consecutive duplicates.
+pub(crate) fn branch_to_goal(
+    tree: &GrowTree,
+    leaf: usize,
+    end: impl IntoIterator<Item = Point2>,
+) -> Vec<Point2> {
+    let mut path = tree.branch(leaf);
+    path.extend(end);
+    dedup(&mut path);
+    path
 }
 
 /// Drops consecutive exact duplicates.

@@ -28,10 +28,8 @@
 
 use std::time::Instant;
 
-use hyplan_core::{
-    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
-};
-use rand::{Rng, RngCore};
+use hyplan_core::{Bounds, Budget, Plan, PlanError, PlanStats, Point2, Query, Workspace};
+use rand::Rng;
 use sampling::CountingChecker;
 
 use crate::common;
@@ -137,6 +135,17 @@ struct Individual {
 }
 
 impl Individual {
+    /// Deb's rules as an order, better first.
+    fn order(a: &Self, b: &Self) -> std::cmp::Ordering {
+        if a.beats(b) {
+            std::cmp::Ordering::Less
+        } else if b.beats(a) {
+            std::cmp::Ordering::Greater
+        } else {
+            std::cmp::Ordering::Equal
+        }
+    }
+
     /// Deb's rules: whether `self` is better than `other`.
     fn beats(&self, other: &Self) -> bool {
         match (self.violation == 0.0, other.violation == 0.0) {
@@ -149,6 +158,66 @@ impl Individual {
 }
 
 impl GaPchip {
+    /// The path's length and, if a segment is blocked, its violation (the blocked length).
+    fn evaluate<W: Workspace + ?Sized>(
+        &self,
+        genes: Vec<Point2>,
+        start: Point2,
+        goal: Point2,
+        checker: &mut CountingChecker<'_, W>,
+    ) -> Individual {
+        let (mut length, mut violation) = (0.0, 0.0);
+        let mut prev = start;
+        for &p in genes.iter().chain(std::iter::once(&goal)) {
+            let d = (p - prev).norm();
+            length += d;
+            if !checker.segment_free(prev, p) {
+                // At least one probe's worth, so a blocked segment never scores 0.
+                let n = (d / self.probe_spacing).ceil().max(1.0) as usize;
+                let blocked = (0..=n)
+                    .filter(|&k| !checker.is_free(prev + (p - prev) * (k as f64 / n as f64)))
+                    .count()
+                    .max(1);
+                violation += blocked as f64 * self.probe_spacing;
+            }
+            prev = p;
+        }
+        Individual {
+            genes,
+            length,
+            violation,
+        }
+    }
+
+    /// Mutation: each via-point with probability `mutation_rate` moves uniformly within a
+    /// disc of `radius` (clamped to the bounds), redrawn up to 10 times onto a free point.
+    fn mutate<W: Workspace + ?Sized, R: Rng + ?Sized>(
+        &self,
+        genes: &mut [Point2],
+        radius: f64,
+        bounds: &Bounds,
+        rng: &mut R,
+        checker: &mut CountingChecker<'_, W>,
+    ) {
+        for g in genes {
+            if hyplan_core::uniform01(rng) >= self.mutation_rate {
+                continue;
+            }
+            for _ in 0..10 {
+                let r = radius * hyplan_core::uniform01(rng).sqrt();
+                let a = std::f64::consts::TAU * hyplan_core::uniform01(rng);
+                let p = Point2::new(
+                    (g.x + r * a.cos()).clamp(bounds.min.x, bounds.max.x),
+                    (g.y + r * a.sin()).clamp(bounds.min.y, bounds.max.y),
+                );
+                if checker.is_free(p) {
+                    *g = p;
+                    break;
+                }
+            }
+        }
+    }
+
     fn validate_params(&self) -> Result<(), PlanError> {
         hyplan_core::check::count("via_points", self.via_points)?;
         if self.population < 2 {
@@ -207,34 +276,11 @@ impl GaPchip {
         let mut evaluated = 0_u64;
         let mut evaluate = |genes: Vec<Point2>, checker: &mut CountingChecker<'_, W>| {
             evaluated += 1;
-            let (mut length, mut violation) = (0.0, 0.0);
-            let mut prev = start;
-            for &p in genes.iter().chain(std::iter::once(&goal)) {
-                let d = (p - prev).norm();
-                length += d;
-                if !checker.segment_free(prev, p) {
-                    // At least one probe's worth, so a blocked segment never scores 0.
-                    let n = (d / self.probe_spacing).ceil().max(1.0) as usize;
-                    let blocked = (0..=n)
-                        .filter(|&k| !checker.is_free(prev + (p - prev) * (k as f64 / n as f64)))
-                        .count()
-                        .max(1);
-                    violation += blocked as f64 * self.probe_spacing;
-                }
-                prev = p;
-            }
-            Individual {
-                genes,
-                length,
-                violation,
-            }
+            self.evaluate(genes, start, goal, checker)
         };
 
         let free_sample = |rng: &mut R, checker: &mut CountingChecker<'_, W>| {
-            (0..self.sample_tries).find_map(|_| {
-                let p = sampling::sample_uniform(ws, rng);
-                checker.is_free(p).then_some(p)
-            })
+            sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| checker.is_free(p))
         };
         // A time limit is checked before every evaluation (a generation on a large map
         // takes longer than a short limit); an iteration budget only between generations,
@@ -268,15 +314,7 @@ impl GaPchip {
         let mut generation = 0_u64;
         'generations: while !population.is_empty() && !budget.exhausted(generation, started) {
             generation += 1;
-            population.sort_by(|a, b| {
-                if a.beats(b) {
-                    std::cmp::Ordering::Less
-                } else if b.beats(a) {
-                    std::cmp::Ordering::Greater
-                } else {
-                    std::cmp::Ordering::Equal
-                }
-            });
+            population.sort_by(Individual::order);
             let best = &population[0];
             if best.violation == 0.0 {
                 if best.length < best_length * (1.0 - 1e-9) {
@@ -316,23 +354,7 @@ impl GaPchip {
                         break;
                     }
                     let mut genes = child;
-                    for g in &mut genes {
-                        if hyplan_core::uniform01(rng) >= self.mutation_rate {
-                            continue;
-                        }
-                        for _ in 0..10 {
-                            let r = radius * hyplan_core::uniform01(rng).sqrt();
-                            let a = std::f64::consts::TAU * hyplan_core::uniform01(rng);
-                            let p = Point2::new(
-                                (g.x + r * a.cos()).clamp(bounds.min.x, bounds.max.x),
-                                (g.y + r * a.sin()).clamp(bounds.min.y, bounds.max.y),
-                            );
-                            if checker.is_free(p) {
-                                *g = p;
-                                break;
-                            }
-                        }
-                    }
+                    self.mutate(&mut genes, radius, &bounds, rng, &mut checker);
                     next.push(evaluate(genes, &mut checker));
                 }
             }
@@ -358,45 +380,22 @@ impl GaPchip {
         nodes.extend(best.genes.iter().copied());
         nodes.push(goal);
         common::dedup(&mut nodes);
-        let path = if self.smoothing && nodes.len() >= 3 {
-            smooth::fit_checked(&nodes, postproc::Fit::Pchip, self.curve_spacing, |a, b| {
+        let curve = smooth::fit_if(self.smoothing, &nodes, |nodes| {
+            smooth::fit_checked(nodes, postproc::Fit::Pchip, self.curve_spacing, |a, b| {
                 checker.segment_free(a, b)
             })
-            .points
-        } else {
-            nodes.clone()
-        };
+        });
         stats.collision_checks = checker.checks;
         stats.elapsed = started.elapsed();
-        Ok(Plan {
-            cost: hyplan_core::path_length(&path),
-            path,
-            trees: Vec::new(),
-            waypoints: if self.smoothing { nodes } else { Vec::new() },
-            stats,
-        })
-    }
-}
-
-impl Planner for GaPchip {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "ga-pchip",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: false,
+        let mut plan = sampling::plan_of_path(curve.points, Vec::new(), stats);
+        if self.smoothing {
+            plan.waypoints = nodes;
         }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        GaPchip::plan(self, ws, query, rng)
+        Ok(plan)
     }
 }
+
+sampling::impl_planner!(GaPchip, "ga-pchip", optimizing: |_ga| false);
 
 #[cfg(test)]
 mod tests {

@@ -12,14 +12,10 @@
 //! continues. The paper's "Cost (node)" is the tree size plus the nodes visited by the
 //! sub-searches, reported as `stats.nodes`.
 
-use std::time::Instant;
-
 use envmap::GridMap;
-use hyplan_core::{
-    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace,
-};
-use rand::{Rng, RngCore};
-use sampling::{CountingChecker, NearestIndex};
+use hyplan_core::{Budget, PlanError, Point2, Query, Workspace};
+use rand::Rng;
+use sampling::{CountingChecker, Extension, GrowTree, Run};
 use search::GridOptions;
 
 use crate::Staged;
@@ -130,29 +126,16 @@ impl HybridRrtAstar {
         hyplan_core::check::count("astar_max_visited", self.astar_max_visited)
     }
 
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query`, drawing every random number from `rng`, also counting the
+    /// sub-searches launched and given up.
     ///
     /// # Errors
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget (through the
-    /// [`Planner`] trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
+    /// [`Planner`](hyplan_core::Planner) trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
     /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
     /// passable cells do not join start and goal; [`PlanError::BudgetExhausted`] when neither
     /// the tree nor a sub-search reached the goal within the budget.
-    pub fn plan<R: Rng + ?Sized>(
-        &self,
-        map: &GridMap,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_detailed(map, query, rng).map(|s| s.plan)
-    }
-
-    /// [`plan`](Self::plan), also counting the sub-searches launched and given up.
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_detailed<R: Rng + ?Sized>(
         &self,
         map: &GridMap,
@@ -160,11 +143,9 @@ impl HybridRrtAstar {
         rng: &mut R,
     ) -> Result<Staged, PlanError> {
         let ws = map;
-        let started = Instant::now();
         self.validate_params()?;
-        let budget = self.budget.for_sampling(ws.cells());
-        sampling::validate_step_and_budget(self.step, &budget, ws, query)?;
-        sampling::check_connected(ws, query, started)?;
+        let mut run = Run::start(self.step, &self.budget, ws, query)?;
+        run.check_connected(ws, query)?;
         let goal = query.goal;
         let target = goal.center();
         let goal_cell = map.world_to_cell(target).ok_or(PlanError::InvalidGoal {
@@ -172,32 +153,24 @@ impl HybridRrtAstar {
             reason: "outside the map",
         })?;
         let mut checker = CountingChecker::new(ws);
-        let mut index = NearestIndex::with_capacity(1024);
-        let mut parent: Vec<Option<u32>> = vec![None];
-        index.insert(query.start);
+        let mut tree = GrowTree::rooted_at(query.start);
         let mut starts: Vec<Point2> = Vec::new();
         let (mut visited_total, mut runs, mut failures) = (0_u64, 0_u32, 0_u32);
-        let mut iterations = 0_u64;
         // (leaf node, points after it to the goal)
         let mut done: Option<(usize, Vec<Point2>)> = None;
         if goal.contains(query.start) {
             done = Some((0, Vec::new()));
         }
 
-        while done.is_none() && !budget.exhausted(iterations, started) {
-            iterations += 1;
+        while done.is_none() && run.next_iteration() {
             // Phase 1 (Algorithm 1): goal-biased sample, nearest vertex, one step.
             let sample = sampling::sample_goal_biased(ws, target, self.goal_bias, rng);
-            let Some((near, _)) = index.nearest(sample) else {
-                break;
+            let new = match tree.extend(sample, self.step, &mut checker) {
+                Extension::Added { new, .. } => new,
+                Extension::Refused => continue,
+                Extension::NoNode => break,
             };
-            let near_point = index.point(near);
-            let new_point = sampling::steer(near_point, sample, self.step);
-            if new_point == near_point || !checker.segment_free(near_point, new_point) {
-                continue;
-            }
-            let new = index.insert(new_point);
-            parent.push(Some(near as u32));
+            let new_point = tree.point(new);
             // The tree reaches the goal by itself ("Is this node the goal?").
             let dist = (new_point - target).norm();
             if (dist <= self.step || goal.contains(new_point))
@@ -206,20 +179,9 @@ impl HybridRrtAstar {
                 done = Some((new, end.into_iter().collect()));
                 break;
             }
-            // Condition 1: inside the goal area.
-            if dist > self.goal_threshold {
-                continue;
-            }
-            // Condition 2: far enough from earlier sub-search starts.
-            let spaced = match self.spacing_rule {
-                SpacingRule::All => starts
-                    .iter()
-                    .all(|s| (s - new_point).norm() >= self.astar_spacing),
-                SpacingRule::Last => starts
-                    .last()
-                    .is_none_or(|s| (s - new_point).norm() >= self.astar_spacing),
-            };
-            if !spaced {
+            // Condition 1: inside the goal area; condition 2: far enough from earlier
+            // sub-search starts.
+            if dist > self.goal_threshold || !self.spaced(&starts, new_point) {
                 continue;
             }
             starts.push(new_point);
@@ -242,37 +204,33 @@ impl HybridRrtAstar {
             }
         }
 
-        let points = index.points().to_vec();
-        let tree_nodes = points.len() as u64;
-        let mut stats = PlanStats {
-            iterations,
-            nodes: tree_nodes + visited_total,
-            collision_checks: checker.checks,
-            expansions: visited_total,
-            elapsed: started.elapsed(),
-            ..PlanStats::default()
-        };
+        let mut stats = run.stats(tree.len(), checker.checks);
+        stats.nodes += visited_total;
+        stats.expansions = visited_total;
         let Some((leaf, tail)) = done else {
             return Err(PlanError::BudgetExhausted { stats });
         };
-        let mut path = sampling::branch(&points, &parent, leaf);
-        path.extend(tail);
-        common::dedup(&mut path);
-        stats.elapsed = started.elapsed();
+        let path = common::branch_to_goal(&tree, leaf, tail);
+        stats.elapsed = run.started().elapsed();
         Ok(Staged {
-            plan: Plan {
-                cost: hyplan_core::path_length(&path),
-                path: path.clone(),
-                trees: vec![Tree { points, parent }],
-                waypoints: Vec::new(),
-                stats,
-            },
+            plan: sampling::plan_of_path(path.clone(), vec![tree.into_tree()], stats),
             raw: path.clone(),
             reduced: path,
             astar_runs: runs,
             astar_failures: failures,
             ..Staged::default()
         })
+    }
+
+    /// Condition 2 of a sub-search start: at least `astar_spacing` from the earlier starts
+    /// the spacing rule names.
+    fn spaced(&self, starts: &[Point2], p: Point2) -> bool {
+        match self.spacing_rule {
+            SpacingRule::All => starts.iter().all(|s| (s - p).norm() >= self.astar_spacing),
+            SpacingRule::Last => starts
+                .last()
+                .is_none_or(|s| (s - p).norm() >= self.astar_spacing),
+        }
     }
 
     /// The points after `from` along the A* cells to `target`: cell centres, the last one
@@ -298,27 +256,4 @@ impl HybridRrtAstar {
     }
 }
 
-impl Planner for HybridRrtAstar {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "hybrid-rrt-astar",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: true,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        HybridRrtAstar::plan(
-            self,
-            GridMap::of_workspace(ws, "hybrid-rrt-astar")?,
-            query,
-            rng,
-        )
-    }
-}
+sampling::impl_planner!(HybridRrtAstar, "hybrid-rrt-astar", grid_only, plan: plan_detailed);

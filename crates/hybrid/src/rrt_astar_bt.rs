@@ -22,7 +22,7 @@
 //! them, three in four already closed, and most of the rest blocked. So the work is kept
 //! per draw and per candidate: a sample on a [`envmap::GridMap`] is one cell lookup
 //! (`GridMap::is_free`'s point test), an edge whose new end lies inside a blocked cell is
-//! refused without the segment sweep (`GridMap::segment_free`), the closed list is a bucket grid of the nodes
+//! refused without the segment sweep (`GridMap::segment_free`), the closed list is a bucket grid over the tree's nodes
 //! (`ClosedList`: the 3 x 3 cells around a point, checked exactly) instead of a k-d tree
 //! query, a candidate already closed when drawn never enters the open list (it could never
 //! be taken: nodes are never removed, and the closed test comes before the counted edge
@@ -34,13 +34,10 @@
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
-use std::time::Instant;
 
-use hyplan_core::{
-    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace,
-};
-use rand::{Rng, RngCore};
-use sampling::CountingChecker;
+use hyplan_core::{Budget, PlanError, Point2, Query, Workspace};
+use rand::Rng;
+use sampling::{CountingChecker, GrowTree, Run};
 
 use crate::Staged;
 use crate::common;
@@ -190,7 +187,8 @@ impl RrtAstarBt {
         hyplan_core::check::positive("curve_spacing", self.curve_spacing)
     }
 
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query`, drawing every random number from `rng`, also returning the
+    /// raw branch, the reduced nodes and the smoothing repairs.
     ///
     /// # Errors
     ///
@@ -202,49 +200,27 @@ impl RrtAstarBt {
     /// no admissible candidate (the paper's "premature end", kept as the ablation: not a
     /// proof); [`PlanError::BudgetExhausted`] when the iterations or time ran out. With
     /// back-tracking an empty open list does not end the run (see the type's docs).
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_detailed(ws, query, rng).map(|s| s.plan)
-    }
-
-    /// [`plan`](Self::plan), also returning the raw branch, the reduced nodes and the
-    /// smoothing repairs.
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,
         ws: &W,
         query: &Query,
         rng: &mut R,
     ) -> Result<Staged, PlanError> {
-        let started = Instant::now();
         self.validate_params()?;
-        let budget = self.budget.for_sampling(ws.cells());
-        sampling::validate_step_and_budget(self.step, &budget, ws, query)?;
-        sampling::check_connected(ws, query, started)?;
+        let mut run = Run::start(self.step, &self.budget, ws, query)?;
+        run.check_connected(ws, query)?;
         let goal = query.goal;
         let target = goal.center();
         let mut checker = CountingChecker::new(ws);
         let bounds = ws.bounds();
-        let (width, height) = (bounds.width(), bounds.height());
-        // The tree: every node ever grown, with its parent and g (path length from start),
-        // bucketed for the closed-list test.
-        let mut tree = ClosedList::new(bounds, self.closed_radius(), query.start);
-        // The same nodes for nearest-node queries, used only when the open list runs dry.
-        let mut nearest = sampling::NearestIndex::rooted_at(query.start);
-        let mut parent: Vec<Option<u32>> = vec![None];
-        let mut g: Vec<f64> = vec![0.0];
+        // The tree: every node ever grown, with its parent and g (path length from start,
+        // its cost-to-come), and the same nodes bucketed for the closed-list test.
+        let mut tree = GrowTree::with_costs(query.start);
+        let mut closed = ClosedList::new(bounds, self.closed_radius(), query.start);
         // The open list: candidate extensions not yet taken, lowest f first.
         let mut open: BinaryHeap<Candidate> = BinaryHeap::with_capacity(4096);
         let mut seq = 0_u64;
         let mut head = 0_usize;
-        let mut iterations = 0_u64;
         let mut grown = 0_u64;
         let mut backtracks = 0_u32;
         let mut restarts = 0_u32;
@@ -255,8 +231,7 @@ impl RrtAstarBt {
         if (query.start - target).norm() <= reach || goal.contains(query.start) {
             reached = common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e));
         }
-        while reached.is_none() && !budget.exhausted(iterations, started) {
-            iterations += 1;
+        while reached.is_none() && run.next_iteration() {
             // Without back-tracking only the head's own options count (RRT-A* alone).
             if !self.backtracking {
                 open.clear();
@@ -267,13 +242,8 @@ impl RrtAstarBt {
             // taken (this saves the heap work, not a collision check).
             let hp = tree.point(head);
             for _ in 0..self.candidates {
-                let sample = (0..self.sample_tries).find_map(|_| {
-                    // `sampling::sample_uniform` with the bounds read once.
-                    let p = Point2::new(
-                        bounds.min.x + hyplan_core::uniform01(rng) * width,
-                        bounds.min.y + hyplan_core::uniform01(rng) * height,
-                    );
-                    checker.is_free(p).then_some(p)
+                let sample = sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| {
+                    checker.is_free(p)
                 });
                 let Some(sample) = sample else { continue };
                 let c = sampling::steer(hp, sample, self.step);
@@ -281,10 +251,10 @@ impl RrtAstarBt {
                     continue;
                 }
                 seq += 1;
-                if tree.is_closed(c) {
+                if closed.is_closed(tree.points(), c) {
                     continue;
                 }
-                let g_c = g[head] + (c - hp).norm();
+                let g_c = tree.cost(head) + (c - hp).norm();
                 let h = (target - c).norm();
                 open.push(Candidate {
                     f: g_c + h,
@@ -299,7 +269,7 @@ impl RrtAstarBt {
             // head, the search has backed out of a dead end (4.4).
             let mut chosen = None;
             while let Some(c) = open.pop() {
-                if !tree.is_closed(c.point)
+                if !closed.is_closed(tree.points(), c.point)
                     && checker.segment_free(tree.point(c.parent as usize), c.point)
                 {
                     chosen = Some(c);
@@ -318,14 +288,10 @@ impl RrtAstarBt {
                 // node keeps a chance of being extended again in any direction, so the
                 // search is probabilistically complete, as RRT is; only the budget or a
                 // path ends it.
-                let sample = (0..self.sample_tries).find_map(|_| {
-                    let p = Point2::new(
-                        bounds.min.x + hyplan_core::uniform01(rng) * width,
-                        bounds.min.y + hyplan_core::uniform01(rng) * height,
-                    );
-                    checker.is_free(p).then_some(p)
+                let sample = sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| {
+                    checker.is_free(p)
                 });
-                if let Some((n, _)) = sample.and_then(|p| nearest.nearest(p)) {
+                if let Some((n, _)) = sample.and_then(|p| tree.nearest(p)) {
                     head = n;
                 }
                 restarts += 1;
@@ -337,10 +303,8 @@ impl RrtAstarBt {
             }
             // Grow: the chosen candidate becomes the new head (g as computed when it was
             // drawn).
-            let id = tree.insert(c.point);
-            nearest.insert(c.point);
-            parent.push(Some(c.parent));
-            g.push(g[from] + (c.point - tree.point(from)).norm());
+            let id = tree.add(c.point, from);
+            closed.insert(c.point);
             head = id;
             grown += 1;
             // Goal test: within r of the goal (4.2), then join the goal itself if free.
@@ -349,25 +313,16 @@ impl RrtAstarBt {
             }
         }
 
-        let points = tree.points;
-        let mut stats = PlanStats {
-            iterations,
-            nodes: points.len() as u64,
-            collision_checks: checker.checks,
-            expansions: grown,
-            ..PlanStats::default()
-        };
+        let mut stats = run.stats(tree.len(), checker.checks);
+        stats.expansions = grown;
         let Some((leaf, end)) = reached else {
-            stats.elapsed = started.elapsed();
             return Err(if failure {
                 PlanError::NoPath { stats }
             } else {
                 PlanError::BudgetExhausted { stats }
             });
         };
-        let mut raw = sampling::branch(&points, &parent, leaf);
-        raw.extend(end);
-        common::dedup(&mut raw);
+        let raw = common::branch_to_goal(&tree, leaf, end);
         // Node reduction (4.5): pairwise, one pass by default.
         // 0 passes means "to stability".
         let passes = match self.reduction_passes {
@@ -377,39 +332,17 @@ impl RrtAstarBt {
         let reduced =
             postproc::prune_pairwise_passes(&raw, passes, |a, b| checker.segment_free(a, b));
         // PCHIP (4.6), sampled and checked against the same zones.
-        let (path, repairs, refused) = if self.smoothing && reduced.len() >= 3 {
-            let c = smooth::fit_checked(
-                &reduced,
-                postproc::Fit::Pchip,
-                self.curve_spacing,
-                |a, b| checker.segment_free(a, b),
-            );
-            (c.points, c.repairs, c.refused)
-        } else {
-            (reduced.clone(), 0, false)
-        };
+        let curve = smooth::fit_if(self.smoothing, &reduced, |nodes| {
+            smooth::fit_checked(nodes, postproc::Fit::Pchip, self.curve_spacing, |a, b| {
+                checker.segment_free(a, b)
+            })
+        });
         stats.collision_checks = checker.checks;
-        stats.elapsed = started.elapsed();
+        stats.elapsed = run.started().elapsed();
         Ok(Staged {
-            plan: Plan {
-                cost: hyplan_core::path_length(&path),
-                path,
-                trees: vec![Tree { points, parent }],
-                // PCHIP passes through the reduced path's nodes.
-                waypoints: if self.smoothing {
-                    reduced.clone()
-                } else {
-                    Vec::new()
-                },
-                stats,
-            },
-            raw,
-            reduced,
-            smoothing_repairs: repairs,
-            smoothing_refused: refused,
             backtracks,
             restarts,
-            ..Staged::default()
+            ..curve.into_staged(self.smoothing, tree.into_tree(), stats, raw, reduced)
         })
     }
 }
@@ -424,14 +357,12 @@ struct Candidate {
     point: Point2,
 }
 
-/// The tree's nodes and A*'s closed list over them: is a point closer than `radius` to a
-/// node? The nodes are bucketed in a grid of square cells a little wider than `radius`
-/// (and at most 256 per side), so such a node lies in the point's cell or one of its eight
-/// neighbours; those are checked exactly, with the distance computed as the k-d tree
-/// computed it (square root of dx * dx + dy * dy).
+/// A*'s closed list over the tree's nodes: is a point closer than `radius` to a node? The
+/// nodes (their ids, added in id order as the tree grows) are bucketed in a grid of square
+/// cells a little wider than `radius` (and at most 256 per side), so such a node lies in
+/// the point's cell or one of its eight neighbours; those are checked exactly, with the
+/// distance computed as the k-d tree computed it (square root of dx * dx + dy * dy).
 struct ClosedList {
-    /// Every node, in id order.
-    points: Vec<Point2>,
     radius: f64,
     /// radius^2 with a relative margin below and above: a squared distance under `below`
     /// is closer than `radius`, one over `above` is not.
@@ -452,7 +383,7 @@ struct ClosedList {
 const NONE: u32 = u32::MAX;
 
 impl ClosedList {
-    /// The list holding `root` (id 0) over `bounds`.
+    /// The list holding `root` (node 0) over `bounds`.
     fn new(bounds: hyplan_core::Bounds, radius: f64, root: Point2) -> Self {
         let (w, h) = (bounds.width(), bounds.height());
         // A margin over `radius` keeps rounding from pushing a close node two cells away.
@@ -466,7 +397,6 @@ impl ClosedList {
         };
         let (nx, ny) = (cells(w).clamp(1, 257), cells(h).clamp(1, 257));
         let mut list = Self {
-            points: Vec::with_capacity(1024),
             radius,
             below: radius * radius * (1.0 - 1e-9),
             above: radius * radius * (1.0 + 1e-9),
@@ -493,23 +423,15 @@ impl ClosedList {
         j * (self.nx + 2) + i
     }
 
-    /// Adds `p` and returns its id.
-    fn insert(&mut self, p: Point2) -> usize {
-        let id = self.points.len();
+    /// Adds the next node, at `p`.
+    fn insert(&mut self, p: Point2) {
         let k = self.cell(p);
-        self.points.push(p);
         self.prev.push(self.last[k]);
-        self.last[k] = id as u32;
-        id
+        self.last[k] = (self.prev.len() - 1) as u32;
     }
 
-    /// The node with id `id`.
-    fn point(&self, id: usize) -> Point2 {
-        self.points[id]
-    }
-
-    /// Whether a node lies closer than `radius` to `p`.
-    fn is_closed(&self, p: Point2) -> bool {
+    /// Whether a node lies closer than `radius` to `p`; `points` are the nodes by id.
+    fn is_closed(&self, points: &[Point2], p: Point2) -> bool {
         if self.radius <= 0.0 {
             return false;
         }
@@ -531,7 +453,7 @@ impl ClosedList {
         .any(|cell| {
             let mut k = self.last[cell];
             while k != NONE {
-                let q = self.points[k as usize];
+                let q = points[k as usize];
                 let (dx, dy) = (p.x - q.x, p.y - q.y);
                 let d2 = dx * dx + dy * dy;
                 // Squared distances settle all but the near-ties without a root.
@@ -569,25 +491,7 @@ impl Ord for Candidate {
     }
 }
 
-impl Planner for RrtAstarBt {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "rrt-astar-bt",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: false,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        RrtAstarBt::plan(self, ws, query, rng)
-    }
-}
+sampling::impl_planner!(RrtAstarBt, "rrt-astar-bt", optimizing: |_bt| false, plan: plan_detailed);
 
 #[cfg(test)]
 mod tests {

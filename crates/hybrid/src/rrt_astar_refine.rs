@@ -16,10 +16,8 @@
 use std::time::Instant;
 
 use envmap::GridMap;
-use hyplan_core::{
-    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
-};
-use rand::{Rng, RngCore};
+use hyplan_core::{Budget, Plan, PlanError, PlanStats, Point2, Query, Workspace};
+use rand::Rng;
 use sampling::{CountingChecker, Rrt};
 use search::{GridOptions, GridSearch};
 
@@ -105,31 +103,17 @@ impl Default for RrtAstarRefine {
 }
 
 impl RrtAstarRefine {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query`, drawing every random number from `rng`, also returning the
+    /// raw RRT path and the refined path before the shortcut.
     ///
     /// # Errors
     ///
     /// [`PlanError::InvalidParameter`] for a bad parameter or budget (through the
-    /// [`Planner`] trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
+    /// [`Planner`](hyplan_core::Planner) trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
     /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
     /// passable cells do not join start and goal (checked by the RRT before sampling);
     /// [`PlanError::BudgetExhausted`] when the RRT
     /// does not reach the goal within its budget.
-    pub fn plan<R: Rng + ?Sized>(
-        &self,
-        map: &GridMap,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_detailed(map, query, rng).map(|s| s.plan)
-    }
-
-    /// [`plan`](Self::plan), also returning the raw RRT path and the refined path before
-    /// the shortcut.
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_detailed<R: Rng + ?Sized>(
         &self,
         map: &GridMap,
@@ -266,27 +250,4 @@ impl RrtAstarRefine {
     }
 }
 
-impl Planner for RrtAstarRefine {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "rrt-astar-refine",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: true,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        RrtAstarRefine::plan(
-            self,
-            GridMap::of_workspace(ws, "rrt-astar-refine")?,
-            query,
-            rng,
-        )
-    }
-}
+sampling::impl_planner!(RrtAstarRefine, "rrt-astar-refine", grid_only, plan: plan_detailed);

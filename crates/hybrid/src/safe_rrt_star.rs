@@ -15,11 +15,9 @@
 
 use std::time::Instant;
 
-use hyplan_core::{
-    Budget, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Tree, Workspace, Zone,
-};
-use rand::{Rng, RngCore};
-use sampling::{CountingChecker, StarTree};
+use hyplan_core::{Budget, PlanError, Point2, Query, Workspace, Zone};
+use rand::Rng;
+use sampling::{CountingChecker, GrowTree, Run};
 
 use crate::Staged;
 use crate::common::{self, ZoneView};
@@ -165,19 +163,11 @@ impl SafeRrtStar {
             ),
             None => ws.disconnection(query),
         };
-        match cause {
-            None => Ok(()),
-            Some(cause) => Err(PlanError::Disconnected {
-                cause,
-                stats: PlanStats {
-                    elapsed: started.elapsed(),
-                    ..PlanStats::default()
-                },
-            }),
-        }
+        sampling::require_connected(cause, started)
     }
 
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query`, drawing every random number from `rng`, also returning the
+    /// raw RRT* path and the pruned path.
     ///
     /// # Errors
     ///
@@ -187,33 +177,18 @@ impl SafeRrtStar {
     /// path of this planner can exist (an obstacle wall, or a risk band wider than the
     /// edges can cross); [`PlanError::BudgetExhausted`] when no node reached the
     /// goal within the budget.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_detailed(ws, query, rng).map(|s| s.plan)
-    }
-
-    /// [`plan`](Self::plan), also returning the raw RRT* path and the pruned path.
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
         &self,
         ws: &W,
         query: &Query,
         rng: &mut R,
     ) -> Result<Staged, PlanError> {
-        let started = Instant::now();
         self.validate_params()?;
-        let budget = self.budget.for_sampling(ws.cells());
-        sampling::validate_step_and_budget(self.step, &budget, ws, query)?;
-        self.check_connected(ws, query, started)?;
+        let mut run = Run::start(self.step, &self.budget, ws, query)?;
+        self.check_connected(ws, query, run.started())?;
         let goal = query.goal;
         let target = goal.center();
+        let bounds = ws.bounds();
         let view = ZoneView::new(ws, self.step / 16.0);
         let lambda = self.safety_weight;
         // Edge cost: length plus lambda times the length inside Risk.
@@ -226,81 +201,59 @@ impl SafeRrtStar {
             }
         };
         let mut checker = CountingChecker::new(ws);
-        let mut tree = StarTree::rooted_at(query.start);
+        let mut tree = GrowTree::with_costs(query.start);
         // Goal links: (tree node, point appended after it, if any).
         let mut links: Vec<(usize, Option<Point2>)> = Vec::new();
         if (query.start - target).norm() <= self.goal_radius || goal.contains(query.start) {
             links.extend(common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e)));
         }
-        let mut iterations = 0_u64;
         let mut near: Vec<(usize, f64)> = Vec::new();
         let mut candidates: Vec<(f64, usize)> = Vec::new();
 
-        while (!self.stop_at_first_solution || links.is_empty())
-            && !budget.exhausted(iterations, started)
-        {
-            iterations += 1;
+        while (!self.stop_at_first_solution || links.is_empty()) && run.next_iteration() {
             // Sample: the goal, or a point in the Free zone (no samples in Risk, 2.2).
             let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
                 Some(target)
             } else {
-                (0..self.sample_tries).find_map(|_| {
-                    let p = sampling::sample_uniform(ws, rng);
+                sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| {
                     checker.checks += 1;
-                    (view.zone(p) == Zone::Free).then_some(p)
+                    view.zone(p) == Zone::Free
                 })
             };
             let Some(sample) = sample else { continue };
             // Nearest and steer.
-            let Some((nearest, _)) = tree.index.nearest(sample) else {
+            let Some(step) = tree.step_towards(sample, self.step) else {
                 break;
             };
-            let nearest_point = tree.index.point(nearest);
-            let new_point = sampling::steer(nearest_point, sample, self.step);
-            if new_point == nearest_point {
+            let new_point = step.to;
+            if new_point == step.from {
                 continue;
             }
             // New nodes stay out of Risk (the goal itself excepted) and edges out of
             // Forbidden.
             checker.checks += 1;
             if (new_point != target && view.zone(new_point) != Zone::Free)
-                || !checker.segment_free(nearest_point, new_point)
+                || !checker.segment_free(step.from, new_point)
             {
                 continue;
             }
             // Near: the ball of radius min(gamma sqrt(ln n / n), max_radius).
-            let n = tree.parent.len() as f64 + 1.0;
+            let n = tree.len() as f64 + 1.0;
             let radius = (self.gamma * (n.ln() / n).sqrt()).min(self.max_radius);
-            tree.index.within_into(new_point, radius, &mut near);
+            tree.within_into(new_point, radius, &mut near);
             // Parent: the cheapest cost-to-come through an edge free of Forbidden.
-            let nearest_cost = tree.cost[nearest] + edge_cost(nearest_point, new_point);
-            candidates.clear();
-            candidates.extend(
-                near.iter()
-                    .filter(|&&(i, _)| i != nearest)
-                    .map(|&(i, _)| (tree.cost[i] + edge_cost(tree.index.point(i), new_point), i))
-                    .filter(|&(c, _)| c < nearest_cost),
+            let through_nearest = tree.cost(step.near) + edge_cost(step.from, new_point);
+            let (parent, cost) = tree.choose_parent(
+                new_point,
+                (step.near, through_nearest),
+                &near,
+                |q, _| edge_cost(q, new_point),
+                &mut checker,
+                &mut candidates,
             );
-            candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-            let mut chosen = (nearest, nearest_cost);
-            for &(c, i) in &candidates {
-                if checker.segment_free(tree.index.point(i), new_point) {
-                    chosen = (i, c);
-                    break;
-                }
-            }
-            let new = tree.add(new_point, chosen.0, chosen.1);
+            let new = tree.add_with_cost(new_point, parent, cost);
             // Rewire: neighbours that become cheaper through the new node.
-            for &(i, _) in &near {
-                if i == chosen.0 {
-                    continue;
-                }
-                let p = tree.index.point(i);
-                let through = chosen.1 + edge_cost(new_point, p);
-                if through < tree.cost[i] && checker.segment_free(new_point, p) {
-                    tree.reparent(i, new, through);
-                }
-            }
+            tree.rewire(new, &near, |q, _| edge_cost(new_point, q), &mut checker);
             // Goal test.
             if (new_point - target).norm() <= self.goal_radius || goal.contains(new_point) {
                 links.extend(
@@ -309,88 +262,40 @@ impl SafeRrtStar {
             }
         }
 
-        let points = tree.points();
-        let mut stats = PlanStats {
-            iterations,
-            nodes: points.len() as u64,
-            collision_checks: checker.checks,
-            ..PlanStats::default()
-        };
+        let mut stats = run.stats(tree.len(), checker.checks);
         let link_cost = |&(i, e): &(usize, Option<Point2>)| {
-            tree.cost[i] + e.map_or(0.0, |e| edge_cost(points[i], e))
+            tree.cost(i) + e.map_or(0.0, |e| edge_cost(tree.point(i), e))
         };
         let best = links
             .iter()
             .min_by(|a, b| link_cost(a).total_cmp(&link_cost(b)).then(a.0.cmp(&b.0)));
         let Some(&(leaf, end)) = best else {
-            stats.elapsed = started.elapsed();
             return Err(PlanError::BudgetExhausted { stats });
         };
-        let mut raw = sampling::branch(&points, &tree.parent, leaf);
-        raw.extend(end);
-        common::dedup(&mut raw);
+        let raw = common::branch_to_goal(&tree, leaf, end);
         // Redundant-node removal (2.3): greedy from the start, segments avoiding Risk too.
         let reduced = postproc::shortcut_greedy(&raw, |a, b| {
             checker.checks += 1;
             view.safe_segment(a, b)
         });
         // B-spline (2.3) over the densified control polygon, checked against Forbidden.
-        let (path, repairs, refused) = if self.smoothing && reduced.len() >= 3 {
-            let control = postproc::densify(&reduced, self.spline_max_spacing);
-            let c = smooth::fit_checked(
+        let curve = smooth::fit_if(self.smoothing, &reduced, |nodes| {
+            let control = postproc::densify(nodes, self.spline_max_spacing);
+            smooth::fit_checked(
                 &control,
                 postproc::Fit::BSpline,
                 self.curve_spacing,
                 |a, b| checker.segment_free(a, b),
-            );
-            (c.points, c.repairs, c.refused)
-        } else {
-            (reduced.clone(), 0, false)
-        };
-        let cost = path.windows(2).map(|w| edge_cost(w[0], w[1])).sum();
+            )
+        });
+        let cost = curve.points.windows(2).map(|w| edge_cost(w[0], w[1])).sum();
         stats.collision_checks = checker.checks;
-        stats.elapsed = started.elapsed();
-        Ok(Staged {
-            plan: Plan {
-                cost,
-                path,
-                trees: vec![Tree {
-                    points,
-                    parent: tree.parent,
-                }],
-                // The B-spline's control points are the reduced path's nodes.
-                waypoints: if self.smoothing {
-                    reduced.clone()
-                } else {
-                    Vec::new()
-                },
-                stats,
-            },
-            raw,
-            reduced,
-            smoothing_repairs: repairs,
-            smoothing_refused: refused,
-            ..Staged::default()
-        })
+        stats.elapsed = run.started().elapsed();
+        // The B-spline's control points are the reduced path's nodes.
+        let mut staged = curve.into_staged(self.smoothing, tree.into_tree(), stats, raw, reduced);
+        staged.plan.cost = cost;
+        Ok(staged)
     }
 }
 
-impl Planner for SafeRrtStar {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "safe-rrt-star",
-            optimizing: !self.stop_at_first_solution,
-            proves_no_path: false,
-            grid_only: false,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        SafeRrtStar::plan(self, ws, query, rng)
-    }
-}
+sampling::impl_planner!(SafeRrtStar, "safe-rrt-star", optimizing: |planner| !planner.stop_at_first_solution, plan: plan_detailed);

@@ -6,8 +6,10 @@
 //! pass and seed 003 prunes against another zone than the one its curve is checked
 //! against; so the planners prune themselves and call [`postproc::fit_checked`] here.
 
-use hyplan_core::Point2;
+use hyplan_core::{PlanStats, Point2, Tree};
 use postproc::{Fit, FitOptions, OnFailure};
+
+use crate::Staged;
 
 /// Rounds of midpoint insertion (PCHIP) before colliding pieces are straightened: three,
 /// one fewer than `postproc`'s default, so a planner gives up on a curve sooner (the
@@ -52,6 +54,52 @@ pub(crate) fn fit_checked(
             repairs: 0,
             refused: true,
         },
+    }
+}
+
+/// The smoothing stage of a hybrid: `fit` over the `reduced` path when `smoothing` is on
+/// and the path has a corner to round (three nodes or more), else the reduced path as it
+/// is.
+pub(crate) fn fit_if(
+    smoothing: bool,
+    reduced: &[Point2],
+    fit: impl FnOnce(&[Point2]) -> Checked,
+) -> Checked {
+    if smoothing && reduced.len() >= 3 {
+        fit(reduced)
+    } else {
+        Checked {
+            points: reduced.to_vec(),
+            repairs: 0,
+            refused: false,
+        }
+    }
+}
+
+impl Checked {
+    /// The staged result of a search-then-smooth hybrid with this curve as its path (cost:
+    /// its length), `tree` as its search tree and the reduced nodes as its waypoints (the
+    /// curve passes through them, or they are its control points) when `smoothing` is on.
+    pub(crate) fn into_staged(
+        self,
+        smoothing: bool,
+        tree: Tree,
+        stats: PlanStats,
+        raw: Vec<Point2>,
+        reduced: Vec<Point2>,
+    ) -> Staged {
+        let mut plan = sampling::plan_of_path(self.points, vec![tree], stats);
+        if smoothing {
+            plan.waypoints.clone_from(&reduced);
+        }
+        Staged {
+            plan,
+            raw,
+            reduced,
+            smoothing_repairs: self.repairs,
+            smoothing_refused: self.refused,
+            ..Staged::default()
+        }
     }
 }
 

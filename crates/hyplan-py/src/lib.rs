@@ -392,12 +392,12 @@ struct ConfigKey {
 /// The last few configurations `plan` made, most recent first: a call repeated with the
 /// same planner, flags and parameters skips the registry's parsing (and the RON round trip
 /// of `key=value` parameters, tens of microseconds).
-struct ConfigCache(Mutex<Vec<(ConfigKey, harness::PlannerConfig)>>);
+struct ConfigCache(Mutex<Vec<(ConfigKey, registry::PlannerConfig)>>);
 
 impl ConfigCache {
     const CAPACITY: usize = 16;
 
-    fn get(&self, key: &ConfigKey) -> Option<harness::PlannerConfig> {
+    fn get(&self, key: &ConfigKey) -> Option<registry::PlannerConfig> {
         let mut entries = self
             .0
             .lock()
@@ -407,7 +407,7 @@ impl ConfigCache {
         Some(entries[0].1.clone())
     }
 
-    fn put(&self, key: ConfigKey, config: harness::PlannerConfig) {
+    fn put(&self, key: ConfigKey, config: registry::PlannerConfig) {
         let mut entries = self
             .0
             .lock()
@@ -541,13 +541,13 @@ fn plan(
     let config = match CONFIGS.get(&key) {
         Some(c) => c,
         None => {
-            let named: harness::PlannerConfig = planner.parse().map_err(value_err)?;
+            let named: registry::PlannerConfig = planner.parse().map_err(value_err)?;
             let step = match step {
                 Some(s) => Some(s * scale),
                 None if named.wants_default_step() => Some(0.05 * map.map.bounds().diagonal()),
                 None => None,
             };
-            let mut config = harness::PlannerConfig::from_spec(planner, |mut c| {
+            let mut config = registry::PlannerConfig::from_spec(planner, |mut c| {
                 if let Some(step) = step {
                     c = c.with_step(step);
                 }
@@ -784,15 +784,46 @@ fn run_scenario<'py>(
 /// The planner names `plan` accepts.
 #[pyfunction]
 fn planners() -> Vec<&'static str> {
-    harness::PlannerConfig::names()
+    registry::PlannerConfig::names()
 }
 
 /// The parameters of planner `name` (a `NAME[:key=value,...]` spec) with their default
 /// values, as RON text: what `**params` of `plan` may set.
 #[pyfunction]
 fn planner_params(name: &str) -> PyResult<Vec<(String, String)>> {
-    let c: harness::PlannerConfig = name.parse().map_err(value_err)?;
+    let c: registry::PlannerConfig = name.parse().map_err(value_err)?;
     Ok(c.params())
+}
+
+/// What the registry says of planner `name` (a `NAME[:key=value,...]` spec): its help
+/// line, its capabilities and its parameters (name, type, value, doc), as `hyplan
+/// planners NAME` prints them.
+#[pyfunction]
+fn planner_info<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyDict>> {
+    let c: registry::PlannerConfig = name.parse().map_err(value_err)?;
+    let caps = c.capabilities();
+    let d = PyDict::new(py);
+    d.set_item("name", c.name())?;
+    d.set_item("help", c.help())?;
+    d.set_item("family", caps.family.to_string())?;
+    d.set_item("grid_only", caps.grid_only)?;
+    d.set_item("uses_risk", caps.uses_risk)?;
+    d.set_item("has_step", caps.has_step)?;
+    d.set_item("wants_default_step", caps.wants_default_step)?;
+    d.set_item("goal_bias", caps.goal_bias)?;
+    d.set_item("own_goal_radius", caps.own_goal_radius)?;
+    d.set_item("deterministic", caps.deterministic)?;
+    let params = PyList::empty(py);
+    for p in c.parameters() {
+        let item = PyDict::new(py);
+        item.set_item("name", p.name)?;
+        item.set_item("type", p.ty)?;
+        item.set_item("default", p.default)?;
+        item.set_item("doc", p.doc)?;
+        params.append(item)?;
+    }
+    d.set_item("params", params)?;
+    Ok(d)
 }
 
 /// The native module; `hyplan/__init__.py` re-exports it.
@@ -806,6 +837,7 @@ fn _hyplan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(planners, m)?)?;
     m.add_function(wrap_pyfunction!(planner_params, m)?)?;
+    m.add_function(wrap_pyfunction!(planner_info, m)?)?;
     // For the timing tests, which mean nothing on a debug build (`maturin develop`).
     m.add("_debug_build", cfg!(debug_assertions))?;
     Ok(())

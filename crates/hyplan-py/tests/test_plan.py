@@ -169,6 +169,21 @@ def test_params_set_fields_and_budget():
     assert "step" in keys and "budget.max_iterations" in keys
 
 
+def test_planner_info_reads_the_registry():
+    for name in hyplan.planners():
+        info = hyplan.planner_info(name)
+        assert info["name"] == name and info["help"]
+        # The same parameters as planner_params, each with a type and a doc line.
+        assert [(p["name"], p["default"]) for p in info["params"]] == hyplan.planner_params(name)
+        assert all(p["type"] and p["doc"] for p in info["params"])
+    assert hyplan.planner_info("astar")["deterministic"]
+    assert hyplan.planner_info("safe-rrt-star")["uses_risk"]
+    step = next(p for p in hyplan.planner_info("rrt:step=3")["params"] if p["name"] == "step")
+    assert (step["type"], step["default"]) == ("f64", "3.0")
+    with pytest.raises(ValueError):
+        hyplan.planner_info("nope")
+
+
 def test_no_path_error_carries_statistics():
     occ = maze()
     m = hyplan.GridMap.from_array(occ)

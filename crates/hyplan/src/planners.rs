@@ -1,16 +1,59 @@
-//! `--planner NAME[:key=value,...]` and the shared flags -> a planner from `harness`'s
-//! registry.
+//! `--planner NAME[:key=value,...]` and the shared flags -> a planner from crate
+//! `registry`.
 //!
-//! The command line and the scenario files share one registry, [`harness::PlannerConfig`]:
-//! here the shared flags (`--step`, `--goal-bias`, `--goal-radius`, `--max-iter`,
-//! `--time-limit`) are applied
-//! to the planners that have those fields, then the `key=value` pairs of `--planner` set any
-//! field of the planner's struct (a pair wins over a flag).
+//! The command line and the scenario files share one registry, [`registry::PlannerConfig`]:
+//! the `--planner` flags list its names and help lines ([`SpecParser`]); here the shared
+//! flags (`--step`, `--goal-bias`, `--goal-radius`, `--max-iter`, `--time-limit`) are
+//! applied to the planners that have those fields, then the `key=value` pairs of
+//! `--planner` set any field of the planner's struct (a pair wins over a flag).
 
-use harness::PlannerConfig;
+use std::ffi::OsStr;
 use std::time::Duration;
 
-use hyplan_core::Planner;
+use clap::builder::{PossibleValue, StringValueParser, TypedValueParser};
+use registry::{PlannerConfig, PlannerKind};
+
+/// The value parser of a `--planner NAME[:key=value,...]` flag: the text as given (the
+/// registry reads it after the other flags, so its messages name the key or value at
+/// fault), with the registry's names and help lines as the possible values `--help` lists.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SpecParser {
+    /// Help lines that replace the registry's for some planners (`hyplan sim`'s
+    /// `dijkstra` is the paper's Algorithm 3 on the costmap).
+    overrides: &'static [(PlannerKind, &'static str)],
+}
+
+impl SpecParser {
+    /// The registry's names with these help lines in place of the registry's.
+    #[must_use]
+    pub const fn with_help(overrides: &'static [(PlannerKind, &'static str)]) -> Self {
+        Self { overrides }
+    }
+}
+
+impl TypedValueParser for SpecParser {
+    type Value = String;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<String, clap::Error> {
+        StringValueParser::new().parse_ref(cmd, arg, value)
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        Some(Box::new(PlannerKind::all().map(|kind| {
+            let help = self
+                .overrides
+                .iter()
+                .find(|(k, _)| *k == kind)
+                .map_or_else(|| PlannerConfig::from(kind).help(), |(_, h)| h);
+            PossibleValue::new(kind.name()).help(help)
+        })))
+    }
+}
 
 /// The planner flags shared by every planner; each planner takes what it uses.
 #[derive(Debug, Clone, Copy)]
@@ -64,15 +107,6 @@ pub fn configure(spec: &str, flags: &PlannerFlags) -> anyhow::Result<PlannerConf
     .map_err(|e| anyhow::anyhow!("--planner: {e}"))
 }
 
-/// The planner `spec` names, configured as [`configure`] does, ready to run.
-///
-/// # Errors
-///
-/// As [`configure`].
-pub fn build(spec: &str, flags: &PlannerFlags) -> anyhow::Result<Box<dyn Planner>> {
-    Ok(configure(spec, flags)?.build())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,9 +121,9 @@ mod tests {
             time_limit: None,
         };
         for name in PlannerConfig::names() {
-            assert_eq!(build(name, &flags).unwrap().info().name, name);
+            assert_eq!(configure(name, &flags).unwrap().build().info().name, name);
         }
-        assert!(build("nope", &flags).is_err());
+        assert!(configure("nope", &flags).is_err());
         let c = configure("rrt:step=3.5", &flags).unwrap();
         assert_eq!(c.step(), Some(3.5));
         let c = configure("rrt-connect", &flags).unwrap();

@@ -85,6 +85,7 @@ mod pchip;
 mod prune;
 mod resample;
 mod smooth;
+mod smoothing;
 mod timing;
 
 pub use bspline::BSpline;
@@ -94,10 +95,8 @@ pub use metrics::{DEFAULT_TURN_THRESHOLD_DEG, PathMetrics, count_turns};
 pub use pchip::Pchip;
 pub use prune::{prune_pairwise, prune_pairwise_passes, shortcut_farthest, shortcut_greedy};
 pub use resample::{Curve, MAX_SAMPLES, densify};
-pub use smooth::{
-    Fit, FitOptions, INSERT_ROUNDS, OnFailure, Repair, Smoothed, Smoothing, check_polyline,
-    fit_checked, smooth_checked,
-};
+pub use smooth::{check_polyline, fit_checked, smooth_checked};
+pub use smoothing::{Fit, FitOptions, INSERT_ROUNDS, OnFailure, Repair, Smoothed, Smoothing};
 pub use timing::{Limits, ProfilePoint, Timing, straight_time, time_curve, time_polyline};
 
 /// The README's examples, compiled and run as doctests.

@@ -3,11 +3,12 @@
 
 use std::ops::ControlFlow;
 
-use hyplan_core::{Budget, Plan, PlanError, Planner, PlannerInfo, Progress, Query, Workspace};
-use rand::{Rng, RngCore};
+use hyplan_core::{Budget, Plan, PlanError, Progress, Query, Workspace};
+use rand::Rng;
 
-use crate::common::{self, GrowTree};
-use crate::toolkit::{self, CountingChecker};
+use crate::common;
+use crate::toolkit::CountingChecker;
+use crate::{Extension, GrowTree};
 
 /// The Bi-RRT planner's parameters.
 ///
@@ -64,28 +65,15 @@ impl Default for BiRrt {
 }
 
 impl BiRrt {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
+    /// observer called every 64 iterations; `ControlFlow::Break(())` stops the run
+    /// ([`PlanError::BudgetExhausted`]).
     ///
     /// # Errors
     ///
     /// [`PlanError::InvalidParameter`] for a bad step or budget; [`PlanError::InvalidStart`] /
     /// [`PlanError::InvalidGoal`] for a query outside the workspace or blocked;
     /// [`PlanError::BudgetExhausted`] (with the statistics) when the trees did not meet.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_with(ws, query, rng, &mut common::keep_going)
-    }
-
-    /// [`plan`](Self::plan) with an observer, called every 64 iterations;
-    /// `ControlFlow::Break(())` stops the run ([`PlanError::BudgetExhausted`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_with<W, R, F>(
         &self,
         ws: &W,
@@ -104,49 +92,27 @@ impl BiRrt {
                     sample,
                     checker: &mut CountingChecker<'_, W>| {
             let other = 1 - active;
-            // Nearest: the active tree's node closest to the sample (a tree is never empty).
-            let (near, _) = trees[active].index.nearest(sample)?;
-            let near_point = trees[active].index.point(near);
-            // Steer: at most one step towards the sample.
-            let new_point = toolkit::steer(near_point, sample, step);
-            // Segment free: the edge, exactly; then add the node.
-            if new_point == near_point || !checker.segment_free(near_point, new_point) {
+            // Extend: nearest node, one step towards the sample, exact edge check, add.
+            let Extension::Added { new, .. } = trees[active].extend(sample, step, checker) else {
                 return None;
-            }
-            let new = trees[active].add(new_point, near);
+            };
+            let new_point = trees[active].point(new);
             // Goal test: the start tree inside a goal disc ends the search by itself.
             if active == 0 && goal.radius() > 0.0 && goal.contains(new_point) {
                 return Some((new, None));
             }
             // Join: the other tree's nearest node within a step, through a free edge.
-            let (meet, d) = trees[other].index.nearest(new_point)?;
-            (d <= step && checker.segment_free(new_point, trees[other].index.point(meet)))
-                .then_some(if active == 0 {
+            let (meet, d) = trees[other].nearest(new_point)?;
+            (d <= step && checker.segment_free(new_point, trees[other].point(meet))).then_some(
+                if active == 0 {
                     (new, Some(meet))
                 } else {
                     (meet, Some(new))
-                })
+                },
+            )
         };
         common::grow_two_trees(step, &self.budget, ws, query, rng, observer, grow)
     }
 }
 
-impl Planner for BiRrt {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "bi-rrt",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: false,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        BiRrt::plan(self, ws, query, rng)
-    }
-}
+crate::impl_planner!(BiRrt, "bi-rrt", optimizing: |_bi_rrt| false, plan: plan_with);

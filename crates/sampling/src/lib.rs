@@ -14,11 +14,22 @@
 //! - [`BiRrt`]: two trees grown in turn, joined by one free step.
 //! - [`RrtConnect`]: two trees, greedy connect.
 //! - [`NearestIndex`]: the k-d tree (kiddo) behind one small type, plain distances.
+//! - [`GrowTree`]: the one tree of the family (node ids, parent links, optional
+//!   costs-to-come, the nearest index) with its operations: [`extend`](GrowTree::extend)
+//!   (one RRT step, an [`Extension`]), [`step_towards`](GrowTree::step_towards) (a
+//!   [`Step`] left to the caller to check), the exact goal join, RRT*'s choose-parent,
+//!   rewiring and [`reparent`](GrowTree::reparent), branches and the [`Tree`] of a plan.
+//!   The hybrids and the exploration's frontier detectors grow this tree too.
+//! - [`Run`]: the frame of a run (checks, iterations against the budget, the observer
+//!   every [`OBSERVE_EVERY`] iterations, statistics).
+//! - [`impl_planner!`]: the [`Planner`] implementation (and the generic `plan`) of a
+//!   planner, written once.
 //! - [`toolkit`], re-exported here: the building blocks the planners are made of, for
-//!   planners in other crates: [`steer`], [`sample_uniform`], [`sample_goal_biased`], [`CountingChecker`],
-//!   [`branch`], [`StarTree`], [`validate_step_and_budget`] and [`check_connected`] (the
-//!   connectivity proof before sampling). Parameter checks are
-//!   [`hyplan_core::check`]'s, shared by every planner.
+//!   planners in other crates: [`steer`], [`sample_uniform`], [`sample_goal_biased`],
+//!   [`sample_accepted`], [`CountingChecker`], [`branch`], [`plan_of_path`],
+//!   [`validate_step_and_budget`], and [`check_connected`] / [`require_connected`] (the
+//!   connectivity proof before sampling). Parameter checks are [`hyplan_core::check`]'s,
+//!   shared by every planner.
 //!
 //! # Guarantees
 //!
@@ -79,19 +90,23 @@
 //!
 //! The planners take and return `hyplan-core`'s types, re-exported here so one dependency
 //! is enough: [`Workspace`], [`Query`], [`Goal`], [`Plan`], [`PlanError`], [`Budget`],
-//! [`Point2`], [`Bounds`], [`Planner`], [`Tree`]. The RNG argument is any [`rand::Rng`] of `rand` 0.9
+//! [`Point2`], [`Bounds`], [`Planner`], [`PlannerInfo`], [`Progress`], [`Tree`]. The RNG argument is any [`rand::Rng`] of `rand` 0.9
 //! (re-exported as [`rand`]); `rand_chacha`'s `ChaCha8Rng` 0.9 is what hyplan itself uses.
 
 mod bi_rrt;
 mod common;
+mod macros;
 mod nearest;
 mod rrt;
 mod rrt_connect;
 mod rrt_star;
+mod run;
 pub mod toolkit;
+mod tree;
 
 pub use hyplan_core::{
-    Bounds, Budget, Goal, Plan, PlanError, Planner, Point2, Query, Tree, Workspace,
+    Bounds, Budget, Goal, Plan, PlanError, Planner, PlannerInfo, Point2, Progress, Query, Tree,
+    Workspace,
 };
 pub use rand;
 
@@ -100,10 +115,12 @@ pub use nearest::NearestIndex;
 pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::{RewireRadius, RrtStar};
+pub use run::{OBSERVE_EVERY, Run};
 pub use toolkit::{
-    CountingChecker, StarTree, branch, check_connected, sample_goal_biased, sample_uniform, steer,
-    validate_step_and_budget,
+    CountingChecker, branch, check_connected, plan_of_path, require_connected, sample_accepted,
+    sample_goal_biased, sample_uniform, steer, validate_step_and_budget,
 };
+pub use tree::{Extension, GrowTree, Step};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

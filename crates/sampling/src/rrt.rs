@@ -4,16 +4,12 @@
 //! goal region.
 
 use std::ops::ControlFlow;
-use std::time::Instant;
 
-use hyplan_core::{
-    Budget, Plan, PlanError, Planner, PlannerInfo, Progress, Query, Tree, Workspace,
-};
+use hyplan_core::{Budget, Plan, PlanError, Progress, Query, Workspace};
 use rand::Rng;
-use rand::RngCore;
 
-use crate::common::{self, GrowTree};
 use crate::toolkit::{self, CountingChecker};
+use crate::{Extension, GrowTree, Run};
 
 /// The RRT planner's parameters.
 ///
@@ -76,7 +72,9 @@ impl Default for Rrt {
 }
 
 impl Rrt {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
+    /// observer called every 64 iterations with the progress so far; returning
+    /// `ControlFlow::Break(())` stops the run (reported as [`PlanError::BudgetExhausted`]).
     ///
     /// # Errors
     ///
@@ -84,22 +82,6 @@ impl Rrt {
     /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
     /// workspace or blocked; [`PlanError::BudgetExhausted`] (with the statistics) when the
     /// budget runs out before the goal region is reached.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_with(ws, query, rng, &mut common::keep_going)
-    }
-
-    /// [`plan`](Self::plan) with an observer, called every 64 iterations with the progress
-    /// so far; returning `ControlFlow::Break(())` stops the run (reported as
-    /// [`PlanError::BudgetExhausted`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_with<W, R, F>(
         &self,
         ws: &W,
@@ -112,82 +94,37 @@ impl Rrt {
         R: Rng + ?Sized,
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
-        let started = Instant::now();
-        let budget = self.budget.for_sampling(ws.cells());
-        toolkit::validate_step_and_budget(self.step, &budget, ws, query)?;
+        let mut run = Run::start(self.step, &self.budget, ws, query)?;
         hyplan_core::check::probability("goal_bias", self.goal_bias)?;
-        toolkit::check_connected(ws, query, started)?;
+        run.check_connected(ws, query)?;
         let goal = query.goal;
         let mut checker = CountingChecker::new(ws);
         let mut tree = GrowTree::rooted_at(query.start);
-        let mut iterations = 0_u64;
         let mut reached = goal.contains(query.start).then_some(0_usize);
 
-        while reached.is_none() && !budget.exhausted(iterations, started) {
-            iterations += 1;
-            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
-                let progress = Progress {
-                    iterations,
-                    nodes: tree.len() as u64,
-                    best_cost: None,
-                };
-                if observer(&progress).is_break() {
-                    break;
-                }
+        while reached.is_none() && run.next_iteration() {
+            if run.observe(observer, || (tree.len(), None)).is_break() {
+                break;
             }
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
             let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
-            // Nearest: the tree node closest to the sample.
-            let Some((near, _)) = tree.index.nearest(sample) else {
-                break;
+            // Nearest, steer one step towards the sample, check the edge exactly, add.
+            let new = match tree.extend(sample, self.step, &mut checker) {
+                Extension::Added { new, .. } => new,
+                Extension::Refused => continue,
+                Extension::NoNode => break,
             };
-            let near_point = tree.index.point(near);
-            // Steer: at most one step from the nearest node towards the sample.
-            let new_point = toolkit::steer(near_point, sample, self.step);
-            if new_point == near_point {
-                continue;
-            }
-            // Segment free: the whole edge, exactly.
-            if !checker.segment_free(near_point, new_point) {
-                continue;
-            }
-            // Add the new node with its parent.
-            let new = tree.add(new_point, near);
             // Goal test: inside the goal region, or an exact goal point one free step away.
-            if goal.contains(new_point) {
-                reached = Some(new);
-            } else if let Some(g) = common::exact_goal_within(&goal, new_point, self.step)
-                && checker.segment_free(new_point, g)
-            {
-                reached = Some(tree.add(g, new));
-            }
+            reached = if goal.contains(tree.point(new)) {
+                Some(new)
+            } else {
+                tree.join_goal(new, &goal, self.step, &mut checker)
+            };
         }
 
-        let stats = common::stats(iterations, tree.len(), checker.checks, started);
-        let tree = Tree {
-            points: tree.index.points().to_vec(),
-            parent: tree.parent,
-        };
-        common::tree_plan(tree, reached, stats)
+        let stats = run.stats(tree.len(), checker.checks);
+        tree.into_plan(reached, stats)
     }
 }
 
-impl Planner for Rrt {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "rrt",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: false,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        Rrt::plan(self, ws, query, rng)
-    }
-}
+crate::impl_planner!(Rrt, "rrt", optimizing: |_rrt| false, plan: plan_with);

@@ -4,13 +4,12 @@
 
 use std::ops::ControlFlow;
 
-use hyplan_core::{
-    Budget, Plan, PlanError, Planner, PlannerInfo, Point2, Progress, Query, Workspace,
-};
-use rand::{Rng, RngCore};
+use hyplan_core::{Budget, Plan, PlanError, Point2, Progress, Query, Workspace};
+use rand::Rng;
 
-use crate::common::{self, GrowTree};
-use crate::toolkit::{self, CountingChecker};
+use crate::GrowTree;
+use crate::common;
+use crate::toolkit::CountingChecker;
 
 /// The outcome of one extension step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -80,23 +79,19 @@ fn extend<W: Workspace + ?Sized>(
     step: f64,
     checker: &mut CountingChecker<'_, W>,
 ) -> ExtendStatus {
-    // Nearest: the tree node closest to the target.
-    let Some((near, _)) = tree.index.nearest(target) else {
+    // Nearest and steer: at most one step from the nearest node towards the target.
+    let Some(s) = tree.step_towards(target, step) else {
         return ExtendStatus::Trapped;
     };
-    let near_point = tree.index.point(near);
-    if near_point == target {
-        return ExtendStatus::Reached(near);
+    if s.from == target {
+        return ExtendStatus::Reached(s.near);
     }
-    // Steer: at most one step towards the target.
-    let new_point = toolkit::steer(near_point, target, step);
-    // Segment free: exactly.
-    if !checker.segment_free(near_point, new_point) {
+    // Segment free: exactly; then add.
+    if !checker.segment_free(s.from, s.to) {
         return ExtendStatus::Trapped;
     }
-    // Add.
-    let new = tree.add(new_point, near);
-    if new_point == target {
+    let new = tree.add(s.to, s.near);
+    if s.to == target {
         ExtendStatus::Reached(new)
     } else {
         ExtendStatus::Advanced(new)
@@ -104,28 +99,15 @@ fn extend<W: Workspace + ?Sized>(
 }
 
 impl RrtConnect {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
+    /// observer called every 64 iterations; `ControlFlow::Break(())` stops the run
+    /// ([`PlanError::BudgetExhausted`]).
     ///
     /// # Errors
     ///
     /// [`PlanError::InvalidParameter`] for a bad step or budget; [`PlanError::InvalidStart`] /
     /// [`PlanError::InvalidGoal`] for a query outside the workspace or blocked;
     /// [`PlanError::BudgetExhausted`] (with the statistics) when the trees did not meet.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_with(ws, query, rng, &mut common::keep_going)
-    }
-
-    /// [`plan`](Self::plan) with an observer, called every 64 iterations;
-    /// `ControlFlow::Break(())` stops the run ([`PlanError::BudgetExhausted`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_with<W, R, F>(
         &self,
         ws: &W,
@@ -149,7 +131,7 @@ impl RrtConnect {
                 ExtendStatus::Trapped => return None,
                 ExtendStatus::Reached(n) | ExtendStatus::Advanced(n) => n,
             };
-            let target = trees[active].index.point(new);
+            let target = trees[active].point(new);
             // Goal test: the start tree inside a goal disc ends the search by itself.
             if active == 0 && goal.radius() > 0.0 && goal.contains(target) {
                 return Some((new, None));
@@ -159,7 +141,7 @@ impl RrtConnect {
             loop {
                 match extend(&mut trees[other], target, step, checker) {
                     ExtendStatus::Advanced(m) => {
-                        let p = trees[other].index.point(m);
+                        let p = trees[other].point(m);
                         if other == 0 && goal.radius() > 0.0 && goal.contains(p) {
                             return Some((m, None));
                         }
@@ -179,22 +161,4 @@ impl RrtConnect {
     }
 }
 
-impl Planner for RrtConnect {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "rrt-connect",
-            optimizing: false,
-            proves_no_path: false,
-            grid_only: false,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        RrtConnect::plan(self, ws, query, rng)
-    }
-}
+crate::impl_planner!(RrtConnect, "rrt-connect", optimizing: |_rrt_connect| false, plan: plan_with);

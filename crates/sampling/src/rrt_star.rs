@@ -2,15 +2,12 @@
 //! optimal variant that seed `003` builds on.
 
 use std::ops::ControlFlow;
-use std::time::Instant;
 
-use hyplan_core::{
-    Budget, Plan, PlanError, Planner, PlannerInfo, Progress, Query, Tree, Workspace,
-};
-use rand::{Rng, RngCore};
+use hyplan_core::{Budget, Plan, PlanError, Point2, Progress, Query, Workspace};
+use rand::Rng;
 
-use crate::common;
-use crate::toolkit::{self, CountingChecker, StarTree};
+use crate::toolkit::{self, CountingChecker};
+use crate::{GrowTree, Run};
 
 /// How RRT* picks the neighbours it considers as parents and rewires.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -118,7 +115,10 @@ impl RrtStar {
         }
     }
 
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`.
+    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
+    /// observer called every 64 iterations with the progress (including the best cost so
+    /// far); `ControlFlow::Break(())` stops the run and returns the best path found so far,
+    /// or [`PlanError::BudgetExhausted`] if there is none.
     ///
     /// # Errors
     ///
@@ -126,22 +126,6 @@ impl RrtStar {
     /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
     /// workspace or blocked; [`PlanError::BudgetExhausted`] (with the statistics) when no
     /// node reached the goal region within the budget.
-    pub fn plan<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Plan, PlanError> {
-        self.plan_with(ws, query, rng, &mut common::keep_going)
-    }
-
-    /// [`plan`](Self::plan) with an observer, called every 64 iterations with the progress
-    /// (including the best cost so far); `ControlFlow::Break(())` stops the run and returns
-    /// the best path found so far, or [`PlanError::BudgetExhausted`] if there is none.
-    ///
-    /// # Errors
-    ///
-    /// As [`plan`](Self::plan).
     pub fn plan_with<W, R, F>(
         &self,
         ws: &W,
@@ -154,12 +138,10 @@ impl RrtStar {
         R: Rng + ?Sized,
         F: FnMut(&Progress) -> ControlFlow<()>,
     {
-        let started = Instant::now();
-        let budget = self.budget.for_sampling(ws.cells());
-        toolkit::validate_step_and_budget(self.step, &budget, ws, query)?;
+        let mut run = Run::start(self.step, &self.budget, ws, query)?;
         hyplan_core::check::probability("goal_bias", self.goal_bias)?;
         self.validate_rewire()?;
-        toolkit::check_connected(ws, query, started)?;
+        run.check_connected(ws, query)?;
         let goal = query.goal;
         let bounds = ws.bounds();
         let gamma = match self.rewire {
@@ -170,134 +152,77 @@ impl RrtStar {
             RewireRadius::KNearest(_) => 0.0,
         };
         let mut checker = CountingChecker::new(ws);
-        let mut tree = StarTree::rooted_at(query.start);
+        let mut tree = GrowTree::with_costs(query.start);
         // Nodes in the goal region; the best is chosen at the end (rewiring changes costs).
         let mut goal_nodes: Vec<usize> = Vec::new();
         let mut exact_goal_node: Option<usize> = None;
         if goal.contains(query.start) {
             goal_nodes.push(0);
         }
-        let mut iterations = 0_u64;
         let mut near: Vec<(usize, f64)> = Vec::new();
-        let mut candidates: Vec<(f64, usize, f64)> = Vec::new();
+        let mut candidates: Vec<(f64, usize)> = Vec::new();
 
-        while (!self.stop_at_first_solution || goal_nodes.is_empty())
-            && !budget.exhausted(iterations, started)
-        {
-            iterations += 1;
-            if iterations.is_multiple_of(common::OBSERVE_EVERY) {
-                let progress = Progress {
-                    iterations,
-                    nodes: tree.parent.len() as u64,
-                    best_cost: goal_nodes
-                        .iter()
-                        .map(|&g| tree.cost[g])
-                        .min_by(f64::total_cmp),
-                };
-                if observer(&progress).is_break() {
-                    break;
-                }
+        while (!self.stop_at_first_solution || goal_nodes.is_empty()) && run.next_iteration() {
+            let progress = || {
+                let best = goal_nodes.iter().map(|&g| tree.cost(g));
+                (tree.len(), best.min_by(f64::total_cmp))
+            };
+            if run.observe(observer, progress).is_break() {
+                break;
             }
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
             let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
-            // Nearest: the tree node closest to the sample.
-            let Some((nearest, _)) = tree.index.nearest(sample) else {
+            // Nearest and steer: at most one step from the nearest node towards the sample.
+            let Some(step) = tree.step_towards(sample, self.step) else {
                 break;
             };
-            let nearest_point = tree.index.point(nearest);
-            // Steer: at most one step towards the sample.
-            let new_point = toolkit::steer(nearest_point, sample, self.step);
-            if new_point == nearest_point {
-                continue;
-            }
+            let new_point = step.to;
             // Segment free: the edge from the nearest node, exactly.
-            if !checker.segment_free(nearest_point, new_point) {
+            if new_point == step.from || !checker.segment_free(step.from, new_point) {
                 continue;
             }
             // Near: the neighbours considered as parents and for rewiring.
-            let n = tree.parent.len() as f64;
+            let n = tree.len() as f64;
             match self.rewire {
-                RewireRadius::KNearest(k) => near = tree.index.nearest_k(new_point, k),
+                RewireRadius::KNearest(k) => near = tree.nearest_k(new_point, k),
                 _ => {
                     let radius = (gamma * ((n + 1.0).ln() / (n + 1.0)).sqrt()).min(self.step);
-                    tree.index.within_into(new_point, radius, &mut near);
+                    tree.within_into(new_point, radius, &mut near);
                 }
             }
-            // Choose parent: the cheapest cost-to-come through a free edge; the nearest node
-            // is known to be free, so candidates cheaper than it are checked in cost order.
-            let nearest_cost = tree.cost[nearest] + (new_point - nearest_point).norm();
-            candidates.clear();
-            candidates.extend(
-                near.iter()
-                    .filter(|&&(i, _)| i != nearest)
-                    .map(|&(i, d)| (tree.cost[i] + d, i, d))
-                    .filter(|&(c, _, _)| c < nearest_cost),
+            // Choose parent: the cheapest cost-to-come through a free edge.
+            let through_nearest = tree.cost(step.near) + (new_point - step.from).norm();
+            let length = |_: Point2, d: f64| d;
+            let (parent, cost) = tree.choose_parent(
+                new_point,
+                (step.near, through_nearest),
+                &near,
+                length,
+                &mut checker,
+                &mut candidates,
             );
-            candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-            let mut parent = (nearest, nearest_cost);
-            for &(c, i, _) in &candidates {
-                if checker.segment_free(tree.index.point(i), new_point) {
-                    parent = (i, c);
-                    break;
-                }
-            }
-            // Add the new node under its chosen parent.
-            let new = tree.add(new_point, parent.0, parent.1);
-            // Rewire: neighbours that become cheaper through the new node change parent.
-            for &(i, d) in &near {
-                if i == parent.0 {
-                    continue;
-                }
-                let through_new = parent.1 + d;
-                if through_new < tree.cost[i]
-                    && checker.segment_free(new_point, tree.index.point(i))
-                {
-                    tree.reparent(i, new, through_new);
-                }
-            }
+            // Add the new node under its chosen parent; rewire the neighbours that become
+            // cheaper through it.
+            let new = tree.add_with_cost(new_point, parent, cost);
+            tree.rewire(new, &near, length, &mut checker);
             // Goal test: in the goal region, or an exact goal point one free step away.
             if goal.contains(new_point) {
                 goal_nodes.push(new);
             } else if exact_goal_node.is_none()
-                && let Some(g) = common::exact_goal_within(&goal, new_point, self.step)
-                && checker.segment_free(new_point, g)
+                && let Some(id) = tree.join_goal(new, &goal, self.step, &mut checker)
             {
-                let id = tree.add(g, new, parent.1 + (g - new_point).norm());
                 exact_goal_node = Some(id);
                 goal_nodes.push(id);
             }
         }
 
-        let points = tree.points();
-        let stats = common::stats(iterations, points.len(), checker.checks, started);
+        let stats = run.stats(tree.len(), checker.checks);
         let best = goal_nodes
             .iter()
             .copied()
-            .min_by(|&a, &b| tree.cost[a].total_cmp(&tree.cost[b]).then(a.cmp(&b)));
-        let tree = Tree {
-            points,
-            parent: tree.parent,
-        };
-        common::tree_plan(tree, best, stats)
+            .min_by(|&a, &b| tree.cost(a).total_cmp(&tree.cost(b)).then(a.cmp(&b)));
+        tree.into_plan(best, stats)
     }
 }
 
-impl Planner for RrtStar {
-    fn info(&self) -> PlannerInfo {
-        PlannerInfo {
-            name: "rrt-star",
-            optimizing: !self.stop_at_first_solution,
-            proves_no_path: false,
-            grid_only: false,
-        }
-    }
-
-    fn plan(
-        &self,
-        ws: &dyn Workspace,
-        query: &Query,
-        rng: &mut dyn RngCore,
-    ) -> Result<Plan, PlanError> {
-        RrtStar::plan(self, ws, query, rng)
-    }
-}
+crate::impl_planner!(RrtStar, "rrt-star", optimizing: |planner| !planner.stop_at_first_solution, plan: plan_with);

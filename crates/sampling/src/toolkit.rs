@@ -1,6 +1,8 @@
 //! The building blocks every sampling planner is made of, public so that planners in
 //! other crates (the hybrids) grow their trees exactly as these do: parameter checks,
-//! uniform and goal-biased sampling, steering, a counted collision checker and branch extraction.
+//! uniform and goal-biased sampling, steering, a counted collision checker, branch extraction
+//! and the plan of a path. The tree itself is [`GrowTree`](crate::GrowTree), the frame of a
+//! run [`Run`](crate::Run).
 //!
 //! Each piece is the textbook step of RRT (LaValle 1998; seed `000_9b224721fe327833.txt`
 //! section 4.2) and draws nothing from the RNG beyond what its documentation says, so a
@@ -36,10 +38,10 @@
 
 use std::time::Instant;
 
-use hyplan_core::{Budget, PlanError, PlanStats, Point2, Query, Workspace};
+use hyplan_core::{
+    Bounds, Budget, NoPathCause, Plan, PlanError, PlanStats, Point2, Query, Workspace,
+};
 use rand::Rng;
-
-use crate::NearestIndex;
 
 /// Validates what every tree-growing planner has, in this order: the step (finite and
 /// positive), the budget, the workspace bounds (a finite, positive area to sample in)
@@ -83,7 +85,26 @@ pub fn check_connected<W: Workspace + ?Sized>(
     query: &Query,
     started: Instant,
 ) -> Result<(), PlanError> {
-    match ws.disconnection(query) {
+    require_connected(ws.disconnection(query), started)
+}
+
+/// The end of a proof step: `Ok` when no `cause` of disconnection was found, else
+/// [`PlanError::Disconnected`] with it, for a planner whose proof is not (only) the
+/// workspace's own [`Workspace::disconnection`] (see [`check_connected`]).
+///
+/// # Errors
+///
+/// [`PlanError::Disconnected`] with `cause` and the time since `started`.
+///
+/// ```
+/// use hyplan_core::{NoPathCause, PlanError};
+/// let started = std::time::Instant::now();
+/// assert!(sampling::require_connected(None, started).is_ok());
+/// let err = sampling::require_connected(Some(NoPathCause::Wall), started).unwrap_err();
+/// assert!(matches!(err, PlanError::Disconnected { .. }));
+/// ```
+pub fn require_connected(cause: Option<NoPathCause>, started: Instant) -> Result<(), PlanError> {
+    match cause {
         None => Ok(()),
         Some(cause) => Err(PlanError::Disconnected {
             cause,
@@ -101,11 +122,41 @@ pub fn check_connected<W: Workspace + ?Sized>(
 /// RRT.
 #[inline]
 pub fn sample_uniform<W: Workspace + ?Sized, R: Rng + ?Sized>(ws: &W, rng: &mut R) -> Point2 {
-    let b = ws.bounds();
+    uniform_in(&ws.bounds(), rng)
+}
+
+/// A uniform sample in `b`: two draws from `rng`, x then y.
+#[inline]
+fn uniform_in<R: Rng + ?Sized>(b: &Bounds, rng: &mut R) -> Point2 {
     Point2::new(
         b.min.x + hyplan_core::uniform01(rng) * b.width(),
         b.min.y + hyplan_core::uniform01(rng) * b.height(),
     )
+}
+
+/// A uniform sample in `bounds` that `accept` takes (a free point, a point in a zone), by
+/// rejection: at most `tries` samples of two draws each (x then y), in order; `None` when
+/// every one was refused.
+///
+/// ```
+/// use hyplan_core::{Bounds, Point2};
+/// use rand::SeedableRng;
+/// let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(10.0, 10.0));
+/// let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+/// let p = sampling::sample_accepted(&bounds, 100, &mut rng, |p| p.x > 5.0).unwrap();
+/// assert!(p.x > 5.0);
+/// assert_eq!(sampling::sample_accepted(&bounds, 100, &mut rng, |_| false), None);
+/// ```
+pub fn sample_accepted<R: Rng + ?Sized>(
+    bounds: &Bounds,
+    tries: usize,
+    rng: &mut R,
+    mut accept: impl FnMut(Point2) -> bool,
+) -> Option<Point2> {
+    (0..tries).find_map(|_| {
+        let p = uniform_in(bounds, rng);
+        accept(p).then_some(p)
+    })
 }
 
 /// The goal-biased sample of RRT: with probability `goal_bias` the goal centre `goal`,
@@ -202,84 +253,25 @@ pub fn branch(points: &[Point2], parent: &[Option<u32>], leaf: usize) -> Vec<Poi
     path
 }
 
-/// The RRT* tree (Karaman and Frazzoli 2011): nodes in a nearest-neighbour index, with
-/// parent links, costs-to-come and child lists, so that rewiring a node shifts the cost of
-/// its whole subtree. Node ids are insertion order, the root is node 0.
+/// A plan whose path is `path`: its cost is the path's length, with `trees` and `stats`
+/// and no waypoints.
 ///
 /// ```
-/// use hyplan_core::Point2;
-/// use sampling::StarTree;
-///
-/// let mut tree = StarTree::rooted_at(Point2::new(0.0, 0.0));
-/// let a = tree.add(Point2::new(2.0, 0.0), 0, 2.0);
-/// let b = tree.add(Point2::new(3.0, 0.0), a, 3.0);
-/// // Rewire: `a` gets a cheaper parent; its child `b` follows.
-/// tree.reparent(a, 0, 1.5);
-/// assert_eq!(tree.cost[b], 2.5);
-/// assert_eq!(tree.points().len(), 3);
+/// use hyplan_core::{PlanStats, Point2};
+/// let plan = sampling::plan_of_path(
+///     vec![Point2::new(0.0, 0.0), Point2::new(3.0, 4.0)],
+///     Vec::new(),
+///     PlanStats::default(),
+/// );
+/// assert_eq!(plan.cost, 5.0);
 /// ```
-pub struct StarTree {
-    /// The nodes, by id.
-    pub index: NearestIndex,
-    /// Each node's parent (`None` for the root).
-    pub parent: Vec<Option<u32>>,
-    /// Each node's cost-to-come from the root.
-    pub cost: Vec<f64>,
-    /// Each node's children.
-    pub children: Vec<Vec<u32>>,
-}
-
-impl StarTree {
-    /// A tree holding only `root`, at cost 0.
-    pub fn rooted_at(root: Point2) -> Self {
-        Self {
-            index: NearestIndex::rooted_at(root),
-            parent: vec![None],
-            cost: vec![0.0],
-            children: vec![Vec::new()],
-        }
-    }
-
-    /// Adds `p` under `parent` with cost-to-come `cost`; returns its id.
-    ///
-    /// # Panics
-    ///
-    /// If `parent` is not a node of the tree.
-    pub fn add(&mut self, p: Point2, parent: usize, cost: f64) -> usize {
-        let id = self.index.insert(p);
-        self.parent.push(Some(parent as u32));
-        self.cost.push(cost);
-        self.children.push(Vec::new());
-        self.children[parent].push(id as u32);
-        id
-    }
-
-    /// Rewires: makes `new_parent` the parent of `node`, with cost `cost`, and shifts the
-    /// costs of the whole subtree of `node` by the same amount.
-    ///
-    /// # Panics
-    ///
-    /// If `node` or `new_parent` is not a node of the tree.
-    pub fn reparent(&mut self, node: usize, new_parent: usize, cost: f64) {
-        if let Some(old) = self.parent[node] {
-            let siblings = &mut self.children[old as usize];
-            if let Some(pos) = siblings.iter().position(|&c| c as usize == node) {
-                siblings.swap_remove(pos);
-            }
-        }
-        self.parent[node] = Some(new_parent as u32);
-        self.children[new_parent].push(node as u32);
-        let delta = cost - self.cost[node];
-        self.cost[node] = cost;
-        let mut stack: Vec<u32> = self.children[node].clone();
-        while let Some(c) = stack.pop() {
-            self.cost[c as usize] += delta;
-            stack.extend_from_slice(&self.children[c as usize]);
-        }
-    }
-
-    /// The node points in id order.
-    pub fn points(&self) -> Vec<Point2> {
-        self.index.points().to_vec()
+#[must_use]
+pub fn plan_of_path(path: Vec<Point2>, trees: Vec<hyplan_core::Tree>, stats: PlanStats) -> Plan {
+    Plan {
+        cost: hyplan_core::path_length(&path),
+        path,
+        trees,
+        waypoints: Vec::new(),
+        stats,
     }
 }

@@ -11,13 +11,13 @@
 //! reachable space (`#` occupied, `.` free, ` ` unknown, `?` reachable but unknown, `!`
 //! reachable but occupied, `o` robot, `g` goals, `x` given up).
 
+use envmap::{Connectivity, Mask, clusters};
 use hyplan_core::Point2;
 use sim::explore::frontier::costmap_steps;
 use sim::explore::{information_gain, reachable_free};
 use sim::mapping::{FREE, OCCUPIED};
 use sim::{CostmapBuilder, Scenario, Strategy};
 
-#[allow(clippy::too_many_lines)]
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
     let path = std::path::PathBuf::from(
@@ -44,6 +44,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         out.distance,
         out.contact_ticks,
     );
+    print_goals(&out);
+    diagnose(&scenario, &world, &out, draw)
+}
+
+/// Every goal: when, why it ended, what the navigator did for it.
+fn print_goals(out: &sim::ExploreOutcome) {
     println!("goals:");
     for g in &out.goal_log {
         println!(
@@ -61,6 +67,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             g.driven
         );
     }
+}
+
+/// The patches of reachable free space not known free at the end, and why.
+fn diagnose(
+    scenario: &Scenario,
+    world: &sim::World,
+    out: &sim::ExploreOutcome,
+    draw: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
     let map = &out.map;
     let res = map.params.resolution;
     let o = map.origin();
@@ -69,7 +84,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res)
     };
     let start = Point2::new(scenario.start.0, scenario.start.1);
-    let (_, reach) = reachable_free(&world, res, start);
+    let (_, reach) = reachable_free(world, res, start);
     let missing = |c: usize| reach[c] && map.value(c % w, c / w) != FREE;
     let last = out.snapshots.last().ok_or("no snapshot")?;
     let costmaps = CostmapBuilder::new(
@@ -81,13 +96,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let costmap = costmaps.build(Some(map), &[]);
     let here = Point2::new(last.pose.x, last.pose.y);
     let steps = costmap_steps(&costmap, here);
-    let cb = costmap.map.bounds();
-    let cres = costmap.map.resolution();
     let cw = costmap.map.width();
     let steps_at = |p: Point2| {
-        let u = ((p.x - cb.min.x) / cres) as usize;
-        let v = ((p.y - cb.min.y) / cres) as usize;
-        steps.get(v * cw + u).copied().unwrap_or(u32::MAX)
+        let cell = costmap.map.world_to_cell(p);
+        cell.map_or(u32::MAX, |(u, v)| steps[v * cw + u])
     };
     let inflation = costmaps.inflation();
     let reachable_cells = steps.iter().filter(|&&s| s != u32::MAX).count();
@@ -119,35 +131,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .map(|g| g.target)
             .any(|b| (b - p).norm() <= scenario.exploration.blacklist_radius)),
     );
-    let mut seen = vec![false; w * h];
-    let mut patches = Vec::new();
-    for c0 in 0..w * h {
-        if seen[c0] || !missing(c0) {
-            continue;
-        }
-        seen[c0] = true;
-        let mut cells = vec![c0];
-        let mut k = 0;
-        while k < cells.len() {
-            let c = cells[k];
-            k += 1;
-            let (i, j) = ((c % w) as i64, (c / w) as i64);
-            for dj in -1..=1 {
-                for di in -1..=1 {
-                    let (a, b) = (i + di, j + dj);
-                    if a < 0 || b < 0 || a as usize >= w || b as usize >= h {
-                        continue;
-                    }
-                    let n = b as usize * w + a as usize;
-                    if !seen[n] && missing(n) {
-                        seen[n] = true;
-                        cells.push(n);
-                    }
-                }
-            }
-        }
-        patches.push(cells);
-    }
+    let missing_mask =
+        Mask::from_cells(w, h, (0..w * h).map(missing).collect()).ok_or("map size")?;
+    let all = (0..h).flat_map(|j| (0..w).map(move |i| (i, j)));
+    let mut patches: Vec<Vec<usize>> = clusters(&missing_mask, all, Connectivity::Eight)
+        .into_iter()
+        .map(|c| c.into_iter().map(|(i, j)| j * w + i).collect())
+        .collect();
     patches.sort_by_key(|p| std::cmp::Reverse(p.len()));
     let total: usize = patches.iter().map(Vec::len).sum();
     println!(
@@ -183,21 +173,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             (x + p.x, y + p.y)
         });
         let mid = Point2::new(sx / n, sy / n);
-        // Free cells of the built map touching the patch (4-neighbours): its frontier.
-        let mut border = Vec::new();
-        for &c in cells {
-            let (i, j) = (c % w, c / w);
-            for (a, b) in [
-                (i + 1, j),
-                (i.wrapping_sub(1), j),
-                (i, j + 1),
-                (i, j.wrapping_sub(1)),
-            ] {
-                if a < w && b < h && map.value(a, b) == FREE && !border.contains(&(a, b)) {
-                    border.push((a, b));
-                }
-            }
-        }
+        let border = border_of(map, cells);
         let best_gain = border
             .iter()
             .map(|&(a, b)| information_gain(map, centre(a, b), scenario.exploration.filter_radius))
@@ -206,22 +182,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .iter()
             .map(|&(a, b)| sim::explore::filter::built_cost(map, &inflation, centre(a, b)))
             .min();
-        // Reachable costmap cell nearest to the patch (straight line).
-        let mut nearest_reach = f64::INFINITY;
-        for v in 0..costmap.map.height() {
-            for u in 0..cw {
-                if steps[v * cw + u] == u32::MAX {
-                    continue;
-                }
-                let q = Point2::new(
-                    cb.min.x + (u as f64 + 0.5) * cres,
-                    cb.min.y + (v as f64 + 0.5) * cres,
-                );
-                for &c in cells {
-                    nearest_reach = nearest_reach.min((centre(c % w, c / w) - q).norm());
-                }
-            }
-        }
+        let nearest_reach = nearest_reachable(&costmap, &steps, map, cells);
         let border_reachable = border
             .iter()
             .filter(|&&(a, b)| steps_at(centre(a, b)) != u32::MAX)
@@ -251,37 +212,86 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     if draw {
-        let (mut i0, mut i1, mut j0, mut j1) = (w, 0, h, 0);
-        for c in (0..w * h).filter(|&c| reach[c]) {
-            i0 = i0.min(c % w);
-            i1 = i1.max(c % w);
-            j0 = j0.min(c / w);
-            j1 = j1.max(c / w);
-        }
-        let cell = |p: &Point2| map.cell_of(*p);
-        for j in (j0.saturating_sub(2)..=(j1 + 2).min(h - 1)).rev() {
-            let mut line = String::new();
-            for i in i0.saturating_sub(2)..=(i1 + 2).min(w - 1) {
-                let c = j * w + i;
-                let ch = if cell(&here) == Some((i, j)) {
-                    'o'
-                } else if out.blacklisted.iter().any(|p| cell(p) == Some((i, j))) {
-                    'x'
-                } else if out.goals.iter().any(|(_, p)| cell(p) == Some((i, j))) {
-                    'g'
-                } else {
-                    match (reach[c], map.value(i, j)) {
-                        (true, OCCUPIED) => '!',
-                        (true, v) if v != FREE => '?',
-                        (_, OCCUPIED) => '#',
-                        (_, FREE) => '.',
-                        _ => ' ',
-                    }
-                };
-                line.push(ch);
-            }
-            println!("{line}");
-        }
+        draw_map(map, &reach, here, out);
     }
     Ok(())
+}
+
+/// Free cells of the built map touching the patch (4-neighbours): its frontier.
+fn border_of(map: &sim::OccupancyGrid, cells: &[usize]) -> Vec<(usize, usize)> {
+    let (w, h) = (map.width(), map.height());
+    let mut border = Vec::new();
+    for &c in cells {
+        let (i, j) = (c % w, c / w);
+        for (a, b) in [
+            (i + 1, j),
+            (i.wrapping_sub(1), j),
+            (i, j + 1),
+            (i, j.wrapping_sub(1)),
+        ] {
+            if a < w && b < h && map.value(a, b) == FREE && !border.contains(&(a, b)) {
+                border.push((a, b));
+            }
+        }
+    }
+    border
+}
+
+/// Straight-line distance from the patch to the nearest reachable costmap cell, m.
+fn nearest_reachable(
+    costmap: &sim::Costmap,
+    steps: &[u32],
+    map: &sim::OccupancyGrid,
+    cells: &[usize],
+) -> f64 {
+    let w = map.width();
+    let mut nearest = f64::INFINITY;
+    for v in 0..costmap.map.height() {
+        for u in 0..costmap.map.width() {
+            if steps[v * costmap.map.width() + u] == u32::MAX {
+                continue;
+            }
+            let q = costmap.map.cell_center(u, v);
+            for &c in cells {
+                nearest = nearest.min((map.cell_center(c % w, c / w) - q).norm());
+            }
+        }
+    }
+    nearest
+}
+
+/// The final map around the reachable space (see the module doc for the glyphs).
+fn draw_map(map: &sim::OccupancyGrid, reach: &[bool], here: Point2, out: &sim::ExploreOutcome) {
+    let (w, h) = (map.width(), map.height());
+    let (mut i0, mut i1, mut j0, mut j1) = (w, 0, h, 0);
+    for c in (0..w * h).filter(|&c| reach[c]) {
+        i0 = i0.min(c % w);
+        i1 = i1.max(c % w);
+        j0 = j0.min(c / w);
+        j1 = j1.max(c / w);
+    }
+    let cell = |p: &Point2| map.cell_of(*p);
+    for j in (j0.saturating_sub(2)..=(j1 + 2).min(h - 1)).rev() {
+        let mut line = String::new();
+        for i in i0.saturating_sub(2)..=(i1 + 2).min(w - 1) {
+            let c = j * w + i;
+            let ch = if cell(&here) == Some((i, j)) {
+                'o'
+            } else if out.blacklisted.iter().any(|p| cell(p) == Some((i, j))) {
+                'x'
+            } else if out.goals.iter().any(|(_, p)| cell(p) == Some((i, j))) {
+                'g'
+            } else {
+                match (reach[c], map.value(i, j)) {
+                    (true, OCCUPIED) => '!',
+                    (true, v) if v != FREE => '?',
+                    (_, OCCUPIED) => '#',
+                    (_, FREE) => '.',
+                    _ => ' ',
+                }
+            };
+            line.push(ch);
+        }
+        println!("{line}");
+    }
 }

@@ -122,6 +122,56 @@ pub fn along(path: &[Point2], k: usize, q: Point2, dist: f64) -> Point2 {
     *path.last().unwrap_or(&q)
 }
 
+/// What a local controller sees at a control step.
+#[derive(Debug, Clone, Copy)]
+pub struct FollowInput<'a> {
+    /// The robot's limits and size.
+    pub robot: &'a Robot,
+    /// Where it is.
+    pub pose: Pose,
+    /// The command in force.
+    pub prev: Twist,
+    /// The global path (at least two points).
+    pub path: &'a [Point2],
+    /// The segment of `path` reached so far.
+    pub progress: usize,
+    /// Recent laser hits.
+    pub memory: &'a ObstacleMemory,
+    /// Tracked moving obstacles.
+    pub movers: &'a [Mover],
+    /// The tick, for the memory's ages.
+    pub tick: u64,
+}
+
+/// A local controller: turns the global path into velocity commands and keeps the robot
+/// off what the laser saw. The navigator drives any of them; today's is regulated pure
+/// pursuit ([`Controller`]).
+pub trait LocalController: std::fmt::Debug {
+    /// The command nearest `want` that the robot's limits allow one step after `prev`.
+    fn limit(&self, robot: &Robot, prev: Twist, want: Twist) -> Twist;
+    /// One step along the path: the command (and whether the way is obstructed) and the
+    /// new progress index.
+    fn follow(&self, input: &FollowInput<'_>) -> (Command, usize);
+    /// Clearance kept around the body, m (the navigator's blocked-path test uses it).
+    fn margin(&self) -> f64;
+}
+
+impl LocalController for Controller {
+    fn limit(&self, robot: &Robot, prev: Twist, want: Twist) -> Twist {
+        Self::limit(self, robot, prev, want)
+    }
+
+    fn follow(&self, i: &FollowInput<'_>) -> (Command, usize) {
+        self.step(
+            i.robot, i.pose, i.prev, i.path, i.progress, i.memory, i.movers, i.tick,
+        )
+    }
+
+    fn margin(&self) -> f64 {
+        self.margin
+    }
+}
+
 impl Controller {
     /// Seconds per control step.
     #[must_use]

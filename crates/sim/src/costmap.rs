@@ -10,7 +10,7 @@
 //!   planner uses: `Forbidden` within the inscribed radius, `Risk` within the preferred
 //!   clearance, `Free` beyond.
 
-use envmap::{GridMap, INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE, Mask};
+use envmap::{CellFrame, GridMap, INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE, Mask};
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
@@ -63,9 +63,7 @@ const MIN_COMPACT: usize = 4096;
 /// Recent laser hits: per 5 cm cell, the last hit point and when it was seen.
 #[derive(Debug, Clone)]
 pub struct ObstacleMemory {
-    width: usize,
-    height: usize,
-    origin: Point2,
+    frame: CellFrame,
     /// Tick of the last hit plus one (0: never).
     stamp: Vec<u64>,
     point: Vec<[f32; 2]>,
@@ -89,12 +87,10 @@ impl ObstacleMemory {
     /// An empty memory over `bounds`, forgetting after `keep_ticks`.
     #[must_use]
     pub fn new(bounds: Bounds, keep_ticks: u64, obstacle_range: f64) -> Self {
-        let width = (bounds.width() / MEMORY_RESOLUTION).ceil().max(1.0) as usize;
-        let height = (bounds.height() / MEMORY_RESOLUTION).ceil().max(1.0) as usize;
+        let frame = CellFrame::covering(bounds, MEMORY_RESOLUTION);
+        let (width, height) = (frame.width, frame.height);
         Self {
-            width,
-            height,
-            origin: bounds.min,
+            frame,
             stamp: vec![0; width * height],
             explained: vec![false; width * height],
             point: vec![[0.0; 2]; width * height],
@@ -108,10 +104,7 @@ impl ObstacleMemory {
     }
 
     fn cell(&self, p: Point2) -> Option<(usize, usize)> {
-        let u = (p.x - self.origin.x) / MEMORY_RESOLUTION;
-        let v = (p.y - self.origin.y) / MEMORY_RESOLUTION;
-        (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
-            .then_some((u as usize, v as usize))
+        self.frame.cell_of(p)
     }
 
     /// The same memory, told which cells the static prior map `mapped` explains, so that
@@ -119,7 +112,7 @@ impl ObstacleMemory {
     #[must_use]
     pub fn with_prior(mut self, bounds: Bounds, mapped: &StaticWorld) -> Self {
         let (w, h, explained) = crate::tracking::static_prior(bounds, mapped, MEMORY_RESOLUTION);
-        if (w, h) == (self.width, self.height) {
+        if (w, h) == (self.frame.width, self.frame.height) {
             self.explained = explained;
         }
         self
@@ -166,7 +159,7 @@ impl ObstacleMemory {
                 p
             };
             let Some((i, j)) = self.cell(p) else { continue };
-            let c = j * self.width + i;
+            let c = j * self.frame.width + i;
             if !self.listed[c] {
                 self.listed[c] = true;
                 self.recent.push(c as u32);
@@ -225,14 +218,14 @@ impl ObstacleMemory {
     /// memory has not expired at `tick` (one comparison per cell, on a row at a time).
     fn cells_near(&self, p: Point2, radius: f64, tick: u64) -> impl Iterator<Item = usize> + '_ {
         let r = (radius / MEMORY_RESOLUTION).ceil() as i64 + 1;
-        let ci = ((p.x - self.origin.x) / MEMORY_RESOLUTION).floor() as i64;
-        let cj = ((p.y - self.origin.y) / MEMORY_RESOLUTION).floor() as i64;
-        let (w, h) = (self.width as i64, self.height as i64);
+        let (u, v) = self.frame.coords(p);
+        let (ci, cj) = (u.floor() as i64, v.floor() as i64);
+        let (w, h) = (self.frame.width as i64, self.frame.height as i64);
         let (i0, i1) = ((ci - r).max(0), (ci + r).min(w - 1));
         // Alive: stamped (not 0) and `stamp + keep >= tick + 1`.
         let oldest = (tick + 1).saturating_sub(self.keep).max(1);
         ((cj - r).max(0)..=(cj + r).min(h - 1)).flat_map(move |j| {
-            let start = j as usize * self.width;
+            let start = j as usize * self.frame.width;
             let row = if i0 <= i1 {
                 &self.stamp[start + i0 as usize..=start + i1 as usize]
             } else {
@@ -305,9 +298,7 @@ pub struct CostmapBuilder {
     pub params: CostmapParams,
     /// Robot body radius, m.
     pub body_radius: f64,
-    width: usize,
-    height: usize,
-    origin: Point2,
+    frame: CellFrame,
     /// Lethal cells of the prior map.
     prior: Vec<bool>,
 }
@@ -326,9 +317,7 @@ impl CostmapBuilder {
         Self {
             params,
             body_radius,
-            width,
-            height,
-            origin: bounds.min,
+            frame: CellFrame::new(bounds.min, params.resolution, width, height),
             prior,
         }
     }
@@ -352,15 +341,14 @@ impl CostmapBuilder {
     #[must_use]
     pub fn build(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Costmap {
         let res = self.params.resolution;
-        let mut mask = Mask::new(self.width, self.height);
+        let f = self.frame;
+        let mut mask = Mask::new(f.width, f.height);
         for (m, &p) in mask.cells_mut().iter_mut().zip(&self.prior) {
             *m = p;
         }
         let mut mark = |p: Point2| {
-            let u = (p.x - self.origin.x) / res;
-            let v = (p.y - self.origin.y) / res;
-            if u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height {
-                mask.set(u as usize, v as usize, true);
+            if let Some((i, j)) = f.cell_of(p) {
+                mask.set(i, j, true);
             }
         };
         if let Some(g) = built {
@@ -388,7 +376,7 @@ impl CostmapBuilder {
                 }
             })
             .collect();
-        let map = GridMap::from_zones(self.width, self.height, res, self.origin, zones)
+        let map = GridMap::from_zones(f.width, f.height, res, f.origin, zones)
             .expect("the builder's own size and frame are valid");
         Costmap { costs, map }
     }
@@ -399,30 +387,23 @@ impl CostmapBuilder {
 /// of `segments`: [`rasterize`]'s rule for an obstacle's outline.
 pub(crate) fn mark_near_segments(
     cells: &mut [bool],
-    (width, height): (usize, usize),
-    origin: Point2,
-    res: f64,
+    frame: CellFrame,
     segments: &[Segment],
     tolerance: f64,
 ) {
-    let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
-    let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
-        let a = ((lo - half_diag - o) / res).floor().max(0.0) as usize;
-        let b = (((hi + half_diag - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
-        a..b.max(a)
-    };
+    let half_diag = frame.resolution * std::f64::consts::FRAC_1_SQRT_2;
     for s in segments {
-        for j in cell_range(s.a.y.min(s.b.y), s.a.y.max(s.b.y), origin.y, height) {
-            for i in cell_range(s.a.x.min(s.b.x), s.a.x.max(s.b.x), origin.x, width) {
-                let c = Point2::new(
-                    origin.x + (i as f64 + 0.5) * res,
-                    origin.y + (j as f64 + 0.5) * res,
-                );
-                if !cells[j * width + i]
+        let (lo, hi) = (s.a.y.min(s.b.y), s.a.y.max(s.b.y));
+        for j in frame.rows(lo - half_diag, hi + half_diag) {
+            let (lo, hi) = (s.a.x.min(s.b.x), s.a.x.max(s.b.x));
+            for i in frame.columns(lo - half_diag, hi + half_diag) {
+                let c = frame.cell_center(i, j);
+                let k = j * frame.width + i;
+                if !cells[k]
                     && (crate::world::closest_on_segment(c, s.a, s.b) - c).norm()
                         <= half_diag + tolerance
                 {
-                    cells[j * width + i] = true;
+                    cells[k] = true;
                 }
             }
         }
@@ -435,35 +416,16 @@ pub(crate) fn mark_near_segments(
 /// bottom row).
 #[must_use]
 pub fn rasterize(bounds: Bounds, mapped: &StaticWorld, res: f64) -> (usize, usize, Vec<bool>) {
-    let width = (bounds.width() / res).ceil().max(1.0) as usize;
-    let height = (bounds.height() / res).ceil().max(1.0) as usize;
-    let origin = bounds.min;
+    let frame = CellFrame::covering(bounds, res);
+    let (width, height) = (frame.width, frame.height);
     let half_diag = res * std::f64::consts::FRAC_1_SQRT_2;
-    let mut prior = vec![false; width * height];
-    mark_near_segments(
-        &mut prior,
-        (width, height),
-        origin,
-        res,
-        &mapped.segments,
-        0.0,
-    );
+    let mut prior = vec![false; frame.cells()];
+    mark_near_segments(&mut prior, frame, &mapped.segments, 0.0);
     // Each other shape marks the cells of its bounding box that it reaches into.
-    let cell_range = |lo: f64, hi: f64, o: f64, n: usize| {
-        let a = ((lo - o) / res).floor().max(0.0) as usize;
-        let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
-        a..b.max(a)
-    };
-    let centre = |i: usize, j: usize| {
-        Point2::new(
-            origin.x + (i as f64 + 0.5) * res,
-            origin.y + (j as f64 + 0.5) * res,
-        )
-    };
     let mut mark_box = |lo: Point2, hi: Point2, hit: &dyn Fn(Point2) -> bool| {
-        for j in cell_range(lo.y, hi.y, origin.y, height) {
-            for i in cell_range(lo.x, hi.x, origin.x, width) {
-                if !prior[j * width + i] && hit(centre(i, j)) {
+        for j in frame.rows(lo.y, hi.y) {
+            for i in frame.columns(lo.x, hi.x) {
+                if !prior[j * width + i] && hit(frame.cell_center(i, j)) {
                     prior[j * width + i] = true;
                 }
             }
@@ -500,10 +462,8 @@ pub fn rasterize(bounds: Bounds, mapped: &StaticWorld, res: f64) -> (usize, usiz
                 let c = g.cell_center(gi, gj);
                 let h = g.resolution() / 2.0 * 0.999;
                 for (dx, dy) in [(0.0, 0.0), (-h, -h), (h, -h), (-h, h), (h, h)] {
-                    let u = (c.x + dx - origin.x) / res;
-                    let v = (c.y + dy - origin.y) / res;
-                    if u >= 0.0 && v >= 0.0 && (u as usize) < width && (v as usize) < height {
-                        prior[v as usize * width + u as usize] = true;
+                    if let Some(k) = frame.index_of(Point2::new(c.x + dx, c.y + dy)) {
+                        prior[k] = true;
                     }
                 }
             }

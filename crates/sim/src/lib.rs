@@ -61,11 +61,13 @@
 
 pub mod control;
 pub mod costmap;
+mod engine;
 pub mod explore;
 pub mod kinematics;
 pub mod laser;
 pub mod mapping;
 pub mod navigator;
+mod people;
 pub mod planner;
 pub mod record;
 pub mod replay;
@@ -73,10 +75,15 @@ mod run;
 pub mod scenario;
 pub mod soak;
 pub mod tracking;
+mod validate;
 pub mod world;
 
-pub use control::{Command, Controller};
+pub use control::{Command, Controller, FollowInput, LocalController};
 pub use costmap::{Costmap, CostmapBuilder, CostmapParams, ObstacleMemory};
+pub use engine::{
+    FixedGoal, Flow, GoalSource, NOISE_STREAM, Observer, PLANNER_STREAM, Sim, TICKS_PER_SECOND,
+    TickInfo, every, stream, time_of,
+};
 pub use explore::{Exploration, ExploreOutcome, Strategy, explore};
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, saturate, twist_of,
@@ -85,11 +92,12 @@ pub use kinematics::{
 pub use laser::{Laser, LaserModel, Scan};
 pub use mapping::{Mapping, OccupancyGrid};
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
+pub use people::{PeopleModel, Scripted};
 pub use planner::GlobalPlanner;
 pub use record::{
     Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, write_all,
 };
-pub use run::{NOISE_STREAM, Outcome, PLANNER_STREAM, TICKS_PER_SECOND, run};
+pub use run::{Outcome, Recorder, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
 pub use tracking::{Mover, Tracker};
 pub use world::{Person, Shape, StaticWorld, Walk, World};

@@ -10,7 +10,7 @@
 //! cell at `l_max` is free again after `ceil(l_max / -l_miss) = 9` later beams pass
 //! through it, so people leave no permanent marks.
 
-use envmap::GridMap;
+use envmap::{CellFrame, GridMap};
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
@@ -188,14 +188,16 @@ impl OccupancyGrid {
         self.logodds.iter().map(|&l| ros_value(l)).collect()
     }
 
+    /// Where the cells lie in the world.
+    #[must_use]
+    pub const fn frame(&self) -> CellFrame {
+        CellFrame::new(self.origin, self.params.resolution, self.width, self.height)
+    }
+
     /// The world position of the centre of cell `(i, j)`.
     #[must_use]
     pub fn cell_center(&self, i: usize, j: usize) -> Point2 {
-        let res = self.params.resolution;
-        Point2::new(
-            self.origin.x + (i as f64 + 0.5) * res,
-            self.origin.y + (j as f64 + 0.5) * res,
-        )
+        self.frame().cell_center(i, j)
     }
 
     /// The columns and rows of the cells a square of half-side `reach` around `center`
@@ -224,10 +226,7 @@ impl OccupancyGrid {
     /// The cell holding `p`, if inside.
     #[must_use]
     pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
-        let u = (p.x - self.origin.x) / self.params.resolution;
-        let v = (p.y - self.origin.y) / self.params.resolution;
-        (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
-            .then_some((u as usize, v as usize))
+        self.frame().cell_of(p)
     }
 
     /// Updates the grid from one scan.
@@ -255,9 +254,8 @@ impl OccupancyGrid {
     /// Walks the cells from `a` to `b` (Amanatides-Woo): misses before the last cell, a
     /// hit (or a miss) in the last.
     fn trace(&mut self, a: Point2, b: Point2, hit: bool) {
-        let res = self.params.resolution;
-        let (ax, ay) = ((a.x - self.origin.x) / res, (a.y - self.origin.y) / res);
-        let (bx, by) = ((b.x - self.origin.x) / res, (b.y - self.origin.y) / res);
+        let frame = self.frame();
+        let ((ax, ay), (bx, by)) = (frame.coords(a), frame.coords(b));
         let (mut i, mut j) = (ax.floor() as i64, ay.floor() as i64);
         let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
         let (dx, dy) = (bx - ax, by - ay);

@@ -19,7 +19,7 @@ use hyplan_core::Point2;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use crate::control::{Controller, along, project};
+use crate::control::{FollowInput, LocalController, along, project};
 use crate::costmap::{CostmapBuilder, ObstacleMemory};
 use crate::kinematics::{Pose, Robot, Twist};
 use crate::mapping::OccupancyGrid;
@@ -92,7 +92,7 @@ pub struct Navigator {
     /// Parameters.
     pub params: Navigation,
     /// Path follower.
-    pub controller: Controller,
+    pub controller: Box<dyn LocalController>,
     /// Global planner.
     pub planner: GlobalPlanner,
     /// Costmap builder.
@@ -107,6 +107,7 @@ pub struct Navigator {
     retry_at: u64,
     planned_at: Point2,
     plans: u32,
+    path_version: u64,
     rng: ChaCha8Rng,
 }
 
@@ -115,7 +116,7 @@ impl Navigator {
     #[must_use]
     pub fn new(
         params: Navigation,
-        controller: Controller,
+        controller: Box<dyn LocalController>,
         planner: GlobalPlanner,
         costmaps: CostmapBuilder,
         robot: Robot,
@@ -136,6 +137,7 @@ impl Navigator {
             retry_at: 0,
             planned_at: Point2::origin(),
             plans: 0,
+            path_version: 0,
             rng,
         }
     }
@@ -160,6 +162,13 @@ impl Navigator {
         &self.path
     }
 
+    /// How many times a plan replaced the path by a different one: a caller that saw
+    /// another value before a step knows the path changed in it.
+    #[must_use]
+    pub const fn path_version(&self) -> u64 {
+        self.path_version
+    }
+
     fn brake(&self, prev: Twist) -> Twist {
         self.controller.limit(&self.robot, prev, Twist::default())
     }
@@ -167,7 +176,7 @@ impl Navigator {
     /// Whether a remembered hit touches the path ahead of the robot.
     fn path_blocked(&self, here: Point2, memory: &ObstacleMemory, tick: u64) -> bool {
         let (k, q) = project(&self.path, self.progress, here);
-        let radius = self.robot.body_radius + self.controller.margin;
+        let radius = self.robot.body_radius + self.controller.margin();
         let step = 0.05;
         let mut s = 0.2;
         while s <= self.params.blocked_lookahead {
@@ -245,6 +254,9 @@ impl Navigator {
                         NavEvent::Replan
                     });
                     self.plans += 1;
+                    if path != self.path {
+                        self.path_version += 1;
+                    }
                     self.path = path;
                     self.progress = 0;
                     self.planned_at = here;
@@ -263,16 +275,16 @@ impl Navigator {
         if self.path_blocked(here, memory, tick) {
             return self.blocked(here, prev, tick, ticks_per_s, events);
         }
-        let (cmd, k) = self.controller.step(
-            &self.robot,
+        let (cmd, k) = self.controller.follow(&FollowInput {
+            robot: &self.robot,
             pose,
             prev,
-            &self.path,
-            self.progress,
+            path: &self.path,
+            progress: self.progress,
             memory,
             movers,
             tick,
-        );
+        });
         self.progress = k;
         if cmd.obstructed {
             return self.blocked(here, prev, tick, ticks_per_s, events);

@@ -63,34 +63,11 @@ impl GlobalPlanner {
     }
 }
 
-/// The nearest passable cell to `(i, j)` within `max_r` cells (ring by ring).
+/// The passable cell nearest `cell` within `max_r` rings: a robot whose centre is a
+/// little too near an obstacle on the coarse costmap starts from there.
 fn nearest_passable(map: &GridMap, cell: (usize, usize), max_r: usize) -> Option<(usize, usize)> {
-    if map.cell_free(cell.0, cell.1) {
-        return Some(cell);
-    }
-    let (ci, cj) = (cell.0 as i64, cell.1 as i64);
-    for r in 1..=max_r as i64 {
-        let mut best: Option<((usize, usize), i64)> = None;
-        for dj in -r..=r {
-            for di in -r..=r {
-                if di.abs().max(dj.abs()) != r {
-                    continue;
-                }
-                let (i, j) = (ci + di, cj + dj);
-                if i < 0 || j < 0 || !map.cell_free(i as usize, j as usize) {
-                    continue;
-                }
-                let d = di * di + dj * dj;
-                if best.is_none_or(|b| d < b.1) {
-                    best = Some(((i as usize, j as usize), d));
-                }
-            }
-        }
-        if let Some((c, _)) = best {
-            return Some(c);
-        }
-    }
-    None
+    let size = (map.width(), map.height());
+    envmap::nearest_passable(size, cell, max_r, |i, j| map.cell_free(i, j))
 }
 
 fn dijkstra(map: &GridMap, start: Point2, goal: Point2) -> Option<Vec<Point2>> {

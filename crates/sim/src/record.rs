@@ -1,13 +1,17 @@
 //! What a run leaves behind: the trace (CSV and JSON), the figures of the paper (the
 //! trajectory over the built map with the people's tracks, v(t) and omega(t)), and an
-//! animated SVG of the run that any browser plays.
+//! animated SVG of the run that any browser plays. The figures are `viz` scenes and
+//! charts; this module says what they show.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
-use crate::mapping::{OCCUPIED, UNKNOWN};
+use hyplan_core::Point2;
+use viz::{FigureError, GridImage, Mark, Rgba, Scene, Stroke, TimePanel, rgb, with_alpha};
+
+use crate::mapping::{FREE, OCCUPIED, OccupancyGrid};
 use crate::navigator::NavEvent;
 use crate::run::Outcome;
 use crate::world::World;
@@ -187,6 +191,9 @@ pub enum OutputError {
     /// The built map could not be written as ROS YAML + PGM.
     #[error(transparent)]
     Map(#[from] envmap::MapError),
+    /// A figure could not be drawn.
+    #[error(transparent)]
+    Figure(#[from] viz::FigureError),
 }
 
 /// Writes `trace.csv`, `trace.json`, `map.yaml` + `map.pgm`, `trajectory.svg`,
@@ -218,9 +225,9 @@ pub fn write_all(
         source,
     })?;
     put("trace.json", json)?;
-    put("trajectory.svg", trajectory_svg(outcome, world))?;
-    put("velocity.svg", velocity_svg(&outcome.trace))?;
-    put("animation.svg", animation_svg(outcome, world))?;
+    put("trajectory.svg", trajectory_svg(outcome, world)?)?;
+    put("velocity.svg", velocity_svg(&outcome.trace)?)?;
+    put("animation.svg", animation_svg(outcome, world)?)?;
     if let Some(map) = &outcome.map {
         let p = dir.join("map.yaml");
         map.write_ros(&p)?;
@@ -232,273 +239,208 @@ pub fn write_all(
 
 /// Pixels per metre in the map figures.
 const SCALE: f64 = 30.0;
-
-/// SVG header and the static world (built map below when given) in a y-up frame.
-fn world_svg(outcome: &Outcome, world: &World, s: &mut String) -> (f64, f64) {
-    world_svg_with(outcome.map.as_ref(), world, s)
+/// A width in metres as pixels of the map figures.
+const fn px(metres: f64) -> f64 {
+    metres * SCALE
 }
 
-/// SVG header and the static world with `map` below, in a y-up frame (the group is left
-/// open: close it with `</g></svg>`).
-pub(crate) fn world_svg_with(
-    map: Option<&crate::mapping::OccupancyGrid>,
-    world: &World,
-    s: &mut String,
-) -> (f64, f64) {
-    let b = world.bounds;
-    let (w, h) = (b.width() * SCALE, b.height() * SCALE);
-    let _ = writeln!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="{} {} {} {}">"#,
-        b.min.x,
-        -b.max.y,
-        b.width(),
-        b.height()
+/// Unknown space (and the figure's background): grey.
+const UNKNOWN_COLOUR: Rgba = rgb(0xb, 0xb, 0xb);
+/// The true static world's outlines: red.
+const WORLD_COLOUR: Rgba = rgb(0xc, 0x3, 0x3);
+/// The robot and its track: green.
+const ROBOT_COLOUR: Rgba = rgb(0x0, 0xa, 0x0);
+/// People: orange.
+const PERSON_COLOUR: Rgba = rgb(0xe, 0x8, 0x0);
+
+/// A built map as a map layer: free white, occupied near-black, unknown the background's
+/// grey.
+pub(crate) fn map_layer(map: &OccupancyGrid) -> GridImage {
+    let (w, h) = (map.width(), map.height());
+    let mut grid = GridImage::filled(
+        w,
+        h,
+        map.origin(),
+        map.params.resolution,
+        vec![UNKNOWN_COLOUR, [255; 4], rgb(0x2, 0x2, 0x2)],
     );
-    let _ = writeln!(
-        s,
-        r##"<rect x="{}" y="{}" width="{}" height="{}" fill="#bbb"/>"##,
-        b.min.x,
-        -b.max.y,
-        b.width(),
-        b.height()
-    );
-    let _ = writeln!(s, r#"<g transform="scale(1,-1)">"#);
-    if let Some(map) = map {
-        let r = map.params.resolution;
-        let o = map.origin();
-        for j in 0..map.height() {
-            let mut i = 0;
-            while i < map.width() {
-                let v = map.value(i, j);
-                let mut k = i + 1;
-                while k < map.width() && map.value(k, j) == v {
-                    k += 1;
-                }
-                if v != UNKNOWN {
-                    let fill = if v == OCCUPIED { "#222" } else { "#fff" };
-                    let _ = writeln!(
-                        s,
-                        r#"<rect x="{:.3}" y="{:.3}" width="{:.3}" height="{:.3}" fill="{fill}"/>"#,
-                        o.x + i as f64 * r,
-                        o.y + j as f64 * r,
-                        (k - i) as f64 * r,
-                        r
-                    );
-                }
-                i = k;
+    for j in 0..h {
+        for i in 0..w {
+            match map.value(i, j) {
+                FREE => grid.set(i, j, 1),
+                OCCUPIED => grid.set(i, j, 2),
+                _ => {}
             }
         }
     }
-    // The true static world as thin outlines.
-    for seg in &world.statics.segments {
-        let _ = writeln!(
-            s,
-            r##"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#c33" stroke-width="0.03"/>"##,
-            seg.a.x, seg.a.y, seg.b.x, seg.b.y
-        );
-    }
-    for d in &world.statics.discs {
-        let _ = writeln!(
-            s,
-            r##"<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#c33" stroke-width="0.03"/>"##,
-            d.center.x, d.center.y, d.radius
-        );
-    }
-    (w, h)
+    grid
 }
 
-pub(crate) fn polyline(points: impl Iterator<Item = (f64, f64)>) -> String {
-    points
-        .map(|(x, y)| format!("{x:.3},{y:.3}"))
-        .collect::<Vec<_>>()
-        .join(" ")
+/// The static world in a scene of its bounds: `map` below (when given), the true world's
+/// outlines over it.
+pub(crate) fn world_scene(map: Option<&OccupancyGrid>, world: &World) -> Scene {
+    let b = world.bounds;
+    let mut scene = Scene::new(b.min, b.max, SCALE).with_background(UNKNOWN_COLOUR);
+    if let Some(map) = map {
+        scene.push(Mark::Grid(map_layer(map)));
+    }
+    let outline = Stroke::new(WORLD_COLOUR, px(0.03));
+    scene.push(Mark::Segments {
+        pairs: world.statics.segments.iter().map(|s| (s.a, s.b)).collect(),
+        stroke: outline,
+    });
+    for d in &world.statics.discs {
+        scene.push(Mark::ring(d.center, d.radius, outline));
+    }
+    scene
+}
+
+fn points(list: &[(f64, f64)]) -> Vec<Point2> {
+    list.iter().map(|&(x, y)| Point2::new(x, y)).collect()
+}
+
+/// The robot's driven path.
+fn driven(rows: &[Row]) -> Vec<Point2> {
+    rows.iter().map(|r| Point2::new(r.x, r.y)).collect()
 }
 
 /// The trajectory over the built map, with the planned paths and the people's tracks
-/// (the paper's Figs. 6a, 7a, 8).
+/// (the paper's Figs. 6a, 7a, 8), as SVG.
+///
+/// # Errors
+///
+/// [`FigureError`] when the map layer cannot be encoded.
+pub fn trajectory_svg(outcome: &Outcome, world: &World) -> Result<String, FigureError> {
+    trajectory_scene(outcome, world).to_svg()
+}
+
+/// The scene of [`trajectory_svg`] (also drawn as PNG by [`Scene::png_bytes`]).
 #[must_use]
-pub fn trajectory_svg(outcome: &Outcome, world: &World) -> String {
-    let mut s = String::new();
-    world_svg(outcome, world, &mut s);
+pub fn trajectory_scene(outcome: &Outcome, world: &World) -> Scene {
+    let mut scene = world_scene(outcome.map.as_ref(), world);
     let rows = &outcome.trace.rows;
     let end = rows.last().map_or(0.0, |r| r.t);
     for (k, p) in world.people.iter().enumerate() {
         let n = (end * 10.0).ceil() as usize;
-        let pts = (0..=n).map(|i| {
-            let q = p.position(i as f64 / 10.0);
-            (q.x, q.y)
+        scene.push(Mark::Polyline {
+            points: (0..=n).map(|i| p.position(i as f64 / 10.0)).collect(),
+            stroke: Stroke::new(PERSON_COLOUR, px(0.05)).dashed(px(0.15), px(0.1)),
+            title: Some(format!("person {k}")),
         });
-        let _ = writeln!(
-            s,
-            r##"<polyline points="{}" fill="none" stroke="#e80" stroke-width="0.05" stroke-dasharray="0.15 0.1"><title>person {k}</title></polyline>"##,
-            polyline(pts)
-        );
     }
     for (t, path) in &outcome.plans {
-        let _ = writeln!(
-            s,
-            r##"<polyline points="{}" fill="none" stroke="#39f" stroke-width="0.03" opacity="0.6"><title>plan at {t:.1} s</title></polyline>"##,
-            polyline(path.iter().copied())
-        );
+        scene.push(Mark::Polyline {
+            points: points(path),
+            stroke: Stroke::new(with_alpha(rgb(0x3, 0x9, 0xf), 153), px(0.03)),
+            title: Some(format!("plan at {t:.1} s")),
+        });
     }
-    let _ = writeln!(
-        s,
-        r##"<polyline points="{}" fill="none" stroke="#0a0" stroke-width="0.06"/>"##,
-        polyline(rows.iter().map(|r| (r.x, r.y)))
-    );
-    s.push_str("</g></svg>\n");
-    s
+    scene.push(Mark::polyline(
+        driven(rows),
+        Stroke::new(ROBOT_COLOUR, px(0.06)),
+    ));
+    scene
 }
 
-/// v(t) and omega(t), one panel each (the paper's Figs. 6b-c, 7b-c, 9).
-#[must_use]
-pub fn velocity_svg(trace: &Trace) -> String {
+/// v(t) and omega(t), one panel each (the paper's Figs. 6b-c, 7b-c, 9), re-plans and
+/// stops marked.
+///
+/// # Errors
+///
+/// [`FigureError`] with the chart library's message.
+pub fn velocity_svg(trace: &Trace) -> Result<String, FigureError> {
     let rows = &trace.rows;
     let t_end = rows.last().map_or(1.0, |r| r.t).max(1.0);
-    let (w, ph) = (800.0, 220.0);
-    let mut s = format!(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{}" font-family="sans-serif" font-size="12">"#,
-        2.0 * ph + 20.0
-    );
-    s.push('\n');
-    type Panel = (&'static str, fn(&Row) -> f64);
-    let panels: [Panel; 2] = [("v (m/s)", |r| r.v), ("omega (rad/s)", |r| r.omega)];
-    for (k, (label, f)) in panels.iter().enumerate() {
-        let y0 = k as f64 * (ph + 10.0) + 10.0;
-        let vals: Vec<f64> = rows.iter().map(f).collect();
-        let lo = vals.iter().copied().fold(0.0_f64, f64::min).min(-0.1);
-        let hi = vals.iter().copied().fold(0.0_f64, f64::max).max(0.1);
-        let (left, right, top, bottom) = (60.0, w - 20.0, y0 + 10.0, y0 + ph - 30.0);
-        let x = |t: f64| left + (right - left) * t / t_end;
-        let y = |v: f64| bottom - (bottom - top) * (v - lo) / (hi - lo);
-        let _ = writeln!(
-            s,
-            r##"<rect x="{left}" y="{top}" width="{}" height="{}" fill="none" stroke="#888"/>"##,
-            right - left,
-            bottom - top
-        );
-        let _ = writeln!(
-            s,
-            r##"<line x1="{left}" y1="{:.1}" x2="{right}" y2="{:.1}" stroke="#ccc"/>"##,
-            y(0.0),
-            y(0.0)
-        );
-        let _ = writeln!(
-            s,
-            r#"<text x="5" y="{:.1}">{label}</text>"#,
-            top - 2.0 + 12.0
-        );
-        let _ = writeln!(
-            s,
-            r#"<text x="{}" y="{:.1}">{hi:.2}</text>"#,
-            left - 40.0,
-            top + 10.0
-        );
-        let _ = writeln!(
-            s,
-            r#"<text x="{}" y="{:.1}">{lo:.2}</text>"#,
-            left - 40.0,
-            bottom
-        );
-        for tick in 0..=(t_end / 5.0).floor() as usize {
-            let t = tick as f64 * 5.0;
-            let _ = writeln!(
-                s,
-                r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{t:.0} s</text>"#,
-                x(t),
-                bottom + 15.0
-            );
-        }
-        let _ = writeln!(
-            s,
-            r##"<polyline points="{}" fill="none" stroke="#06c" stroke-width="1.5"/>"##,
-            polyline(rows.iter().zip(&vals).map(|(r, &v)| (x(r.t), y(v))))
-        );
-        for e in &trace.events {
-            if matches!(e.kind, EventKind::Nav(NavEvent::Replan | NavEvent::Stop)) {
-                let _ = writeln!(
-                    s,
-                    r##"<line x1="{0:.1}" y1="{top}" x2="{0:.1}" y2="{bottom}" stroke="#e80" stroke-width="0.5"/>"##,
-                    x(e.t)
-                );
+    let events: Vec<f64> = trace
+        .events
+        .iter()
+        .filter(|e| matches!(e.kind, EventKind::Nav(NavEvent::Replan | NavEvent::Stop)))
+        .map(|e| e.t)
+        .collect();
+    type Quantity = (&'static str, fn(&Row) -> f64);
+    let quantities: [Quantity; 2] = [("v (m/s)", |r| r.v), ("omega (rad/s)", |r| r.omega)];
+    let panels: Vec<TimePanel> = quantities
+        .iter()
+        .map(|(label, f)| {
+            let vals: Vec<f64> = rows.iter().map(f).collect();
+            let lo = vals.iter().copied().fold(0.0_f64, f64::min).min(-0.1);
+            let hi = vals.iter().copied().fold(0.0_f64, f64::max).max(0.1);
+            TimePanel {
+                label: (*label).to_string(),
+                points: rows.iter().zip(&vals).map(|(r, &v)| (r.t, v)).collect(),
+                colour: rgb(0x0, 0x6, 0xc),
+                events: events.clone(),
+                range: Some((lo, hi)),
             }
-        }
-    }
-    s.push_str("</svg>\n");
-    s
+        })
+        .collect();
+    viz::time_series_svg(&panels, t_end, 800, 220)
 }
 
 /// An animated SVG (SMIL) of the run in real time: the robot with its heading, the
 /// people, over the built map and the trajectory. Opens in any browser.
+///
+/// # Errors
+///
+/// [`FigureError`] when the map layer cannot be encoded.
+pub fn animation_svg(outcome: &Outcome, world: &World) -> Result<String, FigureError> {
+    animation_scene(outcome, world).to_svg()
+}
+
+/// The scene of [`animation_svg`]: the robot and the people are [`Mark::Moving`], a frame
+/// every 0.1 s ([`Scene::at_frame`] picks one, [`viz::apng_scenes`] plays them as PNG).
 #[must_use]
-pub fn animation_svg(outcome: &Outcome, world: &World) -> String {
-    let mut s = String::new();
-    world_svg(outcome, world, &mut s);
+pub fn animation_scene(outcome: &Outcome, world: &World) -> Scene {
+    let mut scene = world_scene(outcome.map.as_ref(), world);
     let rows = &outcome.trace.rows;
     let end = rows.last().map_or(0.0, |r| r.t).max(0.1);
     let frames = (end * 10.0).ceil() as usize;
-    let at = |k: usize| {
-        let t = k as f64 / 10.0;
+    let times: Vec<f64> = (0..=frames).map(|k| k as f64 / 10.0).collect();
+    let at = |t: f64| {
         let i = rows
             .partition_point(|r| r.t < t)
             .min(rows.len().saturating_sub(1));
         rows.get(i).copied()
     };
-    let key_times = (0..=frames)
-        .map(|k| format!("{:.4}", (k as f64 / 10.0 / end).min(1.0)))
-        .collect::<Vec<_>>()
-        .join(";");
-    let anim = |attr: &str, vals: String| {
-        format!(
-            r#"<animate attributeName="{attr}" dur="{end:.2}s" repeatCount="indefinite" calcMode="linear" keyTimes="{key_times}" values="{vals}"/>"#
-        )
-    };
-    let _ = writeln!(
-        s,
-        r##"<polyline points="{}" fill="none" stroke="#0a0" stroke-width="0.03" opacity="0.5"/>"##,
-        polyline(rows.iter().map(|r| (r.x, r.y)))
-    );
+    scene.push(Mark::polyline(
+        driven(rows),
+        Stroke::new(with_alpha(ROBOT_COLOUR, 128), px(0.03)),
+    ));
     for p in &world.people {
-        let xs = (0..=frames)
-            .map(|k| format!("{:.3}", p.position(k as f64 / 10.0).x))
-            .collect::<Vec<_>>()
-            .join(";");
-        let ys = (0..=frames)
-            .map(|k| format!("{:.3}", p.position(k as f64 / 10.0).y))
-            .collect::<Vec<_>>()
-            .join(";");
-        let _ = writeln!(
-            s,
-            r##"<circle r="{}" fill="#e80">{}{}</circle>"##,
-            p.radius,
-            anim("cx", xs),
-            anim("cy", ys)
-        );
+        scene.push(Mark::Moving {
+            times: times.clone(),
+            frames: times
+                .iter()
+                .map(|&t| Mark::disc(p.position(t), p.radius, PERSON_COLOUR))
+                .collect(),
+        });
     }
-    let r = outcome.trace.rows.first().map_or(0.178, |_| 0.178);
-    let pick = |f: fn(&crate::record::Row) -> f64| {
-        (0..=frames)
-            .map(|k| at(k).map_or(0.0, |row| f(&row)))
-            .map(|v| format!("{v:.3}"))
-            .collect::<Vec<_>>()
-            .join(";")
+    // The robot, and its heading: a line from the centre to the front.
+    let r = 0.178;
+    let pose = |t: f64| {
+        at(t).map_or((Point2::new(0.0, 0.0), 0.0), |row| {
+            (Point2::new(row.x, row.y), row.phi)
+        })
     };
-    let _ = writeln!(
-        s,
-        r##"<circle r="{r}" fill="#0a0" opacity="0.8">{}{}</circle>"##,
-        anim("cx", pick(|row| row.x)),
-        anim("cy", pick(|row| row.y))
-    );
-    // The heading: a line from the centre to the front.
-    let _ = writeln!(
-        s,
-        r##"<line stroke="#000" stroke-width="0.04">{}{}{}{}</line>"##,
-        anim("x1", pick(|row| row.x)),
-        anim("y1", pick(|row| row.y)),
-        anim("x2", pick(|row| row.x + 0.178 * row.phi.cos())),
-        anim("y2", pick(|row| row.y + 0.178 * row.phi.sin()))
-    );
-    s.push_str("</g></svg>\n");
-    s
+    scene.push(Mark::Moving {
+        times: times.clone(),
+        frames: times
+            .iter()
+            .map(|&t| Mark::disc(pose(t).0, r, with_alpha(ROBOT_COLOUR, 204)))
+            .collect(),
+    });
+    scene.push(Mark::Moving {
+        times: times.clone(),
+        frames: times
+            .iter()
+            .map(|&t| {
+                let (c, phi) = pose(t);
+                Mark::Segments {
+                    pairs: vec![(c, Point2::new(c.x + r * phi.cos(), c.y + r * phi.sin()))],
+                    stroke: Stroke::new([0, 0, 0, 255], px(0.04)),
+                }
+            })
+            .collect(),
+    });
+    scene
 }

@@ -25,22 +25,13 @@ use crate::record::Row;
 use crate::run::{Outcome, run};
 use crate::scenario::{Scenario, ScenarioError};
 use crate::world::World;
+use viz::Table;
 
 /// The scenario files of the replay, in order.
 pub const FILES: [&str; 3] = ["1-free.ron", "2-static.ron", "3-person.ron"];
 
-/// One claim, checked.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Claim {
-    /// What the paper says.
-    pub text: String,
-    /// The paper's figure.
-    pub paper: String,
-    /// Ours.
-    pub ours: String,
-    /// Whether it held.
-    pub held: bool,
-}
+/// One claim, checked: `viz`'s, the one type of every seed's replay.
+pub use viz::Claim;
 
 /// The replay's runs and claims.
 #[derive(Debug)]
@@ -111,6 +102,46 @@ pub fn omega_reversals(rows: &[Row]) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
+/// Scenario 2's claims: two right turns, peaking near 0.3 and 0.75 rad/s.
+fn static_claims(o2: &Outcome) -> [Claim; 2] {
+    let rows2 = &o2.trace.rows;
+    let right = episodes(rows2, |r| r.omega < -0.1);
+    let peaks: Vec<(f64, f64)> = right
+        .iter()
+        .map(|&(a, b)| {
+            let k = (a..b)
+                .min_by(|&i, &j| rows2[i].omega.total_cmp(&rows2[j].omega))
+                .unwrap_or(a);
+            (rows2[k].t, -rows2[k].omega)
+        })
+        .collect();
+    let peak_text = peaks
+        .iter()
+        .map(|(t, w)| format!("{w:.2} rad/s at {t:.1} s"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let turns = Claim {
+        text: "scenario 2: the robot turns right twice to avoid the obstacles".into(),
+        paper: "two right turns".into(),
+        ours: format!("{} right-turn episode(s): {peak_text}", peaks.len()),
+        held: peaks.len() == 2,
+    };
+    let peaks_claim = Claim {
+        text: "scenario 2: right-turn peaks of 0.3 and 0.75 rad/s".into(),
+        paper: "0.3, 0.75 rad/s".into(),
+        ours: peaks
+            .iter()
+            .take(2)
+            .map(|(_, w)| format!("{w:.2}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        held: peaks.len() >= 2
+            && (peaks[0].1 - 0.3).abs() <= 0.15
+            && (peaks[1].1 - 0.75).abs() <= 0.15,
+    };
+    [turns, peaks_claim]
+}
+
 /// Runs the three scenarios in `dir` with `seed` and checks the claims.
 ///
 /// # Errors
@@ -167,43 +198,7 @@ pub fn seed004(dir: &Path, seed: u64) -> Result<Seed004, ScenarioError> {
         held: !mid.is_empty() && vmax - vmin < 0.02 && wmax < 0.1,
     });
 
-    // Scenario 2.
-    let (_, _, o2) = &runs[1];
-    let rows2 = &o2.trace.rows;
-    let right = episodes(rows2, |r| r.omega < -0.1);
-    let peaks: Vec<(f64, f64)> = right
-        .iter()
-        .map(|&(a, b)| {
-            let k = (a..b)
-                .min_by(|&i, &j| rows2[i].omega.total_cmp(&rows2[j].omega))
-                .unwrap_or(a);
-            (rows2[k].t, -rows2[k].omega)
-        })
-        .collect();
-    let peak_text = peaks
-        .iter()
-        .map(|(t, w)| format!("{w:.2} rad/s at {t:.1} s"))
-        .collect::<Vec<_>>()
-        .join(", ");
-    claims.push(Claim {
-        text: "scenario 2: the robot turns right twice to avoid the obstacles".into(),
-        paper: "two right turns".into(),
-        ours: format!("{} right-turn episode(s): {peak_text}", peaks.len()),
-        held: peaks.len() == 2,
-    });
-    claims.push(Claim {
-        text: "scenario 2: right-turn peaks of 0.3 and 0.75 rad/s".into(),
-        paper: "0.3, 0.75 rad/s".into(),
-        ours: peaks
-            .iter()
-            .take(2)
-            .map(|(_, w)| format!("{w:.2}"))
-            .collect::<Vec<_>>()
-            .join(", "),
-        held: peaks.len() >= 2
-            && (peaks[0].1 - 0.3).abs() <= 0.15
-            && (peaks[1].1 - 0.75).abs() <= 0.15,
-    });
+    claims.extend(static_claims(&runs[1].2));
 
     // Scenario 3.
     let (_, _, o3) = &runs[2];
@@ -293,42 +288,39 @@ impl Seed004 {
                 .map(|(_, _, o)| o.trace.summary.end_time)
                 .sum::<f64>()
         );
-        let _ = writeln!(
-            s,
-            "| scenario | reached | travel time (s) | distance (m) | stops | re-plans | min gap obstacle (m) | min gap person (m) | contacts at fault / robot stopped / other |"
-        );
-        let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|");
+        let mut table = Table::new([
+            "scenario",
+            "reached",
+            "travel time (s)",
+            "distance (m)",
+            "stops",
+            "re-plans",
+            "min gap obstacle (m)",
+            "min gap person (m)",
+            "contacts at fault / robot stopped / other",
+        ]);
         for (sc, _, o) in &self.runs {
             let m = &o.trace.summary;
-            let _ = writeln!(
-                s,
-                "| {} | {} | {} | {:.2} | {} | {} | {:.3} | {} | {} / {} / {} |",
-                sc.name,
-                if m.reached { "yes" } else { "no" },
+            table.row([
+                sc.name.clone(),
+                (if m.reached { "yes" } else { "no" }).to_string(),
                 m.travel_time.map_or("-".into(), |t| format!("{t:.2}")),
-                m.distance,
-                m.stops,
-                m.replans,
-                m.min_obstacle_distance,
+                format!("{:.2}", m.distance),
+                m.stops.to_string(),
+                m.replans.to_string(),
+                format!("{:.3}", m.min_obstacle_distance),
                 m.min_person_distance
                     .map_or("-".into(), |d| format!("{d:.3}")),
-                m.contacts_at_fault,
-                m.contacts_robot_stopped,
-                m.contacts_not_approaching
-            );
+                format!(
+                    "{} / {} / {}",
+                    m.contacts_at_fault, m.contacts_robot_stopped, m.contacts_not_approaching
+                ),
+            ]);
         }
-        let _ = writeln!(s, "\n| claim | paper | ours | held |\n|---|---|---|---|");
-        for c in &self.claims {
-            let _ = writeln!(
-                s,
-                "| {} | {} | {} | {} |",
-                c.text,
-                c.paper,
-                c.ours,
-                if c.held { "held" } else { "not held" }
-            );
-        }
-        let held = self.claims.iter().filter(|c| c.held).count();
+        s.push_str(&table.to_markdown());
+        s.push('\n');
+        s.push_str(&viz::claims_markdown(&self.claims));
+        let held = viz::claims_held(&self.claims);
         let _ = writeln!(s, "\nClaims held: {held} of {}.\n", self.claims.len());
         if let Some(dir) = figures {
             let _ = writeln!(s, "Figures:");

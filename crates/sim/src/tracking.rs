@@ -23,6 +23,8 @@ use std::collections::VecDeque;
 use hyplan_core::{Bounds, Point2};
 use nalgebra::Vector2;
 
+use envmap::CellFrame;
+
 use crate::costmap::rasterize;
 use crate::laser::Scan;
 use crate::world::StaticWorld;
@@ -191,12 +193,8 @@ impl Tracker {
     /// Whether `p` is within about a cell of the static prior (or outside the world:
     /// nothing walks there).
     fn explained(&self, p: Point2) -> bool {
-        let u = (p.x - self.origin.x) / STATIC_RES;
-        let v = (p.y - self.origin.y) / STATIC_RES;
-        if !(u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height) {
-            return true;
-        }
-        self.prior[v as usize * self.width + u as usize]
+        let frame = CellFrame::new(self.origin, STATIC_RES, self.width, self.height);
+        frame.index_of(p).is_none_or(|k| self.prior[k])
     }
 
     /// The clusters of a scan's unexplained hits: (centroid, covering radius).

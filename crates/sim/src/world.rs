@@ -8,93 +8,8 @@ use envmap::GridMap;
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
-/// A static obstacle, in metres (scenario syntax).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub enum Shape {
-    /// A straight wall from `from` to `to`, `thickness` wide (a rectangle around the
-    /// centre line).
-    Wall {
-        /// One end of the centre line.
-        from: (f64, f64),
-        /// The other end.
-        to: (f64, f64),
-        /// Width, m.
-        thickness: f64,
-    },
-    /// A rectangle, `size` = (width, height), rotated by `angle_deg` about its centre.
-    Box {
-        /// Centre.
-        center: (f64, f64),
-        /// Width and height, m.
-        size: (f64, f64),
-        /// Rotation, degrees counter-clockwise (default 0).
-        #[serde(default)]
-        angle_deg: f64,
-    },
-    /// A simple polygon (not self-intersecting), vertices in order.
-    Polygon {
-        /// Vertices, m.
-        points: Vec<(f64, f64)>,
-    },
-    /// A round obstacle (a pillar, a bin).
-    Disc {
-        /// Centre.
-        center: (f64, f64),
-        /// Radius, m.
-        radius: f64,
-    },
-}
-
-impl Shape {
-    /// The outline as a closed polygon (`None` for a disc).
-    #[must_use]
-    pub fn outline(&self) -> Option<Vec<Point2>> {
-        match self {
-            Self::Wall {
-                from,
-                to,
-                thickness,
-            } => {
-                let (a, b) = (pt(*from), pt(*to));
-                let d = b - a;
-                let len = d.norm();
-                let n = if len > 0.0 {
-                    nalgebra::Vector2::new(-d.y, d.x) / len * (thickness / 2.0)
-                } else {
-                    nalgebra::Vector2::new(0.0, thickness / 2.0)
-                };
-                let t = if len > 0.0 {
-                    d / len * (thickness / 2.0)
-                } else {
-                    nalgebra::Vector2::new(thickness / 2.0, 0.0)
-                };
-                // Square ends reaching half the thickness past each end, so walls that
-                // meet at a corner close it.
-                Some(vec![a - t - n, b + t - n, b + t + n, a - t + n])
-            }
-            Self::Box {
-                center,
-                size,
-                angle_deg,
-            } => {
-                let c = pt(*center);
-                let (s, co) = angle_deg.to_radians().sin_cos();
-                let (hw, hh) = (size.0 / 2.0, size.1 / 2.0);
-                let corner =
-                    |x: f64, y: f64| Point2::new(c.x + co * x - s * y, c.y + s * x + co * y);
-                Some(vec![
-                    corner(-hw, -hh),
-                    corner(hw, -hh),
-                    corner(hw, hh),
-                    corner(-hw, hh),
-                ])
-            }
-            Self::Polygon { points } => Some(points.iter().copied().map(pt).collect()),
-            Self::Disc { .. } => None,
-        }
-    }
-}
+/// A static obstacle, in metres (scenario syntax): the workspace's one shape type.
+pub use envmap::shapes::Shape;
 
 /// A point from a scenario pair.
 #[must_use]
@@ -236,11 +151,8 @@ pub struct StaticWorld {
 impl StaticWorld {
     /// Adds a shape.
     pub fn add_shape(&mut self, shape: &Shape) {
-        if let Shape::Disc { center, radius } = shape {
-            self.discs.push(Disc {
-                center: pt(*center),
-                radius: *radius,
-            });
+        if let Some((center, radius)) = shape.disc() {
+            self.discs.push(Disc { center, radius });
             return;
         }
         if let Some(poly) = shape.outline() {
@@ -418,13 +330,8 @@ impl World {
     /// People's positions and radii at time `t`, s.
     #[must_use]
     pub fn people_at(&self, t: f64) -> Vec<Disc> {
-        self.people
-            .iter()
-            .map(|p| Disc {
-                center: p.position(t),
-                radius: p.radius,
-            })
-            .collect()
+        use crate::people::PeopleModel;
+        crate::people::Scripted::new(&self.people).people(t, crate::kinematics::Pose::default())
     }
 }
 

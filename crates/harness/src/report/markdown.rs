@@ -2,6 +2,8 @@
 
 use std::fmt::Write as _;
 
+use viz::{Align, Table};
+
 use crate::{ClaimKind, Scenario};
 
 use super::{ALPHA, COLUMNS, ClaimResult, ExperimentResult, SeriesClaim, Tally, claims, slug};
@@ -151,33 +153,28 @@ fn experiment(s: &mut String, scenario: &Scenario, r: &ExperimentResult, h: &str
             scenario.units
         );
     }
-    let _ = writeln!(
-        s,
-        "\n| planner | success | {} |",
-        COLUMNS.iter().map(|c| c.1).collect::<Vec<_>>().join(" | ")
-    );
-    let _ = writeln!(s, "|---|---:|{}", "---:|".repeat(COLUMNS.len()));
+    let headers = ["planner", "success"]
+        .into_iter()
+        .chain(COLUMNS.iter().map(|c| c.1));
+    let mut table = Table::new(headers)
+        .align(std::iter::once(Align::Left).chain(std::iter::repeat(Align::Right)));
     for p in &r.planners {
-        let cells: Vec<String> = COLUMNS
-            .iter()
-            .map(|(m, _)| {
-                p.summary.get(m).map_or("-".into(), |st| {
-                    if st.count == 0 {
-                        "-".into()
-                    } else {
-                        format!("{} ± {}", shown(m, st.mean), shown(m, st.std))
-                    }
-                })
+        let cells = COLUMNS.iter().map(|(m, _)| {
+            p.summary.get(m).map_or("-".into(), |st| {
+                if st.count == 0 {
+                    "-".into()
+                } else {
+                    format!("{} ± {}", shown(m, st.mean), shown(m, st.std))
+                }
             })
-            .collect();
-        let _ = writeln!(
-            s,
-            "| {} | {:.0}% | {} |",
-            p.label,
-            100.0 * p.summary.success_rate,
-            cells.join(" | ")
-        );
+        });
+        let first = [
+            p.label.clone(),
+            format!("{:.0}%", 100.0 * p.summary.success_rate),
+        ];
+        table.row(first.into_iter().chain(cells));
     }
+    let _ = write!(s, "\n{}", table.to_markdown());
     published(s, scenario, r);
     if !r.claims.is_empty() {
         let _ = writeln!(s, "\nClaims:\n");
@@ -229,15 +226,16 @@ fn published(s: &mut String, scenario: &Scenario, r: &ExperimentResult) {
             "; \"/ {b}\" is the ratio to the paper's baseline {b} within the paper and within our runs"
         ))
     );
-    let _ = writeln!(
-        s,
-        "| planner | metric | paper | ours | ours / paper |{}",
-        base.map_or(String::new(), |b| format!(" paper / {b} | ours / {b} |"))
-    );
-    let _ = writeln!(
-        s,
-        "|---|---|---:|---:|---:|{}",
-        if base.is_some() { "---:|---:|" } else { "" }
+    let mut headers: Vec<String> = ["planner", "metric", "paper", "ours", "ours / paper"]
+        .map(String::from)
+        .into();
+    if let Some(b) = base {
+        headers.extend([format!("paper / {b}"), format!("ours / {b}")]);
+    }
+    let mut table = Table::new(headers).align(
+        [Align::Left, Align::Left]
+            .into_iter()
+            .chain(std::iter::repeat(Align::Right)),
     );
     for p in &scenario.published {
         let o = ours(r, &p.planner, &p.metric);
@@ -257,8 +255,8 @@ fn published(s: &mut String, scenario: &Scenario, r: &ExperimentResult) {
         if p.metric == "time_s" {
             note.push_str(" [across hardware: see the caveat]");
         }
-        let within = match base {
-            None => String::new(),
+        let within: Vec<String> = match base {
+            None => Vec::new(),
             Some(b) => {
                 let paper_base = scenario
                     .published
@@ -271,20 +269,19 @@ fn published(s: &mut String, scenario: &Scenario, r: &ExperimentResult) {
                     (Some(x), Some(y)) if p.planner != b => format!("{:.3}", x / y),
                     _ => "-".into(),
                 };
-                format!(" {paper} | {our} |")
+                vec![paper, our]
             }
         };
-        let _ = writeln!(
-            s,
-            "| {} | {}{} | {} | {} | {} |{within}",
-            p.planner,
-            p.metric,
-            note,
+        let cells = [
+            p.planner.clone(),
+            format!("{}{note}", p.metric),
             p.shown(),
             ours_s,
-            ratio
-        );
+            ratio,
+        ];
+        table.row(cells.into_iter().chain(within));
     }
+    s.push_str(&table.to_markdown());
 }
 
 fn summary(s: &mut String, list: &[(&str, &str, &ClaimResult)], h: &str) {

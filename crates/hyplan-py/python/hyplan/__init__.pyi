@@ -3,6 +3,7 @@ from ._hyplan import (
     GridMap as GridMap,
     PlanResult as PlanResult,
     plan as plan,
+    planner_info as planner_info,
     planner_params as planner_params,
     planners as planners,
     smooth as smooth,

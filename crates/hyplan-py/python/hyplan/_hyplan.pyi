@@ -103,3 +103,9 @@ def planners() -> list[str]:
 
 def planner_params(name: str) -> list[Tuple[str, str]]:
     """``(key, default)`` pairs (RON text) of a planner."""
+
+def planner_info(name: str) -> dict:
+    """A planner's help line, capabilities (``family``, ``grid_only``, ``uses_risk``,
+    ``has_step``, ``wants_default_step``, ``goal_bias``, ``own_goal_radius``,
+    ``deterministic``) and ``params``: dicts of ``name``, ``type``, ``default`` (RON text)
+    and ``doc``."""

@@ -19,6 +19,7 @@ use harness::bench::{self, BenchRun, Comparison, ExperimentInfo, SummaryRow};
 use harness::{Explored, PlannerConfig, PlannerSpec, Scoring};
 use hyplan_core::{Goal, PlanError, Planner, Query, Zone};
 use serde::{Deserialize, Serialize};
+use viz::{Align, Table};
 
 /// Options of `hyplan bench`.
 #[derive(clap::Args, Debug)]
@@ -35,11 +36,10 @@ pub struct Args {
     /// column, row from the top); repeat for several queries.
     #[arg(long, num_args = 2, value_names = ["START", "GOAL"], required_unless_present = "experiment", allow_hyphen_values = true)]
     pub query: Vec<String>,
-    /// A planner `NAME[:key=value,...]` (repeat for several): rrt, rrt-star, bi-rrt,
-    /// rrt-connect, astar, dijkstra, theta-star, rrt-astar-bt, rrt-astar-refine,
-    /// hybrid-rrt-astar, safe-rrt-star, ga-pchip; keys are the planner's parameters
-    /// (`step`, `goal_bias`, `max_iterations`, `stop_at_first_solution`, ...).
-    #[arg(long, required_unless_present = "experiment")]
+    /// A planner `NAME[:key=value,...]` (repeat for several), NAME one of the registry's
+    /// (listed below); keys are the planner's parameters (`step`, `goal_bias`,
+    /// `max_iterations`, `stop_at_first_solution`, ...; `hyplan planners` lists them).
+    #[arg(long, required_unless_present = "experiment", value_parser = crate::planners::SpecParser::default())]
     pub planner: Vec<String>,
     /// Runs per planner and problem [default: 20].
     #[arg(long)]
@@ -131,7 +131,7 @@ fn default_smooth() -> String {
 }
 
 /// A planner spec from `NAME[:key=value,...]` (the registry's form, see
-/// [`harness::PlannerConfig::from_spec`]), with the command's defaults for what the user
+/// [`registry::PlannerConfig::from_spec`]), with the command's defaults for what the user
 /// left out: a step of 5% of the map's diagonal for the plain sampling planners, the time
 /// limit (and no iteration cap) as every planner's budget. The pairs win over both.
 ///
@@ -694,24 +694,28 @@ fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
             prob.map.display(),
             prob.query
         );
-        let _ = writeln!(
-            s,
-            "| planner | runs | solved | time median (ms) | time IQR (ms) | length median | length IQR |"
-        );
-        let _ = writeln!(s, "|---|---:|---:|---:|---:|---:|---:|");
+        let mut table = Table::new([
+            "planner",
+            "runs",
+            "solved",
+            "time median (ms)",
+            "time IQR (ms)",
+            "length median",
+            "length IQR",
+        ])
+        .align(std::iter::once(Align::Left).chain(std::iter::repeat(Align::Right)));
         for row in r.summary.iter().filter(|x| x.problem == p) {
-            let _ = writeln!(
-                s,
-                "| {} | {} | {:.0}% | {} | {} | {} | {} |",
-                row.planner,
-                row.runs,
-                100.0 * row.success_rate,
+            table.row([
+                row.planner.clone(),
+                row.runs.to_string(),
+                format!("{:.0}%", 100.0 * row.success_rate),
                 g(1e3 * row.time_s.median, 3),
                 g(1e3 * row.time_s.iqr(), 3),
                 g(row.length.median, 2),
                 g(row.length.iqr(), 2),
-            );
+            ]);
         }
+        s.push_str(&table.to_markdown());
         let pairs: Vec<&Comparison> = r.comparisons.iter().filter(|c| c.problem == p).collect();
         if !pairs.is_empty() {
             let _ = writeln!(
@@ -719,11 +723,26 @@ fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
                 "\nPairwise Mann-Whitney U tests (two-sided p; Cliff's delta of A against B; \
                  verdict at alpha = {alpha}):\n"
             );
-            let _ = writeln!(
-                s,
-                "| A | B | time p | time delta | time | length p | length delta | length |"
-            );
-            let _ = writeln!(s, "|---|---|---:|---:|---|---:|---:|---|");
+            let mut table = Table::new([
+                "A",
+                "B",
+                "time p",
+                "time delta",
+                "time",
+                "length p",
+                "length delta",
+                "length",
+            ])
+            .align([
+                Align::Left,
+                Align::Left,
+                Align::Right,
+                Align::Right,
+                Align::Left,
+                Align::Right,
+                Align::Right,
+                Align::Left,
+            ]);
             for c in pairs {
                 let word = |t: &bench::MetricTest, less: &str, more: &str| match t.verdict {
                     harness::stats::Verdict::Held => format!("A {less}"),
@@ -731,19 +750,18 @@ fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
                     harness::stats::Verdict::NotSignificant => format!("no {more} difference"),
                     harness::stats::Verdict::NoData => "no data".into(),
                 };
-                let _ = writeln!(
-                    s,
-                    "| {} | {} | {} | {} | {} | {} | {} | {} |",
-                    c.a,
-                    c.b,
+                table.row([
+                    c.a.clone(),
+                    c.b.clone(),
                     p_fmt(c.time.p_value),
                     g(c.time.cliffs_delta, 2),
                     word(&c.time, "faster", "significant"),
                     p_fmt(c.length.p_value),
                     g(c.length.cliffs_delta, 2),
                     word(&c.length, "shorter", "significant"),
-                );
+                ]);
             }
+            s.push_str(&table.to_markdown());
         }
         s.push('\n');
     }

@@ -155,7 +155,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             scenario.exploration.frame_period.unwrap_or(10.0)
         )?;
         for snap in &outcome.snapshots {
-            let svg = sim::explore::figure::snapshot_svg(&outcome, snap, &world);
+            let svg = sim::explore::figure::snapshot_svg(&outcome, snap, &world)?;
             put(&format!("explore-{:04.0}s.svg", snap.t), &svg)?;
         }
     }

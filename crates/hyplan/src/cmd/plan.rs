@@ -13,6 +13,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use envmap::{GridMap, InputFrame, LoadOptions};
+use harness::stats::median;
 use hyplan_core::{Goal, Plan, PlanError, Point2, Query};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
@@ -32,12 +33,10 @@ pub struct Args {
     /// Goal `X,Y` in the input's frame.
     #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
     pub goal: (f64, f64),
-    /// Planner `NAME[:key=value,...]`: rrt, rrt-star (to its first solution), bi-rrt,
-    /// rrt-connect; the grid searches astar, dijkstra, theta-star; the papers' hybrids
-    /// rrt-astar-bt (seed 000), rrt-astar-refine (001), hybrid-rrt-astar (002),
-    /// safe-rrt-star (003), ga-pchip. The pairs set any field of the planner (`hyplan
-    /// planners` lists them with their defaults), over the flags below.
-    #[arg(long, default_value = "rrt")]
+    /// Planner `NAME[:key=value,...]`, NAME one of the registry's (listed below). The pairs
+    /// set any field of the planner (`hyplan planners` lists them with their defaults),
+    /// over the flags below.
+    #[arg(long, default_value = "rrt", value_parser = planners::SpecParser::default())]
     pub planner: String,
     /// Maximum edge length in the input's units [default: 5% of the map's diagonal].
     #[arg(long, allow_hyphen_values = true)]
@@ -176,7 +175,7 @@ struct Setup {
     /// World units per input unit.
     scale: f64,
     query: Query,
-    config: harness::PlannerConfig,
+    config: registry::PlannerConfig,
     planner: Box<dyn hyplan_core::Planner>,
     limits: Option<postproc::Limits>,
 }
@@ -479,23 +478,10 @@ fn print_record(args: &Args, r: &RunRecord, err: Option<&PlanError>) -> anyhow::
     Ok(())
 }
 
-fn median(mut v: Vec<f64>) -> Option<f64> {
-    if v.is_empty() {
-        return None;
-    }
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    Some(if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    })
-}
-
 fn print_summary(records: &[RunRecord]) -> std::io::Result<()> {
     let solved: Vec<&RunRecord> = records.iter().filter(|r| r.solved).collect();
-    let time = median(records.iter().map(|r| r.time_s).collect()).unwrap_or(f64::NAN);
-    let length = median(solved.iter().filter_map(|r| r.length).collect());
+    let time = median(records.iter().map(|r| r.time_s)).unwrap_or(f64::NAN);
+    let length = median(solved.iter().filter_map(|r| r.length));
     outln!(
         "solved {} of {} runs; median time {:.3} ms; median length {}",
         solved.len(),

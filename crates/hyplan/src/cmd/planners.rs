@@ -1,15 +1,16 @@
-//! `hyplan planners`: every planner of the registry with its help line and its parameters
-//! at their defaults, in the form `--planner NAME:key=value,...` and the scenario files
-//! take.
+//! `hyplan planners`: every planner of the registry with its help line, its parameters at
+//! their defaults (in the form `--planner NAME:key=value,...` and the scenario files take)
+//! and what it can do; with a name, each parameter's type and meaning too.
 
 use std::process::ExitCode;
 
-use harness::PlannerConfig;
+use registry::{Capabilities, Explored, PlannerConfig, PlannerKind};
 
 /// Options of `hyplan planners`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Show only this planner.
+    /// Show only this planner, with each parameter's type and meaning.
+    #[arg(value_parser = crate::planners::SpecParser::default())]
     pub name: Option<String>,
 }
 
@@ -19,18 +20,82 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         Some(name) => vec![PlannerConfig::by_name(name)?],
         None => PlannerConfig::all().collect(),
     };
-    for c in configs {
+    for c in &configs {
         outln!("{:<18} {}", c.name(), c.help())?;
         let pairs: Vec<String> = c.params().iter().map(|(k, v)| format!("{k}={v}")).collect();
         outln!("{:<18} defaults: {}", "", pairs.join(", "))?;
+        outln!(
+            "{:<18} capabilities: {}",
+            "",
+            capability_words(&c.capabilities())
+        )?;
+        if args.name.is_some() {
+            for p in c.parameters() {
+                outln!(
+                    "{:<18}   {:<24} {:<14} {:<12} {}",
+                    "",
+                    p.name,
+                    p.ty,
+                    p.default,
+                    p.doc
+                )?;
+            }
+        }
     }
+    let placeholder: Vec<&str> = PlannerKind::all()
+        .filter(|k| k.capabilities().wants_default_step)
+        .map(PlannerKind::name)
+        .collect();
     outln!(
         "\nbudget.max_iterations=None: the planner's rule. Grid searches run until they find \
          the path or prove there is none; the others sample max(100000, cells / 4) times \
          (GA-PCHIP: 200 generations). --max-iter N or --time-limit S set a budget.\n\
-         A step of a few units (rrt, rrt-star, bi-rrt, rrt-connect, rrt-astar-refine, \
-         hybrid-rrt-astar, safe-rrt-star) is replaced by 5% of the map's diagonal unless \
-         --step or NAME:step=X is given."
+         A step of a few units ({}) is replaced by 5% of the map's diagonal unless \
+         --step or NAME:step=X is given.",
+        placeholder.join(", ")
     )?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The capabilities as a short phrase list.
+fn capability_words(c: &Capabilities) -> String {
+    let mut words = vec![c.family.to_string()];
+    words.push(
+        if c.deterministic {
+            "deterministic"
+        } else {
+            "randomised"
+        }
+        .into(),
+    );
+    if c.grid_only {
+        words.push("grid maps only".into());
+    }
+    if c.has_step {
+        words.push(
+            if c.wants_default_step {
+                "step (map-sized by default)"
+            } else {
+                "step"
+            }
+            .into(),
+        );
+    }
+    if c.goal_bias {
+        words.push("goal bias".into());
+    }
+    if c.own_goal_radius {
+        words.push("own goal radius".into());
+    }
+    if c.uses_risk {
+        words.push("pays for the risk band".into());
+    }
+    words.push(
+        match c.explored {
+            Explored::Nodes => "explored = tree nodes",
+            Explored::Expansions => "explored = cells expanded",
+        }
+        .into(),
+    );
+    words.join(", ")
 }

@@ -4,6 +4,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::Context;
+use registry::PlannerKind;
+
+use crate::planners::SpecParser;
 
 /// Options of `hyplan sim`.
 #[derive(clap::Args)]
@@ -13,9 +16,9 @@ pub struct Args {
     /// Seed of the run's random streams (laser noise, sampling planners).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Global planner: `dijkstra` (the paper's Algorithm 3, default) or any planner of
-    /// `hyplan plan` (astar, theta-star, rrt, rrt-star, rrt-connect, the hybrids, ...).
-    #[arg(long, default_value = "dijkstra")]
+    /// Global planner `NAME[:key=value,...]`: `dijkstra` (the paper's Algorithm 3 on the
+    /// costmap, default) or any other planner of the registry, as `hyplan plan` runs it.
+    #[arg(long, default_value = "dijkstra", value_parser = SpecParser::with_help(SIM_HELP))]
     pub planner: String,
     /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver
     /// writes it: free 254, occupied 0, unknown 205, `mode: trinary`) and the figures
@@ -30,12 +33,17 @@ pub struct Args {
     pub max_cells: usize,
 }
 
-/// The global planner called `name`: the single place where the CLI's planner registry
-/// (`crate::planners`, over `harness::build_planner`) meets the simulator.
-fn global_planner(name: &str) -> anyhow::Result<sim::GlobalPlanner> {
-    if name == "dijkstra" {
-        return Ok(sim::GlobalPlanner::Dijkstra);
-    }
+/// `--planner`'s help lines where the simulator reads a name otherwise than `hyplan plan`.
+const SIM_HELP: &[(PlannerKind, &str)] = &[(
+    PlannerKind::Dijkstra,
+    "the paper's Algorithm 3: Dijkstra on the costmap, re-planned as the robot maps",
+)];
+
+/// The global planner `spec` names, read through the registry: the single place where the
+/// CLI's planners (`crate::planners`) meet the simulator. `dijkstra` is the paper's
+/// Algorithm 3 on the sim's costmap ([`sim::GlobalPlanner::Dijkstra`]), which has no
+/// parameters; every other planner runs on the sim's map as `hyplan plan` builds it.
+fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
     let flags = crate::planners::PlannerFlags {
         // World units are metres here: 0.25 m steps, like a few costmap cells.
         step: Some(0.25),
@@ -45,9 +53,17 @@ fn global_planner(name: &str) -> anyhow::Result<sim::GlobalPlanner> {
         max_iterations: Some(20_000),
         time_limit: None,
     };
-    Ok(sim::GlobalPlanner::Other(crate::planners::build(
-        name, &flags,
-    )?))
+    let config = crate::planners::configure(spec, &flags)?;
+    if config.kind() == PlannerKind::Dijkstra {
+        if spec.contains(':') {
+            anyhow::bail!(
+                "--planner {spec}: the simulator's dijkstra is the paper's Algorithm 3 on the \
+                 costmap, which takes no parameters"
+            );
+        }
+        return Ok(sim::GlobalPlanner::Dijkstra);
+    }
+    Ok(sim::GlobalPlanner::Other(config.build()))
 }
 
 /// Runs `hyplan sim`: a summary on stdout; exit 0 goal reached, 1 not reached, 2 bad input.

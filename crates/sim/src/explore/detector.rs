@@ -11,16 +11,16 @@
 //!   reference steps by a fraction of the resolution and may skip a cell's corner; an
 //!   occupied cell met first discards the edge, an unknown cell met first publishes that
 //!   cell's centre, a segment leaving the map counts as occupied.
-//! - Nearest neighbours come from [`sampling::NearestIndex`] (a k-d tree) and steering
-//!   from [`sampling::steer`]; the reference scans every node and always steps +y when x
-//!   is equal, which changes nothing but speed.
+//! - The trees are [`sampling::GrowTree`]s: nearest neighbours from its k-d tree and
+//!   steering by [`sampling::steer`]; the reference scans every node and always steps +y
+//!   when x is equal, which changes nothing but speed.
 //! - Each detector draws from its own ChaCha8 stream (the reference seeds a Mersenne
 //!   Twister with a constant).
 
 use hyplan_core::Point2;
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
-use sampling::{NearestIndex, steer};
+use sampling::GrowTree;
 
 use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
 
@@ -177,50 +177,24 @@ pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
     Edge::Free
 }
 
-/// A tree of the detectors: nodes in a k-d tree, a parent per node.
-#[derive(Debug, Clone)]
-struct Tree {
-    index: NearestIndex,
-    parent: Vec<usize>,
-}
-
-impl Tree {
-    fn rooted_at(root: Point2) -> Self {
-        Self {
-            index: NearestIndex::rooted_at(root),
-            parent: vec![0],
-        }
+/// One iteration of a detector's tree: sample, nearest, steer by `eta`, check. Returns
+/// the edge's verdict (the node is added when free).
+fn grow(
+    tree: &mut GrowTree,
+    map: &OccupancyGrid,
+    region: &Region,
+    eta: f64,
+    rng: &mut ChaCha8Rng,
+) -> Edge {
+    let x_rand = region.sample(rng);
+    let Some(step) = tree.step_towards(x_rand, eta) else {
+        return Edge::Occupied;
+    };
+    let edge = edge_check(map, step.from, step.to);
+    if edge == Edge::Free {
+        tree.add(step.to, step.near);
     }
-
-    /// One iteration: sample, nearest, steer by `eta`, check. Returns the edge's verdict
-    /// (the node is added when free).
-    fn grow(
-        &mut self,
-        map: &OccupancyGrid,
-        region: &Region,
-        eta: f64,
-        rng: &mut ChaCha8Rng,
-    ) -> Edge {
-        let x_rand = region.sample(rng);
-        let Some((near, _)) = self.index.nearest(x_rand) else {
-            return Edge::Occupied;
-        };
-        let x_near = self.index.point(near);
-        let x_new = steer(x_near, x_rand, eta);
-        let edge = edge_check(map, x_near, x_new);
-        if edge == Edge::Free {
-            self.index.insert(x_new);
-            self.parent.push(near);
-        }
-        edge
-    }
-
-    fn edges(&self) -> Vec<(Point2, Point2)> {
-        let pts = self.index.points();
-        (1..pts.len())
-            .map(|k| (pts[self.parent[k]], pts[k]))
-            .collect()
-    }
+    edge
 }
 
 /// Algorithm 2: one tree grown from the root for the whole exploration; every edge that
@@ -231,7 +205,7 @@ pub struct GlobalRrtDetector {
     pub eta: f64,
     /// Where it samples.
     pub region: Region,
-    tree: Tree,
+    tree: GrowTree,
     rng: ChaCha8Rng,
 }
 
@@ -242,7 +216,7 @@ impl GlobalRrtDetector {
         Self {
             eta,
             region,
-            tree: Tree::rooted_at(region.root),
+            tree: GrowTree::rooted_at(region.root),
             rng,
         }
     }
@@ -250,7 +224,7 @@ impl GlobalRrtDetector {
     /// One iteration on the current map; a frontier point when the new edge reached
     /// unknown space.
     pub fn step(&mut self, map: &OccupancyGrid) -> Option<Point2> {
-        match self.tree.grow(map, &self.region, self.eta, &mut self.rng) {
+        match grow(&mut self.tree, map, &self.region, self.eta, &mut self.rng) {
             Edge::Unknown(p) => Some(p),
             _ => None,
         }
@@ -259,13 +233,13 @@ impl GlobalRrtDetector {
     /// The tree's edges (parent, child).
     #[must_use]
     pub fn edges(&self) -> Vec<(Point2, Point2)> {
-        self.tree.edges()
+        self.tree.edges().collect()
     }
 
     /// Number of nodes.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.tree.index.len()
+        self.tree.len()
     }
 
     /// Never: the tree holds at least its root.
@@ -283,7 +257,7 @@ pub struct LocalRrtDetector {
     pub eta: f64,
     /// Where it samples.
     pub region: Region,
-    tree: Tree,
+    tree: GrowTree,
     rng: ChaCha8Rng,
 }
 
@@ -294,7 +268,7 @@ impl LocalRrtDetector {
         Self {
             eta,
             region,
-            tree: Tree::rooted_at(region.root),
+            tree: GrowTree::rooted_at(region.root),
             rng,
         }
     }
@@ -302,9 +276,9 @@ impl LocalRrtDetector {
     /// One iteration on the current map with the robot at `robot`; a frontier point
     /// when the new edge reached unknown space (the tree is then reset at `robot`).
     pub fn step(&mut self, map: &OccupancyGrid, robot: Point2) -> Option<Point2> {
-        match self.tree.grow(map, &self.region, self.eta, &mut self.rng) {
+        match grow(&mut self.tree, map, &self.region, self.eta, &mut self.rng) {
             Edge::Unknown(p) => {
-                self.tree = Tree::rooted_at(robot);
+                self.tree = GrowTree::rooted_at(robot);
                 Some(p)
             }
             _ => None,
@@ -314,13 +288,13 @@ impl LocalRrtDetector {
     /// The tree's edges (parent, child).
     #[must_use]
     pub fn edges(&self) -> Vec<(Point2, Point2)> {
-        self.tree.edges()
+        self.tree.edges().collect()
     }
 
     /// Number of nodes.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.tree.index.len()
+        self.tree.len()
     }
 
     /// Never: the tree holds at least its root.

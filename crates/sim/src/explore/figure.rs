@@ -1,69 +1,75 @@
 //! Figures of an exploration: the built map at a snapshot with the robot's track so far,
 //! the trees (global green, local blue), the published points (orange), the filtered
-//! frontiers (magenta) and the goal (red ring), over the true world's outlines.
+//! frontiers (magenta) and the goal (red ring), over the true world's outlines; and the
+//! run as an animated PNG. `viz` draws them; this module says what they show.
 
-use std::fmt::Write as _;
+use hyplan_core::Point2;
+use viz::{FigureError, GridImage, Mark, Scene, Stroke, rgb};
 
 use crate::explore::run::{ExploreOutcome, Snapshot};
-use crate::record::{polyline, world_svg_with};
+use crate::mapping::{FREE, OCCUPIED};
+use crate::record::world_scene;
 use crate::world::World;
 
+/// Pixels per metre of the snapshot figures (as the run's figures, `crate::record`).
+const SCALE: f64 = 30.0;
+
 /// The SVG of one snapshot of `outcome`.
+///
+/// # Errors
+///
+/// [`FigureError`] when the map layer cannot be encoded.
+pub fn snapshot_svg(
+    outcome: &ExploreOutcome,
+    snap: &Snapshot,
+    world: &World,
+) -> Result<String, FigureError> {
+    snapshot_scene(outcome, snap, world).to_svg()
+}
+
+/// The scene of [`snapshot_svg`] (also drawn as PNG by [`Scene::png_bytes`]).
 #[must_use]
-pub fn snapshot_svg(outcome: &ExploreOutcome, snap: &Snapshot, world: &World) -> String {
-    let mut s = String::new();
-    world_svg_with(Some(&snap.map), world, &mut s);
-    let mut edges = |list: &[(hyplan_core::Point2, hyplan_core::Point2)], colour: &str| {
-        let _ = write!(
-            s,
-            r#"<path fill="none" stroke="{colour}" stroke-width="0.02" d=""#
-        );
-        for (a, b) in list {
-            let _ = write!(s, "M{:.3} {:.3}L{:.3} {:.3}", a.x, a.y, b.x, b.y);
-        }
-        s.push_str("\"/>\n");
-    };
-    edges(&snap.global_edges, "#2a2");
-    edges(&snap.local_edges, "#36c");
-    let track = polyline(
-        outcome
-            .track
-            .iter()
-            .take_while(|(t, _)| *t <= snap.t)
-            .map(|(_, p)| (p.x, p.y)),
-    );
-    let _ = writeln!(
-        s,
-        r##"<polyline points="{track}" fill="none" stroke="#000" stroke-width="0.06"/>"##
-    );
-    for p in &snap.published {
-        let _ = writeln!(
-            s,
-            r##"<circle cx="{:.3}" cy="{:.3}" r="0.05" fill="#f80"/>"##,
-            p.x, p.y
-        );
+pub fn snapshot_scene(outcome: &ExploreOutcome, snap: &Snapshot, world: &World) -> Scene {
+    let mut scene = world_scene(Some(&snap.map), world);
+    for (edges, colour) in [
+        (&snap.global_edges, rgb(0x2, 0xa, 0x2)),
+        (&snap.local_edges, rgb(0x3, 0x6, 0xc)),
+    ] {
+        scene.push(Mark::Segments {
+            pairs: edges.clone(),
+            stroke: Stroke::new(colour, 0.02 * SCALE),
+        });
     }
-    for p in &snap.frontiers {
-        let _ = writeln!(
-            s,
-            r##"<circle cx="{:.3}" cy="{:.3}" r="0.15" fill="#d0d"/>"##,
-            p.x, p.y
-        );
+    let track: Vec<Point2> = outcome
+        .track
+        .iter()
+        .take_while(|(t, _)| *t <= snap.t)
+        .map(|(_, p)| Point2::new(p.x, p.y))
+        .collect();
+    scene.push(Mark::polyline(
+        track,
+        Stroke::new([0, 0, 0, 255], 0.06 * SCALE),
+    ));
+    for &p in &snap.published {
+        scene.push(Mark::disc(p, 0.05, rgb(0xf, 0x8, 0x0)));
+    }
+    for &p in &snap.frontiers {
+        scene.push(Mark::disc(p, 0.15, rgb(0xd, 0x0, 0xd)));
     }
     if let Some(g) = snap.goal {
-        let _ = writeln!(
-            s,
-            r##"<circle cx="{:.3}" cy="{:.3}" r="0.3" fill="none" stroke="#e00" stroke-width="0.06"/>"##,
-            g.x, g.y
-        );
+        scene.push(Mark::ring(
+            g,
+            0.3,
+            Stroke::new(rgb(0xe, 0x0, 0x0), 0.06 * SCALE),
+        ));
     }
-    let _ = writeln!(
-        s,
-        r##"<circle cx="{:.3}" cy="{:.3}" r="0.18" fill="#fc0" stroke="#000" stroke-width="0.03"/>"##,
-        snap.pose.x, snap.pose.y
-    );
-    s.push_str("</g></svg>\n");
-    s
+    scene.push(Mark::Disc {
+        center: Point2::new(snap.pose.x, snap.pose.y),
+        radius: 0.18,
+        fill: Some(rgb(0xf, 0xc, 0x0)),
+        stroke: Some(Stroke::new([0, 0, 0, 255], 0.03 * SCALE)),
+    });
+    scene
 }
 
 /// The frames of `outcome` (see [`crate::explore::Exploration::frame_period`]) as an
@@ -73,78 +79,43 @@ pub fn snapshot_svg(outcome: &ExploreOutcome, snap: &Snapshot, world: &World) ->
 ///
 /// # Errors
 ///
-/// No frames, or the PNG encoder's error, as text.
-pub fn animation_png(outcome: &ExploreOutcome, delay_ms: u16) -> Result<Vec<u8>, String> {
-    let (w, h) = (outcome.map.width(), outcome.map.height());
-    if outcome.frames.is_empty() {
-        return Err("no frames were kept (exploration.frame_period is None)".into());
-    }
-    let n = u32::try_from(outcome.frames.len()).map_err(|e| e.to_string())?;
-    let mut bytes = Vec::new();
-    {
-        // Five colours: an indexed image is a third of RGB's bytes to compress, and the
-        // fast deflate keeps a 100-frame animation from costing more than the run.
-        const WHITE: u8 = 0;
-        const BLACK: u8 = 1;
-        const GREY: u8 = 2;
-        const TRACK: u8 = 3;
-        const ROBOT: u8 = 4;
-        let mut enc = png::Encoder::new(&mut bytes, w as u32, h as u32);
-        enc.set_color(png::ColorType::Indexed);
-        enc.set_depth(png::BitDepth::Eight);
-        enc.set_palette(vec![
-            255, 255, 255, 0, 0, 0, 160, 160, 160, 30, 60, 200, 220, 0, 0,
-        ]);
-        enc.set_compression(png::Compression::Fast);
-        enc.set_animated(n, 0).map_err(|e| e.to_string())?;
-        enc.set_frame_delay(delay_ms, 1000)
-            .map_err(|e| e.to_string())?;
-        let mut writer = enc.write_header().map_err(|e| e.to_string())?;
-        let res = outcome.map.params.resolution;
-        let o = outcome.map.origin();
-        let cell = |x: f64, y: f64| {
-            let (i, j) = (((x - o.x) / res).floor(), ((y - o.y) / res).floor());
-            (i >= 0.0 && j >= 0.0 && (i as usize) < w && (j as usize) < h)
-                .then_some((i as usize, j as usize))
-        };
-        let mut pixels = vec![0u8; w * h];
-        for (t, pose, values) in &outcome.frames {
-            for j in 0..h {
-                // PNG rows go top-down; the map's rows bottom-up.
-                let row = h - 1 - j;
-                for (px, &v) in pixels[row * w..(row + 1) * w]
-                    .iter_mut()
-                    .zip(&values[j * w..(j + 1) * w])
-                {
-                    *px = match v {
-                        crate::mapping::FREE => WHITE,
-                        crate::mapping::OCCUPIED => BLACK,
-                        _ => GREY,
-                    };
-                }
-            }
-            let mut put = |x: f64, y: f64, c: u8| {
-                if let Some((i, j)) = cell(x, y) {
-                    pixels[(h - 1 - j) * w + i] = c;
-                }
+/// [`FigureError::NoFrames`] when no frame was kept (`exploration.frame_period` is
+/// `None`), or the encoder's error.
+pub fn animation_png(outcome: &ExploreOutcome, delay_ms: u16) -> Result<Vec<u8>, FigureError> {
+    const WHITE: u8 = 0;
+    const BLACK: u8 = 1;
+    const GREY: u8 = 2;
+    const TRACK: u8 = 3;
+    const ROBOT: u8 = 4;
+    let palette = vec![
+        [255, 255, 255, 255],
+        [0, 0, 0, 255],
+        [160, 160, 160, 255],
+        [30, 60, 200, 255],
+        [220, 0, 0, 255],
+    ];
+    let map = &outcome.map;
+    let res = map.params.resolution;
+    let empty = GridImage::filled(map.width(), map.height(), map.origin(), res, palette);
+    let frames = outcome.frames.iter().map(|(t, pose, values)| {
+        let mut grid = empty.clone();
+        for (cell, &v) in grid.cells_mut().iter_mut().zip(values) {
+            *cell = match v {
+                FREE => WHITE,
+                OCCUPIED => BLACK,
+                _ => GREY,
             };
-            for (_, p) in outcome.track.iter().take_while(|(s, _)| s <= t) {
-                put(p.x, p.y, TRACK);
-            }
-            for dx in -2i32..=2 {
-                for dy in -2i32..=2 {
-                    put(
-                        pose.x + f64::from(dx) * res,
-                        pose.y + f64::from(dy) * res,
-                        ROBOT,
-                    );
-                }
-            }
-            writer
-                .write_image_data(&pixels)
-                .map_err(|e| e.to_string())?;
         }
-        writer.finish().map_err(|e| e.to_string())?;
-    }
-    Ok(bytes)
+        for (_, p) in outcome.track.iter().take_while(|(s, _)| s <= t) {
+            grid.paint(Point2::new(p.x, p.y), TRACK);
+        }
+        for dx in -2i32..=2 {
+            for dy in -2i32..=2 {
+                let at = Point2::new(pose.x + f64::from(dx) * res, pose.y + f64::from(dy) * res);
+                grid.paint(at, ROBOT);
+            }
+        }
+        grid
+    });
+    viz::apng_indexed(frames, delay_ms)
 }

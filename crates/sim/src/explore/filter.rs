@@ -107,16 +107,7 @@ fn built_cost_cells(inflation: &Inflation, resolution: f64) -> usize {
 /// The costmap's ROS value (0-100) at `p`; 100 off the map.
 #[must_use]
 pub fn cost_at(costmap: &Costmap, values: &[i8], p: Point2) -> i8 {
-    let b = costmap.map.bounds();
-    let res = costmap.map.resolution();
-    let (w, h) = (costmap.map.width(), costmap.map.height());
-    let u = (p.x - b.min.x) / res;
-    let v = (p.y - b.min.y) / res;
-    if u >= 0.0 && v >= 0.0 && (u as usize) < w && (v as usize) < h {
-        values[v as usize * w + u as usize]
-    } else {
-        100
-    }
+    costmap.map.frame().index_of(p).map_or(100, |k| values[k])
 }
 
 /// The filter's state: the frontiers kept from earlier cycles.

@@ -29,6 +29,7 @@
 
 pub mod assigner;
 pub mod detector;
+mod explorer;
 pub mod figure;
 pub mod filter;
 pub mod frontier;
@@ -39,12 +40,13 @@ pub mod viewpoint;
 
 pub use assigner::{Assigner, revenue};
 pub use detector::{Edge, GlobalRrtDetector, LocalRrtDetector, Region, RegionError, edge_check};
+pub use explorer::{GLOBAL_STREAM, LOCAL_STREAM};
 pub use filter::{Filter, information_gain, mean_shift};
 pub use frontier::{frontier_cells, frontier_clusters, nearest_frontier};
 pub use params::{Exploration, Strategy};
 pub use run::{
-    Coverage, ExploreOutcome, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM, Snapshot, explore,
-    explore_with, reachable_free, region_of,
+    ContactCounter, Coverage, CoverageMeter, ExploreOutcome, FrameRecorder, GoalEnd, GoalRecord,
+    Snapshot, TrackRecorder, explore, explore_with, reachable_free, region_of,
 };
 pub use selfmap::{SelfMapped, explore_then_navigate};
 pub use viewpoint::{ViewPoints, sees};

@@ -77,16 +77,11 @@ impl ViewPoints<'_> {
     /// usable cell within range sees it.
     #[must_use]
     pub fn best(&self, map: &OccupancyGrid, target: Point2) -> Option<(f64, Point2)> {
-        let b = self.costmap.map.bounds();
-        let res = self.costmap.map.resolution();
-        let (w, h) = (self.costmap.map.width(), self.costmap.map.height());
-        let lo = |x: f64, o: f64| ((x - self.range - o) / res).floor().max(0.0) as usize;
-        let hi = |x: f64, o: f64, n: usize| {
-            (((x + self.range - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize
-        };
+        let frame = self.costmap.map.frame();
+        let w = frame.width;
         let mut best: Option<(f64, Point2)> = None;
-        for v in lo(target.y, b.min.y)..hi(target.y, b.min.y, h) {
-            for u in lo(target.x, b.min.x)..hi(target.x, b.min.x, w) {
+        for v in frame.rows(target.y - self.range, target.y + self.range) {
+            for u in frame.columns(target.x - self.range, target.x + self.range) {
                 let c = v * w + u;
                 if !self.usable(c) {
                     continue;

@@ -31,6 +31,10 @@
 use hyplan_core::{Goal, Point2, Query, Zone};
 use rand::Rng;
 
+mod canvas;
+
+use canvas::{Canvas, connected, lattice_neighbours, nearest_free};
+
 use crate::{GridMap, Mask, distance_transform, zones};
 
 /// A generated map with a suggested query.
@@ -144,58 +148,6 @@ impl HardMap {
             HardMap::FloorPlan => floor_plan(2000, 2000, corridor, 4, rng),
             HardMap::Clutter => clutter(cells(50.0), cells(50.0), 0.3, corridor, rng),
             HardMap::Rooms => rooms(5, 5, cells(6.0), corridor, 3, rng),
-        }
-    }
-}
-
-/// A builder over a Forbidden/Free cell grid, x right and y up from the lower-left cell.
-struct Canvas {
-    width: usize,
-    height: usize,
-    blocked: Vec<bool>,
-}
-
-impl Canvas {
-    fn new(width: usize, height: usize) -> Self {
-        let (width, height) = (width.max(1), height.max(1));
-        Self {
-            width,
-            height,
-            blocked: vec![false; width * height],
-        }
-    }
-
-    /// Sets the cells of `[x0, x1) x [y0, y1)` (clipped to the grid).
-    fn rect(&mut self, x0: usize, y0: usize, x1: usize, y1: usize, blocked: bool) {
-        if x0 >= x1 {
-            return;
-        }
-        for y in y0.min(self.height)..y1.min(self.height) {
-            self.blocked[y * self.width + x0.min(self.width)..y * self.width + x1.min(self.width)]
-                .fill(blocked);
-        }
-    }
-
-    fn get(&self, x: usize, y: usize) -> bool {
-        x >= self.width || y >= self.height || self.blocked[y * self.width + x]
-    }
-
-    fn centre(x: usize, y: usize) -> Point2 {
-        Point2::new(x as f64 + 0.5, y as f64 + 0.5)
-    }
-
-    fn finish(self, start: (usize, usize), goal: (usize, usize)) -> Generated {
-        let zones = self
-            .blocked
-            .iter()
-            .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
-            .collect();
-        let map = GridMap::from_zones(self.width, self.height, 1.0, Point2::origin(), zones)
-            .unwrap_or_else(|_| unreachable!("the canvas has at least one cell"));
-        Generated {
-            map,
-            start: Self::centre(start.0, start.1),
-            goal: Self::centre(goal.0, goal.1),
         }
     }
 }
@@ -444,22 +396,6 @@ struct Door {
     to: usize,
 }
 
-/// The free cell nearest to `p` in growing square rings (`p` itself if free).
-fn nearest_free(canvas: &Canvas, p: (usize, usize)) -> (usize, usize) {
-    let n = canvas.width.max(canvas.height);
-    for r in 0..n {
-        let (x0, y0) = (p.0.saturating_sub(r), p.1.saturating_sub(r));
-        for y in y0..=(p.1 + r).min(canvas.height - 1) {
-            for x in x0..=(p.0 + r).min(canvas.width - 1) {
-                if !canvas.get(x, y) {
-                    return (x, y);
-                }
-            }
-        }
-    }
-    p
-}
-
 /// Random clutter: a `width x height` map with axis-aligned rectangles (sides from 1 to 4
 /// `clear` widths) dropped at random until about `density` (clamped to [0, 0.6]) of the
 /// area is covered, none within `clear` cells of the start (lower-left) or goal
@@ -515,34 +451,6 @@ pub fn clutter<R: Rng + ?Sized>(
         }
     }
     canvas.finish(start, goal)
-}
-
-/// Whether `a` and `b` are joined by 4-connected free cells (a plain flood fill; used
-/// while generating, where maps are small).
-fn connected(canvas: &Canvas, a: (usize, usize), b: (usize, usize)) -> bool {
-    let mut seen = vec![false; canvas.blocked.len()];
-    let mut stack = vec![a];
-    seen[a.1 * canvas.width + a.0] = true;
-    while let Some((x, y)) = stack.pop() {
-        if (x, y) == b {
-            return true;
-        }
-        let mut push = |x: usize, y: usize| {
-            if !canvas.get(x, y) && !seen[y * canvas.width + x] {
-                seen[y * canvas.width + x] = true;
-                stack.push((x, y));
-            }
-        };
-        if x > 0 {
-            push(x - 1, y);
-        }
-        push(x + 1, y);
-        if y > 0 {
-            push(x, y - 1);
-        }
-        push(x, y + 1);
-    }
-    false
 }
 
 /// A grid of `nx x ny` square rooms, `room` cells inside, walls `wall` cells thick,
@@ -662,25 +570,6 @@ pub fn random_query<R: Rng + ?Sized>(
         }
     }
     None
-}
-
-/// The 4-neighbours of cell `(i, j)` of an `nx` x `ny` lattice (of maze cells or rooms),
-/// in the order the generators draw from: left, right, down, up.
-fn lattice_neighbours(i: usize, j: usize, nx: usize, ny: usize) -> Vec<(usize, usize)> {
-    let mut v = Vec::with_capacity(4);
-    if i > 0 {
-        v.push((i - 1, j));
-    }
-    if i + 1 < nx {
-        v.push((i + 1, j));
-    }
-    if j > 0 {
-        v.push((i, j - 1));
-    }
-    if j + 1 < ny {
-        v.push((i, j + 1));
-    }
-    v
 }
 
 #[cfg(test)]

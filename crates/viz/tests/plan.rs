@@ -1,12 +1,8 @@
-//! The world figure: one zone layer (`envmap::render_zones`) under one set of marks, the
-//! same in the PNG and in the SVG.
-
-use std::path::Path;
-
 use base64::Engine as _;
 use envmap::{GridMap, decode_picture, render_zones};
-use harness::{CURVE_COLOUR, Mark, PATH_COLOUR, Scene};
 use hyplan_core::{Goal, Point2, Query};
+use std::path::Path;
+use viz::{CURVE_COLOUR, Mark, PATH_COLOUR, PlanFigure, hex};
 
 fn map() -> GridMap {
     GridMap::from_ascii(
@@ -34,11 +30,11 @@ fn query() -> Query {
 fn png_zone_layer_is_render_zones_scaled() {
     let map = map();
     let query = query();
-    let scene = Scene::new(&map, &query);
-    let bytes = scene.png_bytes(Path::new("t.png")).unwrap();
+    let figure = PlanFigure::new(&map, &query);
+    let bytes = figure.png_bytes().unwrap();
     let png = decode_picture(&bytes, Path::new("t.png")).unwrap();
     let zones = render_zones(&map, &[]);
-    let s = scene.scale() as usize;
+    let s = figure.scale() as usize;
     assert_eq!(s, 60, "10 cells wide -> 600 px");
     assert_eq!((png.width(), png.height()), (600, 300));
     let mut checked = 0;
@@ -64,17 +60,18 @@ fn svg_embeds_the_same_zone_layer_and_draws_path_and_curve() {
     let query = query();
     let path = [query.start, Point2::new(9.5, 0.5), Point2::new(9.5, 4.5)];
     let curve = [query.start, Point2::new(5.0, 0.6), Point2::new(9.5, 4.5)];
-    let scene = Scene::new(&map, &query).path(&path).curve(&curve);
-    let svg = scene.to_svg().unwrap();
+    let svg = PlanFigure::new(&map, &query)
+        .path(&path)
+        .curve(&curve)
+        .to_svg()
+        .unwrap();
     let start = svg.find("data:image/png;base64,").unwrap() + "data:image/png;base64,".len();
     let end = start + svg[start..].find('"').unwrap();
     let bytes = base64::engine::general_purpose::STANDARD
         .decode(&svg[start..end])
         .unwrap();
     let embedded = decode_picture(&bytes, Path::new("svg")).unwrap();
-    let plain = Scene::new(&map, &query)
-        .png_bytes(Path::new("t.png"))
-        .unwrap();
+    let plain = PlanFigure::new(&map, &query).png_bytes().unwrap();
     let plain = decode_picture(&plain, Path::new("t.png")).unwrap();
     // The plain PNG has the markers on top; compare away from them.
     let (w, h) = (embedded.width(), embedded.height());
@@ -82,7 +79,6 @@ fn svg_embeds_the_same_zone_layer_and_draws_path_and_curve() {
     for (x, y) in [(150, 150), (210, 120), (330, 90), (450, 200), (590, 290)] {
         assert_eq!(embedded.pixel(x, y), &plain.pixel(x, y)[..3], "({x}, {y})");
     }
-    let hex = |c: [u8; 4]| format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
     assert!(svg.contains(&hex(PATH_COLOUR)), "raw path");
     assert!(svg.contains(&hex(CURVE_COLOUR)), "curve");
     // Only the zone layer is a raster; nothing else draws cells.
@@ -90,17 +86,19 @@ fn svg_embeds_the_same_zone_layer_and_draws_path_and_curve() {
     assert_eq!(svg.matches("<rect").count(), 0);
 }
 
-/// Marks are in pixels with y down: the start at cell (0, 0) of the map (bottom-left) is
-/// near the picture's bottom-left corner; the path is one polyline.
+/// Marks are in world coordinates; the scene puts the start at cell (0, 0) of the map
+/// (bottom-left) near the picture's bottom-left corner, y down.
 #[test]
-fn marks_are_in_pixels_y_down() {
+fn marks_land_on_pixels_y_down() {
     let map = map();
     let query = query();
     let path = [query.start, Point2::new(9.5, 4.5)];
-    let marks = Scene::new(&map, &query).path(&path).marks();
+    let figure = PlanFigure::new(&map, &query).path(&path);
+    let marks = figure.marks();
     let Some(Mark::Polyline { points, .. }) = marks.first() else {
         panic!("first mark is the path: {marks:?}")
     };
-    assert_eq!(points[0], [30.0, 270.0]);
-    assert_eq!(points[1], [570.0, 30.0]);
+    let scene = figure.scene();
+    assert_eq!(scene.to_px(points[0]), [30.0, 270.0]);
+    assert_eq!(scene.to_px(points[1]), [570.0, 30.0]);
 }

@@ -1,0 +1,121 @@
+//! Where a grid's cells lie in the world: the one conversion between metres and cells.
+
+use std::ops::Range;
+
+use hyplan_core::{Bounds, Point2};
+
+/// A grid's place in the world: its lower-left corner, the side of its square cells and
+/// its size in cells. Cell `(i, j)` is column `i` from the left, row `j` from the bottom,
+/// and covers `[origin + i res, origin + (i + 1) res)` on x (likewise on y).
+///
+/// ```
+/// use envmap::CellFrame;
+/// use hyplan_core::Point2;
+/// let frame = CellFrame::new(Point2::new(-1.0, 0.0), 0.5, 4, 2);
+/// assert_eq!(frame.cell_of(Point2::new(0.2, 0.7)), Some((2, 1)));
+/// assert_eq!(frame.cell_center(2, 1), Point2::new(0.25, 0.75));
+/// assert_eq!(frame.cell_of(Point2::new(1.0, 0.2)), None); // past the right side
+/// assert_eq!(frame.columns(-0.6, 0.1), 0..3);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CellFrame {
+    /// Lower-left corner of cell `(0, 0)`.
+    pub origin: Point2,
+    /// Side of a cell, world units.
+    pub resolution: f64,
+    /// Columns.
+    pub width: usize,
+    /// Rows.
+    pub height: usize,
+}
+
+impl CellFrame {
+    /// A frame of `width x height` cells of side `resolution` from `origin`.
+    #[must_use]
+    pub const fn new(origin: Point2, resolution: f64, width: usize, height: usize) -> Self {
+        Self {
+            origin,
+            resolution,
+            width,
+            height,
+        }
+    }
+
+    /// The frame of cells of side `resolution` covering `bounds` from its lower-left
+    /// corner (at least one cell a side; the last row and column may reach past it).
+    ///
+    /// ```
+    /// use envmap::CellFrame;
+    /// use hyplan_core::{Bounds, Point2};
+    /// let f = CellFrame::covering(Bounds::new(Point2::origin(), Point2::new(1.0, 0.3)), 0.25);
+    /// assert_eq!((f.width, f.height), (4, 2));
+    /// ```
+    #[must_use]
+    pub fn covering(bounds: Bounds, resolution: f64) -> Self {
+        Self {
+            origin: bounds.min,
+            resolution,
+            width: (bounds.width() / resolution).ceil().max(1.0) as usize,
+            height: (bounds.height() / resolution).ceil().max(1.0) as usize,
+        }
+    }
+
+    /// Number of cells.
+    #[must_use]
+    pub const fn cells(&self) -> usize {
+        self.width * self.height
+    }
+
+    /// `p` in cell units from the origin (cell `(i, j)` spans `[i, i + 1) x [j, j + 1)`).
+    #[must_use]
+    pub fn coords(&self, p: Point2) -> (f64, f64) {
+        (
+            (p.x - self.origin.x) / self.resolution,
+            (p.y - self.origin.y) / self.resolution,
+        )
+    }
+
+    /// The cell holding `p`, `None` outside the grid.
+    #[must_use]
+    pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
+        let (u, v) = self.coords(p);
+        (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
+            .then_some((u as usize, v as usize))
+    }
+
+    /// The row-major index (rows from the bottom) of the cell holding `p`.
+    #[must_use]
+    pub fn index_of(&self, p: Point2) -> Option<usize> {
+        self.cell_of(p).map(|(i, j)| j * self.width + i)
+    }
+
+    /// The world position of the centre of cell `(i, j)`.
+    #[must_use]
+    pub fn cell_center(&self, i: usize, j: usize) -> Point2 {
+        let res = self.resolution;
+        Point2::new(
+            self.origin.x + (i as f64 + 0.5) * res,
+            self.origin.y + (j as f64 + 0.5) * res,
+        )
+    }
+
+    /// The columns of the cells that `[lo, hi]` (x, world units) touches, clamped to the
+    /// grid (empty when it misses).
+    #[must_use]
+    pub fn columns(&self, lo: f64, hi: f64) -> Range<usize> {
+        span(lo, hi, self.origin.x, self.resolution, self.width)
+    }
+
+    /// The rows of the cells that `[lo, hi]` (y, world units) touches, clamped to the grid.
+    #[must_use]
+    pub fn rows(&self, lo: f64, hi: f64) -> Range<usize> {
+        span(lo, hi, self.origin.y, self.resolution, self.height)
+    }
+}
+
+/// The cells `[lo, hi]` touches along one axis of `n` cells of side `res` from `o`.
+fn span(lo: f64, hi: f64, o: f64, res: f64, n: usize) -> Range<usize> {
+    let a = ((lo - o) / res).floor().max(0.0) as usize;
+    let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
+    a..b.max(a)
+}

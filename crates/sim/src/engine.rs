@@ -1,0 +1,451 @@
+//! The one simulation engine: integer ticks, laser, map, tracker, navigator, exact motion.
+//!
+//! Time is a tick counter ([`TICKS_PER_SECOND`] = 200, 5 ms); rates are rounded to whole
+//! ticks (laser 40 Hz = every 5 ticks, control 10 Hz = every 20, map 2 Hz = every 100).
+//! Nothing reads the wall clock. Randomness comes from ChaCha8 streams of the run's seed:
+//! [`NOISE_STREAM`] for laser noise, [`PLANNER_STREAM`] for the global planner (goal
+//! sources draw their own), so changing the planner never changes the noise.
+//!
+//! A tick: the people move ([`PeopleModel`]); on laser ticks the robot scans, integrates
+//! the scan into its map on map ticks, and feeds the tracker and the obstacle memory; the
+//! [`GoalSource`] decides (a fixed goal, an exploration strategy, a caller); on control
+//! ticks the navigator (or the goal source's own command) sets the twist; the
+//! [`Observer`]s see the tick; the robot moves along the exact arc.
+
+use hyplan_core::{Bounds, Point2};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::costmap::{CostmapBuilder, ObstacleMemory};
+use crate::kinematics::{self, Pose, Twist};
+use crate::laser::{LaserModel, Scan};
+use crate::mapping::OccupancyGrid;
+use crate::navigator::{NavEvent, Navigator};
+use crate::people::{PeopleModel, Scripted};
+use crate::planner::GlobalPlanner;
+use crate::scenario::Scenario;
+use crate::tracking::Tracker;
+use crate::world::{Disc, World};
+
+/// Simulation ticks per second.
+pub const TICKS_PER_SECOND: u64 = 200;
+
+/// Laser-noise stream of a run's seed.
+pub const NOISE_STREAM: u64 = 1;
+/// Planner stream of a run's seed.
+pub const PLANNER_STREAM: u64 = 2;
+
+/// The ChaCha8 stream `s` of `seed`: each consumer of randomness draws from its own.
+///
+/// ```
+/// use rand::Rng;
+/// let mut a = sim::stream(7, sim::NOISE_STREAM);
+/// let mut b = sim::stream(7, sim::NOISE_STREAM);
+/// assert_eq!(a.random::<u64>(), b.random::<u64>());
+/// ```
+#[must_use]
+pub fn stream(seed: u64, s: u64) -> ChaCha8Rng {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    rng.set_stream(s);
+    rng
+}
+
+/// Ticks between two events at `hz`, at least one.
+///
+/// ```
+/// assert_eq!(sim::every(40.0), 5);
+/// ```
+#[must_use]
+pub fn every(hz: f64) -> u64 {
+    ((TICKS_PER_SECOND as f64 / hz).round() as u64).max(1)
+}
+
+/// The time of `tick`, s (a product with the tick length, as every time of a run is
+/// computed, so that times compare bit for bit).
+///
+/// ```
+/// assert_eq!(sim::time_of(200), 1.0);
+/// ```
+#[must_use]
+pub fn time_of(tick: u64) -> f64 {
+    tick as f64 * (1.0 / TICKS_PER_SECOND as f64)
+}
+
+/// Whether the run goes on after this step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flow {
+    /// Keep going.
+    Continue,
+    /// End the run at this tick (the observers still see it).
+    Stop,
+}
+
+/// What happened in one tick, for the observers.
+#[derive(Debug, Clone, Copy)]
+pub struct TickInfo<'a> {
+    /// The tick.
+    pub tick: u64,
+    /// Its time, s.
+    pub t: f64,
+    /// The laser scanned.
+    pub sensed: bool,
+    /// A control step ran (the navigator's or the goal source's command).
+    pub controlled: bool,
+    /// The navigator's events of this tick's control step.
+    pub events: &'a [NavEvent],
+    /// The goal source ended the run at this tick.
+    pub stopped: bool,
+}
+
+/// Chooses where the robot goes: a fixed goal, an exploration strategy, a script.
+///
+/// Every method has a default, so a source implements what it needs.
+pub trait GoalSource {
+    /// Every tick, after sensing and before control: may give the navigator a goal
+    /// ([`Navigator::set_goal`]); [`Flow::Stop`] ends the run before this tick's control.
+    fn decide(&mut self, _sim: &mut Sim<'_>) -> Flow {
+        Flow::Continue
+    }
+    /// On control ticks: the command wanted instead of the navigator's (turning on the
+    /// spot, facing a frontier), limited by the controller's acceleration; `None` lets the
+    /// navigator drive.
+    fn command(&mut self, _sim: &Sim<'_>) -> Option<Twist> {
+        None
+    }
+    /// After a control step, with the navigator's events; [`Flow::Stop`] ends the run at
+    /// this tick.
+    fn controlled(&mut self, _sim: &Sim<'_>, _events: &[NavEvent]) -> Flow {
+        Flow::Continue
+    }
+    /// After the robot moved from `from` to `to`, a distance `step`.
+    fn moved(&mut self, _from: Pose, _to: Pose, _step: f64) {}
+}
+
+/// Watches a run: traces, coverage, snapshots, animation frames, logs.
+pub trait Observer {
+    /// Before a scan is integrated into the map.
+    fn map_updating(&mut self, _sim: &Sim<'_>, _scan: &Scan) {}
+    /// After the scan was integrated (and the footprint cleared, if the run does).
+    fn map_updated(&mut self, _sim: &Sim<'_>, _scan: &Scan) {}
+    /// At the end of every tick, before the robot moves.
+    fn ticked(&mut self, _sim: &Sim<'_>, _info: &TickInfo<'_>) {}
+}
+
+/// The goal source of a plain navigation run: the navigator's goal, until it is reached
+/// or given up.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FixedGoal;
+
+impl GoalSource for FixedGoal {
+    fn controlled(&mut self, sim: &Sim<'_>, _events: &[NavEvent]) -> Flow {
+        use crate::navigator::NavState;
+        if matches!(sim.nav.state(), NavState::Reached | NavState::Failed) {
+            Flow::Stop
+        } else {
+            Flow::Continue
+        }
+    }
+}
+
+/// Tick periods of a run.
+#[derive(Debug, Clone, Copy)]
+struct Rates {
+    laser: u64,
+    control: u64,
+    map: u64,
+    max_ticks: u64,
+}
+
+/// One simulated robot in one world: its state is this struct, its loop [`Sim::run`].
+///
+/// ```
+/// use sim::{FixedGoal, GlobalPlanner, Scenario, Sim};
+/// let text = r#"SimScenario(name: "hall", world: (size: (6.0, 3.0)),
+///     start: (0.5, 1.5), goal: (5.5, 1.5))"#;
+/// let path = std::path::Path::new("hall.ron");
+/// let scenario = Scenario::parse(text, path)?;
+/// let world = scenario.build_world(path)?;
+/// let goal = hyplan_core::Point2::new(5.5, 1.5);
+/// let mut sim = Sim::new(&scenario, &world, 7, GlobalPlanner::Dijkstra, goal);
+/// sim.run(&mut FixedGoal, &mut []);
+/// assert!(sim.pose().x > 5.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub struct Sim<'w> {
+    /// The scenario.
+    pub scenario: &'w Scenario,
+    /// The true world.
+    pub world: &'w World,
+    /// The navigator: global planner, costmaps, local controller.
+    pub nav: Navigator,
+    /// The map built from the scans.
+    pub map: OccupancyGrid,
+    /// Recent laser hits, for the costmap and the collision checks.
+    pub memory: ObstacleMemory,
+    /// Moving obstacles tracked from the scans.
+    pub tracker: Tracker,
+    people_model: Box<dyn PeopleModel + 'w>,
+    people: Vec<Disc>,
+    laser: LaserModel,
+    noise: ChaCha8Rng,
+    rates: Rates,
+    clear_footprint: bool,
+    tick: u64,
+    pose: Pose,
+    twist: Twist,
+    distance: f64,
+    map_version: u64,
+    events: Vec<NavEvent>,
+}
+
+impl<'w> Sim<'w> {
+    /// A robot at the scenario's start, navigating toward `goal` with `planner`; the
+    /// people walk their scripted routes.
+    #[must_use]
+    pub fn new(
+        scenario: &'w Scenario,
+        world: &'w World,
+        seed: u64,
+        planner: GlobalPlanner,
+        goal: Point2,
+    ) -> Self {
+        let laser_every = every(scenario.laser.rate_hz);
+        let rates = Rates {
+            laser: laser_every,
+            control: every(scenario.controller.rate_hz),
+            // On a laser tick, so that it uses a scan.
+            map: every(1.0 / scenario.mapping.period).div_ceil(laser_every) * laser_every,
+            max_ticks: (scenario.time_limit * TICKS_PER_SECOND as f64).ceil() as u64,
+        };
+        let keep = (scenario.costmap.memory * TICKS_PER_SECOND as f64).round() as u64;
+        let costmaps = CostmapBuilder::new(
+            world.bounds,
+            &world.mapped,
+            scenario.costmap,
+            scenario.robot.body_radius,
+        );
+        Self {
+            scenario,
+            world,
+            nav: Navigator::new(
+                scenario.navigation,
+                Box::new(scenario.controller),
+                planner,
+                costmaps,
+                scenario.robot,
+                goal,
+                stream(seed, PLANNER_STREAM),
+            ),
+            map: OccupancyGrid::new(world.bounds, scenario.mapping),
+            memory: ObstacleMemory::new(world.bounds, keep, scenario.costmap.obstacle_range)
+                .with_prior(world.bounds, &world.mapped),
+            tracker: Tracker::new(
+                world.bounds,
+                &world.mapped,
+                scenario.costmap.obstacle_range,
+                TICKS_PER_SECOND as f64,
+            ),
+            people_model: Box::new(Scripted::new(&world.people)),
+            people: Vec::new(),
+            laser: LaserModel::new(scenario.laser),
+            noise: stream(seed, NOISE_STREAM),
+            rates,
+            clear_footprint: false,
+            tick: 0,
+            pose: scenario.start_pose(),
+            twist: Twist::default(),
+            distance: 0.0,
+            map_version: 0,
+            events: Vec::new(),
+        }
+    }
+
+    /// Marks the unknown cells under the robot's body free at every map update (a
+    /// scanner mounted ahead of the centre never sees them): exploration's choice.
+    #[must_use]
+    pub fn clearing_footprint(mut self) -> Self {
+        self.clear_footprint = true;
+        self
+    }
+
+    /// Replaces the people's model (scripted walkers by default).
+    #[must_use]
+    pub fn with_people(mut self, model: Box<dyn PeopleModel + 'w>) -> Self {
+        self.people_model = model;
+        self
+    }
+
+    /// The current tick.
+    #[must_use]
+    pub const fn tick(&self) -> u64 {
+        self.tick
+    }
+
+    /// The current time, s.
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        time_of(self.tick)
+    }
+
+    /// The robot's pose.
+    #[must_use]
+    pub const fn pose(&self) -> Pose {
+        self.pose
+    }
+
+    /// The robot's position.
+    #[must_use]
+    pub fn here(&self) -> Point2 {
+        Point2::new(self.pose.x, self.pose.y)
+    }
+
+    /// The command in force.
+    #[must_use]
+    pub const fn twist(&self) -> Twist {
+        self.twist
+    }
+
+    /// Distance driven, m.
+    #[must_use]
+    pub const fn distance(&self) -> f64 {
+        self.distance
+    }
+
+    /// Map updates so far.
+    #[must_use]
+    pub const fn map_version(&self) -> u64 {
+        self.map_version
+    }
+
+    /// The people now.
+    #[must_use]
+    pub fn people(&self) -> &[Disc] {
+        &self.people
+    }
+
+    /// The laser.
+    #[must_use]
+    pub const fn laser(&self) -> &LaserModel {
+        &self.laser
+    }
+
+    /// Whether `tick` is a control tick.
+    #[must_use]
+    pub const fn is_control_tick(&self, tick: u64) -> bool {
+        tick.is_multiple_of(self.rates.control)
+    }
+
+    /// Runs ticks until the goal source or the navigator's end stops it, or the
+    /// scenario's time limit; returns the last tick.
+    pub fn run(&mut self, goals: &mut dyn GoalSource, observers: &mut [&mut dyn Observer]) -> u64 {
+        while self.tick <= self.rates.max_ticks {
+            if self.step(goals, observers) == Flow::Stop {
+                return self.tick;
+            }
+            self.tick += 1;
+        }
+        self.tick - 1
+    }
+
+    /// One tick (see the module doc). Does not advance the tick counter past a stop.
+    pub fn step(
+        &mut self,
+        goals: &mut dyn GoalSource,
+        observers: &mut [&mut dyn Observer],
+    ) -> Flow {
+        let tick = self.tick;
+        let t = self.time();
+        self.people = self.people_model.people(t, self.pose);
+        let sensed = tick.is_multiple_of(self.rates.laser);
+        if sensed {
+            self.sense(tick, observers);
+        }
+        let mut flow = goals.decide(self);
+        self.events.clear();
+        let controlled = flow == Flow::Continue && tick.is_multiple_of(self.rates.control);
+        if controlled {
+            self.twist = match goals.command(self) {
+                Some(want) => self
+                    .nav
+                    .controller
+                    .limit(&self.scenario.robot, self.twist, want),
+                None => {
+                    let movers = self.tracker.movers(tick);
+                    self.nav.step(
+                        self.pose,
+                        self.twist,
+                        &self.memory,
+                        &movers,
+                        Some(&self.map),
+                        tick,
+                        TICKS_PER_SECOND as f64,
+                        &mut self.events,
+                    )
+                }
+            };
+            flow = goals.controlled(self, &self.events);
+        }
+        let info = TickInfo {
+            tick,
+            t,
+            sensed,
+            controlled,
+            events: &self.events,
+            stopped: flow == Flow::Stop,
+        };
+        for o in observers.iter_mut() {
+            o.ticked(self, &info);
+        }
+        if flow == Flow::Continue {
+            let dt = 1.0 / TICKS_PER_SECOND as f64;
+            let next = kinematics::integrate(self.pose, self.twist, dt);
+            let step = ((next.x - self.pose.x).powi(2) + (next.y - self.pose.y).powi(2)).sqrt();
+            self.distance += step;
+            goals.moved(self.pose, next, step);
+            self.pose = next;
+        }
+        flow
+    }
+
+    fn sense(&mut self, tick: u64, observers: &mut [&mut dyn Observer]) {
+        let (o, h) = self.laser.origin(&self.pose);
+        let mut scan = self.laser.cast(&self.world.statics, &self.people, o, h);
+        self.laser.add_noise(&mut scan, &mut self.noise);
+        if tick.is_multiple_of(self.rates.map) {
+            for ob in observers.iter_mut() {
+                ob.map_updating(self, &scan);
+            }
+            self.map.integrate(&scan);
+            self.map_version += 1;
+            if self.clear_footprint {
+                self.map
+                    .mark_footprint_free(self.here(), self.scenario.robot.body_radius);
+            }
+            for ob in observers.iter_mut() {
+                ob.map_updated(self, &scan);
+            }
+        }
+        self.tracker.update(&scan, tick);
+        self.memory.insert(scan, tick);
+    }
+
+    /// The box of cells a map update may change: the traced beams' box and the robot's
+    /// footprint, with two cells of margin for the rounding.
+    #[must_use]
+    pub fn update_area(&self, scan: &Scan) -> Bounds {
+        let res = self.scenario.mapping.resolution;
+        let here = self.here();
+        let traced = scan.traced_bounds(self.scenario.mapping.max_range);
+        let (m, r) = (2.0 * res, self.scenario.robot.body_radius + 2.0 * res);
+        Bounds::new(
+            Point2::new(
+                (traced.min.x - m).min(here.x - r),
+                (traced.min.y - m).min(here.y - r),
+            ),
+            Point2::new(
+                (traced.max.x + m).max(here.x + r),
+                (traced.max.y + m).max(here.y + r),
+            ),
+        )
+    }
+}
