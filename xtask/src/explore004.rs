@@ -373,12 +373,12 @@ fn fov_table(results: &[Result], fovs: &[f64]) -> String {
 /// its table.
 fn self_mapped(root: &Path) -> anyhow::Result<String> {
     let t0 = std::time::Instant::now();
-    let runs: Vec<(String, sim::explore::SelfMapped)> = sim::replay::FILES
+    let runs: Vec<(String, sim::SelfMapped)> = crate::sim004::FILES
         .par_iter()
         .map(|f| {
             let path = root.join("scenarios/sim").join(f);
             let (sc, _) = Scenario::load(&path)?;
-            let r = sim::explore::explore_then_navigate(&sc, &path, 0, Strategy::Both, 1500.0)?;
+            let r = sim::explore_then_navigate(&sc, &path, 0, Strategy::Both, 1500.0)?;
             Ok((sc.name, r))
         })
         .collect::<anyhow::Result<_>>()?;

@@ -62,12 +62,14 @@ impl CellFrame {
 
     /// Number of cells.
     #[must_use]
+    #[inline]
     pub const fn cells(&self) -> usize {
         self.width * self.height
     }
 
     /// `p` in cell units from the origin (cell `(i, j)` spans `[i, i + 1) x [j, j + 1)`).
     #[must_use]
+    #[inline]
     pub fn coords(&self, p: Point2) -> (f64, f64) {
         (
             (p.x - self.origin.x) / self.resolution,
@@ -77,6 +79,7 @@ impl CellFrame {
 
     /// The cell holding `p`, `None` outside the grid.
     #[must_use]
+    #[inline]
     pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
         let (u, v) = self.coords(p);
         (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
@@ -85,12 +88,14 @@ impl CellFrame {
 
     /// The row-major index (rows from the bottom) of the cell holding `p`.
     #[must_use]
+    #[inline]
     pub fn index_of(&self, p: Point2) -> Option<usize> {
         self.cell_of(p).map(|(i, j)| j * self.width + i)
     }
 
     /// The world position of the centre of cell `(i, j)`.
     #[must_use]
+    #[inline]
     pub fn cell_center(&self, i: usize, j: usize) -> Point2 {
         let res = self.resolution;
         Point2::new(
@@ -102,18 +107,21 @@ impl CellFrame {
     /// The columns of the cells that `[lo, hi]` (x, world units) touches, clamped to the
     /// grid (empty when it misses).
     #[must_use]
+    #[inline]
     pub fn columns(&self, lo: f64, hi: f64) -> Range<usize> {
         span(lo, hi, self.origin.x, self.resolution, self.width)
     }
 
     /// The rows of the cells that `[lo, hi]` (y, world units) touches, clamped to the grid.
     #[must_use]
+    #[inline]
     pub fn rows(&self, lo: f64, hi: f64) -> Range<usize> {
         span(lo, hi, self.origin.y, self.resolution, self.height)
     }
 }
 
 /// The cells `[lo, hi]` touches along one axis of `n` cells of side `res` from `o`.
+#[inline]
 fn span(lo: f64, hi: f64, o: f64, res: f64, n: usize) -> Range<usize> {
     let a = ((lo - o) / res).floor().max(0.0) as usize;
     let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;

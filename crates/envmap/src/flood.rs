@@ -137,11 +137,11 @@ pub fn steps_from(mask: &Mask, start: (usize, usize), conn: Connectivity) -> Vec
     dist[s] = 0;
     // Distances do not depend on the order neighbours are visited in: a plain vector is
     // the queue, and cells off the border skip the bounds tests.
-    let offsets: Vec<isize> = conn
-        .offsets()
-        .iter()
-        .map(|&(di, dj)| dj as isize * w as isize + di as isize)
-        .collect();
+    let mut offsets = [0isize; 8];
+    for (o, &(di, dj)) in offsets.iter_mut().zip(conn.offsets()) {
+        *o = dj as isize * w as isize + di as isize;
+    }
+    let offsets = &offsets[..conn.offsets().len()];
     let mut queue = vec![s];
     let mut head = 0;
     while head < queue.len() {
@@ -156,7 +156,7 @@ pub fn steps_from(mask: &Mask, start: (usize, usize), conn: Connectivity) -> Vec
             }
         };
         if ci > 0 && cj > 0 && ci + 1 < w && cj + 1 < h {
-            for &o in &offsets {
+            for &o in offsets {
                 visit(c.wrapping_add_signed(o));
             }
         } else {

@@ -327,6 +327,7 @@ impl GridMap {
     /// Where the cells lie in the world (without [`GridMap::world_to_cell`]'s rule for
     /// points on the upper and right borders).
     #[must_use]
+    #[inline]
     pub const fn frame(&self) -> CellFrame {
         CellFrame::new(self.origin, self.resolution, self.width, self.height)
     }

@@ -85,11 +85,13 @@ impl Mask {
 
     /// Cell `(i, j)`; `false` outside the mask.
     #[must_use]
+    #[inline]
     pub fn get(&self, i: usize, j: usize) -> bool {
         i < self.width && j < self.height && self.cells[j * self.width + i]
     }
 
     /// Sets cell `(i, j)`; ignored outside the mask.
+    #[inline]
     pub fn set(&mut self, i: usize, j: usize, value: bool) {
         if i < self.width && j < self.height {
             self.cells[j * self.width + i] = value;

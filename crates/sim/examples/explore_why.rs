@@ -13,10 +13,10 @@
 
 use envmap::{Connectivity, Mask, clusters};
 use hyplan_core::Point2;
-use sim::explore::frontier::costmap_steps;
-use sim::explore::{information_gain, reachable_free};
-use sim::mapping::{FREE, OCCUPIED};
+use sim::costmap_steps;
 use sim::{CostmapBuilder, Scenario, Strategy};
+use sim::{FREE, OCCUPIED};
+use sim::{information_gain, reachable_free};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
@@ -103,7 +103,7 @@ fn diagnose(
     };
     let inflation = costmaps.inflation();
     let reachable_cells = steps.iter().filter(|&&s| s != u32::MAX).count();
-    let views = sim::explore::ViewPoints {
+    let views = sim::ViewPoints {
         costmap: &costmap,
         steps: &steps,
         max_cost: scenario.exploration.view_max_cost,
@@ -113,7 +113,7 @@ fn diagnose(
             + scenario.robot.body_radius,
         slack: scenario.exploration.bandwidth,
     };
-    let frontier_points: Vec<Point2> = sim::explore::frontier_clusters(map)
+    let frontier_points: Vec<Point2> = sim::frontier_clusters(map)
         .into_iter()
         .filter(|c| c.len() >= scenario.exploration.min_frontier_cells)
         .flatten()
@@ -180,7 +180,7 @@ fn diagnose(
             .fold(0.0, f64::max);
         let least_cost = border
             .iter()
-            .map(|&(a, b)| sim::explore::filter::built_cost(map, &inflation, centre(a, b)))
+            .map(|&(a, b)| sim::built_cost(map, &inflation, centre(a, b)))
             .min();
         let nearest_reach = nearest_reachable(&costmap, &steps, map, cells);
         let border_reachable = border
@@ -207,7 +207,7 @@ fn diagnose(
             last.frontiers.iter().filter(|p| near(p)).count(),
             out.goal_log
                 .iter()
-                .filter(|g| g.end != sim::explore::GoalEnd::Open && near(&g.target))
+                .filter(|g| g.end != sim::GoalEnd::Open && near(&g.target))
                 .count(),
         );
     }

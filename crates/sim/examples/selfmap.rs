@@ -5,7 +5,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = std::path::PathBuf::from(std::env::args().nth(1).ok_or("usage: SCENARIO.ron")?);
     let (scenario, _) = sim::Scenario::load(&path)?;
     let t0 = std::time::Instant::now();
-    let r = sim::explore::explore_then_navigate(&scenario, &path, 0, sim::Strategy::Both, 1500.0)?;
+    let r = sim::explore_then_navigate(&scenario, &path, 0, sim::Strategy::Both, 1500.0)?;
     for (what, o) in [("true map", &r.on_true), ("built map", &r.on_built)] {
         let m = &o.trace.summary;
         println!(

@@ -6,7 +6,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let usage = "usage: soak_room SEED INDEX [OUT]";
     let seed: u64 = args.get(1).ok_or(usage)?.parse()?;
     let k: u64 = args.get(2).ok_or(usage)?.parse()?;
-    let sc = sim::soak::room(seed, k);
+    let sc = sim::room(seed, k);
     let world = sc.build_world(std::path::Path::new(&sc.name))?;
     let out = sim::run(&sc, &world, k, sim::GlobalPlanner::Dijkstra);
     for c in &out.trace.contacts {

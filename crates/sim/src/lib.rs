@@ -10,25 +10,29 @@
 //!
 //! # Contents
 //!
-//! - [`kinematics`]: [`Robot`], [`Pose`], [`Twist`], [`WheelSpeeds`], eqs. (2)-(4)
+//! - The engine: [`Sim`], one tick loop whose state is one struct; [`GoalSource`] (where
+//!   the robot goes: [`FixedGoal`], exploration's detectors, a caller) and [`Observer`]
+//!   (what is recorded: [`Recorder`], [`CoverageMeter`], [`TrackRecorder`],
+//!   [`FrameRecorder`], [`ContactCounter`]) plug into it; [`run()`] and [`explore()`] are
+//!   the two ready-made runs. [`TICKS_PER_SECOND`], [`stream`] (the seeded random streams).
+//! - The robot: [`Robot`], [`Pose`], [`Twist`], [`WheelSpeeds`], eqs. (2)-(4)
 //!   ([`jacobian`], [`jacobian_inverse`], [`wheel_speeds`], [`twist_of`]), wheel
 //!   saturation ([`saturate`]) and exact arc integration ([`integrate`]).
-//! - [`world`]: [`Shape`], [`Person`], [`Walk`], [`StaticWorld`], [`World`].
-//! - [`laser`]: [`Laser`], [`LaserModel`], [`Scan`]: exact ray casts, seeded noise.
-//! - [`mapping`]: [`Mapping`], [`OccupancyGrid`]: clamped log-odds, ROS values -1/0/100.
-//! - [`costmap`]: [`CostmapParams`], [`CostmapBuilder`], [`Costmap`], [`ObstacleMemory`].
-//! - [`planner`]: [`GlobalPlanner`]: Dijkstra on the costmap, or any [`hyplan_core::Planner`].
-//! - [`control`]: [`Controller`]: regulated pure pursuit with a collision check.
-//! - [`tracking`]: [`Tracker`], [`Mover`]: people's velocities from successive scans.
-//! - [`navigator`]: [`Navigation`], [`Navigator`], [`NavEvent`], [`NavState`].
-//! - [`scenario`]: [`Scenario`] (RON files), [`ScenarioError`].
-//! - [`run()`]: the simulation loop, [`Outcome`], [`TICKS_PER_SECOND`].
-//! - [`record`]: [`Trace`], [`Row`], [`Event`], [`Summary`], CSV / JSON / SVG outputs
-//!   ([`write_all`], [`OutputError`]).
-//! - [`replay`]: the paper's three navigation scenarios against its figures.
-//! - [`soak`]: generated rooms with people, for the safety figures.
-//! - [`mod@explore`]: the exploration phase: global and local RRT frontier detectors, the
-//!   filter, the assigner, the nearest-frontier baseline, coverage ([`explore()`]).
+//! - The world: [`Shape`], [`StaticWorld`], [`World`], [`Disc`]; people: [`Person`],
+//!   [`Walk`] and the [`PeopleModel`] trait ([`Scripted`] walkers).
+//! - Sensing and mapping: [`Laser`], [`LaserModel`], [`Scan`] (exact ray casts, seeded
+//!   noise); [`Mapping`], [`OccupancyGrid`] (clamped log-odds, ROS values [`FREE`],
+//!   [`OCCUPIED`], [`UNKNOWN`]); [`Tracker`], [`Mover`] (people's velocities).
+//! - Navigation: [`CostmapParams`], [`CostmapBuilder`], [`Costmap`], [`ObstacleMemory`];
+//!   [`GlobalPlanner`] (Dijkstra on the costmap, or any [`hyplan_core::Planner`]);
+//!   the [`LocalController`] trait ([`Controller`]: regulated pure pursuit with a
+//!   collision check); [`Navigator`], [`Navigation`], [`NavEvent`], [`NavState`].
+//! - Exploration: [`Exploration`], [`Strategy`], [`ExploreOutcome`], [`Coverage`],
+//!   [`GlobalRrtDetector`], [`LocalRrtDetector`], [`Filter`], [`Assigner`],
+//!   [`nearest_frontier`] (the baseline), [`ViewPoints`], [`explore_then_navigate`].
+//! - Files: [`Scenario`] (RON), [`ScenarioError`]; [`Trace`], [`Row`], [`Event`],
+//!   [`Summary`] and their CSV / JSON / SVG outputs ([`write_all`], [`OutputError`]);
+//!   [`soak`] (generated rooms with people, for the safety figures).
 //!
 //! # Conventions
 //!
@@ -59,24 +63,23 @@
 //!
 //! None.
 
-pub mod control;
-pub mod costmap;
+mod control;
+mod costmap;
 mod engine;
-pub mod explore;
-pub mod kinematics;
-pub mod laser;
-pub mod mapping;
-pub mod navigator;
+mod explore;
+mod kinematics;
+mod laser;
+mod mapping;
+mod navigator;
 mod people;
-pub mod planner;
-pub mod record;
-pub mod replay;
+mod planner;
+mod record;
 mod run;
-pub mod scenario;
-pub mod soak;
-pub mod tracking;
+mod scenario;
+mod soak;
+mod tracking;
 mod validate;
-pub mod world;
+mod world;
 
 pub use control::{Command, Controller, FollowInput, LocalController};
 pub use costmap::{Costmap, CostmapBuilder, CostmapParams, ObstacleMemory};
@@ -84,23 +87,33 @@ pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, Observer, PLANNER_STREAM, Sim, TICKS_PER_SECOND,
     TickInfo, every, stream, time_of,
 };
-pub use explore::{Exploration, ExploreOutcome, Strategy, explore};
+pub use explore::{
+    Assigner, ContactCounter, Coverage, CoverageMeter, Edge, Exploration, ExploreOutcome, Filter,
+    FrameRecorder, GLOBAL_STREAM, GlobalRrtDetector, GoalEnd, GoalRecord, LOCAL_STREAM,
+    LocalRrtDetector, Region, RegionError, SelfMapped, Snapshot, Strategy, TrackRecorder,
+    ViewPoints, animation_png, built_cost, built_cost_reach, costmap_steps, edge_check, explore,
+    explore_then_navigate, explore_with, frontier_cells, frontier_clusters, information_gain,
+    mean_shift, nearest_frontier, reachable_free, region_of, revenue, sees, snapshot_scene,
+    snapshot_svg,
+};
 pub use kinematics::{
-    Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, saturate, twist_of,
-    wheel_speeds,
+    Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, pose_rate, saturate,
+    twist_of, wheel_speeds, wrap_angle,
 };
 pub use laser::{Laser, LaserModel, Scan};
-pub use mapping::{Mapping, OccupancyGrid};
+pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
 pub use people::{PeopleModel, Scripted};
 pub use planner::GlobalPlanner;
 pub use record::{
-    Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, write_all,
+    Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, animation_scene,
+    animation_svg, trajectory_scene, trajectory_svg, velocity_svg, write_all,
 };
 pub use run::{Outcome, Recorder, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
+pub use soak::{SoakSummary, room, soak};
 pub use tracking::{Mover, Tracker};
-pub use world::{Person, Shape, StaticWorld, Walk, World};
+pub use world::{Disc, Person, Segment, Shape, StaticWorld, Walk, World};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -6,11 +6,11 @@ use std::path::{Path, PathBuf};
 use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use sim::explore::{
+use sim::{
     Assigner, Edge, LocalRrtDetector, Region, RegionError, ViewPoints, edge_check,
     frontier_clusters, information_gain, mean_shift, revenue, sees,
 };
-use sim::mapping::{FREE, OCCUPIED, UNKNOWN};
+use sim::{FREE, OCCUPIED, UNKNOWN};
 use sim::{Mapping, OccupancyGrid, Scenario, ScenarioError, Strategy};
 
 fn p(x: f64, y: f64) -> Point2 {
@@ -301,7 +301,7 @@ fn reachable_free_of_a_loaded_map_leaves_out_cells_touching_a_wall() {
         Scenario::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let res = scenario.mapping.resolution;
     let (w, reach) =
-        sim::explore::reachable_free(&world, res, Point2::new(scenario.start.0, scenario.start.1));
+        sim::reachable_free(&world, res, Point2::new(scenario.start.0, scenario.start.1));
     let grid = world.statics.grid.as_ref().unwrap();
     let o = world.bounds.min;
     let forbidden = |i: i64, j: i64| {
@@ -355,14 +355,14 @@ fn view_point_sees_past_a_pillar() {
     assert!(!sees(&g, robot, target, 0.3));
     let builder = sim::CostmapBuilder::new(
         bounds,
-        &sim::world::StaticWorld::default(),
+        &sim::StaticWorld::default(),
         sim::CostmapParams::default(),
         0.178,
     );
     let costmap = builder.build(Some(&g), &[]);
     let views = ViewPoints {
         costmap: &costmap,
-        steps: &sim::explore::frontier::costmap_steps(&costmap, robot),
+        steps: &sim::costmap_steps(&costmap, robot),
         max_cost: 20,
         range: 2.5,
         min_range: 0.4,
@@ -392,7 +392,7 @@ fn view_point_sees_past_a_pillar() {
     let costmap = builder.build(Some(&g), &[]);
     let views = ViewPoints {
         costmap: &costmap,
-        steps: &sim::explore::frontier::costmap_steps(&costmap, robot),
+        steps: &sim::costmap_steps(&costmap, robot),
         ..views
     };
     assert_eq!(
@@ -615,9 +615,9 @@ mod properties {
             let mapping = Mapping { max_range: 1.0, ..Mapping::default() };
             let mut map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(10.0, 10.0)), mapping);
             let inflation = envmap::Inflation { inflation_radius: 0.6, ..envmap::Inflation::default() };
-            let reach = sim::explore::filter::built_cost_reach(&inflation, 0.05);
+            let reach = sim::built_cost_reach(&inflation, 0.05);
             // Half the gain's disc unknown to pass: one scan from beside a point can fail it.
-            let filter = || sim::explore::Filter::new(0.3, 70, 0.4, 0.25);
+            let filter = || sim::Filter::new(0.3, 70, 0.4, 0.25);
             let mut kept = filter();
             let mut fresh: Vec<Point2> = Vec::new();
             let published: Vec<Point2> = points.into_iter().map(|(x, y)| p(x, y)).collect();
@@ -625,7 +625,7 @@ mod properties {
                 // Scan from beside one of the points, in turn.
                 let at = published[k % published.len()] + nalgebra::Vector2::new(dx, dy);
                 map.integrate(&laser.cast(&walls, &[], at, h));
-                let cost = |q: Point2| sim::explore::filter::built_cost(&map, &inflation, q);
+                let cost = |q: Point2| sim::built_cost(&map, &inflation, q);
                 let a = kept.update(&published, &map, cost, reach).to_vec();
                 fresh.extend_from_slice(&published);
                 fresh = filter().update(&fresh, &map, cost, reach).to_vec();

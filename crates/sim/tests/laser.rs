@@ -5,7 +5,7 @@ use hyplan_core::Point2;
 use nalgebra::{Matrix2, Vector2};
 use parry2d::query::{Ray, RayCast};
 use proptest::prelude::*;
-use sim::world::{Disc, StaticWorld};
+use sim::{Disc, StaticWorld};
 use sim::{Laser, LaserModel, Shape};
 
 fn world(shapes: &[Shape]) -> StaticWorld {

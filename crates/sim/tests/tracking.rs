@@ -3,7 +3,7 @@
 use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use sim::world::Disc;
+use sim::Disc;
 use sim::{Laser, LaserModel, Shape, StaticWorld, Tracker};
 
 fn room() -> (Bounds, StaticWorld) {
@@ -95,7 +95,7 @@ fn static_things_are_not_movers() {
 #[test]
 fn soak_rooms_that_had_at_fault_contacts() {
     for k in [18, 47, 117, 205] {
-        let sc = sim::soak::room(2026, k);
+        let sc = sim::room(2026, k);
         let world = sc.build_world(std::path::Path::new(&sc.name)).unwrap();
         let out = sim::run(&sc, &world, k, sim::GlobalPlanner::Dijkstra);
         assert_eq!(out.trace.summary.contacts_at_fault, 0, "room {k}");

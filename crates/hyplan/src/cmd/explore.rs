@@ -76,7 +76,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         .map_err(super::sim_scenario_error)?;
     let strategy = scenario.exploration.strategy;
     let mut next_line = 0.0;
-    let outcome = sim::explore::explore_with(&scenario, &world, args.seed, strategy, &mut |c| {
+    let outcome = sim::explore_with(&scenario, &world, args.seed, strategy, &mut |c| {
         if c.t >= next_line {
             eprintln!(
                 "explore: t {:6.0} s, coverage {:5.1} %",
@@ -145,8 +145,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             .write_ros(&yaml)
             .with_context(|| format!("writing {}", yaml.display()))?;
         outln!("wrote {} (+ map.pgm)", yaml.display())?;
-        let apng =
-            sim::explore::figure::animation_png(&outcome, 100).map_err(anyhow::Error::msg)?;
+        let apng = sim::animation_png(&outcome, 100).map_err(anyhow::Error::msg)?;
         let p = dir.join("animation.png");
         std::fs::write(&p, apng).with_context(|| format!("writing {}", p.display()))?;
         outln!(
@@ -155,7 +154,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             scenario.exploration.frame_period.unwrap_or(10.0)
         )?;
         for snap in &outcome.snapshots {
-            let svg = sim::explore::figure::snapshot_svg(&outcome, snap, &world)?;
+            let svg = sim::snapshot_svg(&outcome, snap, &world)?;
             put(&format!("explore-{:04.0}s.svg", snap.t), &svg)?;
         }
     }

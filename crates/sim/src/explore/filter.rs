@@ -15,7 +15,7 @@ use sampling::NearestIndex;
 
 use envmap::Inflation;
 
-use crate::costmap::{Costmap, ros_cost};
+use crate::costmap::ros_cost;
 use crate::mapping::OccupancyGrid;
 
 /// Flat-kernel mean shift: each point climbs to the mean of the points within
@@ -102,12 +102,6 @@ pub fn built_cost_reach(inflation: &Inflation, resolution: f64) -> f64 {
 /// Half-side, in cells, of the square of cells [`built_cost`] searches.
 fn built_cost_cells(inflation: &Inflation, resolution: f64) -> usize {
     (inflation.inflation_radius / resolution).ceil() as usize + 1
-}
-
-/// The costmap's ROS value (0-100) at `p`; 100 off the map.
-#[must_use]
-pub fn cost_at(costmap: &Costmap, values: &[i8], p: Point2) -> i8 {
-    costmap.map.frame().index_of(p).map_or(100, |k| values[k])
 }
 
 /// The filter's state: the frontiers kept from earlier cycles.
