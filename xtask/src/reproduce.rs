@@ -100,77 +100,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     );
     let started = Instant::now();
     let bars = MultiProgress::new();
-    let style = ProgressStyle::with_template("{prefix:>40} {bar:30} {pos:>5}/{len:5} {elapsed:>4}")
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
     let mut results = Vec::new();
     for (file, scenario, world) in &scenarios {
-        let runs = args.runs.unwrap_or(if args.quick {
-            scenario.quick_runs
-        } else {
-            scenario.runs
-        });
-        let mut planners = Vec::new();
-        for spec in &scenario.planners {
-            let bar = bars.add(ProgressBar::new(u64::from(runs)));
-            bar.set_style(style.clone());
-            bar.set_prefix(format!("{} / {}", scenario.name, spec.label()));
-            let metrics = run_planner(scenario, world, spec, runs, true, &|| bar.inc(1))
-                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
-            bar.finish();
-            let ok = metrics.iter().filter(|m| m.success).count();
-            bars.suspend(|| {
-                eprintln!(
-                    "{} / {}: {ok}/{runs} solved in {:.1} s",
-                    scenario.name,
-                    spec.label(),
-                    bar.elapsed().as_secs_f64()
-                );
-            });
-            figure(scenario, world, spec, &metrics, &figures)?;
-            planners.push(PlannerResult {
-                label: spec.label().to_string(),
-                name: spec.planner.name().to_string(),
-                summary: Summary::of(&metrics),
-                runs: metrics,
-            });
-        }
-        let chart_runs: Vec<(String, Vec<RunMetrics>)> = planners
-            .iter()
-            .map(|p| (p.label.clone(), p.runs.clone()))
-            .collect();
-        harness::chart_metrics(
-            &format!("{} ({} runs)", scenario.name, runs),
-            &chart_runs,
-            &["length", "time_s", "turns", "explored"],
-            &figures.join(format!("{}_metrics.svg", scenario.name)),
-        )
-        .map_err(|e| anyhow::anyhow!(e))?;
-        let claims = experiment_claims(scenario, &planners);
-        // The yardstick for the papers' lengths, where they publish one (Theta* on a large
-        // room takes seconds, so not for the time-only tables).
-        let shortest = scenario
-            .published
-            .iter()
-            .any(|p| p.metric == "length")
-            .then(|| shortest_path(world))
-            .flatten();
-        results.push((
-            scenario,
-            ExperimentResult {
-                name: scenario.name.clone(),
-                seed_file: scenario.source.seed_file.clone(),
-                experiment: scenario.source.experiment.clone(),
-                file: file
-                    .strip_prefix(&root)
-                    .unwrap_or(file)
-                    .display()
-                    .to_string(),
-                runs,
-                planners,
-                claims,
-                shortest,
-            },
-        ));
+        let result = run_experiment(args, &root, (file, scenario, world), &figures, &bars)?;
+        results.push((scenario, result));
     }
     let series = series_claims(&results);
     let seconds = started.elapsed().as_secs_f64();
@@ -224,6 +157,83 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         figures.display()
     );
     Ok(())
+}
+
+/// One scenario file's experiment: every planner's runs (with a progress bar each), the
+/// figures, the claims and the length yardstick.
+fn run_experiment(
+    args: &Args,
+    root: &Path,
+    (file, scenario, world): (&PathBuf, &Scenario, &World),
+    figures: &Path,
+    bars: &MultiProgress,
+) -> anyhow::Result<ExperimentResult> {
+    let style = ProgressStyle::with_template("{prefix:>40} {bar:30} {pos:>5}/{len:5} {elapsed:>4}")
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
+    let runs = args.runs.unwrap_or(if args.quick {
+        scenario.quick_runs
+    } else {
+        scenario.runs
+    });
+    let mut planners = Vec::new();
+    for spec in &scenario.planners {
+        let bar = bars.add(ProgressBar::new(u64::from(runs)));
+        bar.set_style(style.clone());
+        bar.set_prefix(format!("{} / {}", scenario.name, spec.label()));
+        let metrics = run_planner(scenario, world, spec, runs, true, &|| bar.inc(1))
+            .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+        bar.finish();
+        let ok = metrics.iter().filter(|m| m.success).count();
+        bars.suspend(|| {
+            eprintln!(
+                "{} / {}: {ok}/{runs} solved in {:.1} s",
+                scenario.name,
+                spec.label(),
+                bar.elapsed().as_secs_f64()
+            );
+        });
+        figure(scenario, world, spec, &metrics, figures)?;
+        planners.push(PlannerResult {
+            label: spec.label().to_string(),
+            name: spec.planner.name().to_string(),
+            summary: Summary::of(&metrics),
+            runs: metrics,
+        });
+    }
+    let chart_runs: Vec<(String, Vec<RunMetrics>)> = planners
+        .iter()
+        .map(|p| (p.label.clone(), p.runs.clone()))
+        .collect();
+    harness::chart_metrics(
+        &format!("{} ({} runs)", scenario.name, runs),
+        &chart_runs,
+        &["length", "time_s", "turns", "explored"],
+        &figures.join(format!("{}_metrics.svg", scenario.name)),
+    )
+    .map_err(|e| anyhow::anyhow!(e))?;
+    let claims = experiment_claims(scenario, &planners);
+    // The yardstick for the papers' lengths, where they publish one (Theta* on a large
+    // room takes seconds, so not for the time-only tables).
+    let shortest = scenario
+        .published
+        .iter()
+        .any(|p| p.metric == "length")
+        .then(|| shortest_path(world))
+        .flatten();
+    Ok(ExperimentResult {
+        name: scenario.name.clone(),
+        seed_file: scenario.source.seed_file.clone(),
+        experiment: scenario.source.experiment.clone(),
+        file: file
+            .strip_prefix(root)
+            .unwrap_or(file)
+            .display()
+            .to_string(),
+        runs,
+        planners,
+        claims,
+        shortest,
+    })
 }
 
 /// The shortest path to the goal region on the planning map by Theta* (any-angle, on the

@@ -8,7 +8,6 @@
 //! planners and their parameter names exist; bad input exits 2.
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -19,7 +18,9 @@ use harness::bench::{self, BenchRun, Comparison, ExperimentInfo, SummaryRow};
 use harness::{Explored, PlannerConfig, PlannerSpec, Scoring};
 use hyplan_core::{Goal, PlanError, Planner, Query, Zone};
 use serde::{Deserialize, Serialize};
-use viz::{Align, Table};
+mod output;
+
+use output::{markdown, write_csv};
 
 /// Options of `hyplan bench`.
 #[derive(clap::Args, Debug)]
@@ -471,6 +472,65 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             spacing: 0.25 * p.map.resolution(),
         })
         .collect();
+    let runs_started = Instant::now();
+    let runs = run_all(&pool, &problems, &scorings, &e);
+    let wall_s = runs_started.elapsed().as_secs_f64();
+    if let Some(bad) = runs.iter().find(|r| r.status == "invalid input") {
+        bail!(
+            "planner {}: {}",
+            bad.planner,
+            bad.error.as_deref().unwrap_or("invalid input")
+        );
+    }
+
+    let summary = bench::summarise(&runs);
+    let comparisons = bench::compare(&runs, args.alpha);
+    let sum_run_time_s: f64 = runs.iter().map(|r| r.metrics.time_s).sum();
+    let sum_planning_time_s: f64 = runs.iter().map(|r| r.planning_time_s).sum();
+    let sum_planning_cpu_s: f64 = runs.iter().map(|r| r.metrics.cpu_time_s).sum();
+
+    write_problem_outputs(&out, &e, &problems, &runs, &summary, wall_s)?;
+
+    let mut report = Report {
+        problems: problems
+            .iter()
+            .map(|p| ProblemRecord {
+                name: p.name.clone(),
+                map: p.map_path.clone(),
+                query: p.query_text.clone(),
+            })
+            .collect(),
+        experiment: e,
+        runs,
+        summary,
+        comparisons,
+        wall_s,
+        sum_run_time_s,
+        sum_planning_time_s,
+        sum_planning_cpu_s,
+        command_cpu_s: f64::NAN,
+        threads,
+    };
+    write_csv(&out.join("runs.csv"), &report)?;
+    let json = serde_json::to_string_pretty(&report)?;
+    std::fs::write(out.join("runs.json"), json).context("writing runs.json")?;
+    // Everything but writing the report itself is in these totals.
+    report.command_cpu_s = cpu_started.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+    let md = markdown(&report, args.alpha, started.elapsed().as_secs_f64());
+    std::fs::write(out.join("summary.md"), &md).context("writing summary.md")?;
+    outln!("{md}")?;
+    outln!("outputs in {}", out.display())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Every run of every planner on every problem, on the worker threads, with a progress
+/// bar.
+fn run_all(
+    pool: &rayon::ThreadPool,
+    problems: &[Problem],
+    scorings: &[Scoring<'_>],
+    e: &Experiment,
+) -> Vec<BenchRun> {
     let jobs: Vec<(usize, usize, u32)> = problems
         .iter()
         .enumerate()
@@ -484,7 +544,6 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         )
         .expect("a valid template"),
     );
-    let runs_started = Instant::now();
     let runs: Vec<BenchRun> = pool.install(|| {
         use rayon::prelude::*;
         jobs.par_iter()
@@ -514,23 +573,20 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             })
             .collect()
     });
-    let wall_s = runs_started.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    if let Some(bad) = runs.iter().find(|r| r.status == "invalid input") {
-        bail!(
-            "planner {}: {}",
-            bad.planner,
-            bad.error.as_deref().unwrap_or("invalid input")
-        );
-    }
+    runs
+}
 
-    let summary = bench::summarise(&runs);
-    let comparisons = bench::compare(&runs, args.alpha);
-    let sum_run_time_s: f64 = runs.iter().map(|r| r.metrics.time_s).sum();
-    let sum_planning_time_s: f64 = runs.iter().map(|r| r.planning_time_s).sum();
-    let sum_planning_cpu_s: f64 = runs.iter().map(|r| r.metrics.cpu_time_s).sum();
-
-    // OMPL logs, one per problem.
+/// Per problem: its OMPL benchmark log and Planner Arena's default views (time and
+/// length box plots, success bars).
+fn write_problem_outputs(
+    out: &Path,
+    e: &Experiment,
+    problems: &[Problem],
+    runs: &[BenchRun],
+    summary: &[SummaryRow],
+    wall_s: f64,
+) -> anyhow::Result<()> {
     let host = std::fs::read_to_string("/etc/hostname")
         .map(|h| h.trim().to_string())
         .ok()
@@ -571,7 +627,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         let path = out.join(format!("{}.log", prob.name));
         std::fs::write(&path, log).with_context(|| format!("writing {}", path.display()))?;
         // Planner Arena's default views.
-        let groups = bench::groups(&runs);
+        let groups = bench::groups(runs);
         let mine: Vec<&(_, Vec<&BenchRun>)> = groups.iter().filter(|((q, _), _)| *q == p).collect();
         for (file, measure, get) in [
             (
@@ -596,203 +652,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         let path = out.join(format!("{}-success.svg", prob.name));
         harness::chart_success(&prob.name, &rates, &path)?;
     }
-
-    let mut report = Report {
-        problems: problems
-            .iter()
-            .map(|p| ProblemRecord {
-                name: p.name.clone(),
-                map: p.map_path.clone(),
-                query: p.query_text.clone(),
-            })
-            .collect(),
-        experiment: e,
-        runs,
-        summary,
-        comparisons,
-        wall_s,
-        sum_run_time_s,
-        sum_planning_time_s,
-        sum_planning_cpu_s,
-        command_cpu_s: f64::NAN,
-        threads,
-    };
-    write_csv(&out.join("runs.csv"), &report)?;
-    let json = serde_json::to_string_pretty(&report)?;
-    std::fs::write(out.join("runs.json"), json).context("writing runs.json")?;
-    // Everything but writing the report itself is in these totals.
-    report.command_cpu_s = cpu_started.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
-    let md = markdown(&report, args.alpha, started.elapsed().as_secs_f64());
-    std::fs::write(out.join("summary.md"), &md).context("writing summary.md")?;
-    outln!("{md}")?;
-    outln!("outputs in {}", out.display())?;
-    Ok(ExitCode::SUCCESS)
-}
-
-fn write_csv(path: &Path, r: &Report) -> anyhow::Result<()> {
-    let mut s = String::from(
-        "problem,map,query,planner,run,seed,solved,exact,status,time_s,planning_time_s,\
-         cpu_time_s,length,raw_length,nodes,explored,iterations,collision_checks,turns,\
-         max_curvature,min_clearance,transfer_time_s\n",
-    );
-    let f = |v: f64| {
-        if v.is_finite() {
-            v.to_string()
-        } else {
-            String::new()
-        }
-    };
-    // Labels may hold commas (`rrt:step=2,goal_bias=0.1`): quoted as RFC 4180 says.
-    let quote = |t: &str| format!("\"{}\"", t.replace('"', "\"\""));
-    for run in &r.runs {
-        let p = &r.problems[run.problem];
-        let m = &run.metrics;
-        let _ = writeln!(
-            s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            quote(&p.name),
-            quote(&p.map.display().to_string()),
-            quote(&p.query),
-            quote(&run.planner),
-            m.run,
-            m.seed,
-            u8::from(m.success),
-            u8::from(run.exact),
-            run.status,
-            f(m.time_s),
-            f(run.planning_time_s),
-            f(m.cpu_time_s),
-            f(m.length),
-            f(run.raw_length),
-            f(m.nodes),
-            f(m.explored),
-            run.iterations,
-            run.collision_checks,
-            f(m.turns),
-            f(run.max_curvature),
-            f(m.min_clearance),
-            f(m.transfer_time_s),
-        );
-    }
-    std::fs::write(path, s).with_context(|| format!("writing {}", path.display()))
-}
-
-fn markdown(r: &Report, alpha: f64, total_s: f64) -> String {
-    let mut s = String::new();
-    let g = |v: f64, digits: usize| {
-        if v.is_finite() {
-            format!("{v:.digits$}")
-        } else {
-            "-".into()
-        }
-    };
-    for (p, prob) in r.problems.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "## {}: {} query {}\n",
-            prob.name,
-            prob.map.display(),
-            prob.query
-        );
-        let mut table = Table::new([
-            "planner",
-            "runs",
-            "solved",
-            "time median (ms)",
-            "time IQR (ms)",
-            "length median",
-            "length IQR",
-        ])
-        .align(std::iter::once(Align::Left).chain(std::iter::repeat(Align::Right)));
-        for row in r.summary.iter().filter(|x| x.problem == p) {
-            table.row([
-                row.planner.clone(),
-                row.runs.to_string(),
-                format!("{:.0}%", 100.0 * row.success_rate),
-                g(1e3 * row.time_s.median, 3),
-                g(1e3 * row.time_s.iqr(), 3),
-                g(row.length.median, 2),
-                g(row.length.iqr(), 2),
-            ]);
-        }
-        s.push_str(&table.to_markdown());
-        let pairs: Vec<&Comparison> = r.comparisons.iter().filter(|c| c.problem == p).collect();
-        if !pairs.is_empty() {
-            let _ = writeln!(
-                s,
-                "\nPairwise Mann-Whitney U tests (two-sided p; Cliff's delta of A against B; \
-                 verdict at alpha = {alpha}):\n"
-            );
-            let mut table = Table::new([
-                "A",
-                "B",
-                "time p",
-                "time delta",
-                "time",
-                "length p",
-                "length delta",
-                "length",
-            ])
-            .align([
-                Align::Left,
-                Align::Left,
-                Align::Right,
-                Align::Right,
-                Align::Left,
-                Align::Right,
-                Align::Right,
-                Align::Left,
-            ]);
-            for c in pairs {
-                let word = |t: &bench::MetricTest, less: &str, more: &str| match t.verdict {
-                    harness::stats::Verdict::Held => format!("A {less}"),
-                    harness::stats::Verdict::NotHeld => format!("B {less}"),
-                    harness::stats::Verdict::NotSignificant => format!("no {more} difference"),
-                    harness::stats::Verdict::NoData => "no data".into(),
-                };
-                table.row([
-                    c.a.clone(),
-                    c.b.clone(),
-                    p_fmt(c.time.p_value),
-                    g(c.time.cliffs_delta, 2),
-                    word(&c.time, "faster", "significant"),
-                    p_fmt(c.length.p_value),
-                    g(c.length.cliffs_delta, 2),
-                    word(&c.length, "shorter", "significant"),
-                ]);
-            }
-            s.push_str(&table.to_markdown());
-        }
-        s.push('\n');
-    }
-    let _ = writeln!(
-        s,
-        "{} runs on {} threads. Wall clock: the runs {:.3} s, the whole command {:.3} s; sum \
-         of the run times (planning and post-processing) {:.3} s, of the planning times {:.3} s; \
-         command / planning = {:.3}. CPU: the command {:.3} s, the planning calls {:.3} s; \
-         command / planning = {:.3}.",
-        r.runs.len(),
-        r.threads,
-        r.wall_s,
-        total_s,
-        r.sum_run_time_s,
-        r.sum_planning_time_s,
-        total_s / r.sum_planning_time_s,
-        r.command_cpu_s,
-        r.sum_planning_cpu_s,
-        r.command_cpu_s / r.sum_planning_cpu_s,
-    );
-    s
-}
-
-fn p_fmt(p: f64) -> String {
-    if !p.is_finite() {
-        "-".into()
-    } else if p < 1e-4 {
-        format!("{p:.1e}")
-    } else {
-        format!("{p:.4}")
-    }
+    Ok(())
 }
 
 #[cfg(test)]
