@@ -20,6 +20,8 @@ What the cells are compared with, each stated independently of the PGM writers:
 Needs Pillow and NumPy; a missing one fails the run (no silent skip).
 """
 
+import base64
+import io
 import json
 import re
 import subprocess
@@ -133,24 +135,17 @@ def test_zone_maps_open_in_pillow_and_keep_their_zones(tmp_path, hyplan_bin):
 
 
 def svg_cells(svg, meta, shape):
-    """The built map as the run's SVG figure draws it: rows of free (#fff) and occupied
-    (#222) rectangles in metres, y up; cells it leaves out are unknown. Rows top first."""
-    res = float(meta["resolution"])
-    ox, oy, _ = (float(v) for v in meta["origin"].strip("[]").split(","))
+    """The built map as the run's SVG figure draws it: an embedded PNG of one pixel per
+    cell, rows top first, free #fff, occupied #222, unknown any other colour."""
+    text = Path(svg).read_text()
+    found = re.search(r'<image [^>]*href="data:image/png;base64,([^"]+)"', text)
+    assert found, f"{svg}: no map image"
+    pixels = np.asarray(Image.open(io.BytesIO(base64.b64decode(found.group(1)))).convert("RGB"))
+    assert pixels.shape[:2] == shape, (svg, pixels.shape, shape)
     cells = np.full(shape, UNKNOWN, dtype=np.uint8)
-    h = shape[0]
-    pattern = re.compile(
-        r'<rect x="([-\d.]+)" y="([-\d.]+)" width="([\d.]+)" height="([\d.]+)" fill="(#fff|#222)"/>'
-    )
-    n = 0
-    for x, y, width, height, fill in pattern.findall(Path(svg).read_text()):
-        i = round((float(x) - ox) / res)
-        j = round((float(y) - oy) / res)
-        k = round(float(width) / res)
-        assert round(float(height) / res) == 1
-        cells[h - 1 - j, i : i + k] = FREE if fill == "#fff" else OCCUPIED
-        n += 1
-    assert n > 0, f"{svg}: no map cells drawn"
+    cells[(pixels == (0xFF, 0xFF, 0xFF)).all(axis=2)] = FREE
+    cells[(pixels == (0x22, 0x22, 0x22)).all(axis=2)] = OCCUPIED
+    assert (cells != UNKNOWN).any(), f"{svg}: no map cells drawn"
     return cells
 
 

@@ -82,7 +82,9 @@ mod validate;
 mod world;
 
 pub use control::{Command, Controller, FollowInput, LocalController};
-pub use costmap::{Costmap, CostmapBuilder, CostmapParams, ObstacleMemory};
+pub use costmap::{
+    Costmap, CostmapBuilder, CostmapParams, MEMORY_RESOLUTION, ObstacleMemory, rasterize,
+};
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, Observer, PLANNER_STREAM, Sim, TICKS_PER_SECOND,
     TickInfo, every, stream, time_of,

@@ -406,23 +406,67 @@ pub fn page_section(
     );
     let list = claims(results, series, Some(seed));
     summary(&mut s, &list, "####");
-    for (scenario, r) in results
+    let mine: Vec<_> = results
         .iter()
         .filter(|(_, r)| r.seed_file.starts_with(seed))
-    {
+        .collect();
+    // The layouts of a series (named by a claim's `across`) share one table: each has a
+    // full section in the report, and the page stays readable.
+    let entries: Vec<&str> = mine
+        .iter()
+        .flat_map(|(sc, _)| sc.claims.iter().flat_map(|c| c.across.iter()))
+        .map(String::as_str)
+        .collect();
+    let in_series = |name: &str| entries.iter().any(|e| super::in_group(name, e));
+    for (scenario, r) in mine.iter().filter(|(_, r)| !in_series(&r.name)) {
         experiment(&mut s, scenario, r, "####", false);
     }
-    let mine: Vec<_> = series
-        .iter()
-        .filter(|sc| sc.seed_file.starts_with(seed))
-        .collect();
-    if !mine.is_empty() {
-        let _ = writeln!(s, "#### Claims across experiments\n");
-        for sc in mine {
-            claim_line(&mut s, &sc.claim, &format!(" ({})", sc.experiment));
-        }
+    let layouts: Vec<_> = mine.iter().filter(|(_, r)| in_series(&r.name)).collect();
+    if !layouts.is_empty() {
+        series_table(&mut s, &layouts);
+    }
+    if series.iter().any(|sc| sc.seed_file.starts_with(seed)) {
+        // The summary above has each one's verdict; the steps are in the report.
+        let _ = writeln!(
+            s,
+            "The claims across experiments are decided step by step in the report's \"Claims across experiments\" section.\n"
+        );
     }
     s
+}
+
+/// The experiments of a series in one table: a row per experiment and planner, the means
+/// of the report's columns (the report has each experiment's section).
+fn series_table(s: &mut String, layouts: &[&&(&Scenario, ExperimentResult)]) {
+    let _ = writeln!(
+        s,
+        "#### Series experiments\n\nOne row per experiment and planner (means; standard deviations, published values and each experiment's claims are in the report).\n"
+    );
+    let headers = ["experiment", "planner", "success"]
+        .into_iter()
+        .chain(COLUMNS.iter().map(|c| c.1));
+    let mut table = Table::new(headers).align(
+        [Align::Left, Align::Left]
+            .into_iter()
+            .chain(std::iter::repeat(Align::Right)),
+    );
+    for (_, r) in layouts.iter().map(|x| &***x) {
+        for p in &r.planners {
+            let cells = COLUMNS.iter().map(|(m, _)| {
+                p.summary
+                    .get(m)
+                    .filter(|st| st.count > 0)
+                    .map_or("-".into(), |st| shown(m, st.mean))
+            });
+            let first = [
+                r.name.clone(),
+                p.label.clone(),
+                format!("{:.0}%", 100.0 * p.summary.success_rate),
+            ];
+            table.row(first.into_iter().chain(cells));
+        }
+    }
+    let _ = writeln!(s, "{}", table.to_markdown());
 }
 
 /// A page's text with its generated section replaced (or appended under "Replay results"

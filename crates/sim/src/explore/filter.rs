@@ -81,7 +81,7 @@ pub fn information_gain(map: &OccupancyGrid, p: Point2, radius: f64) -> f64 {
 
 /// The costmap value (ROS 0-100) at `p` from the built map alone: the Nav2 inflation
 /// cost of the distance from `p` to the nearest occupied cell centre of `map` (100 off
-/// the map). The same rule as [`Costmap`] without building the whole grid: the filter
+/// the map). The same rule as [`Costmap`](crate::Costmap) without building the whole grid: the filter
 /// asks about a few dozen points per cycle.
 #[must_use]
 pub fn built_cost(map: &OccupancyGrid, inflation: &Inflation, p: Point2) -> i8 {

@@ -91,7 +91,7 @@ pub struct Exploration {
     /// frontier, turn it to face the frontier there, and drop a frontier for its cost
     /// only when it lies on an occupied cell (default false: the reference sends the
     /// robot onto the frontier point and drops frontiers near obstacles; see
-    /// [`crate::explore::viewpoint`]). Both the RRT assigner and the baseline use it.
+    /// [`crate::ViewPoints`]). Both the RRT assigner and the baseline use it.
     pub view_points: bool,
     /// Greatest distance from a view point to its frontier, m (ours, 2.5: within the
     /// mapping range, so that the cells behind the frontier are mapped from there too).
