@@ -13,7 +13,7 @@ use std::time::Duration;
 
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_main};
 use envmap::GridMap;
-use envmap::generate::{self, HardMap};
+use envmap::HardMap;
 use hyplan_core::{Budget, Goal, Planner, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -21,7 +21,7 @@ use rand_chacha::ChaCha8Rng;
 /// The four hybrids as `hyplan plan --step STEP --goal-radius 2` builds them, 10 s each.
 fn hybrids(step: f64) -> Vec<Box<dyn Planner>> {
     let budget = Budget::iterations(u64::MAX).with_time(Duration::from_secs(10));
-    hybrid::four_hybrids(step, generate::SUITE_GOAL_RADIUS, budget)
+    hybrid::four_hybrids(step, envmap::SUITE_GOAL_RADIUS, budget)
 }
 
 fn hard_maps(c: &mut Criterion) {
@@ -54,13 +54,13 @@ fn hard_maps(c: &mut Criterion) {
     // 5-cell band closes (safe map). "fresh": each call on a new copy of the map (the
     // first check on a map builds the components it caches); "cached": the same map again.
     let mut rng = ChaCha8Rng::seed_from_u64(1);
-    let walled = generate::narrow_passage(2000, 2000, 0, 8, &mut rng);
-    let tunnel = generate::narrow_passage(2000, 2000, 6, 8, &mut rng);
+    let walled = envmap::narrow_passage(2000, 2000, 0, 8, &mut rng);
+    let tunnel = envmap::narrow_passage(2000, 2000, 6, 8, &mut rng);
     let cases = [
-        ("wall", generate::with_risk_band(&walled.map, 2.0), &walled),
+        ("wall", envmap::with_risk_band(&walled.map, 2.0), &walled),
         (
             "band",
-            generate::with_risk_band(&tunnel.map, 5.0).avoiding_risk(),
+            envmap::with_risk_band(&tunnel.map, 5.0).avoiding_risk(),
             &tunnel,
         ),
     ];

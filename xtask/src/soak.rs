@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::bail;
 use envmap::GridMap;
-use envmap::generate::{self, HardMap};
+use envmap::HardMap;
 use harness::PlannerConfig;
 use hyplan_core::{Budget, Goal, Point2, Query, Workspace};
 use postproc::Smoothing;
@@ -150,13 +150,10 @@ fn soak_map(
     // One map in three has a risk band; of those, half plan around it.
     let (map, label) = match rng.random_range(0..6) {
         0 => (
-            generate::with_risk_band(&generated.map, 2.0).avoiding_risk(),
+            envmap::with_risk_band(&generated.map, 2.0).avoiding_risk(),
             "band-avoided",
         ),
-        1 => (
-            generate::with_risk_band(&generated.map, 2.0),
-            "band-crossed",
-        ),
+        1 => (envmap::with_risk_band(&generated.map, 2.0), "band-crossed"),
         _ => (generated.map.clone(), "plain"),
     };
     let where_ = |q: &Query| {
@@ -245,7 +242,7 @@ fn soak_config(config: PlannerConfig, step: f64) -> PlannerConfig {
 /// and edge midpoints (where the boundary rule matters), or anywhere in the cell. The
 /// goal is a point or a disc.
 fn draw_query(map: &GridMap, step: f64, rng: &mut ChaCha8Rng) -> Option<Query> {
-    let (a, b) = generate::random_query(map, 4.0 * step, rng)?;
+    let (a, b) = envmap::random_query(map, 4.0 * step, rng)?;
     let place = |c: Point2, rng: &mut ChaCha8Rng| {
         let p = match rng.random_range(0..3) {
             0 => c,

@@ -13,7 +13,7 @@
 
 use std::path::PathBuf;
 
-use envmap::generate::{self, Generated, HardMap};
+use envmap::{Generated, HardMap};
 use envmap::{Picture, write_picture};
 use hyplan_core::Zone;
 use rand::SeedableRng;
@@ -33,14 +33,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         maps.push((kind.name().to_string(), kind.generate(step, &mut rng)));
     }
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    maps.push((
-        "report-maze".into(),
-        generate::maze(16, 16, 10, 4, &mut rng),
-    ));
-    maps.push(("report-spiral".into(), generate::spiral(8, 10, 4, &mut rng)));
+    maps.push(("report-maze".into(), envmap::maze(16, 16, 10, 4, &mut rng)));
+    maps.push(("report-spiral".into(), envmap::spiral(8, 10, 4, &mut rng)));
     maps.push((
         "report-floor-plan".into(),
-        generate::floor_plan(1732, 1732, 60, 6, &mut rng),
+        envmap::floor_plan(1732, 1732, 60, 6, &mut rng),
     ));
     for (name, g) in &maps {
         let (w, h) = (g.map.width(), g.map.height());

@@ -1,7 +1,7 @@
 //! Times the connectivity proof on disconnected 2000 x 2000 maps: a closed wall, and a
 //! tunnel closed by a 5-cell risk band (safe map). For each: the first check on a fresh
 //! map (it builds the cached components), a check on the same map again (cached), and
-//! the slow reference (`connectivity::reference`: floods over every cell, the full
+//! the slow reference (`disconnection_reference`: floods over every cell, the full
 //! distance transform, a max-min search) in the same run. Prints the median and maximum
 //! wall time of 20 calls, and, on Linux, the mean CPU time of the process per call (from
 //! `/proc/self/stat`, 10 ms ticks): on a loaded machine wall time measures the queue, CPU
@@ -14,8 +14,7 @@
 use std::time::Instant;
 
 use envmap::GridMap;
-use envmap::connectivity::{self, Moves, reference};
-use envmap::generate;
+use envmap::Moves;
 use hyplan_core::{Goal, NoPathCause, Query};
 use rand::SeedableRng;
 
@@ -23,20 +22,20 @@ const CALLS: usize = 20;
 
 fn main() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
-    let walled = generate::narrow_passage(2000, 2000, 0, 8, &mut rng);
-    let tunnel = generate::narrow_passage(2000, 2000, 6, 8, &mut rng);
+    let walled = envmap::narrow_passage(2000, 2000, 0, 8, &mut rng);
+    let tunnel = envmap::narrow_passage(2000, 2000, 6, 8, &mut rng);
     let cases = [
-        ("wall", generate::with_risk_band(&walled.map, 2.0), &walled),
+        ("wall", envmap::with_risk_band(&walled.map, 2.0), &walled),
         (
             "band",
-            generate::with_risk_band(&tunnel.map, 5.0).avoiding_risk(),
+            envmap::with_risk_band(&tunnel.map, 5.0).avoiding_risk(),
             &tunnel,
         ),
     ];
     for (name, map, g) in &cases {
         let query = Query::new(g.start, Goal::disc(g.goal, 2.0));
-        let fast = |m: &GridMap| connectivity::disconnection(m, &query, Moves::Four);
-        let slow = |m: &GridMap| reference::disconnection(m, &query, Moves::Four);
+        let fast = |m: &GridMap| envmap::disconnection(m, &query, Moves::Four);
+        let slow = |m: &GridMap| envmap::disconnection_reference(m, &query, Moves::Four);
         // A fresh copy per call: nothing cached yet (the maps above were never checked).
         let (first, cause) = time(|| map.clone(), fast);
         let warm = map.clone();

@@ -16,6 +16,12 @@
 //! - [`Mask`]: a binary grid in map cells; [`Picture`]: an 8-bit raster, top row first.
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
 //!   pictures and `.map` files, metres y up for ROS maps).
+//! - [`CellFrame`]: where any grid's cells lie in the world (the one metres-to-cells
+//!   conversion); [`flood_fill`], [`clusters`], [`steps_from`] ([`Connectivity`]) and
+//!   [`nearest_passable`]: the one traversal of connected cells.
+//! - `Shape` (feature `shapes`): the workspace's one obstacle vocabulary (rectangles,
+//!   circles, polygons, walls, rotated boxes, discs), `rasterize_shapes` exactly
+//!   (`overlaps`, through parry2d), `dilate_square`.
 //!
 //! The seed-000 pipeline, one function per stage, and all of it in [`Pipeline`]:
 //! 1. [`binarize`]: picture to obstacle mask (luminance below a threshold).
@@ -39,11 +45,13 @@
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
 //! - [`demo_room`]: a synthetic top-view room picture for examples and benchmarks.
-//! - [`connectivity`]: whether start and goal are connected in the cells a planner may
-//!   use, and if not why (an obstacle wall, or the risk band and the largest safety radius
-//!   that connects them).
-//! - [`generate`]: seeded hard maps (maze, spiral, bug trap, narrow passage, large floor
-//!   plan, clutter, rooms) with a suggested start and goal.
+//! - [`disconnection`], [`disconnection_hopping`] ([`Moves`]): whether start and goal are
+//!   connected in the cells a planner may use, and if not why (an obstacle wall, or the
+//!   risk band and the largest safety radius that connects them); their slow exact
+//!   references for tests, [`disconnection_reference`], [`disconnection_hopping_reference`].
+//! - Seeded hard maps with a suggested start and goal ([`Generated`], [`HardMap`]):
+//!   [`maze`], [`spiral`], [`bug_trap`], [`narrow_passage`], [`floor_plan`], [`clutter`],
+//!   [`rooms`]; [`with_risk_band`], [`random_query`].
 //!
 //! # Conventions
 //!
@@ -75,13 +83,13 @@
 mod binarize;
 mod cell_frame;
 mod components;
-pub mod connectivity;
+mod connectivity;
 mod demo;
 mod edt;
 mod error;
 mod flood;
 mod frame;
-pub mod generate;
+mod generate;
 mod grid_map;
 mod inflation;
 mod io;
@@ -90,18 +98,26 @@ mod picture;
 mod pipeline;
 mod rectangles;
 #[cfg(feature = "shapes")]
-pub mod shapes;
+mod shapes;
 mod workspace;
 mod zones;
 
 pub use binarize::binarize;
 pub use cell_frame::CellFrame;
 pub use components::{Component, Labels, components, label_components};
+pub use connectivity::{
+    Moves, disconnection, disconnection_hopping, disconnection_hopping_reference,
+    disconnection_reference,
+};
 pub use demo::demo_room;
 pub use edt::{DistanceField, distance_transform};
 pub use error::MapError;
 pub use flood::{Connectivity, clusters, flood_fill, nearest_passable, steps_from};
 pub use frame::InputFrame;
+pub use generate::{
+    Generated, HardMap, SUITE_BAND, SUITE_GOAL_RADIUS, bug_trap, clutter, floor_plan, maze,
+    narrow_passage, random_query, rooms, spiral, with_risk_band,
+};
 pub use grid_map::{GridError, GridMap};
 pub use inflation::{INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE};
 pub use io::image::{
@@ -119,6 +135,8 @@ pub use mask::Mask;
 pub use picture::Picture;
 pub use pipeline::{Pipeline, PipelineOutput};
 pub use rectangles::{CellRect, bounding_rectangles, fill_rectangles};
+#[cfg(feature = "shapes")]
+pub use shapes::{Shape, dilate_square, overlaps, rasterize_shapes};
 pub use workspace::TOUCH_TOLERANCE;
 pub use zones::zones;
 

@@ -3,9 +3,9 @@
 //! simulator's walls, boxes and pillars).
 //!
 //! ```
-//! use envmap::shapes::{Shape, rasterize};
+//! use envmap::{Shape, rasterize_shapes};
 //! let disc = Shape::Circle { x: 5.0, y: 5.0, r: 2.0 };
-//! let mask = rasterize(&[disc], 10, 10, 1.0, false);
+//! let mask = rasterize_shapes(&[disc], 10, 10, 1.0, false);
 //! assert!(mask.get(5, 5) && !mask.get(0, 0));
 //! ```
 
@@ -82,7 +82,7 @@ impl Shape {
     /// The centre and radius of a round shape (`Circle`, `Disc`); `None` for the others.
     ///
     /// ```
-    /// use envmap::shapes::Shape;
+    /// use envmap::Shape;
     /// use hyplan_core::Point2;
     /// let pillar = Shape::Disc { center: (1.0, 2.0), radius: 0.5 };
     /// assert_eq!(pillar.disc(), Some((Point2::new(1.0, 2.0), 0.5)));
@@ -99,7 +99,7 @@ impl Shape {
     /// The outline as a closed polygon, vertices in order (`None` for a round shape).
     ///
     /// ```
-    /// use envmap::shapes::Shape;
+    /// use envmap::Shape;
     /// let wall = Shape::Wall { from: (0.0, 0.0), to: (2.0, 0.0), thickness: 0.2 };
     /// let corners = wall.outline().unwrap();
     /// assert_eq!(corners.len(), 4);
@@ -161,7 +161,13 @@ fn pt(p: (f64, f64)) -> Point2 {
 /// when a shape overlaps its interior ([`overlaps`]). Coordinates are y-up from the lower
 /// left, or y-down from the top row when `y_down`.
 #[must_use]
-pub fn rasterize(shapes: &[Shape], width: usize, height: usize, res: f64, y_down: bool) -> Mask {
+pub fn rasterize_shapes(
+    shapes: &[Shape],
+    width: usize,
+    height: usize,
+    res: f64,
+    y_down: bool,
+) -> Mask {
     let mut mask = Mask::new(width, height);
     let top = height as f64 * res;
     for shape in shapes {

@@ -1,9 +1,9 @@
 //! The run-based connectivity proof against its slow cell-by-cell reference
-//! (`connectivity::reference`): the same verdict and the same cause, to the bit, on small
+//! (`disconnection_reference`, `disconnection_hopping_reference`): the same verdict and the same cause, to the bit, on small
 //! random maps with a consistent band (zones from the distance transform) and with
 //! high-risk cells drawn at random.
 
-use envmap::connectivity::{self, Moves, reference};
+use envmap::Moves;
 use envmap::{GridMap, Mask, distance_transform, zones};
 use hyplan_core::{Goal, Point2, Query, Zone};
 use proptest::prelude::*;
@@ -82,14 +82,14 @@ proptest! {
         let query = query(&map, q);
         let moves = if eight { Moves::Eight } else { Moves::Four };
         prop_assert_eq!(
-            connectivity::disconnection(&map, &query, moves),
-            reference::disconnection(&map, &query, moves)
+            envmap::disconnection(&map, &query, moves),
+            envmap::disconnection_reference(&map, &query, moves)
         );
         let mut plain = map.clone();
         plain.blocked_from = Zone::Forbidden;
         prop_assert_eq!(
-            connectivity::disconnection_hopping(&plain, &query, hop),
-            reference::disconnection_hopping(&plain, &query, hop)
+            envmap::disconnection_hopping(&plain, &query, hop),
+            envmap::disconnection_hopping_reference(&plain, &query, hop)
         );
     }
 }
@@ -100,17 +100,20 @@ proptest! {
 fn large_band_case_matches_the_reference() {
     use rand::SeedableRng;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
-    let g = envmap::generate::narrow_passage(400, 300, 6, 8, &mut rng);
-    let map = envmap::generate::with_risk_band(&g.map, 5.0).avoiding_risk();
+    let g = envmap::narrow_passage(400, 300, 6, 8, &mut rng);
+    let map = envmap::with_risk_band(&g.map, 5.0).avoiding_risk();
     let query = Query::new(g.start, Goal::disc(g.goal, 2.0));
-    let fast = connectivity::disconnection(&map, &query, Moves::Four);
+    let fast = envmap::disconnection(&map, &query, Moves::Four);
     assert!(
         matches!(fast, Some(hyplan_core::NoPathCause::RiskBand { .. })),
         "{fast:?}"
     );
-    assert_eq!(fast, reference::disconnection(&map, &query, Moves::Four));
     assert_eq!(
-        connectivity::disconnection(&map.clone(), &query, Moves::Four),
+        fast,
+        envmap::disconnection_reference(&map, &query, Moves::Four)
+    );
+    assert_eq!(
+        envmap::disconnection(&map.clone(), &query, Moves::Four),
         fast
     );
 }

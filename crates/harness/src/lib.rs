@@ -49,7 +49,7 @@ mod scenario;
 pub mod stats;
 
 /// An obstacle of a scenario's drawn grid: `envmap`'s shapes.
-pub use envmap::shapes::Shape;
+pub use envmap::Shape;
 #[cfg(feature = "plot")]
 pub use figure::{chart_metrics, draw_world, world_figure};
 pub use metrics::{Processed, RunMetrics, Scoring, measure, post_process};

@@ -171,9 +171,9 @@ impl Raster {
                 reason: "sides must be >= 1 and the resolution finite and > 0".into(),
             });
         }
-        let mut mask = envmap::shapes::rasterize(obstacles, width, height, res, self.y_down);
+        let mut mask = envmap::rasterize_shapes(obstacles, width, height, res, self.y_down);
         if self.padding_cells > 0 {
-            mask = envmap::shapes::dilate_square(&mask, self.padding_cells);
+            mask = envmap::dilate_square(&mask, self.padding_cells);
         }
         let pipeline = Pipeline {
             safety_radius: safety_radius_cells,

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use envmap::GridMap;
-use envmap::shapes::Shape;
+use envmap::Shape;
 use hyplan_core::{Goal, Point2, Query};
 use serde::{Deserialize, Serialize};
 

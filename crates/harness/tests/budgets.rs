@@ -4,7 +4,6 @@
 
 use std::time::{Duration, Instant};
 
-use envmap::generate;
 use harness::PlannerConfig;
 use hyplan_core::{Budget, Goal, Query};
 use rand_chacha::ChaCha8Rng;
@@ -14,7 +13,7 @@ use rand_chacha::rand_core::SeedableRng;
 fn a_tiny_time_limit_stops_every_planner_within_10_ms() {
     // 2000 x 2000 cells of rooms and doors: no planner finishes in 20 ms. Every call gets
     // a fresh copy of the map, so it builds the connectivity proof inside its budget.
-    let g = generate::floor_plan(2000, 2000, 3, 4, &mut ChaCha8Rng::seed_from_u64(16));
+    let g = envmap::floor_plan(2000, 2000, 3, 4, &mut ChaCha8Rng::seed_from_u64(16));
     let query = Query::new(g.start, Goal::Point(g.goal));
     let limit = Duration::from_millis(20);
     let budget = Budget::iterations(u64::MAX).with_time(limit);

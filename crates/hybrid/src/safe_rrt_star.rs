@@ -144,7 +144,7 @@ impl SafeRrtStar {
     }
 
     /// The proof step before sampling: on a grid map whose only blocked zone is Forbidden,
-    /// [`envmap::connectivity::disconnection_hopping`] (nodes in Free, edges up to
+    /// [`envmap::disconnection_hopping`] (nodes in Free, edges up to
     /// `max(step, goal_radius)` long across the band); on any other workspace, its own
     /// [`Workspace::disconnection`].
     fn check_connected<W: Workspace + ?Sized>(
@@ -156,11 +156,7 @@ impl SafeRrtStar {
         let grid =
             envmap::GridMap::try_of_workspace(ws).filter(|map| map.blocked_from == Zone::Forbidden);
         let cause = match grid {
-            Some(map) => envmap::connectivity::disconnection_hopping(
-                map,
-                query,
-                self.step.max(self.goal_radius),
-            ),
+            Some(map) => envmap::disconnection_hopping(map, query, self.step.max(self.goal_radius)),
             None => ws.disconnection(query),
         };
         sampling::require_connected(cause, started)

@@ -1,5 +1,5 @@
 //! The hard-map suite (issue 13): every planner of the workspace on every kind of
-//! generated map (`envmap::generate`), with a 2-cell risk band and a goal disc of radius
+//! generated map (`envmap`'s generators), with a 2-cell risk band and a goal disc of radius
 //! 2, as `hyplan plan --safety-radius 2 --goal-radius 2` runs them: success over seeds,
 //! collision-free paths, and "no path" proved at once, with its cause, where start and
 //! goal are not connected.
@@ -16,7 +16,7 @@
 use std::time::{Duration, Instant};
 
 use envmap::GridMap;
-use envmap::generate::{self, HardMap};
+use envmap::HardMap;
 use hybrid::SafeRrtStar;
 use hyplan_core::{Budget, Goal, NoPathCause, PlanError, Planner, Query, Workspace, Zone};
 use rand::SeedableRng;
@@ -26,8 +26,8 @@ use search::{GridAstar, GridDijkstra, ThetaStar};
 
 /// The query's goal disc and the band, cells (the report's `--goal-radius 2
 /// --safety-radius 2`).
-const GOAL_RADIUS: f64 = generate::SUITE_GOAL_RADIUS;
-const BAND: f64 = generate::SUITE_BAND;
+const GOAL_RADIUS: f64 = envmap::SUITE_GOAL_RADIUS;
+const BAND: f64 = envmap::SUITE_BAND;
 
 /// The four hybrids with `step`, as `hyplan plan --step` builds them.
 fn hybrids(step: f64, budget: Budget) -> Vec<Box<dyn Planner>> {
@@ -110,9 +110,9 @@ fn every_planner_solves_every_kind() {
 fn disconnected_maps_fail_at_once_with_the_cause() {
     let budget = Budget::iterations(u64::MAX).with_time(Duration::from_secs(10));
     let mut rng = ChaCha8Rng::seed_from_u64(5);
-    let walled = generate::narrow_passage(400, 300, 0, 6, &mut rng);
+    let walled = envmap::narrow_passage(400, 300, 0, 6, &mut rng);
     let query = Query::new(walled.start, Goal::disc(walled.goal, GOAL_RADIUS));
-    let map = generate::with_risk_band(&walled.map, BAND);
+    let map = envmap::with_risk_band(&walled.map, BAND);
     for planner in every_planner(10.0, budget) {
         let name = planner.info().name;
         let err = planner
@@ -123,9 +123,9 @@ fn disconnected_maps_fail_at_once_with_the_cause() {
     }
     // A 6-cell tunnel: its middle cells are 3 cells from the walls, so a 5-cell band closes
     // it and any band below 3 cells leaves it open.
-    let tunnel = generate::narrow_passage(400, 300, 6, 6, &mut rng);
+    let tunnel = envmap::narrow_passage(400, 300, 6, 6, &mut rng);
     let query = Query::new(tunnel.start, Goal::disc(tunnel.goal, GOAL_RADIUS));
-    let banded = generate::with_risk_band(&tunnel.map, 5.0);
+    let banded = envmap::with_risk_band(&tunnel.map, 5.0);
     let safe = banded.clone().avoiding_risk();
     let expect_band = |err: &PlanError, name: &str| match err.cause() {
         Some(NoPathCause::RiskBand {
@@ -152,9 +152,9 @@ fn disconnected_maps_fail_at_once_with_the_cause() {
         budget,
         ..SafeRrtStar::default()
     };
-    let long = generate::narrow_passage(400, 300, 6, 40, &mut rng);
+    let long = envmap::narrow_passage(400, 300, 6, 40, &mut rng);
     let long_query = Query::new(long.start, Goal::disc(long.goal, GOAL_RADIUS));
-    let long_banded = generate::with_risk_band(&long.map, 5.0);
+    let long_banded = envmap::with_risk_band(&long.map, 5.0);
     let err = safe_rrt_star
         .plan(&long_banded, &long_query, &mut ChaCha8Rng::seed_from_u64(1))
         .expect_err("safe-rrt-star");
@@ -227,13 +227,13 @@ fn no_path_on_2000_maps() {
     let budget = Budget::iterations(u64::MAX).with_time(Duration::from_secs(10));
     // Disconnected 2000 x 2000 maps: a closed wall, and a band that closes the tunnel.
     let mut rng = ChaCha8Rng::seed_from_u64(1);
-    let walled = generate::narrow_passage(2000, 2000, 0, 8, &mut rng);
-    let tunnel = generate::narrow_passage(2000, 2000, 6, 8, &mut rng);
+    let walled = envmap::narrow_passage(2000, 2000, 0, 8, &mut rng);
+    let tunnel = envmap::narrow_passage(2000, 2000, 6, 8, &mut rng);
     let cases = [
-        ("wall", generate::with_risk_band(&walled.map, BAND), &walled),
+        ("wall", envmap::with_risk_band(&walled.map, BAND), &walled),
         (
             "band (safe map)",
-            generate::with_risk_band(&tunnel.map, 5.0).avoiding_risk(),
+            envmap::with_risk_band(&tunnel.map, 5.0).avoiding_risk(),
             &tunnel,
         ),
     ];

@@ -549,7 +549,7 @@ fn a_closed_pipe_ends_quietly() {
 /// its start and goal in the picture's frame (column, row from the top).
 fn floor_plan_picture(name: &str, side: usize) -> (String, String, String) {
     use rand_chacha::rand_core::SeedableRng;
-    let g = envmap::generate::floor_plan(
+    let g = envmap::floor_plan(
         side,
         side,
         60,

@@ -228,12 +228,10 @@ fn plan_on_grid(
     query.validate(map)?;
     // A flood fill proves "no path", with its cause, faster than exhausting the search.
     let moves = match (algo, options.connectivity, options.corner_cutting) {
-        (Algo::Astar | Algo::Dijkstra, crate::Connectivity::Eight, true) => {
-            envmap::connectivity::Moves::Eight
-        }
-        _ => envmap::connectivity::Moves::Four,
+        (Algo::Astar | Algo::Dijkstra, crate::Connectivity::Eight, true) => envmap::Moves::Eight,
+        _ => envmap::Moves::Four,
     };
-    if let Some(cause) = envmap::connectivity::disconnection(map, query, moves) {
+    if let Some(cause) = envmap::disconnection(map, query, moves) {
         return Err(PlanError::Disconnected {
             cause,
             stats: PlanStats {

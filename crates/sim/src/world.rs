@@ -9,7 +9,7 @@ use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
 /// A static obstacle, in metres (scenario syntax): the workspace's one shape type.
-pub use envmap::shapes::Shape;
+pub use envmap::Shape;
 
 /// A point from a scenario pair.
 #[must_use]

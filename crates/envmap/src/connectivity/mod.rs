@@ -55,7 +55,12 @@ use hyplan_core::{Goal, NoPathCause, Point2, Query, Zone};
 
 use crate::GridMap;
 
-pub mod reference;
+mod reference;
+
+pub use reference::{
+    disconnection as disconnection_reference,
+    disconnection_hopping as disconnection_hopping_reference,
+};
 mod runs;
 
 use runs::{Components, Runs};

@@ -15,14 +15,14 @@
 //! ([`HardMap::generate`]), for suites that run every planner on every kind.
 //!
 //! ```
-//! use envmap::generate::{self, HardMap};
+//! use envmap::HardMap;
 //! use hyplan_core::Workspace;
 //! use rand::SeedableRng;
 //! let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-//! let g = generate::maze(8, 6, 15, 3, &mut rng);
+//! let g = envmap::maze(8, 6, 15, 3, &mut rng);
 //! assert!(g.map.is_free(g.start) && g.map.is_free(g.goal));
 //! // Same seed, same map.
-//! let again = generate::maze(8, 6, 15, 3, &mut rand_chacha::ChaCha8Rng::seed_from_u64(7));
+//! let again = envmap::maze(8, 6, 15, 3, &mut rand_chacha::ChaCha8Rng::seed_from_u64(7));
 //! assert_eq!(g.map, again.map);
 //! let spiral = HardMap::Spiral.generate(10.0, &mut rng);
 //! assert!(spiral.map.is_free(spiral.goal));
