@@ -61,6 +61,7 @@ mod budget;
 pub mod check;
 mod error;
 mod geometry;
+mod grid;
 mod plan;
 mod planner;
 mod query;

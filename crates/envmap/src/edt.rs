@@ -18,21 +18,11 @@ pub struct DistanceField {
     dist_sq: Vec<u32>,
 }
 
+hyplan_core::grid_size!(DistanceField);
+
 impl DistanceField {
     /// The value of cells with no obstacle anywhere in the map.
     pub const NONE: u32 = u32::MAX;
-
-    /// Columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
-    }
 
     /// Squared distances in cells^2, row-major from the bottom row ([`NONE`](Self::NONE)
     /// when there is no obstacle).

@@ -106,6 +106,8 @@ pub enum GridError {
     },
 }
 
+hyplan_core::grid_size!(GridMap);
+
 impl GridMap {
     /// A map of `width x height` cells, all `zone`, with resolution 1 and origin (0, 0).
     ///
@@ -222,18 +224,6 @@ impl GridMap {
             }
         }
         Ok(map)
-    }
-
-    /// Columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
     }
 
     /// Side of a cell, world units.

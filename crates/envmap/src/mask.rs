@@ -21,6 +21,8 @@ pub struct Mask {
     cells: Vec<bool>,
 }
 
+hyplan_core::grid_size!(Mask);
+
 impl Mask {
     /// An all-`false` mask of `width x height` cells.
     ///
@@ -58,18 +60,6 @@ impl Mask {
             height: map.height(),
             cells: map.zones().iter().map(|&z| z >= zone).collect(),
         }
-    }
-
-    /// Columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
     }
 
     /// The cells, row-major from the bottom row.

@@ -19,6 +19,8 @@ pub struct Picture {
     data: Vec<u8>,
 }
 
+hyplan_core::grid_size!(Picture);
+
 impl Picture {
     /// A grey picture, one byte per pixel, top row first; `None` on a length mismatch.
     #[must_use]
@@ -52,18 +54,6 @@ impl Picture {
             channels: 3,
             data,
         }
-    }
-
-    /// Columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
     }
 
     /// 1 (grey) or 3 (RGB).

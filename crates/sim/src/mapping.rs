@@ -83,6 +83,8 @@ pub struct OccupancyGrid {
 /// Side of a change-tracking block, cells.
 const BLOCK: usize = 16;
 
+hyplan_core::grid_size!(OccupancyGrid);
+
 impl OccupancyGrid {
     /// An all-unknown grid covering `bounds`.
     #[must_use]
@@ -145,18 +147,6 @@ impl OccupancyGrid {
             rows.start / BLOCK..rows.end.div_ceil(BLOCK)
         };
         block_rows.map(move |bj| bj * bw + c0..bj * bw + c1)
-    }
-
-    /// Columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
     }
 
     /// Lower-left corner, m.

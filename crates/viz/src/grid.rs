@@ -30,6 +30,8 @@ pub struct GridImage {
     cells: Vec<u8>,
 }
 
+hyplan_core::grid_size!(GridImage);
+
 impl GridImage {
     /// A `width` x `height` grid of colour 0 of `palette`, cells `resolution` wide, lower-left
     /// corner at `origin`. A palette longer than 256 colours is cut to 256; an empty one
@@ -126,18 +128,6 @@ impl GridImage {
     fn with_cells(mut self, cells: Vec<u8>) -> Self {
         self.cells = cells;
         self
-    }
-
-    /// Cells per row.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
     }
 
     /// The world position of the lower-left corner.

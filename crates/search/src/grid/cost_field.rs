@@ -17,19 +17,9 @@ pub struct CostField {
     stats: SearchStats,
 }
 
+hyplan_core::grid_size!(CostField);
+
 impl CostField {
-    /// Map columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Map rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
-    }
-
     /// The goal cell the field leads to.
     #[must_use]
     pub const fn goal(&self) -> (usize, usize) {

@@ -317,6 +317,8 @@ impl Limit {
     }
 }
 
+hyplan_core::grid_size!(GridSearch);
+
 impl GridSearch {
     /// Prepares searches on `map` with the move rules `options`.
     ///
@@ -449,18 +451,6 @@ impl GridSearch {
         for (word, &free) in self.words.iter_mut().zip(&self.passable) {
             *word = if free { u64::MAX } else { 0 };
         }
-    }
-
-    /// Map columns.
-    #[must_use]
-    pub const fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Map rows.
-    #[must_use]
-    pub const fn height(&self) -> usize {
-        self.height
     }
 
     /// The move rules.
