@@ -17,7 +17,7 @@
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
 //!   pictures and `.map` files, metres y up for ROS maps).
 //! - [`CellFrame`]: where any grid's cells lie in the world (the one metres-to-cells
-//!   conversion); [`flood_fill`], [`clusters`], [`steps_from`] ([`Connectivity`]) and
+//!   conversion); [`CellWalk`]: the cells a segment crosses, in order; [`flood_fill`], [`clusters`], [`steps_from`] ([`Connectivity`]) and
 //!   [`nearest_passable`]: the one traversal of connected cells.
 //! - `Shape` (feature `shapes`): the workspace's one obstacle vocabulary (rectangles,
 //!   circles, polygons, walls, rotated boxes, discs), `rasterize_shapes` exactly
@@ -82,6 +82,7 @@
 
 mod binarize;
 mod cell_frame;
+mod cell_walk;
 mod components;
 mod connectivity;
 mod demo;
@@ -104,6 +105,7 @@ mod zones;
 
 pub use binarize::binarize;
 pub use cell_frame::CellFrame;
+pub use cell_walk::CellWalk;
 pub use components::{Component, Labels, components, label_components};
 pub use connectivity::{
     Moves, disconnection, disconnection_hopping, disconnection_hopping_reference,

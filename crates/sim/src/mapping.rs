@@ -10,7 +10,7 @@
 //! cell at `l_max` is free again after `ceil(l_max / -l_miss) = 9` later beams pass
 //! through it, so people leave no permanent marks.
 
-use envmap::{CellFrame, GridMap};
+use envmap::{CellFrame, CellWalk, GridMap};
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
@@ -244,59 +244,24 @@ impl OccupancyGrid {
     /// Walks the cells from `a` to `b` (Amanatides-Woo): misses before the last cell, a
     /// hit (or a miss) in the last.
     fn trace(&mut self, a: Point2, b: Point2, hit: bool) {
-        let frame = self.frame();
-        let ((ax, ay), (bx, by)) = (frame.coords(a), frame.coords(b));
-        let (mut i, mut j) = (ax.floor() as i64, ay.floor() as i64);
-        let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
-        let (dx, dy) = (bx - ax, by - ay);
-        let (si, sj) = (dx.signum() as i64, dy.signum() as i64);
-        let t_dx = if dx != 0.0 {
-            (1.0 / dx).abs()
-        } else {
-            f64::INFINITY
-        };
-        let t_dy = if dy != 0.0 {
-            (1.0 / dy).abs()
-        } else {
-            f64::INFINITY
-        };
-        let mut t_x = if dx > 0.0 {
-            (ax.floor() + 1.0 - ax) * t_dx
-        } else if dx < 0.0 {
-            (ax - ax.floor()) * t_dx
-        } else {
-            f64::INFINITY
-        };
-        let mut t_y = if dy > 0.0 {
-            (ay.floor() + 1.0 - ay) * t_dy
-        } else if dy < 0.0 {
-            (ay - ay.floor()) * t_dy
-        } else {
-            f64::INFINITY
-        };
-        let steps = (ei - i).abs() + (ej - j).abs();
+        let mut walk = CellWalk::new(&self.frame(), a, b);
         let (w, h) = (self.width as i64, self.height as i64);
         let (miss, lo) = (self.params.l_miss as f32, self.params.l_min as f32);
         // Both ends inside (the usual case): no bounds test per cell. Misses only lower a
         // cell's log-odds, so only the lower clamp applies.
-        let inside = |i: i64, j: i64| i >= 0 && j >= 0 && i < w && j < h;
-        let checked = !(inside(i, j) && inside(ei, ej));
-        for _ in 0..steps {
-            if !checked || inside(i, j) {
+        let inside = |(i, j): (i64, i64)| i >= 0 && j >= 0 && i < w && j < h;
+        let checked = !(inside(walk.cell()) && inside(walk.end_cell()));
+        let steps = usize::try_from(walk.steps()).unwrap_or(usize::MAX);
+        for (i, j) in walk.by_ref().take(steps) {
+            if !checked || inside((i, j)) {
                 let l = &mut self.logodds[(j * w + i) as usize];
                 // `max` without its NaN handling (no log-odds is NaN; `lo` < 0 is no tie
                 // between zeros): on the critical path of every traced cell.
                 let x = *l + miss;
                 *l = if x < lo { lo } else { x };
             }
-            // Written as selects: which axis steps next is a coin toss for the branch
-            // predictor.
-            let step_x = t_x < t_y;
-            i += if step_x { si } else { 0 };
-            j += if step_x { 0 } else { sj };
-            t_x = if step_x { t_x + t_dx } else { t_x };
-            t_y = if step_x { t_y } else { t_y + t_dy };
         }
+        let (i, j) = walk.cell();
         let last = if hit {
             self.params.l_hit
         } else {

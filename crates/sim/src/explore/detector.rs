@@ -17,6 +17,7 @@
 //! - Each detector draws from its own ChaCha8 stream (the reference seeds a Mersenne
 //!   Twister with a constant).
 
+use envmap::CellWalk;
 use hyplan_core::Point2;
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -122,56 +123,16 @@ pub enum Edge {
 /// it would make every edge from the root a frontier.
 #[must_use]
 pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
-    let res = map.params.resolution;
-    let o = map.origin();
-    let (ax, ay) = ((a.x - o.x) / res, (a.y - o.y) / res);
-    let (bx, by) = ((b.x - o.x) / res, (b.y - o.y) / res);
-    let (mut i, mut j) = (ax.floor() as i64, ay.floor() as i64);
-    let (ei, ej) = (bx.floor() as i64, by.floor() as i64);
-    let (dx, dy) = (bx - ax, by - ay);
-    let (si, sj) = (dx.signum() as i64, dy.signum() as i64);
-    let inv = |d: f64| {
-        if d != 0.0 {
-            (1.0 / d).abs()
-        } else {
-            f64::INFINITY
-        }
-    };
-    let (t_dx, t_dy) = (inv(dx), inv(dy));
-    let first = |a: f64, d: f64, t: f64| {
-        if d > 0.0 {
-            (a.floor() + 1.0 - a) * t
-        } else if d < 0.0 {
-            (a - a.floor()) * t
-        } else {
-            f64::INFINITY
-        }
-    };
-    let (mut t_x, mut t_y) = (first(ax, dx, t_dx), first(ay, dy, t_dy));
-    let steps = (ei - i).abs() + (ej - j).abs();
     let (w, h) = (map.width() as i64, map.height() as i64);
-    for k in 0..=steps {
-        if k == 0 {
-            // `a`'s own cell: see the doc.
-        } else if i < 0 || j < 0 || i >= w || j >= h {
+    // `a`'s own cell is skipped: see the doc.
+    for (i, j) in CellWalk::new(&map.frame(), a, b).skip(1) {
+        if i < 0 || j < 0 || i >= w || j >= h {
             return Edge::Occupied;
-        } else {
-            match map.value(i as usize, j as usize) {
-                OCCUPIED => return Edge::Occupied,
-                UNKNOWN => {
-                    return Edge::Unknown(map.cell_center(i as usize, j as usize));
-                }
-                _ => {}
-            }
         }
-        if k < steps {
-            if t_x < t_y {
-                i += si;
-                t_x += t_dx;
-            } else {
-                j += sj;
-                t_y += t_dy;
-            }
+        match map.value(i as usize, j as usize) {
+            OCCUPIED => return Edge::Occupied,
+            UNKNOWN => return Edge::Unknown(map.cell_center(i as usize, j as usize)),
+            _ => {}
         }
     }
     Edge::Free
