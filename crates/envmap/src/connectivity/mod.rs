@@ -33,11 +33,11 @@
 //! in the Free zone), and bisection over that integer range finds it exactly. Each test
 //! costs the runs near changes between rows times the disc's diameter (rows repeated in a
 //! block are widened once), so the searches touch the map's shapes a few dozen times and
-//! never its cells one by one: a few milliseconds on 2000 x 2000 cells. [`reference`](mod@reference)
+//! never its cells one by one: a few milliseconds on 2000 x 2000 cells. [`disconnection_reference`](crate::disconnection_reference)
 //! keeps the slow cell-by-cell version the tests compare against.
 //!
 //! ```
-//! use envmap::{GridMap, connectivity::{self, Moves}};
+//! use envmap::{GridMap, Moves, disconnection};
 //! use hyplan_core::{Goal, NoPathCause, Point2, Query};
 //! let map = GridMap::from_ascii("
 //!     ..#..
@@ -45,7 +45,7 @@
 //!     ..#..
 //! ")?;
 //! let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(4.5, 1.5)));
-//! assert_eq!(connectivity::disconnection(&map, &query, Moves::Four), Some(NoPathCause::Wall));
+//! assert_eq!(disconnection(&map, &query, Moves::Four), Some(NoPathCause::Wall));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
