@@ -219,8 +219,13 @@ impl GridImage {
         for y in 0..h {
             let j = self.height - 1 - y / scale;
             let row = &self.cells[j * self.width..(j + 1) * self.width];
-            for &c in row {
-                out.extend(std::iter::repeat_n(c.min(last), scale));
+            if scale == 1 {
+                // One pixel per cell (the exploration's animation): a straight copy.
+                out.extend(row.iter().map(|&c| c.min(last)));
+            } else {
+                for &c in row {
+                    out.extend(std::iter::repeat_n(c.min(last), scale));
+                }
             }
         }
         out
