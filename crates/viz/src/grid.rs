@@ -184,13 +184,16 @@ impl GridImage {
         }
     }
 
+    /// Where the cells lie in the world.
+    #[must_use]
+    pub const fn frame(&self) -> envmap::CellFrame {
+        envmap::CellFrame::new(self.origin, self.resolution, self.width, self.height)
+    }
+
     /// The cell holding the world point `p`, if inside.
     #[must_use]
     pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
-        let i = ((p.x - self.origin.x) / self.resolution).floor();
-        let j = ((p.y - self.origin.y) / self.resolution).floor();
-        (i >= 0.0 && j >= 0.0 && (i as usize) < self.width && (j as usize) < self.height)
-            .then_some((i as usize, j as usize))
+        self.frame().cell_of(p)
     }
 
     /// Sets the cell holding the world point `p` to `index` (nothing outside the grid).
