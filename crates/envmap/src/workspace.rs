@@ -379,30 +379,35 @@ mod tests {
     }
 
     #[test]
-    fn horizontal_through_centres_touches_one_row() {
-        let map = GridMap::filled(5, 5, Zone::Free).unwrap();
-        assert_eq!(
-            cells(&map, (0.5, 2.5), (3.5, 2.5)),
-            vec![(0, 2), (1, 2), (2, 2), (3, 2)]
-        );
-    }
-
-    #[test]
-    fn diagonal_through_corner_touches_the_four_cells() {
-        let map = GridMap::filled(5, 5, Zone::Free).unwrap();
-        assert_eq!(
-            cells(&map, (0.5, 0.5), (1.5, 1.5)),
-            vec![(0, 0), (0, 1), (1, 0), (1, 1)]
-        );
-    }
-
-    #[test]
-    fn segment_on_grid_line_touches_both_sides() {
-        let map = GridMap::filled(4, 4, Zone::Free).unwrap();
-        assert_eq!(
-            cells(&map, (0.5, 2.0), (1.5, 2.0)),
-            vec![(0, 1), (0, 2), (1, 1), (1, 2)]
-        );
+    fn segments_touch_the_cells_they_meet() {
+        // (map side, from, to, the cells touched)
+        let cases = [
+            // Horizontal through cell centres: one row.
+            (
+                5,
+                (0.5, 2.5),
+                (3.5, 2.5),
+                vec![(0, 2), (1, 2), (2, 2), (3, 2)],
+            ),
+            // Diagonal through a cell corner: the four cells around it.
+            (
+                5,
+                (0.5, 0.5),
+                (1.5, 1.5),
+                vec![(0, 0), (0, 1), (1, 0), (1, 1)],
+            ),
+            // Along a grid line: both sides.
+            (
+                4,
+                (0.5, 2.0),
+                (1.5, 2.0),
+                vec![(0, 1), (0, 2), (1, 1), (1, 2)],
+            ),
+        ];
+        for (side, a, b, touched) in cases {
+            let map = GridMap::filled(side, side, Zone::Free).unwrap();
+            assert_eq!(cells(&map, a, b), touched, "{a:?} -> {b:?}");
+        }
     }
 
     #[test]

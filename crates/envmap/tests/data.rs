@@ -67,14 +67,7 @@ fn turtlebot3_world_counts_match_map_server() {
     assert_eq!(loaded.map.zone_counts(), [7939, 0, 795 + 138722]);
     assert_eq!(loaded.map.origin(), Point2::new(-10.0, -10.0));
     assert_eq!(loaded.map.resolution(), 0.05);
-    let free = load_map(
-        &path,
-        &LoadOptions {
-            unknown_free: true,
-            ..LoadOptions::default()
-        },
-    )
-    .unwrap();
+    let free = load_unknown_as(&path, true);
     assert_eq!(free.map.zone_counts(), [7939 + 138722, 0, 795]);
 }
 
@@ -83,14 +76,7 @@ fn turtlebot3_pixel_rows_are_flipped() {
     let path = data("ros_maps/turtlebot3_world/map.yaml");
     let meta = read_ros_yaml(&path).unwrap();
     let pic = read_picture(&meta.image).unwrap();
-    let loaded = load_map(
-        &path,
-        &LoadOptions {
-            unknown_free: false,
-            ..LoadOptions::default()
-        },
-    )
-    .unwrap();
+    let loaded = load_unknown_as(&path, false);
     // Map cell (i, j) is image pixel (i, 383 - j).
     for (x, y) in [(0, 0), (200, 150), (383, 383), (190, 200)] {
         let occupied = pic.pixel(x, y)[0] == 0;
@@ -142,4 +128,13 @@ fn inflate_equals_the_full_costs_on_the_shared_maps() {
             assert_eq!(inf.inflate(mask, *res).unwrap(), full, "map {k}, {inf:?}");
         }
     }
+}
+
+/// `path` loaded with unknown cells free (`true`) or blocked.
+fn load_unknown_as(path: &std::path::Path, unknown_free: bool) -> envmap::LoadedMap {
+    let options = LoadOptions {
+        unknown_free,
+        ..LoadOptions::default()
+    };
+    load_map(path, &options).unwrap()
 }

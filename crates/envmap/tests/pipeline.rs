@@ -18,24 +18,24 @@ fn l_shape() -> Picture {
     pic
 }
 
-#[test]
-fn l_shape_is_one_component_and_its_rectangle_fills_the_corner() {
-    let exact = Pipeline {
-        safety_radius: 0.0,
+/// The L shape through the default pipeline with `rectangles` and `safety_radius`.
+fn l_shape_through(rectangles: bool, safety_radius: f64) -> envmap::PipelineOutput {
+    Pipeline {
+        rectangles,
+        safety_radius,
         ..Pipeline::default()
     }
     .run(&l_shape())
-    .unwrap();
+    .unwrap()
+}
+
+#[test]
+fn l_shape_is_one_component_and_its_rectangle_fills_the_corner() {
+    let exact = l_shape_through(false, 0.0);
     assert_eq!(exact.components.len(), 1);
     assert_eq!(exact.components[0].cells, 19);
     assert_eq!(exact.map.zone_counts(), [600 - 19, 0, 19]);
-    let rect = Pipeline {
-        rectangles: true,
-        safety_radius: 0.0,
-        ..Pipeline::default()
-    }
-    .run(&l_shape())
-    .unwrap();
+    let rect = l_shape_through(true, 0.0);
     assert_eq!(rect.map.zone_counts()[2], 10 * 10);
     // Pixel (12, 8), inside the L's corner, is free exactly but forbidden as a rectangle.
     assert_eq!(exact.map.cell_zone(12, 19 - 8), Zone::Free);
@@ -69,12 +69,7 @@ fn default_pipeline_follows_the_seed() {
 
 #[test]
 fn risk_band_blocks_only_when_avoiding_risk() {
-    let out = Pipeline {
-        safety_radius: 3.0,
-        ..Pipeline::default()
-    }
-    .run(&l_shape())
-    .unwrap();
+    let out = l_shape_through(false, 3.0);
     // Row of pixel y = 3 (map row 16) passes 2 cells above the top of the L (pixel y = 5).
     let (a, b) = (Point2::new(0.5, 16.5), Point2::new(29.5, 16.5));
     assert_eq!(out.map.zone(Point2::new(8.5, 16.5)), Zone::Risk);
@@ -92,13 +87,7 @@ fn invert_swaps_obstacles() {
 
 #[test]
 fn render_uses_the_paper_colours() {
-    let out = Pipeline {
-        rectangles: true,
-        safety_radius: 2.0,
-        ..Pipeline::default()
-    }
-    .run(&l_shape())
-    .unwrap();
+    let out = l_shape_through(true, 2.0);
     let pic = render_zones(&out.map, &out.rectangles);
     assert_eq!(pic.pixel(0, 0), &SAFE_COLOUR);
     assert_eq!(pic.pixel(8, 3), &RISK_COLOUR);

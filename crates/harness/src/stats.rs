@@ -38,7 +38,7 @@ impl Stat {
     /// Statistics of the finite values of `values`.
     #[must_use]
     pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
-        let mut v: Vec<f64> = values.into_iter().filter(|x| x.is_finite()).collect();
+        let v = finite_sorted(values);
         let n = v.len();
         if n == 0 {
             let nan = f64::NAN;
@@ -51,7 +51,6 @@ impl Stat {
                 count: 0,
             };
         }
-        v.sort_by(f64::total_cmp);
         let mean = v.iter().sum::<f64>() / n as f64;
         let var = if n > 1 {
             v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64
@@ -85,6 +84,56 @@ pub fn median(values: impl IntoIterator<Item = f64>) -> Option<f64> {
     }
     v.sort_by(f64::total_cmp);
     Some(sorted_median(&v))
+}
+
+/// The `q`-quantile of sorted finite values, linearly interpolated (NumPy's default);
+/// NaN for no values.
+#[must_use]
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let pos = q.clamp(0.0, 1.0) * (sorted.len() - 1) as f64;
+    let lo = pos.floor() as usize;
+    let hi = pos.ceil() as usize;
+    sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)
+}
+
+/// Median and inter-quartile range of the finite values of a sample.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Spread {
+    /// Median (NaN for no values).
+    pub median: f64,
+    /// First quartile.
+    pub q1: f64,
+    /// Third quartile.
+    pub q3: f64,
+}
+
+impl Spread {
+    /// The spread of the finite values.
+    #[must_use]
+    pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
+        let v = finite_sorted(values);
+        Self {
+            median: quantile(&v, 0.5),
+            q1: quantile(&v, 0.25),
+            q3: quantile(&v, 0.75),
+        }
+    }
+
+    /// The inter-quartile range, q3 - q1.
+    #[must_use]
+    pub fn iqr(&self) -> f64 {
+        self.q3 - self.q1
+    }
+}
+
+/// The finite values, ordered.
+fn finite_sorted(values: impl IntoIterator<Item = f64>) -> Vec<f64> {
+    let mut v: Vec<f64> = values.into_iter().filter(|x| x.is_finite()).collect();
+    v.sort_by(f64::total_cmp);
+    v
 }
 
 /// The median of sorted, non-empty values.

@@ -209,30 +209,13 @@ impl PlannerConfig {
     /// The maximum edge length, for the planners that have one.
     #[must_use]
     pub fn step(&self) -> Option<f64> {
-        match self {
-            Self::Rrt(p) => Some(p.step),
-            Self::RrtStar(p) => Some(p.step),
-            Self::BiRrt(p) => Some(p.step),
-            Self::RrtConnect(p) => Some(p.step),
-            Self::RrtAstarBt(p) => Some(p.step),
-            Self::RrtAstarRefine(p) => Some(p.step),
-            Self::HybridRrtAstar(p) => Some(p.step),
-            Self::SafeRrtStar(p) => Some(p.step),
-            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) | Self::GaPchip(_) => None,
-        }
+        self.clone().step_mut().map(|s| *s)
     }
 
     /// The goal bias, for the planners that have one.
     #[must_use]
     pub fn goal_bias(&self) -> Option<f64> {
-        match self {
-            Self::Rrt(p) => Some(p.goal_bias),
-            Self::RrtStar(p) => Some(p.goal_bias),
-            Self::RrtAstarRefine(p) => Some(p.goal_bias),
-            Self::HybridRrtAstar(p) => Some(p.goal_bias),
-            Self::SafeRrtStar(p) => Some(p.goal_bias),
-            _ => None,
-        }
+        self.clone().goal_bias_mut().map(|b| *b)
     }
 
     /// The budget (every planner takes one; unset by default: see
@@ -309,19 +292,36 @@ impl PlannerConfig {
         }
     }
 
+    fn step_mut(&mut self) -> Option<&mut f64> {
+        match self {
+            Self::Rrt(p) => Some(&mut p.step),
+            Self::RrtStar(p) => Some(&mut p.step),
+            Self::BiRrt(p) => Some(&mut p.step),
+            Self::RrtConnect(p) => Some(&mut p.step),
+            Self::RrtAstarBt(p) => Some(&mut p.step),
+            Self::RrtAstarRefine(p) => Some(&mut p.step),
+            Self::HybridRrtAstar(p) => Some(&mut p.step),
+            Self::SafeRrtStar(p) => Some(&mut p.step),
+            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) | Self::GaPchip(_) => None,
+        }
+    }
+
+    fn goal_bias_mut(&mut self) -> Option<&mut f64> {
+        match self {
+            Self::Rrt(p) => Some(&mut p.goal_bias),
+            Self::RrtStar(p) => Some(&mut p.goal_bias),
+            Self::RrtAstarRefine(p) => Some(&mut p.goal_bias),
+            Self::HybridRrtAstar(p) => Some(&mut p.goal_bias),
+            Self::SafeRrtStar(p) => Some(&mut p.goal_bias),
+            _ => None,
+        }
+    }
+
     /// Sets the step of the planners that have one; the others are unchanged.
     #[must_use]
     pub fn with_step(mut self, step: f64) -> Self {
-        match &mut self {
-            Self::Rrt(p) => p.step = step,
-            Self::RrtStar(p) => p.step = step,
-            Self::BiRrt(p) => p.step = step,
-            Self::RrtConnect(p) => p.step = step,
-            Self::RrtAstarBt(p) => p.step = step,
-            Self::RrtAstarRefine(p) => p.step = step,
-            Self::HybridRrtAstar(p) => p.step = step,
-            Self::SafeRrtStar(p) => p.step = step,
-            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) | Self::GaPchip(_) => {}
+        if let Some(s) = self.step_mut() {
+            *s = step;
         }
         self
     }
@@ -329,13 +329,8 @@ impl PlannerConfig {
     /// Sets the goal bias of the planners that have one; the others are unchanged.
     #[must_use]
     pub fn with_goal_bias(mut self, bias: f64) -> Self {
-        match &mut self {
-            Self::Rrt(p) => p.goal_bias = bias,
-            Self::RrtStar(p) => p.goal_bias = bias,
-            Self::RrtAstarRefine(p) => p.goal_bias = bias,
-            Self::HybridRrtAstar(p) => p.goal_bias = bias,
-            Self::SafeRrtStar(p) => p.goal_bias = bias,
-            _ => {}
+        if let Some(b) = self.goal_bias_mut() {
+            *b = bias;
         }
         self
     }

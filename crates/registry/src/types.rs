@@ -46,6 +46,16 @@ macro_rules! primitive {
     };
 }
 
+/// Tuple structs, structs and their enum-variant forms are named by their type's name
+/// (the arguments after the name are their lengths and variant tags, not needed here).
+macro_rules! named_compounds {
+    ($($method:ident($($arg:ty),*)),* $(,)?) => {
+        $(fn $method(self, name: &'static str, $(_: $arg),*) -> Result<Compound, fmt::Error> {
+            Ok(Compound(Ty::named(name)))
+        })*
+    };
+}
+
 impl ser::Serializer for Recorder {
     type Ok = Ty;
     type Error = fmt::Error;
@@ -118,33 +128,15 @@ impl ser::Serializer for Recorder {
     fn serialize_tuple(self, _: usize) -> Result<Compound, fmt::Error> {
         Ok(Compound(Ty::named("tuple")))
     }
-    fn serialize_tuple_struct(self, name: &'static str, _: usize) -> Result<Compound, fmt::Error> {
-        Ok(Compound(Ty::named(name)))
-    }
-    fn serialize_tuple_variant(
-        self,
-        name: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Compound, fmt::Error> {
-        Ok(Compound(Ty::named(name)))
-    }
     fn serialize_map(self, _: Option<usize>) -> Result<Compound, fmt::Error> {
         Ok(Compound(Ty::named("map")))
     }
-    fn serialize_struct(self, name: &'static str, _: usize) -> Result<Compound, fmt::Error> {
-        Ok(Compound(Ty::named(name)))
-    }
-    fn serialize_struct_variant(
-        self,
-        name: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Compound, fmt::Error> {
-        Ok(Compound(Ty::named(name)))
-    }
+    named_compounds!(
+        serialize_tuple_struct(usize),
+        serialize_tuple_variant(u32, &'static str, usize),
+        serialize_struct(usize),
+        serialize_struct_variant(u32, &'static str, usize),
+    );
 }
 
 /// Elements of lists, tuples and maps are not recorded: the compound's name is its type.
@@ -184,37 +176,29 @@ impl ser::SerializeMap for Compound {
     }
 }
 
-impl ser::SerializeStruct for Compound {
-    type Ok = Ty;
-    type Error = fmt::Error;
-    fn serialize_field<T: Serialize + ?Sized>(
-        &mut self,
-        key: &'static str,
-        value: &T,
-    ) -> Result<(), fmt::Error> {
-        self.0.fields.push((key, type_of(value)));
-        Ok(())
-    }
-    fn end(self) -> Result<Ty, fmt::Error> {
-        Ok(self.0)
-    }
+/// A struct's fields (of a plain struct or an enum's struct variant) are recorded with
+/// their types.
+macro_rules! fields_recorded {
+    ($($trait:ident),* $(,)?) => {
+        $(impl ser::$trait for Compound {
+            type Ok = Ty;
+            type Error = fmt::Error;
+            fn serialize_field<T: Serialize + ?Sized>(
+                &mut self,
+                key: &'static str,
+                value: &T,
+            ) -> Result<(), fmt::Error> {
+                self.0.fields.push((key, type_of(value)));
+                Ok(())
+            }
+            fn end(self) -> Result<Ty, fmt::Error> {
+                Ok(self.0)
+            }
+        })*
+    };
 }
 
-impl ser::SerializeStructVariant for Compound {
-    type Ok = Ty;
-    type Error = fmt::Error;
-    fn serialize_field<T: Serialize + ?Sized>(
-        &mut self,
-        key: &'static str,
-        value: &T,
-    ) -> Result<(), fmt::Error> {
-        self.0.fields.push((key, type_of(value)));
-        Ok(())
-    }
-    fn end(self) -> Result<Ty, fmt::Error> {
-        Ok(self.0)
-    }
-}
+fields_recorded!(SerializeStruct, SerializeStructVariant);
 
 #[cfg(test)]
 mod tests {

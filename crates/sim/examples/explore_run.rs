@@ -22,21 +22,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let t0 = std::time::Instant::now();
     let out = sim::explore(&scenario, &world, seed, strategy)?;
     println!(
-        "{} seed {seed}: wall {:.2} s, sim {:.1} s, finished {}, coverage {:.4}, t95 {:?}, t99 {:?}, missed {:.2} m2, goals {}, blacklisted {}, published {}, distance {:.1} m, contacts {}",
+        "{} seed {seed}: wall {:.2} s, sim {:.1} s, finished {}",
         strategy.name(),
         t0.elapsed().as_secs_f64(),
         out.end_time,
         out.finished,
-        out.final_coverage(),
-        out.time_to(0.95),
-        out.time_to(0.99),
-        out.missed_area(),
-        out.goals.len(),
-        out.blacklisted.len(),
-        out.published,
-        out.distance,
-        out.contact_ticks,
     );
+    println!("{}", out.summary());
     if std::env::var_os("EXPLORE_DEBUG").is_some() {
         let last = out.snapshots.last().unwrap();
         println!("final frontiers: {:?}", last.frontiers);

@@ -33,17 +33,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let draw = args.iter().any(|a| a == "--map");
     let out = sim::explore(&scenario, &world, seed, strategy)?;
     println!(
-        "{} seed {seed}: end {:.1} s (finished {}), coverage {:.4}, t95 {:?}, t99 {:?}, missed {:.3} m2, driven {:.1} m, contacts {}",
+        "{} seed {seed}: end {:.1} s (finished {})",
         strategy.name(),
         out.end_time,
         out.finished,
-        out.final_coverage(),
-        out.time_to(0.95),
-        out.time_to(0.99),
-        out.missed_area(),
-        out.distance,
-        out.contact_ticks,
     );
+    println!("{}", out.summary());
     print_goals(&out);
     diagnose(&scenario, &world, &out, draw)
 }

@@ -28,7 +28,7 @@
 //!   the [`LocalController`] trait ([`Controller`]: regulated pure pursuit with a
 //!   collision check); [`Navigator`], [`Navigation`], [`NavEvent`], [`NavState`].
 //! - Exploration: [`Exploration`], [`Strategy`], [`ExploreOutcome`], [`Coverage`],
-//!   [`GlobalRrtDetector`], [`LocalRrtDetector`], [`Filter`], [`Assigner`],
+//!   [`RrtDetector`] ([`DetectorKind`]), [`Filter`], [`Assigner`],
 //!   [`nearest_frontier`] (the baseline), [`ViewPoints`], [`explore_then_navigate`].
 //! - Files: [`Scenario`] (RON), [`ScenarioError`]; [`Trace`], [`Row`], [`Event`],
 //!   [`Summary`] and their CSV / JSON / SVG outputs ([`write_all`], [`OutputError`]);
@@ -90,10 +90,10 @@ pub use engine::{
     TickInfo, every, stream, time_of,
 };
 pub use explore::{
-    Assigner, ContactCounter, Coverage, CoverageMeter, Edge, Exploration, ExploreOutcome, Filter,
-    FrameRecorder, GLOBAL_STREAM, GlobalRrtDetector, GoalEnd, GoalRecord, LOCAL_STREAM,
-    LocalRrtDetector, Region, RegionError, SelfMapped, Snapshot, Strategy, TrackRecorder,
-    ViewPoints, animation_png, built_cost, built_cost_reach, costmap_steps, edge_check, explore,
+    Assigner, ContactCounter, Coverage, CoverageMeter, DetectorKind, Edge, Exploration,
+    ExploreOutcome, Filter, FrameRecorder, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM,
+    Region, RegionError, RrtDetector, SelfMapped, Snapshot, Strategy, TrackRecorder, ViewPoints,
+    animation_png, built_cost, built_cost_reach, costmap_steps, edge_check, explore,
     explore_then_navigate, explore_with, frontier_cells, frontier_clusters, information_gain,
     mean_shift, nearest_frontier, reachable_free, region_of, revenue, sees, snapshot_scene,
     snapshot_svg,
@@ -109,7 +109,7 @@ pub use people::{PeopleModel, Scripted};
 pub use planner::GlobalPlanner;
 pub use record::{
     Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, animation_scene,
-    animation_svg, trajectory_scene, trajectory_svg, velocity_svg, write_all,
+    trajectory_scene, velocity_svg, write_all,
 };
 pub use run::{Outcome, Recorder, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};

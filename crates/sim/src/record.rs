@@ -225,9 +225,9 @@ pub fn write_all(
         source,
     })?;
     put("trace.json", json)?;
-    put("trajectory.svg", trajectory_svg(outcome, world)?)?;
+    put("trajectory.svg", trajectory_scene(outcome, world).to_svg()?)?;
     put("velocity.svg", velocity_svg(&outcome.trace)?)?;
-    put("animation.svg", animation_svg(outcome, world)?)?;
+    put("animation.svg", animation_scene(outcome, world).to_svg()?)?;
     if let Some(map) = &outcome.map {
         let p = dir.join("map.yaml");
         map.write_ros(&p)?;
@@ -258,10 +258,7 @@ const PERSON_COLOUR: Rgba = rgb(0xe, 0x8, 0x0);
 pub(crate) fn map_layer(map: &OccupancyGrid) -> GridImage {
     let (w, h) = (map.width(), map.height());
     let mut grid = GridImage::filled(
-        w,
-        h,
-        map.origin(),
-        map.params.resolution,
+        map.frame(),
         vec![UNKNOWN_COLOUR, [255; 4], rgb(0x2, 0x2, 0x2)],
     );
     for j in 0..h {
@@ -305,16 +302,8 @@ fn driven(rows: &[Row]) -> Vec<Point2> {
 }
 
 /// The trajectory over the built map, with the planned paths and the people's tracks
-/// (the paper's Figs. 6a, 7a, 8), as SVG.
-///
-/// # Errors
-///
-/// [`FigureError`] when the map layer cannot be encoded.
-pub fn trajectory_svg(outcome: &Outcome, world: &World) -> Result<String, FigureError> {
-    trajectory_scene(outcome, world).to_svg()
-}
-
-/// The scene of [`trajectory_svg`] (also drawn as PNG by [`Scene::png_bytes`]).
+/// (the paper's Figs. 6a, 7a, 8): drawn as SVG by [`Scene::to_svg`], as PNG by
+/// [`Scene::png_bytes`].
 #[must_use]
 pub fn trajectory_scene(outcome: &Outcome, world: &World) -> Scene {
     let mut scene = world_scene(outcome.map.as_ref(), world);
@@ -377,18 +366,10 @@ pub fn velocity_svg(trace: &Trace) -> Result<String, FigureError> {
     viz::time_series_svg(&panels, t_end, 800, 220)
 }
 
-/// An animated SVG (SMIL) of the run in real time: the robot with its heading, the
-/// people, over the built map and the trajectory. Opens in any browser.
-///
-/// # Errors
-///
-/// [`FigureError`] when the map layer cannot be encoded.
-pub fn animation_svg(outcome: &Outcome, world: &World) -> Result<String, FigureError> {
-    animation_scene(outcome, world).to_svg()
-}
-
-/// The scene of [`animation_svg`]: the robot and the people are [`Mark::Moving`], a frame
-/// every 0.1 s ([`Scene::at_frame`] picks one, [`viz::apng_scenes`] plays them as PNG).
+/// The run in real time: the robot with its heading and the people, over the built map
+/// and the trajectory. The robot and the people are [`Mark::Moving`], a frame every 0.1 s:
+/// [`Scene::to_svg`] draws it as an animated SVG (SMIL, opens in any browser),
+/// [`Scene::at_frame`] picks one frame, [`viz::apng_scenes`] plays them as PNG.
 #[must_use]
 pub fn animation_scene(outcome: &Outcome, world: &World) -> Scene {
     let mut scene = world_scene(outcome.map.as_ref(), world);

@@ -195,43 +195,31 @@ impl StaticWorld {
         };
         let (o, r) = (map.origin(), map.resolution());
         let at = |i: usize, j: usize| Point2::new(o.x + i as f64 * r, o.y + j as f64 * r);
-        // Horizontal edges: between rows j-1 and j, for j in 0..=h.
-        for j in 0..=h {
-            let mut run: Option<usize> = None;
-            for i in 0..=w {
-                let edge = i < w && occ(i as isize, j as isize - 1) != occ(i as isize, j as isize);
-                match (edge, run) {
-                    (true, None) => run = Some(i),
-                    (false, Some(s)) => {
-                        self.grid_segments.push(Segment {
-                            a: at(s, j),
-                            b: at(i, j),
-                            outward: None,
-                        });
-                        run = None;
-                    }
-                    _ => {}
-                }
-            }
-        }
-        for i in 0..=w {
-            let mut run: Option<usize> = None;
-            for j in 0..=h {
-                let edge = j < h && occ(i as isize - 1, j as isize) != occ(i as isize, j as isize);
-                match (edge, run) {
-                    (true, None) => run = Some(j),
-                    (false, Some(s)) => {
-                        self.grid_segments.push(Segment {
-                            a: at(i, s),
-                            b: at(i, j),
-                            outward: None,
-                        });
-                        run = None;
-                    }
-                    _ => {}
-                }
-            }
-        }
+        let segments = &mut self.grid_segments;
+        let mut push = |a, b| {
+            segments.push(Segment {
+                a,
+                b,
+                outward: None,
+            })
+        };
+        // Horizontal edges: between rows j-1 and j, for j in 0..=h; then vertical ones.
+        edge_runs(
+            h + 1,
+            w,
+            |j, i| occ(i, j - 1) != occ(i, j),
+            |j, s, e| {
+                push(at(s, j), at(e, j));
+            },
+        );
+        edge_runs(
+            w + 1,
+            h,
+            |i, j| occ(i - 1, j) != occ(i, j),
+            |i, s, e| {
+                push(at(i, s), at(i, e));
+            },
+        );
         self.grid = Some(map);
     }
 
@@ -292,6 +280,31 @@ pub fn closest_on_segment(p: Point2, a: Point2, b: Point2) -> Point2 {
     }
     let t = ((p - a).dot(&ab) / len_sq).clamp(0.0, 1.0);
     a + ab * t
+}
+
+/// The maximal runs of cell edges along each of `lines` grid lines of `len` edges:
+/// `emit(line, first, past_last)` for each run of edges where `edge(line, k)` holds
+/// (coordinates as `isize`, so that `edge` may look one cell before the grid).
+fn edge_runs(
+    lines: usize,
+    len: usize,
+    edge: impl Fn(isize, isize) -> bool,
+    mut emit: impl FnMut(usize, usize, usize),
+) {
+    for line in 0..lines {
+        let mut run: Option<usize> = None;
+        for k in 0..=len {
+            let on = k < len && edge(line as isize, k as isize);
+            match (on, run) {
+                (true, None) => run = Some(k),
+                (false, Some(first)) => {
+                    emit(line, first, k);
+                    run = None;
+                }
+                _ => {}
+            }
+        }
+    }
 }
 
 /// Even-odd rule; points on the boundary may go either way.

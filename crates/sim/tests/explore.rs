@@ -7,8 +7,8 @@ use hyplan_core::{Bounds, Point2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use sim::{
-    Assigner, Edge, LocalRrtDetector, Region, RegionError, ViewPoints, edge_check,
-    frontier_clusters, information_gain, mean_shift, revenue, sees,
+    Assigner, Edge, Region, RegionError, RrtDetector, ViewPoints, edge_check, frontier_clusters,
+    information_gain, mean_shift, revenue, sees,
 };
 use sim::{FREE, OCCUPIED, UNKNOWN};
 use sim::{Mapping, OccupancyGrid, Scenario, ScenarioError, Strategy};
@@ -187,7 +187,7 @@ fn local_tree_resets_at_the_robot_after_a_frontier() {
         p(0.5, 0.5),
     ])
     .unwrap();
-    let mut d = LocalRrtDetector::new(region, 0.3, ChaCha8Rng::seed_from_u64(3));
+    let mut d = RrtDetector::local(region, 0.3, ChaCha8Rng::seed_from_u64(3));
     let robot = p(0.7, 0.4);
     let mut found = None;
     for _ in 0..10_000 {

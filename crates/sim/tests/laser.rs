@@ -52,37 +52,27 @@ fn reference_range(w: &StaticWorld, people: &[Disc], o: Point2, d: Vector2<f64>)
     best
 }
 
+/// A point of the 10 m x 10 m test square.
+fn point() -> impl Strategy<Value = (f64, f64)> {
+    (0.0..10.0f64, 0.0..10.0f64)
+}
+
 fn shape_strategy() -> impl Strategy<Value = Shape> {
     prop_oneof![
-        (
-            0.0..10.0f64,
-            0.0..10.0f64,
-            0.1..2.0f64,
-            0.1..2.0f64,
-            0.0..180.0f64
-        )
-            .prop_map(|(x, y, w, h, a)| Shape::Box {
-                center: (x, y),
-                size: (w, h),
-                angle_deg: a
-            }),
-        (0.0..10.0f64, 0.0..10.0f64, 0.05..1.0f64).prop_map(|(x, y, r)| Shape::Disc {
-            center: (x, y),
-            radius: r
+        (point(), (0.1..2.0f64, 0.1..2.0f64), 0.0..180.0f64).prop_map(|(center, size, a)| {
+            Shape::Box {
+                center,
+                size,
+                angle_deg: a,
+            }
         }),
-        (
-            0.0..10.0f64,
-            0.0..10.0f64,
-            0.0..10.0f64,
-            0.0..10.0f64,
-            0.05..0.3f64
-        )
-            .prop_map(|(a, b, c, d, t)| Shape::Wall {
-                from: (a, b),
-                to: (c, d),
-                thickness: t
-            }),
-        (0.0..10.0f64, 0.0..10.0f64, 0.3..1.5f64).prop_map(|(x, y, s)| Shape::Polygon {
+        (point(), 0.05..1.0f64).prop_map(|(center, radius)| Shape::Disc { center, radius }),
+        (point(), point(), 0.05..0.3f64).prop_map(|(from, to, thickness)| Shape::Wall {
+            from,
+            to,
+            thickness
+        }),
+        (point(), 0.3..1.5f64).prop_map(|((x, y), s)| Shape::Polygon {
             points: vec![
                 (x, y),
                 (x + s, y + 0.2),

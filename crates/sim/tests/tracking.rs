@@ -22,24 +22,40 @@ fn room() -> (Bounds, StaticWorld) {
     (bounds, walls)
 }
 
-#[test]
-fn a_walking_person_is_tracked_with_their_velocity() {
+/// A tracker fed a noisy scan every 5 ticks (200 ticks a second) up to `last_tick`, in
+/// the room: `scene(t)` gives the scanner's position and the people at `t` s, and
+/// `each` looks at the tracker after every update.
+fn watch(
+    seed: u64,
+    last_tick: u64,
+    scene: impl Fn(f64) -> (Point2, Vec<Disc>),
+    mut each: impl FnMut(&Tracker, u64),
+) -> Tracker {
     let (bounds, walls) = room();
     let laser = LaserModel::new(Laser::default());
     let mut tracker = Tracker::new(bounds, &walls, 3.5, 200.0);
-    let mut rng = ChaCha8Rng::seed_from_u64(3);
-    let origin = Point2::new(5.0, 2.0);
-    // The person walks right to left across the scanner's view at 0.3 m/s, 2 m ahead.
-    for tick in (0..=200u64).step_by(5) {
-        let t = tick as f64 / 200.0;
-        let person = [Disc {
-            center: Point2::new(6.0 - 0.3 * t, 4.0),
-            radius: 0.25,
-        }];
-        let mut scan = laser.cast(&walls, &person, origin, std::f64::consts::FRAC_PI_2);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    for tick in (0..=last_tick).step_by(5) {
+        let (origin, people) = scene(tick as f64 / 200.0);
+        let mut scan = laser.cast(&walls, &people, origin, std::f64::consts::FRAC_PI_2);
         laser.add_noise(&mut scan, &mut rng);
         tracker.update(&scan, tick);
+        each(&tracker, tick);
     }
+    tracker
+}
+
+#[test]
+fn a_walking_person_is_tracked_with_their_velocity() {
+    // The person walks right to left across the scanner's view at 0.3 m/s, 2 m ahead.
+    let walking = |t: f64| {
+        let person = Disc {
+            center: Point2::new(6.0 - 0.3 * t, 4.0),
+            radius: 0.25,
+        };
+        (Point2::new(5.0, 2.0), vec![person])
+    };
+    let tracker = watch(3, 200, walking, |_, _| {});
     let movers = tracker.movers(200);
     assert_eq!(movers.len(), 1, "{movers:?}");
     let m = movers[0];
@@ -53,13 +69,9 @@ fn a_walking_person_is_tracked_with_their_velocity() {
 
 #[test]
 fn static_things_are_not_movers() {
-    let (bounds, walls) = room();
-    let laser = LaserModel::new(Laser::default());
-    let mut tracker = Tracker::new(bounds, &walls, 3.5, 200.0);
-    let mut rng = ChaCha8Rng::seed_from_u64(4);
     // A pillar off the prior map and a standing person, seen by a scanner that drives
     // past them at 0.3 m/s.
-    let still = [
+    let still = vec![
         Disc {
             center: Point2::new(4.0, 3.5),
             radius: 0.2,
@@ -69,12 +81,8 @@ fn static_things_are_not_movers() {
             radius: 0.25,
         },
     ];
-    for tick in (0..=400u64).step_by(5) {
-        let t = tick as f64 / 200.0;
-        let origin = Point2::new(3.0 + 0.3 * t, 1.5);
-        let mut scan = laser.cast(&walls, &still, origin, std::f64::consts::FRAC_PI_2);
-        laser.add_noise(&mut scan, &mut rng);
-        tracker.update(&scan, tick);
+    let passing = |t: f64| (Point2::new(3.0 + 0.3 * t, 1.5), still.clone());
+    let tracker = watch(4, 400, passing, |tracker, tick| {
         // The mapped wall and box never show up as movers.
         assert!(
             tracker
@@ -84,7 +92,7 @@ fn static_things_are_not_movers() {
             "{:?}",
             tracker.movers(tick)
         );
-    }
+    });
     for m in tracker.movers(400) {
         assert!(m.velocity.norm() < 0.15, "{m:?}");
     }

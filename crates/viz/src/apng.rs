@@ -32,7 +32,7 @@ impl IndexedFrame {
 /// use hyplan_core::Point2;
 /// use viz::{GridImage, apng_indexed};
 /// let palette = vec![[255, 255, 255, 255], [220, 0, 0, 255]];
-/// let mut a = GridImage::filled(4, 4, Point2::new(0.0, 0.0), 1.0, palette);
+/// let mut a = GridImage::filled(envmap::CellFrame::new(Point2::new(0.0, 0.0), 1.0, 4, 4), palette);
 /// let mut b = a.clone();
 /// a.set(0, 0, 1);
 /// b.set(3, 3, 1);

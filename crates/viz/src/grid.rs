@@ -1,6 +1,7 @@
 //! The map layer: a grid of cells, each one colour of a small palette, placed in the world
 //! by its lower-left corner and cell size (rows bottom-up, the map frame).
 
+use envmap::CellFrame;
 use hyplan_core::Point2;
 
 use crate::{FigureError, Rgba};
@@ -14,7 +15,8 @@ use crate::{FigureError, Rgba};
 /// ```
 /// use hyplan_core::Point2;
 /// use viz::GridImage;
-/// let mut grid = GridImage::filled(3, 2, Point2::new(0.0, 0.0), 0.5, vec![[255; 4], [0, 0, 0, 255]]);
+/// let frame = envmap::CellFrame::new(Point2::new(0.0, 0.0), 0.5, 3, 2);
+/// let mut grid = GridImage::filled(frame, vec![[255; 4], [0, 0, 0, 255]]);
 /// grid.paint(Point2::new(1.2, 0.9), 1);
 /// assert_eq!(grid.get(2, 1), 1);
 /// assert_eq!(grid.get(0, 0), 0);
@@ -22,40 +24,37 @@ use crate::{FigureError, Rgba};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct GridImage {
-    width: usize,
-    height: usize,
-    origin: Point2,
-    resolution: f64,
+    frame: CellFrame,
     palette: Vec<Rgba>,
     cells: Vec<u8>,
 }
 
-hyplan_core::grid_size!(GridImage);
-
 impl GridImage {
-    /// A `width` x `height` grid of colour 0 of `palette`, cells `resolution` wide, lower-left
-    /// corner at `origin`. A palette longer than 256 colours is cut to 256; an empty one
-    /// becomes white.
+    /// A grid of `frame`'s cells, all colour 0 of `palette`. A palette longer than 256
+    /// colours is cut to 256; an empty one becomes white.
     #[must_use]
-    pub fn filled(
-        width: usize,
-        height: usize,
-        origin: Point2,
-        resolution: f64,
-        mut palette: Vec<Rgba>,
-    ) -> Self {
+    pub fn filled(frame: CellFrame, mut palette: Vec<Rgba>) -> Self {
         palette.truncate(256);
         if palette.is_empty() {
             palette.push([255; 4]);
         }
         Self {
-            width,
-            height,
-            origin,
-            resolution,
+            frame,
             palette,
-            cells: vec![0; width * height],
+            cells: vec![0; frame.width * frame.height],
         }
+    }
+
+    /// Columns.
+    #[must_use]
+    pub const fn width(&self) -> usize {
+        self.frame.width
+    }
+
+    /// Rows.
+    #[must_use]
+    pub const fn height(&self) -> usize {
+        self.frame.height
     }
 
     /// A grid from its cells (row 0 at the bottom).
@@ -66,17 +65,14 @@ impl GridImage {
     /// [`FigureError::Palette`] when the palette is empty, longer than 256 colours, or a
     /// cell names a colour beyond it.
     pub fn from_cells(
-        width: usize,
-        height: usize,
-        origin: Point2,
-        resolution: f64,
+        frame: CellFrame,
         palette: Vec<Rgba>,
         cells: Vec<u8>,
     ) -> Result<Self, FigureError> {
-        if cells.len() != width * height {
+        if cells.len() != frame.width * frame.height {
             return Err(FigureError::GridSize {
-                width,
-                height,
+                width: frame.width,
+                height: frame.height,
                 cells: cells.len(),
             });
         }
@@ -88,10 +84,7 @@ impl GridImage {
             });
         }
         Ok(Self {
-            width,
-            height,
-            origin,
-            resolution,
+            frame,
             palette,
             cells,
         })
@@ -122,7 +115,7 @@ impl GridImage {
                 cells[(h - 1 - y) * w + x] = k as u8;
             }
         }
-        Self::filled(w, h, origin, resolution, palette).with_cells(cells)
+        Self::filled(CellFrame::new(origin, resolution, w, h), palette).with_cells(cells)
     }
 
     fn with_cells(mut self, cells: Vec<u8>) -> Self {
@@ -133,13 +126,13 @@ impl GridImage {
     /// The world position of the lower-left corner.
     #[must_use]
     pub const fn origin(&self) -> Point2 {
-        self.origin
+        self.frame.origin
     }
 
     /// Side of a cell, world units.
     #[must_use]
     pub const fn resolution(&self) -> f64 {
-        self.resolution
+        self.frame.resolution
     }
 
     /// The colours.
@@ -163,8 +156,8 @@ impl GridImage {
     /// The palette index of cell `(i, j)` (0 outside the grid).
     #[must_use]
     pub fn get(&self, i: usize, j: usize) -> u8 {
-        if i < self.width && j < self.height {
-            self.cells[j * self.width + i]
+        if i < self.frame.width && j < self.frame.height {
+            self.cells[j * self.frame.width + i]
         } else {
             0
         }
@@ -179,15 +172,15 @@ impl GridImage {
 
     /// Sets cell `(i, j)` to palette index `index` (nothing outside the grid).
     pub fn set(&mut self, i: usize, j: usize, index: u8) {
-        if i < self.width && j < self.height {
-            self.cells[j * self.width + i] = index;
+        if i < self.frame.width && j < self.frame.height {
+            self.cells[j * self.frame.width + i] = index;
         }
     }
 
     /// Where the cells lie in the world.
     #[must_use]
-    pub const fn frame(&self) -> envmap::CellFrame {
-        envmap::CellFrame::new(self.origin, self.resolution, self.width, self.height)
+    pub const fn frame(&self) -> CellFrame {
+        self.frame
     }
 
     /// The cell holding the world point `p`, if inside.
@@ -216,12 +209,12 @@ impl GridImage {
 
     /// The palette indices as pixel rows, top row first, each cell `scale` pixels square.
     pub(crate) fn rows_top_down(&self, scale: usize) -> Vec<u8> {
-        let (w, h) = (self.width * scale, self.height * scale);
+        let (w, h) = (self.frame.width * scale, self.frame.height * scale);
         let last = (self.palette.len() - 1) as u8;
         let mut out = Vec::with_capacity(w * h);
         for y in 0..h {
-            let j = self.height - 1 - y / scale;
-            let row = &self.cells[j * self.width..(j + 1) * self.width];
+            let j = self.frame.height - 1 - y / scale;
+            let row = &self.cells[j * self.frame.width..(j + 1) * self.frame.width];
             if scale == 1 {
                 // One pixel per cell (the exploration's animation): a straight copy.
                 out.extend(row.iter().map(|&c| c.min(last)));

@@ -29,7 +29,7 @@
 //! # #[cfg(feature = "draw")] {
 //! use hyplan_core::Point2;
 //! use viz::{GridImage, Mark, Scene, Stroke};
-//! let mut map = GridImage::filled(4, 2, Point2::new(0.0, 0.0), 1.0, vec![[255; 4], [0, 0, 0, 255]]);
+//! let mut map = GridImage::filled(envmap::CellFrame::new(Point2::new(0.0, 0.0), 1.0, 4, 2), vec![[255; 4], [0, 0, 0, 255]]);
 //! map.set(1, 1, 1);
 //! let mut scene = Scene::new(Point2::new(0.0, 0.0), Point2::new(4.0, 2.0), 20.0);
 //! scene.push(Mark::Grid(map));

@@ -8,10 +8,15 @@ const WHITE: [u8; 4] = [255, 255, 255, 255];
 const BLACK: [u8; 4] = [0, 0, 0, 255];
 const GREY: [u8; 4] = [187, 187, 187, 255];
 
+/// `width x height` cells of side `resolution` from the world's origin.
+fn frame(width: usize, height: usize, resolution: f64) -> envmap::CellFrame {
+    envmap::CellFrame::new(Point2::new(0.0, 0.0), resolution, width, height)
+}
+
 /// A 4 m x 2 m world at 10 px/m: a map layer with one black cell, a tree, a track, a
 /// person, a frontier point and a moving robot.
 fn tiny() -> Scene {
-    let mut map = GridImage::filled(4, 2, Point2::new(0.0, 0.0), 1.0, vec![WHITE, BLACK]);
+    let mut map = GridImage::filled(frame(4, 2, 1.0), vec![WHITE, BLACK]);
     map.set(3, 1, 1);
     let mut scene =
         Scene::new(Point2::new(0.0, 0.0), Point2::new(4.0, 2.0), 10.0).with_background(GREY);
@@ -85,7 +90,7 @@ fn frames_of_moving_marks() {
 
 #[test]
 fn indexed_animation_keeps_the_palette_and_checks_sizes() {
-    let a = GridImage::filled(3, 2, Point2::new(0.0, 0.0), 0.5, vec![WHITE, BLACK]);
+    let a = GridImage::filled(frame(3, 2, 0.5), vec![WHITE, BLACK]);
     let mut b = a.clone();
     b.paint(Point2::new(1.4, 0.9), 1);
     assert_eq!(b.get(2, 1), 1);
@@ -94,7 +99,7 @@ fn indexed_animation_keeps_the_palette_and_checks_sizes() {
     assert!(bytes.windows(4).any(|w| w == b"PLTE"));
     let png = decode_picture(&bytes, Path::new("a.png")).unwrap();
     assert_eq!((png.width(), png.height()), (3, 2));
-    let other = GridImage::filled(2, 2, Point2::new(0.0, 0.0), 0.5, vec![WHITE]);
+    let other = GridImage::filled(frame(2, 2, 0.5), vec![WHITE]);
     assert!(matches!(
         apng_indexed([a, other], 100),
         Err(viz::FigureError::FrameSize { index: 1, .. })
@@ -107,9 +112,8 @@ fn indexed_animation_keeps_the_palette_and_checks_sizes() {
 
 #[test]
 fn grid_from_cells_checks_size_and_palette() {
-    let o = Point2::new(0.0, 0.0);
-    assert!(GridImage::from_cells(2, 2, o, 1.0, vec![WHITE], vec![0; 3]).is_err());
-    assert!(GridImage::from_cells(2, 1, o, 1.0, vec![WHITE], vec![0, 1]).is_err());
-    let g = GridImage::from_cells(2, 1, o, 1.0, vec![WHITE, BLACK], vec![0, 1]).unwrap();
+    assert!(GridImage::from_cells(frame(2, 2, 1.0), vec![WHITE], vec![0; 3]).is_err());
+    assert!(GridImage::from_cells(frame(2, 1, 1.0), vec![WHITE], vec![0, 1]).is_err());
+    let g = GridImage::from_cells(frame(2, 1, 1.0), vec![WHITE, BLACK], vec![0, 1]).unwrap();
     assert_eq!(g.colour(1, 0), BLACK);
 }

@@ -92,21 +92,14 @@ pub enum Moves {
 /// computed per call, only when the band is the cause.
 #[must_use]
 pub fn disconnection(map: &GridMap, query: &Query, moves: Moves) -> Option<NoPathCause> {
-    let start = map.world_to_cell(query.start)?;
-    let target = Target::new(map, &query.goal)?;
-    let blocked = map.blocked_from;
     let cache = map.connectivity_cache();
-    if blocked == Zone::Free || cache.below(map, blocked, moves).joins(start, &target) {
-        return None;
-    }
-    if blocked == Zone::Forbidden
-        || !cache
-            .below(map, Zone::Forbidden, moves)
-            .joins(start, &target)
-    {
-        return Some(NoPathCause::Wall);
-    }
-    Some(band_cause(map, start, &target, moves))
+    decide(
+        map,
+        query,
+        moves,
+        |s, t, zone, moves| cache.below(map, zone, moves).joins(s, t),
+        |s, t, moves| band_cause(map, s, t, moves),
+    )
 }
 
 /// Why no path can join the query's start to its goal for a planner whose nodes stay in
@@ -124,30 +117,73 @@ pub fn disconnection(map: &GridMap, query: &Query, moves: Moves) -> Option<NoPat
 /// last few reaches.
 #[must_use]
 pub fn disconnection_hopping(map: &GridMap, query: &Query, hop: f64) -> Option<NoPathCause> {
+    let cache = map.connectivity_cache();
+    let near_free = |s, t: &Target, reach: f64| {
+        // Squared distances are integers: d^2 <= reach^2 exactly when d^2 <= floor(reach^2).
+        // Beyond the map's diagonal every cell is near.
+        let diag = (map.width() * map.width() + map.height() * map.height()) as f64;
+        let limit = (reach * reach).min(diag).floor() as u64;
+        Some(cache.near_free(map, limit).joins(s, t))
+    };
+    decide_hopping(
+        map,
+        query,
+        hop,
+        |s, t, zone| cache.below(map, zone, Moves::Four).joins(s, t),
+        near_free,
+        |s, t| band_cause(map, s, t, Moves::Four),
+    )
+}
+
+/// A cell of the grid, (column, row).
+type Cell = (usize, usize);
+
+/// [`disconnection`]'s decision, shared with the reference, which answers the same
+/// questions by plain floods: `below(start, target, zone, moves)`, whether the cells
+/// with a zone below `zone` join start to target; `band(start, target, moves)`, the
+/// band's cause once the obstacles are known to leave a passage.
+fn decide(
+    map: &GridMap,
+    query: &Query,
+    moves: Moves,
+    below: impl Fn(Cell, &Target, Zone, Moves) -> bool,
+    band: impl FnOnce(Cell, &Target, Moves) -> NoPathCause,
+) -> Option<NoPathCause> {
     let start = map.world_to_cell(query.start)?;
     let target = Target::new(map, &query.goal)?;
-    let cache = map.connectivity_cache();
-    if !cache
-        .below(map, Zone::Forbidden, Moves::Four)
-        .joins(start, &target)
-    {
+    let blocked = map.blocked_from;
+    if blocked == Zone::Free || below(start, &target, blocked, moves) {
+        return None;
+    }
+    if blocked == Zone::Forbidden || !below(start, &target, Zone::Forbidden, moves) {
+        return Some(NoPathCause::Wall);
+    }
+    Some(band(start, &target, moves))
+}
+
+/// [`disconnection_hopping`]'s decision, shared with the reference: `below` as in
+/// [`decide`] (4-connected); `near_free(start, target, reach)`, whether the non-Forbidden
+/// cells whose centres lie within `reach` cells of a Free cell centre join them (`None`
+/// when it cannot tell); `band` the band's cause.
+fn decide_hopping(
+    map: &GridMap,
+    query: &Query,
+    hop: f64,
+    below: impl Fn(Cell, &Target, Zone) -> bool,
+    near_free: impl FnOnce(Cell, &Target, f64) -> Option<bool>,
+    band: impl FnOnce(Cell, &Target) -> NoPathCause,
+) -> Option<NoPathCause> {
+    let start = map.world_to_cell(query.start)?;
+    let target = Target::new(map, &query.goal)?;
+    if !below(start, &target, Zone::Forbidden) {
         return Some(NoPathCause::Wall);
     }
     let free = |p: Point2| map.zone_at(p) == Zone::Free;
-    if !(free(query.start) && free(query.goal.center()))
-        || cache
-            .below(map, Zone::Risk, Moves::Four)
-            .joins(start, &target)
-    {
+    if !(free(query.start) && free(query.goal.center())) || below(start, &target, Zone::Risk) {
         return None;
     }
     let reach = hop / (2.0 * map.resolution()) + 1.5;
-    // Squared distances are integers: d^2 <= reach^2 exactly when d^2 <= floor(reach^2).
-    // Beyond the map's diagonal every cell is near.
-    let diag = (map.width() * map.width() + map.height() * map.height()) as f64;
-    let t = (reach * reach).min(diag).floor() as u64;
-    (!cache.near_free(map, t).joins(start, &target))
-        .then(|| band_cause(map, start, &target, Moves::Four))
+    (!near_free(start, &target, reach)?).then(|| band(start, &target))
 }
 
 /// The cause on a map that blocks the band, once the obstacles are known to leave a
@@ -422,12 +458,18 @@ mod tests {
         assert_eq!(disconnection(&map, &disc, Moves::Four), None);
     }
 
+    /// A 60 x 40 map split by a wall with a `gap`-cell tunnel, and its query.
+    fn passage(gap: usize) -> (crate::Generated, Query) {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        let g = narrow_passage(60, 40, gap, 4, &mut rng);
+        let query = Query::new(g.start, Goal::Point(g.goal));
+        (g, query)
+    }
+
     #[test]
     fn band_cause_names_the_bottleneck() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
         // A 6-cell tunnel: its middle cells are 3 cells from the walls... at most.
-        let g = narrow_passage(60, 40, 6, 4, &mut rng);
-        let query = Query::new(g.start, Goal::Point(g.goal));
+        let (g, query) = passage(6);
         let banded = with_risk_band(&g.map, 5.0).avoiding_risk();
         let Some(NoPathCause::RiskBand {
             band_radius,
@@ -453,9 +495,7 @@ mod tests {
 
     #[test]
     fn closed_wall_is_a_wall_even_for_safe_maps() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-        let g = narrow_passage(60, 40, 0, 4, &mut rng);
-        let query = Query::new(g.start, Goal::Point(g.goal));
+        let (g, query) = passage(0);
         let banded = with_risk_band(&g.map, 2.0).avoiding_risk();
         assert_eq!(
             disconnection(&banded, &query, Moves::Four),

@@ -2,78 +2,49 @@
 //! [`super::disconnection_hopping`]: flood fills over every cell, the full distance
 //! transform of the obstacles, and a bucketed max-min (widest path) search. Kept to test
 //! the fast run-based version against and to time it (`examples/no_path_timing.rs`);
-//! planners do not call it.
+//! planners do not call it. Which question is asked when (walls first, then the band) is
+//! the fast version's own decision, shared; how each question is answered is the
+//! reference's.
 
-use hyplan_core::{NoPathCause, Point2, Query, Zone};
+use hyplan_core::{NoPathCause, Query, Zone};
 
-use super::{Moves, Target};
+use super::{Moves, Target, decide, decide_hopping};
 use crate::{DistanceField, GridMap, Mask, distance_transform};
 
-/// Why no path can join the query's start to its goal on `map` for a planner that moves
-/// through the cells passable under the map's [`blocked_from`](GridMap::blocked_from)
-/// with `moves`; `None` when they are connected (or the start or goal lies outside the
-/// map: the query's own validation reports that).
-///
-/// The goal counts as reached in any passable cell whose closed square meets the goal
-/// disc (the goal point's cell for a point goal). The cause is
-/// [`NoPathCause::Wall`] when even the high-risk band would not connect them, else (a map
-/// that blocks the band too) [`NoPathCause::RiskBand`] with the band's radius and the
-/// widest path's bottleneck.
+/// [`super::disconnection`] by floods over every cell: the same contract.
 #[must_use]
 pub fn disconnection(map: &GridMap, query: &Query, moves: Moves) -> Option<NoPathCause> {
-    let start = map.world_to_cell(query.start)?;
-    let target = Target::new(map, &query.goal)?;
-    let blocked = map.blocked_from;
     let zones = map.zones();
-    if blocked == Zone::Free || flood(map, start, &target, moves, |k| zones[k] < blocked) {
-        return None;
-    }
-    if blocked == Zone::Forbidden
-        || !flood(map, start, &target, moves, |k| zones[k] < Zone::Forbidden)
-    {
-        return Some(NoPathCause::Wall);
-    }
-    Some(band_cause(map, start, &target, moves))
+    decide(
+        map,
+        query,
+        moves,
+        |s, t, zone, moves| flood(map, s, t, moves, |k| zones[k] < zone),
+        |s, t, moves| band_cause(map, s, t, moves),
+    )
 }
 
-/// Why no path can join the query's start to its goal for a planner whose nodes stay in
-/// the Free zone while its edges, at most `hop` world units long, may cross the high-risk
-/// band (seed 003's safety-cost RRT*), on a map where only Forbidden blocks; `None` when
-/// it cannot tell.
-///
-/// Every point of such a path lies within `hop / 2` of a node in a Free cell, so its cell
-/// centre lies within `hop / 2` and a cell and a half (rounding) of a Free cell centre:
-/// when no chain of non-Forbidden cells that close to the Free zone joins start and goal,
-/// no such path exists, and the band is the cause (the obstacles alone leave a passage).
-/// The band argument is used only when start and goal lie in the Free zone themselves.
-/// The distance transform of the Free zone is computed only when the Free cells alone do
-/// not join start and goal.
+/// [`super::disconnection_hopping`] by floods over every cell and the full distance
+/// transform of the Free zone: the same contract.
 #[must_use]
 pub fn disconnection_hopping(map: &GridMap, query: &Query, hop: f64) -> Option<NoPathCause> {
-    let start = map.world_to_cell(query.start)?;
-    let target = Target::new(map, &query.goal)?;
-    let zones = map.zones();
-    if !flood(map, start, &target, Moves::Four, |k| {
-        zones[k] < Zone::Forbidden
-    }) {
-        return Some(NoPathCause::Wall);
-    }
-    let free = |p: Point2| map.zone_at(p) == Zone::Free;
-    if !(free(query.start) && free(query.goal.center()))
-        || flood(map, start, &target, Moves::Four, |k| zones[k] == Zone::Free)
-    {
-        return None;
-    }
-    let (w, h) = (map.width(), map.height());
-    let free_mask = Mask::from_cells(w, h, zones.iter().map(|&z| z == Zone::Free).collect())?;
-    let to_free = distance_transform(&free_mask);
-    let reach = hop / (2.0 * map.resolution()) + 1.5;
-    let reach_sq = reach * reach;
-    let near_free = to_free.dist_sq();
-    let connected = flood(map, start, &target, Moves::Four, |k| {
-        zones[k] < Zone::Forbidden && f64::from(near_free[k]) <= reach_sq
-    });
-    (!connected).then(|| band_cause(map, start, &target, Moves::Four))
+    let (w, h, zones) = (map.width(), map.height(), map.zones());
+    let near_free = |s, t: &Target, reach: f64| {
+        let free = Mask::from_cells(w, h, zones.iter().map(|&z| z == Zone::Free).collect())?;
+        let to_free = distance_transform(&free);
+        let (near, reach_sq) = (to_free.dist_sq(), reach * reach);
+        Some(flood(map, s, t, Moves::Four, |k| {
+            zones[k] < Zone::Forbidden && f64::from(near[k]) <= reach_sq
+        }))
+    };
+    decide_hopping(
+        map,
+        query,
+        hop,
+        |s, t, zone| flood(map, s, t, Moves::Four, |k| zones[k] < zone),
+        near_free,
+        |s, t| band_cause(map, s, t, Moves::Four),
+    )
 }
 
 /// The cause on a map that blocks the band, once the obstacles are known to leave a

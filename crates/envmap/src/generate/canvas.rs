@@ -6,6 +6,66 @@ use hyplan_core::{Point2, Zone};
 use super::Generated;
 use crate::{Connectivity, GridMap, Mask, flood_fill};
 
+/// A lattice of `nx x ny` square cells (`inner` cells a side) in a walled grid, walls
+/// `wall` cells thick: the layout the maze and the room grid share.
+pub(super) struct Lattice {
+    pub nx: usize,
+    pub ny: usize,
+    pub inner: usize,
+    pub wall: usize,
+}
+
+impl Lattice {
+    /// At least one lattice cell each way, walls at least one cell thick, insides at
+    /// least `min_inner` cells a side.
+    pub fn new(nx: usize, ny: usize, inner: usize, min_inner: usize, wall: usize) -> Self {
+        Self {
+            nx: nx.max(1),
+            ny: ny.max(1),
+            inner: inner.max(min_inner),
+            wall: wall.max(1),
+        }
+    }
+
+    /// Inner side plus one wall.
+    pub fn pitch(&self) -> usize {
+        self.inner + self.wall
+    }
+
+    /// The lower-left cell of lattice cell `(i, j)`.
+    pub fn origin(&self, i: usize, j: usize) -> (usize, usize) {
+        (self.wall + i * self.pitch(), self.wall + j * self.pitch())
+    }
+
+    /// The centre cell of lattice cell `(i, j)`.
+    pub fn centre(&self, i: usize, j: usize) -> (usize, usize) {
+        let (x, y) = self.origin(i, j);
+        (x + self.inner / 2, y + self.inner / 2)
+    }
+
+    /// A canvas all wall but the lattice cells' insides.
+    pub fn carve(&self) -> Canvas {
+        let mut canvas = Canvas::new(
+            self.nx * self.pitch() + self.wall,
+            self.ny * self.pitch() + self.wall,
+        );
+        canvas.rect(0, 0, canvas.width, canvas.height, true);
+        for j in 0..self.ny {
+            for i in 0..self.nx {
+                let (x, y) = self.origin(i, j);
+                canvas.rect(x, y, x + self.inner, y + self.inner, false);
+            }
+        }
+        canvas
+    }
+
+    /// Finishes `canvas` with the start in the lower-left lattice cell and the goal in
+    /// the upper-right one.
+    pub fn finish(&self, canvas: Canvas) -> Generated {
+        canvas.finish(self.centre(0, 0), self.centre(self.nx - 1, self.ny - 1))
+    }
+}
+
 /// A builder over a Forbidden/Free cell grid, x right and y up from the lower-left cell.
 pub(super) struct Canvas {
     pub width: usize,

@@ -33,7 +33,7 @@ use rand::Rng;
 
 mod canvas;
 
-use canvas::{Canvas, connected, lattice_neighbours, nearest_free};
+use canvas::{Canvas, Lattice, connected, lattice_neighbours, nearest_free};
 
 use crate::{GridMap, Mask, distance_transform, zones};
 
@@ -164,17 +164,9 @@ pub fn maze<R: Rng + ?Sized>(
     wall: usize,
     rng: &mut R,
 ) -> Generated {
-    let (nx, ny, c, w) = (nx.max(1), ny.max(1), corridor.max(1), wall.max(1));
-    let pitch = c + w;
-    let mut canvas = Canvas::new(nx * pitch + w, ny * pitch + w);
-    canvas.rect(0, 0, canvas.width, canvas.height, true);
-    let origin = |i: usize, j: usize| (w + i * pitch, w + j * pitch);
-    for j in 0..ny {
-        for i in 0..nx {
-            let (x, y) = origin(i, j);
-            canvas.rect(x, y, x + c, y + c, false);
-        }
-    }
+    let lattice = Lattice::new(nx, ny, corridor, 1, wall);
+    let (nx, ny, c, pitch) = (lattice.nx, lattice.ny, lattice.inner, lattice.pitch());
+    let mut canvas = lattice.carve();
     // Randomised depth-first search over the maze cells, knocking down walls.
     let mut visited = vec![false; nx * ny];
     let mut stack = vec![(0_usize, 0_usize)];
@@ -188,7 +180,7 @@ pub fn maze<R: Rng + ?Sized>(
         }
         let (a, b) = next[rng.random_range(0..next.len())];
         visited[b * nx + a] = true;
-        let (x0, y0) = origin(i.min(a), j.min(b));
+        let (x0, y0) = lattice.origin(i.min(a), j.min(b));
         if a != i {
             canvas.rect(x0 + c, y0, x0 + pitch, y0 + c, false);
         } else {
@@ -196,11 +188,7 @@ pub fn maze<R: Rng + ?Sized>(
         }
         stack.push((a, b));
     }
-    let centre = |i: usize, j: usize| {
-        let (x, y) = origin(i, j);
-        (x + c / 2, y + c / 2)
-    };
-    canvas.finish(centre(0, 0), centre(nx - 1, ny - 1))
+    lattice.finish(canvas)
 }
 
 /// A room inside a spiral: `rings` concentric square walls (`wall` cells thick,
@@ -465,19 +453,10 @@ pub fn rooms<R: Rng + ?Sized>(
     wall: usize,
     rng: &mut R,
 ) -> Generated {
-    let (nx, ny, w) = (nx.max(1), ny.max(1), wall.max(1));
     let d = door.max(1);
-    let r = room.max(d + 2);
-    let pitch = r + w;
-    let mut canvas = Canvas::new(nx * pitch + w, ny * pitch + w);
-    canvas.rect(0, 0, canvas.width, canvas.height, true);
-    let origin = |i: usize, j: usize| (w + i * pitch, w + j * pitch);
-    for j in 0..ny {
-        for i in 0..nx {
-            let (x, y) = origin(i, j);
-            canvas.rect(x, y, x + r, y + r, false);
-        }
-    }
+    let lattice = Lattice::new(nx, ny, room, d + 2, wall);
+    let (nx, ny, r, pitch) = (lattice.nx, lattice.ny, lattice.inner, lattice.pitch());
+    let mut canvas = lattice.carve();
     // Random spanning tree (randomised Prim over the room grid), then extra doors.
     let mut edges: Vec<((usize, usize), (usize, usize))> = Vec::new();
     let mut inside = vec![false; nx * ny];
@@ -510,7 +489,7 @@ pub fn rooms<R: Rng + ?Sized>(
     }
     for (a, b) in edges {
         let (lo, hi) = (a.min(b), a.max(b));
-        let (x, y) = origin(lo.0, lo.1);
+        let (x, y) = lattice.origin(lo.0, lo.1);
         let off = rng.random_range(0..=r - d);
         if hi.0 != lo.0 {
             canvas.rect(x + r, y + off, x + pitch, y + off + d, false);
@@ -518,11 +497,7 @@ pub fn rooms<R: Rng + ?Sized>(
             canvas.rect(x + off, y + r, x + off + d, y + pitch, false);
         }
     }
-    let centre = |i: usize, j: usize| {
-        let (x, y) = origin(i, j);
-        (x + r / 2, y + r / 2)
-    };
-    canvas.finish(centre(0, 0), centre(nx - 1, ny - 1))
+    lattice.finish(canvas)
 }
 
 /// The same map with a high-risk band: every free cell whose centre lies within `radius`
@@ -578,9 +553,8 @@ mod tests {
     use hyplan_core::Workspace;
     use rand::SeedableRng;
 
-    fn check(g: &Generated) {
-        assert!(g.map.is_free(g.start), "start blocked");
-        assert!(g.map.is_free(g.goal), "goal blocked");
+    /// Whether the map's non-Forbidden cells join start and goal.
+    fn joined(g: &Generated) -> bool {
         let canvas = Canvas {
             width: g.map.width(),
             height: g.map.height(),
@@ -592,7 +566,13 @@ mod tests {
                 .collect(),
         };
         let cell = |p: Point2| g.map.world_to_cell(p).unwrap();
-        assert!(connected(&canvas, cell(g.start), cell(g.goal)));
+        connected(&canvas, cell(g.start), cell(g.goal))
+    }
+
+    fn check(g: &Generated) {
+        assert!(g.map.is_free(g.start), "start blocked");
+        assert!(g.map.is_free(g.goal), "goal blocked");
+        assert!(joined(g));
     }
 
     #[test]
@@ -626,18 +606,8 @@ mod tests {
     fn gap_zero_disconnects() {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
         let g = narrow_passage(40, 20, 0, 3, &mut rng);
-        let canvas = Canvas {
-            width: 40,
-            height: 20,
-            blocked: g
-                .map
-                .zones()
-                .iter()
-                .map(|&z| z == Zone::Forbidden)
-                .collect(),
-        };
-        let cell = |p: Point2| g.map.world_to_cell(p).unwrap();
-        assert!(!connected(&canvas, cell(g.start), cell(g.goal)));
+        assert_eq!((g.map.width(), g.map.height()), (40, 20));
+        assert!(!joined(&g));
     }
 
     #[test]

@@ -18,6 +18,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 
 use crate::stats::{Alternative, Verdict, decide_less, mann_whitney_u};
+pub use crate::stats::{Spread, quantile};
 use crate::{RunMetrics, Scoring, measure};
 use ompl_log::{Experiment, PlannerBlock, Property, PropertyType, Status, Value};
 
@@ -236,50 +237,6 @@ pub fn score_run(
         max_curvature,
         progress: Vec::new(),
         metrics,
-    }
-}
-
-/// The `q`-quantile of sorted finite values, linearly interpolated (NumPy's default);
-/// NaN for no values.
-#[must_use]
-pub fn quantile(sorted: &[f64], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let pos = q.clamp(0.0, 1.0) * (sorted.len() - 1) as f64;
-    let lo = pos.floor() as usize;
-    let hi = pos.ceil() as usize;
-    sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)
-}
-
-/// Median and inter-quartile range of the finite values of a sample.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Spread {
-    /// Median (NaN for no values).
-    pub median: f64,
-    /// First quartile.
-    pub q1: f64,
-    /// Third quartile.
-    pub q3: f64,
-}
-
-impl Spread {
-    /// The spread of the finite values.
-    #[must_use]
-    pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
-        let mut v: Vec<f64> = values.into_iter().filter(|x| x.is_finite()).collect();
-        v.sort_by(f64::total_cmp);
-        Self {
-            median: quantile(&v, 0.5),
-            q1: quantile(&v, 0.25),
-            q3: quantile(&v, 0.75),
-        }
-    }
-
-    /// The inter-quartile range, q3 - q1.
-    #[must_use]
-    pub fn iqr(&self) -> f64 {
-        self.q3 - self.q1
     }
 }
 

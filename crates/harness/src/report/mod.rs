@@ -200,6 +200,15 @@ fn in_group(name: &str, entry: &str) -> bool {
 #[must_use]
 pub fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesClaim> {
     let mut out = Vec::new();
+    // The runs of planner `label` over every layout of the group `entry`, pooled.
+    let pooled = |entry: &str, label: &str, metric: &str| -> Vec<f64> {
+        results
+            .iter()
+            .filter(|(_, o)| in_group(&o.name, entry))
+            .filter_map(|(_, o)| o.planners.iter().find(|p| p.label == label))
+            .flat_map(|p| values(&p.runs, metric))
+            .collect()
+    };
     for (scenario, r) in results {
         for c in scenario.claims.iter().filter(|c| !c.across.is_empty()) {
             if c.order.len() > 1 {
@@ -211,15 +220,7 @@ pub fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesCla
                 let samples = c
                     .order
                     .iter()
-                    .map(|label| {
-                        let pooled: Vec<f64> = results
-                            .iter()
-                            .filter(|(_, o)| in_group(&o.name, group))
-                            .filter_map(|(_, o)| o.planners.iter().find(|p| &p.label == label))
-                            .flat_map(|p| values(&p.runs, &c.metric))
-                            .collect();
-                        (label.clone(), pooled)
-                    })
+                    .map(|label| (label.clone(), pooled(group, label, &c.metric)))
                     .collect();
                 out.push(SeriesClaim {
                     seed_file: r.seed_file.clone(),
@@ -233,14 +234,8 @@ pub fn series_claims(results: &[(&Scenario, ExperimentResult)]) -> Vec<SeriesCla
                 .across
                 .iter()
                 .map(|entry| {
-                    let pooled: Vec<f64> = results
-                        .iter()
-                        .filter(|(_, o)| in_group(&o.name, entry))
-                        .filter_map(|(_, o)| o.planners.iter().find(|p| &p.label == label))
-                        .flat_map(|p| values(&p.runs, &c.metric))
-                        .collect();
                     let any = results.iter().any(|(_, o)| in_group(&o.name, entry));
-                    any.then(|| (entry.clone(), pooled))
+                    any.then(|| (entry.clone(), pooled(entry, label, &c.metric)))
                 })
                 .collect();
             let Some(samples) = samples else { continue };

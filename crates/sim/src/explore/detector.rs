@@ -158,10 +158,38 @@ fn grow(
     edge
 }
 
-/// Algorithm 2: one tree grown from the root for the whole exploration; every edge that
-/// reaches unknown space publishes a frontier, and the tree keeps growing.
+/// Which of the paper's two detectors a tree is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DetectorKind {
+    /// Algorithm 2: one tree grown from the root for the whole exploration; every edge
+    /// that reaches unknown space publishes a frontier, and the tree keeps growing.
+    Global,
+    /// Algorithm 1: after each frontier found the tree is cleared and re-rooted at the
+    /// robot, so it keeps searching near where the robot is.
+    Local,
+}
+
+/// An RRT frontier detector (seed 004, Algorithms 1 and 2): a tree grown by `eta` over
+/// the current map that publishes the point where an edge first reaches unknown space.
+///
+/// ```
+/// use hyplan_core::{Bounds, Point2};
+/// use rand::SeedableRng;
+/// use rand_chacha::ChaCha8Rng;
+/// use sim::{Mapping, OccupancyGrid, Region, RrtDetector};
+///
+/// let p = Point2::new;
+/// let map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(4.0, 4.0)), Mapping::default());
+/// let corners = [p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)];
+/// let region = Region::from_points(&[corners.as_slice(), &[p(2.0, 2.0)]].concat()).unwrap();
+/// let mut d = RrtDetector::local(region, 0.5, ChaCha8Rng::seed_from_u64(1));
+/// let frontier = (0..100).find_map(|_| d.step(&map, Point2::new(2.0, 2.0)));
+/// assert!(frontier.is_some());
+/// ```
 #[derive(Debug, Clone)]
-pub struct GlobalRrtDetector {
+pub struct RrtDetector {
+    /// Global or local.
+    pub kind: DetectorKind,
     /// Growth rate, m.
     pub eta: f64,
     /// Where it samples.
@@ -170,11 +198,12 @@ pub struct GlobalRrtDetector {
     rng: ChaCha8Rng,
 }
 
-impl GlobalRrtDetector {
-    /// A tree at `region.root`; `rng` is the detector's own stream.
+impl RrtDetector {
+    /// A tree of `kind` at `region.root`; `rng` is the detector's own stream.
     #[must_use]
-    pub fn new(region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
+    pub fn new(kind: DetectorKind, region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
         Self {
+            kind,
             eta,
             region,
             tree: GrowTree::rooted_at(region.root),
@@ -182,64 +211,27 @@ impl GlobalRrtDetector {
         }
     }
 
-    /// One iteration on the current map; a frontier point when the new edge reached
-    /// unknown space.
-    pub fn step(&mut self, map: &OccupancyGrid) -> Option<Point2> {
-        match grow(&mut self.tree, map, &self.region, self.eta, &mut self.rng) {
-            Edge::Unknown(p) => Some(p),
-            _ => None,
-        }
+    /// The global detector (Algorithm 2).
+    #[must_use]
+    pub fn global(region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
+        Self::new(DetectorKind::Global, region, eta, rng)
     }
 
-    /// The tree's edges (parent, child).
+    /// The local detector (Algorithm 1).
     #[must_use]
-    pub fn edges(&self) -> Vec<(Point2, Point2)> {
-        self.tree.edges().collect()
-    }
-
-    /// Number of nodes.
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.tree.len()
-    }
-
-    /// Never: the tree holds at least its root.
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        false
-    }
-}
-
-/// Algorithm 1: like the global tree, but after each frontier found the tree is cleared
-/// and re-rooted at the robot, so it keeps searching near where the robot is.
-#[derive(Debug, Clone)]
-pub struct LocalRrtDetector {
-    /// Growth rate, m.
-    pub eta: f64,
-    /// Where it samples.
-    pub region: Region,
-    tree: GrowTree,
-    rng: ChaCha8Rng,
-}
-
-impl LocalRrtDetector {
-    /// A tree at `region.root`; `rng` is the detector's own stream.
-    #[must_use]
-    pub fn new(region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
-        Self {
-            eta,
-            region,
-            tree: GrowTree::rooted_at(region.root),
-            rng,
-        }
+    pub fn local(region: Region, eta: f64, rng: ChaCha8Rng) -> Self {
+        Self::new(DetectorKind::Local, region, eta, rng)
     }
 
     /// One iteration on the current map with the robot at `robot`; a frontier point
-    /// when the new edge reached unknown space (the tree is then reset at `robot`).
+    /// when the new edge reached unknown space (a local tree is then reset at `robot`;
+    /// a global one ignores `robot`).
     pub fn step(&mut self, map: &OccupancyGrid, robot: Point2) -> Option<Point2> {
         match grow(&mut self.tree, map, &self.region, self.eta, &mut self.rng) {
             Edge::Unknown(p) => {
-                self.tree = GrowTree::rooted_at(robot);
+                if self.kind == DetectorKind::Local {
+                    self.tree = GrowTree::rooted_at(robot);
+                }
                 Some(p)
             }
             _ => None,

@@ -8,7 +8,7 @@ use envmap::Inflation;
 use crate::costmap::Costmap;
 use crate::engine::{Flow, GoalSource, Sim, TICKS_PER_SECOND, every, stream};
 use crate::explore::assigner::Assigner;
-use crate::explore::detector::{GlobalRrtDetector, LocalRrtDetector, Region};
+use crate::explore::detector::{Region, RrtDetector};
 use crate::explore::filter::{Filter, built_cost, built_cost_reach, information_gain};
 use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
 use crate::explore::params::{Exploration, Strategy};
@@ -53,8 +53,8 @@ pub(crate) struct Explorer {
     inflation: Inflation,
     min_view: f64,
     look_tolerance: f64,
-    global: Option<GlobalRrtDetector>,
-    local: Option<LocalRrtDetector>,
+    global: Option<RrtDetector>,
+    local: Option<RrtDetector>,
     filter: Filter,
     assigner: Assigner,
     published: Vec<Point2>,
@@ -111,11 +111,10 @@ impl Explorer {
                 + scenario.laser.mount_offset.abs()
                 + scenario.robot.body_radius,
             look_tolerance,
-            global: matches!(strategy, Strategy::Global | Strategy::Both).then(|| {
-                GlobalRrtDetector::new(region, ex.eta_global, stream(seed, GLOBAL_STREAM))
-            }),
+            global: matches!(strategy, Strategy::Global | Strategy::Both)
+                .then(|| RrtDetector::global(region, ex.eta_global, stream(seed, GLOBAL_STREAM))),
             local: matches!(strategy, Strategy::Local | Strategy::Both)
-                .then(|| LocalRrtDetector::new(region, ex.eta_local, stream(seed, LOCAL_STREAM))),
+                .then(|| RrtDetector::local(region, ex.eta_local, stream(seed, LOCAL_STREAM))),
             filter: Filter::new(
                 ex.bandwidth,
                 ex.costmap_threshold,
@@ -158,12 +157,12 @@ impl Explorer {
             global_edges: self
                 .global
                 .as_ref()
-                .map(GlobalRrtDetector::edges)
+                .map(RrtDetector::edges)
                 .unwrap_or_default(),
             local_edges: self
                 .local
                 .as_ref()
-                .map(LocalRrtDetector::edges)
+                .map(RrtDetector::edges)
                 .unwrap_or_default(),
             published: self.all_published.clone(),
             frontiers: self.candidates.clone(),
@@ -380,7 +379,7 @@ impl GoalSource for Explorer {
         if tick.is_multiple_of(self.clock.detector) {
             let here = sim.here();
             if let Some(g) = self.global.as_mut()
-                && let Some(p) = g.step(&sim.map)
+                && let Some(p) = g.step(&sim.map, here)
             {
                 self.published.push(p);
             }

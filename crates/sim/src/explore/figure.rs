@@ -96,7 +96,7 @@ pub fn animation_png(outcome: &ExploreOutcome, delay_ms: u16) -> Result<Vec<u8>,
     ];
     let map = &outcome.map;
     let res = map.params.resolution;
-    let empty = GridImage::filled(map.width(), map.height(), map.origin(), res, palette);
+    let empty = GridImage::filled(map.frame(), palette);
     let frames = outcome.frames.iter().map(|(t, pose, values)| {
         let mut grid = empty.clone();
         for (cell, &v) in grid.cells_mut().iter_mut().zip(values) {

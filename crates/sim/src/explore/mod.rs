@@ -26,7 +26,7 @@ mod selfmap;
 mod viewpoint;
 
 pub use assigner::{Assigner, revenue};
-pub use detector::{Edge, GlobalRrtDetector, LocalRrtDetector, Region, RegionError, edge_check};
+pub use detector::{DetectorKind, Edge, Region, RegionError, RrtDetector, edge_check};
 pub use explorer::{GLOBAL_STREAM, LOCAL_STREAM};
 pub use figure::{animation_png, snapshot_scene, snapshot_svg};
 pub use filter::{Filter, built_cost, built_cost_reach, information_gain, mean_shift};

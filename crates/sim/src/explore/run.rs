@@ -178,6 +178,31 @@ impl ExploreOutcome {
         self.reachable_area - self.coverage.last().map_or(0.0, |c| c.known_free)
     }
 
+    /// The end of the run in two lines, as `hyplan explore` prints it: coverage of the
+    /// reachable free area with the times it reached 95 % and 99 % and the area missed;
+    /// then distance driven, goals, goals blacklisted, points published and contact ticks.
+    #[must_use]
+    pub fn summary(&self) -> String {
+        let time = |f: f64| {
+            self.time_to(f)
+                .map_or("not reached".to_string(), |t| format!("{t:.0} s"))
+        };
+        format!(
+            "coverage {:.2} % of {:.1} m^2 reachable free; 95 % at {}, 99 % at {}; missed {:.2} m^2\n\
+             distance {:.1} m, goals {}, blacklisted {}, points published {}, contact ticks {}",
+            100.0 * self.final_coverage(),
+            self.reachable_area,
+            time(0.95),
+            time(0.99),
+            self.missed_area(),
+            self.distance,
+            self.goals.len(),
+            self.blacklisted.len(),
+            self.published,
+            self.contact_ticks
+        )
+    }
+
     /// Coverage over time as CSV (`t,known_free_m2,coverage`).
     #[must_use]
     pub fn coverage_csv(&self) -> String {
