@@ -5,7 +5,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_main};
 use envmap::{LoadOptions, load_map};
-use hyplan_core::{Budget, Goal, Query, Workspace};
+use hyplan_core::{Budget, Goal, Plan, PlanError, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use sampling::{Rrt, RrtConnect};
@@ -35,14 +35,15 @@ fn bench_rrt(c: &mut Criterion) {
         step: 5.0,
         budget: Budget::iterations(1_000_000),
     };
+    // Each planner's run with a fresh RNG.
+    type PlanFn<'a> = &'a dyn Fn(&mut ChaCha8Rng) -> Result<Plan, PlanError>;
+    let planners: [(&str, PlanFn<'_>); 2] = [
+        ("rrt", &|rng| rrt.plan(&map, &query, rng)),
+        ("rrt_connect", &|rng| connect.plan(&map, &query, rng)),
+    ];
     // Checked once, outside the timed loop: a valid path.
-    for plan in [
-        rrt.plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(1))
-            .unwrap(),
-        connect
-            .plan(&map, &query, &mut ChaCha8Rng::seed_from_u64(1))
-            .unwrap(),
-    ] {
+    for (_, plan) in planners {
+        let plan = plan(&mut ChaCha8Rng::seed_from_u64(1)).unwrap();
         assert_eq!(plan.path[0], query.start);
         assert!(query.goal.contains(*plan.path.last().unwrap()));
         assert!(plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
@@ -50,22 +51,16 @@ fn bench_rrt(c: &mut Criterion) {
 
     let mut group = c.benchmark_group("rrt_rects100_step5");
     // Each iteration plans with the next seed, so the time is an average over many trees.
-    group.bench_function("rrt", |b| {
-        let mut seed = 0;
-        b.iter(|| {
-            seed += 1;
-            let mut rng = ChaCha8Rng::seed_from_u64(seed);
-            black_box(rrt.plan(&map, &query, &mut rng).unwrap().path.len())
+    for (name, plan) in planners {
+        group.bench_function(name, |b| {
+            let mut seed = 0;
+            b.iter(|| {
+                seed += 1;
+                let mut rng = ChaCha8Rng::seed_from_u64(seed);
+                black_box(plan(&mut rng).unwrap().path.len())
+            });
         });
-    });
-    group.bench_function("rrt_connect", |b| {
-        let mut seed = 0;
-        b.iter(|| {
-            seed += 1;
-            let mut rng = ChaCha8Rng::seed_from_u64(seed);
-            black_box(connect.plan(&map, &query, &mut rng).unwrap().path.len())
-        });
-    });
+    }
     group.finish();
 }
 

@@ -68,44 +68,37 @@ struct Case {
     goal_radius: f64,
 }
 
+impl Case {
+    /// A case with OMPL's default goal bias, 0.05.
+    const fn new(
+        name: &'static str,
+        map: &'static str,
+        start: (f64, f64),
+        goal: (f64, f64),
+        step: f64,
+        goal_radius: f64,
+    ) -> Self {
+        Case {
+            name,
+            map,
+            start,
+            goal,
+            step,
+            goal_bias: 0.05,
+            goal_radius,
+        }
+    }
+}
+
+/// One case a row. The room is converted to binary P5 under target/peers/maps (the peer
+/// reads P2/P3/P5/P6 only).
+#[rustfmt::skip]
 const CASES: &[Case] = &[
-    Case {
-        name: "rects100",
-        map: "data/generated/rects100.pgm",
-        start: (5.5, 5.5),
-        goal: (94.5, 94.5),
-        step: 5.0,
-        goal_bias: 0.05,
-        goal_radius: 0.0,
-    },
-    Case {
-        name: "maze101",
-        map: "data/generated/maze.pgm",
-        start: (2.5, 2.5),
-        goal: (98.5, 98.5),
-        step: 3.0,
-        goal_bias: 0.05,
-        goal_radius: 0.0,
-    },
-    Case {
-        name: "room960x640",
-        // Converted to binary P5 under target/peers/maps (the peer reads P2/P3/P5/P6 only).
-        map: "scenarios/maps/room_960x640.pgm",
-        start: (20.0, 320.0),
-        goal: (900.0, 520.0),
-        step: 40.0,
-        goal_bias: 0.05,
-        goal_radius: 20.0,
-    },
-    Case {
-        name: "arena.map",
-        map: "data/movingai/arena.map",
-        start: (1.5, 45.5),
-        goal: (47.5, 9.5),
-        step: 3.0,
-        goal_bias: 0.05,
-        goal_radius: 0.0,
-    },
+    //         name           map                                start           goal            step  goal radius
+    Case::new("rects100",    "data/generated/rects100.pgm",     (5.5, 5.5),     (94.5, 94.5),   5.0,  0.0),
+    Case::new("maze101",     "data/generated/maze.pgm",         (2.5, 2.5),     (98.5, 98.5),   3.0,  0.0),
+    Case::new("room960x640", "scenarios/maps/room_960x640.pgm", (20.0, 320.0),  (900.0, 520.0), 40.0, 20.0),
+    Case::new("arena.map",   "data/movingai/arena.map",         (1.5, 45.5),    (47.5, 9.5),    3.0,  0.0),
 ];
 
 /// (our planner, OMPL's name or None when OMPL has no such planner).

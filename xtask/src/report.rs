@@ -20,14 +20,7 @@ pub fn update_docs(
     quick: bool,
 ) -> anyhow::Result<Vec<PathBuf>> {
     let mut written = Vec::new();
-    let mut pages: Vec<PathBuf> = std::fs::read_dir(dir)
-        .with_context(|| format!("reading {}", dir.display()))?
-        .filter_map(Result::ok)
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "md"))
-        .collect();
-    pages.sort();
-    for page in pages {
+    for page in crate::reproduce::files_ending_in(dir, "md")? {
         let Some(seed) = page
             .file_name()
             .and_then(|n| n.to_str())

@@ -44,15 +44,21 @@ fn workspace_root() -> PathBuf {
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
 }
 
-/// Loads every scenario (all of them, so a bad file stops the run before any work).
-fn load_all(dir: &Path) -> anyhow::Result<Vec<(PathBuf, Scenario, World)>> {
+/// The files of `dir` with the extension `ext`, sorted by path.
+pub fn files_ending_in(dir: &Path, ext: &str) -> anyhow::Result<Vec<PathBuf>> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .with_context(|| format!("reading {}", dir.display()))?
         .filter_map(Result::ok)
         .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+        .filter(|p| p.extension().is_some_and(|e| e == ext))
         .collect();
     files.sort();
+    Ok(files)
+}
+
+/// Loads every scenario (all of them, so a bad file stops the run before any work).
+fn load_all(dir: &Path) -> anyhow::Result<Vec<(PathBuf, Scenario, World)>> {
+    let files = files_ending_in(dir, "ron")?;
     // Building a room's map (drawing, binarizing, the band) takes a fraction of a second
     // for the largest pictures: build them on every core.
     use rayon::prelude::*;

@@ -14,15 +14,12 @@ use crate::PlanError;
 ///
 /// [`PlanError::InvalidParameter`] named `name` otherwise.
 pub fn positive(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be finite and > 0 (world units)",
-        })
-    }
+    require(
+        value.is_finite() && value > 0.0,
+        name,
+        value,
+        "must be finite and > 0 (world units)",
+    )
 }
 
 /// Checks that `name` is finite and >= 0.
@@ -31,15 +28,12 @@ pub fn positive(name: &'static str, value: f64) -> Result<(), PlanError> {
 ///
 /// [`PlanError::InvalidParameter`] named `name` otherwise.
 pub fn non_negative(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be finite and >= 0",
-        })
-    }
+    require(
+        value.is_finite() && value >= 0.0,
+        name,
+        value,
+        "must be finite and >= 0",
+    )
 }
 
 /// Checks that `name` (a goal bias, say) is a probability in [0, 1].
@@ -48,15 +42,12 @@ pub fn non_negative(name: &'static str, value: f64) -> Result<(), PlanError> {
 ///
 /// [`PlanError::InvalidParameter`] named `name` otherwise (NaN included).
 pub fn probability(name: &'static str, value: f64) -> Result<(), PlanError> {
-    if (0.0..=1.0).contains(&value) {
-        Ok(())
-    } else {
-        Err(PlanError::InvalidParameter {
-            name,
-            value: format!("{value}"),
-            reason: "must be a probability in [0, 1]",
-        })
-    }
+    require(
+        (0.0..=1.0).contains(&value),
+        name,
+        value,
+        "must be a probability in [0, 1]",
+    )
 }
 
 /// Checks a count >= 1.
@@ -65,13 +56,24 @@ pub fn probability(name: &'static str, value: f64) -> Result<(), PlanError> {
 ///
 /// [`PlanError::InvalidParameter`] named `name` otherwise.
 pub fn count(name: &'static str, value: usize) -> Result<(), PlanError> {
-    if value >= 1 {
+    require(value >= 1, name, value, "must be at least 1")
+}
+
+/// `Ok` when `ok`, else the one error every check gives: `name`, the value as written, and
+/// the rule it broke.
+fn require(
+    ok: bool,
+    name: &'static str,
+    value: impl std::fmt::Display,
+    reason: &'static str,
+) -> Result<(), PlanError> {
+    if ok {
         Ok(())
     } else {
         Err(PlanError::InvalidParameter {
             name,
-            value: format!("{value}"),
-            reason: "must be at least 1",
+            value: value.to_string(),
+            reason,
         })
     }
 }

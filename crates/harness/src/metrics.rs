@@ -258,20 +258,18 @@ fn min_clearance(ws: &dyn Workspace, samples: &[Point2]) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use nalgebra::point;
+
     use super::*;
 
     /// A plan that is already a curve is smoothed from its nodes, not smoothed again.
     #[test]
     fn a_curve_plan_is_smoothed_from_its_nodes_once() {
-        let waypoints = vec![
-            Point2::new(0.0, 0.0),
-            Point2::new(4.0, 0.0),
-            Point2::new(4.0, 4.0),
-        ];
+        let waypoints = vec![point![0.0, 0.0], point![4.0, 0.0], point![4.0, 4.0]];
         // The planner's own "curve", here with a bump off the L that the oracle below
         // refuses: smoothing it again would fail, smoothing the nodes does not.
         let mut path = postproc::densify(&waypoints, 0.1);
-        path.insert(20, Point2::new(2.0, 0.5));
+        path.insert(20, point![2.0, 0.5]);
         let plan = Plan {
             cost: hyplan_core::path_length(&path),
             path,

@@ -56,79 +56,67 @@ fn message(name: &str, text: &str) -> String {
     load_text(name, text).unwrap_err().to_string()
 }
 
+/// Each bad file: its name, the text of [`GOOD`] replaced and by what, and what the
+/// message must name.
 #[test]
-fn unknown_planner_is_named() {
-    let m = message("planner", &GOOD.replace("Rrt(", "RrtTurbo("));
-    assert!(
-        m.contains("planner.ron") && m.contains("RrtTurbo") && m.contains("RrtConnect"),
-        "{m}"
-    );
-}
-
-#[test]
-fn unknown_parameter_is_named() {
-    let m = message("param", &GOOD.replace("step:", "stride:"));
-    assert!(
-        m.contains("param.ron:") && m.contains("stride") && m.contains("step"),
-        "{m}"
-    );
-}
-
-#[test]
-fn missing_field_gives_file_and_line() {
-    let m = message("missing", &GOOD.replace("    units: \"cells\",\n", ""));
-    assert!(m.contains("missing.ron:") && m.contains("units"), "{m}");
-}
-
-#[test]
-fn start_inside_an_obstacle_is_refused() {
-    let m = message(
-        "start",
-        &GOOD.replace("start: (1.5, 1.5)", "start: (8.5, 1.5)"),
-    );
-    assert!(
-        m.contains("start") && m.contains("inside an obstacle"),
-        "{m}"
-    );
-}
-
-#[test]
-fn missing_map_file_is_named() {
-    let text = GOOD.replace(
-        "Grid(width: 20, height: 10, obstacles: [Rect(x: 8.0, y: 0.0, w: 2.0, h: 7.0)])",
-        "File(path: \"no-such-map.map\")",
-    );
-    let m = message("nofile", &text);
-    assert!(m.contains("no-such-map.map"), "{m}");
-}
-
-#[test]
-fn zero_runs_is_refused() {
-    let m = message("runs", &GOOD.replace("runs: 4", "runs: 0"));
-    assert!(m.contains("`runs`"), "{m}");
-}
-
-/// Every run's record is kept in memory: a run count the input controls is capped.
-#[test]
-fn too_many_runs_is_refused() {
-    let m = message("manyruns", &GOOD.replace("runs: 4", "runs: 4000000000"));
-    assert!(
-        m.contains("`runs`") && m.contains("4000000000") && m.contains("MAX_RUNS"),
-        "{m}"
-    );
-}
-
-#[test]
-fn a_claim_across_scenarios_names_one_planner() {
-    let text = GOOD.replace(
-        "    runs: 4,",
-        "    runs: 4,\n    claims: [Claim(text: \"t\", metric: \"length\", order: [\"rrt\", \"rrt\"], across: [\"a\", \"b\"])],",
-    );
-    let m = message("across", &text);
-    assert!(
-        m.contains("claims.order") && m.contains("exactly one planner"),
-        "{m}"
-    );
+fn bad_files_are_refused_naming_file_and_problem() {
+    let cases: [(&str, &str, &str, &[&str]); 8] = [
+        // An unknown planner is named, with the known ones.
+        (
+            "planner",
+            "Rrt(",
+            "RrtTurbo(",
+            &["planner.ron", "RrtTurbo", "RrtConnect"],
+        ),
+        (
+            "param",
+            "step:",
+            "stride:",
+            &["param.ron:", "stride", "step"],
+        ),
+        // A missing field: file and line.
+        (
+            "missing",
+            "    units: \"cells\",\n",
+            "",
+            &["missing.ron:", "units"],
+        ),
+        (
+            "start",
+            "start: (1.5, 1.5)",
+            "start: (8.5, 1.5)",
+            &["start", "inside an obstacle"],
+        ),
+        (
+            "nofile",
+            "Grid(width: 20, height: 10, obstacles: [Rect(x: 8.0, y: 0.0, w: 2.0, h: 7.0)])",
+            "File(path: \"no-such-map.map\")",
+            &["no-such-map.map"],
+        ),
+        ("runs", "runs: 4", "runs: 0", &["`runs`"]),
+        // Every run's record is kept in memory: a run count the input controls is capped.
+        (
+            "manyruns",
+            "runs: 4",
+            "runs: 4000000000",
+            &["`runs`", "4000000000", "MAX_RUNS"],
+        ),
+        (
+            "across",
+            "    runs: 4,",
+            "    runs: 4,\n    claims: [Claim(text: \"t\", metric: \"length\", order: [\"rrt\", \"rrt\"], across: [\"a\", \"b\"])],",
+            &["claims.order", "exactly one planner"],
+        ),
+    ];
+    for (name, from, to, needles) in cases {
+        assert!(GOOD.contains(from), "{name}: {from:?} not in GOOD");
+        let m = load_text(name, &GOOD.replace(from, to))
+            .expect_err(name)
+            .to_string();
+        for n in needles {
+            assert!(m.contains(n), "{name}: {n:?} not in {m}");
+        }
+    }
 }
 
 /// A grid, a room or a map file above the memory limit is refused before it is drawn or

@@ -446,24 +446,15 @@ mod tests {
     fn bad_parameters_and_no_path() {
         let (map, q) = wall();
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
-        for bad in [
-            GaPchip {
-                population: 1,
-                ..GaPchip::default()
-            },
-            GaPchip {
-                elites: 30,
-                ..GaPchip::default()
-            },
-            GaPchip {
-                via_points: 0,
-                ..GaPchip::default()
-            },
-            GaPchip {
-                mutation_rate: 1.5,
-                ..GaPchip::default()
-            },
-        ] {
+        let changes: [fn(&mut GaPchip); 4] = [
+            |ga| ga.population = 1,
+            |ga| ga.elites = 30,
+            |ga| ga.via_points = 0,
+            |ga| ga.mutation_rate = 1.5,
+        ];
+        for change in changes {
+            let mut bad = GaPchip::default();
+            change(&mut bad);
             assert!(matches!(
                 bad.plan(&map, &q, &mut rng),
                 Err(PlanError::InvalidParameter { .. })

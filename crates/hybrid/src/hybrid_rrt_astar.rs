@@ -13,9 +13,8 @@
 //! sub-searches, reported as `stats.nodes`.
 
 use envmap::GridMap;
-use hyplan_core::{Budget, PlanError, Point2, Query, Workspace};
-use rand::Rng;
-use sampling::{CountingChecker, Extension, GrowTree, Run};
+use hyplan_core::{Budget, PlanError, Point2, Workspace};
+use sampling::{CountingChecker, Extension, GrowTree, Run, Search};
 use search::GridOptions;
 
 use crate::Staged;
@@ -74,6 +73,17 @@ pub enum SpacingRule {
 /// assert!(staged.plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+///
+/// # Errors
+///
+/// [`plan_detailed`](Self::plan_detailed) (which also counts the sub-searches launched
+/// and given up) and `plan` return [`PlanError::InvalidParameter`] for a bad parameter or
+/// budget (through the [`Planner`](hyplan_core::Planner) trait also named `workspace` when
+/// the workspace is not a grid map); [`PlanError::InvalidStart`] /
+/// [`PlanError::InvalidGoal`] for a query outside the map or blocked;
+/// [`PlanError::Disconnected`] when the map's passable cells do not join start and goal;
+/// [`PlanError::BudgetExhausted`] when neither the tree nor a sub-search reached the goal
+/// within the budget.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -126,45 +136,31 @@ impl HybridRrtAstar {
         hyplan_core::check::count("astar_max_visited", self.astar_max_visited)
     }
 
-    /// Plans a path for `query`, drawing every random number from `rng`, also counting the
-    /// sub-searches launched and given up.
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad parameter or budget (through the
-    /// [`Planner`](hyplan_core::Planner) trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
-    /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
-    /// passable cells do not join start and goal; [`PlanError::BudgetExhausted`] when neither
-    /// the tree nor a sub-search reached the goal within the budget.
-    pub fn plan_detailed<R: Rng + ?Sized>(
-        &self,
-        map: &GridMap,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Staged, PlanError> {
-        let ws = map;
+    /// One call of [`plan_detailed`](Self::plan_detailed).
+    fn staged(&self, search: Search<'_, GridMap>) -> Result<Staged, PlanError> {
+        let map = search.ws;
         self.validate_params()?;
-        let mut run = Run::start(self.step, &self.budget, ws, query)?;
-        run.check_connected(ws, query)?;
-        let goal = query.goal;
+        let mut run = Run::start(self.step, &self.budget, map, search.query)?;
+        run.check_connected(map, search.query)?;
+        let goal = search.query.goal;
         let target = goal.center();
         let goal_cell = map.world_to_cell(target).ok_or(PlanError::InvalidGoal {
             point: target,
             reason: "outside the map",
         })?;
-        let mut checker = CountingChecker::new(ws);
-        let mut tree = GrowTree::rooted_at(query.start);
+        let mut checker = CountingChecker::new(map);
+        let mut tree = GrowTree::rooted_at(search.query.start);
         let mut starts: Vec<Point2> = Vec::new();
         let (mut visited_total, mut runs, mut failures) = (0_u64, 0_u32, 0_u32);
         // (leaf node, points after it to the goal)
         let mut done: Option<(usize, Vec<Point2>)> = None;
-        if goal.contains(query.start) {
+        if goal.contains(search.query.start) {
             done = Some((0, Vec::new()));
         }
 
         while done.is_none() && run.next_iteration() {
             // Phase 1 (Algorithm 1): goal-biased sample, nearest vertex, one step.
-            let sample = sampling::sample_goal_biased(ws, target, self.goal_bias, rng);
+            let sample = sampling::sample_goal_biased(map, target, self.goal_bias, search.rng);
             let new = match tree.extend(sample, self.step, &mut checker) {
                 Extension::Added { new, .. } => new,
                 Extension::Refused => continue,
@@ -256,4 +252,4 @@ impl HybridRrtAstar {
     }
 }
 
-sampling::impl_planner!(HybridRrtAstar, "hybrid-rrt-astar", grid_only, plan: plan_detailed);
+sampling::impl_planner!(HybridRrtAstar, "hybrid-rrt-astar", grid_only, staged: Staged);

@@ -35,9 +35,8 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use hyplan_core::{Budget, PlanError, Point2, Query, Workspace};
-use rand::Rng;
-use sampling::{CountingChecker, GrowTree, Run};
+use hyplan_core::{Budget, PlanError, Point2, Workspace};
+use sampling::{CountingChecker, GrowTree, Run, Search};
 
 use crate::Staged;
 use crate::common;
@@ -104,6 +103,18 @@ use crate::smooth;
 /// assert!(plan.path.windows(2).all(|w| map.segment_free(w[0], w[1])));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+///
+/// # Errors
+///
+/// [`plan_detailed`](Self::plan_detailed) (which also returns the raw branch, the reduced
+/// nodes and the smoothing repairs) and `plan` return [`PlanError::InvalidParameter`] for a
+/// bad parameter or budget; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a
+/// query outside the workspace or blocked; [`PlanError::Disconnected`] (with the cause)
+/// when the workspace proves start and goal unconnected ([`Workspace::disconnection`],
+/// before any sampling); without back-tracking, [`PlanError::NoPath`] at the first node
+/// with no admissible candidate (the paper's "premature end", kept as the ablation: not a
+/// proof); [`PlanError::BudgetExhausted`] when the iterations or time ran out. With
+/// back-tracking an empty open list does not end the run (see above).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -187,36 +198,19 @@ impl RrtAstarBt {
         hyplan_core::check::positive("curve_spacing", self.curve_spacing)
     }
 
-    /// Plans a path for `query`, drawing every random number from `rng`, also returning the
-    /// raw branch, the reduced nodes and the smoothing repairs.
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad parameter or budget;
-    /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or blocked; [`PlanError::Disconnected`] (with the cause) when the
-    /// workspace proves start and goal unconnected ([`Workspace::disconnection`], before
-    /// any sampling); without back-tracking, [`PlanError::NoPath`] at the first node with
-    /// no admissible candidate (the paper's "premature end", kept as the ablation: not a
-    /// proof); [`PlanError::BudgetExhausted`] when the iterations or time ran out. With
-    /// back-tracking an empty open list does not end the run (see the type's docs).
-    pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Staged, PlanError> {
+    /// One call of [`plan_detailed`](Self::plan_detailed).
+    fn staged<W: Workspace + ?Sized>(&self, search: Search<'_, W>) -> Result<Staged, PlanError> {
         self.validate_params()?;
-        let mut run = Run::start(self.step, &self.budget, ws, query)?;
-        run.check_connected(ws, query)?;
-        let goal = query.goal;
+        let mut run = Run::start(self.step, &self.budget, search.ws, search.query)?;
+        run.check_connected(search.ws, search.query)?;
+        let goal = search.query.goal;
         let target = goal.center();
-        let mut checker = CountingChecker::new(ws);
-        let bounds = ws.bounds();
+        let mut checker = CountingChecker::new(search.ws);
+        let bounds = search.ws.bounds();
         // The tree: every node ever grown, with its parent and g (path length from start,
         // its cost-to-come), and the same nodes bucketed for the closed-list test.
-        let mut tree = GrowTree::with_costs(query.start);
-        let mut closed = ClosedList::new(bounds, self.closed_radius(), query.start);
+        let mut tree = GrowTree::with_costs(search.query.start);
+        let mut closed = ClosedList::new(bounds, self.closed_radius(), search.query.start);
         // The open list: candidate extensions not yet taken, lowest f first.
         let mut open: BinaryHeap<Candidate> = BinaryHeap::with_capacity(4096);
         let mut seq = 0_u64;
@@ -228,8 +222,9 @@ impl RrtAstarBt {
         let mut failure = false;
 
         let reach = self.goal_radius.max(self.step);
-        if (query.start - target).norm() <= reach || goal.contains(query.start) {
-            reached = common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e));
+        if (search.query.start - target).norm() <= reach || goal.contains(search.query.start) {
+            reached =
+                common::finish_at_goal(&mut checker, &goal, search.query.start).map(|e| (0, e));
         }
         while reached.is_none() && run.next_iteration() {
             // Without back-tracking only the head's own options count (RRT-A* alone).
@@ -242,9 +237,10 @@ impl RrtAstarBt {
             // taken (this saves the heap work, not a collision check).
             let hp = tree.point(head);
             for _ in 0..self.candidates {
-                let sample = sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| {
-                    checker.is_free(p)
-                });
+                let sample =
+                    sampling::sample_accepted(&bounds, self.sample_tries, search.rng, |p| {
+                        checker.is_free(p)
+                    });
                 let Some(sample) = sample else { continue };
                 let c = sampling::steer(hp, sample, self.step);
                 if c == hp {
@@ -288,9 +284,10 @@ impl RrtAstarBt {
                 // node keeps a chance of being extended again in any direction, so the
                 // search is probabilistically complete, as RRT is; only the budget or a
                 // path ends it.
-                let sample = sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| {
-                    checker.is_free(p)
-                });
+                let sample =
+                    sampling::sample_accepted(&bounds, self.sample_tries, search.rng, |p| {
+                        checker.is_free(p)
+                    });
                 if let Some((n, _)) = sample.and_then(|p| tree.nearest(p)) {
                     head = n;
                 }
@@ -491,7 +488,7 @@ impl Ord for Candidate {
     }
 }
 
-sampling::impl_planner!(RrtAstarBt, "rrt-astar-bt", optimizing: |_bt| false, plan: plan_detailed);
+sampling::impl_planner!(RrtAstarBt, "rrt-astar-bt", optimizing: |_bt| false, staged: Staged);
 
 #[cfg(test)]
 mod tests {

@@ -16,9 +16,8 @@
 use std::time::Instant;
 
 use envmap::GridMap;
-use hyplan_core::{Budget, Plan, PlanError, PlanStats, Point2, Query, Workspace};
-use rand::Rng;
-use sampling::{CountingChecker, Rrt};
+use hyplan_core::{Budget, Plan, PlanError, PlanStats, Point2, Workspace};
+use sampling::{CountingChecker, Rrt, Search};
 use search::{GridOptions, GridSearch};
 
 use crate::Staged;
@@ -63,6 +62,17 @@ use crate::common;
 /// assert!(staged.plan.length() <= hyplan_core::path_length(&staged.raw) + 1e-9);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+///
+/// # Errors
+///
+/// [`plan_detailed`](Self::plan_detailed) (which also returns the raw RRT path and the
+/// refined path before the shortcut) and `plan` return [`PlanError::InvalidParameter`] for
+/// a bad parameter or budget (through the [`Planner`](hyplan_core::Planner) trait also
+/// named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] /
+/// [`PlanError::InvalidGoal`] for a query outside the map or blocked;
+/// [`PlanError::Disconnected`] when the map's passable cells do not join start and goal
+/// (checked by the RRT before sampling); [`PlanError::BudgetExhausted`] when the RRT does
+/// not reach the goal within its budget.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -103,24 +113,9 @@ impl Default for RrtAstarRefine {
 }
 
 impl RrtAstarRefine {
-    /// Plans a path for `query`, drawing every random number from `rng`, also returning the
-    /// raw RRT path and the refined path before the shortcut.
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad parameter or budget (through the
-    /// [`Planner`](hyplan_core::Planner) trait also named `workspace` when the workspace is not a grid map); [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`]
-    /// for a query outside the map or blocked; [`PlanError::Disconnected`] when the map's
-    /// passable cells do not join start and goal (checked by the RRT before sampling);
-    /// [`PlanError::BudgetExhausted`] when the RRT
-    /// does not reach the goal within its budget.
-    pub fn plan_detailed<R: Rng + ?Sized>(
-        &self,
-        map: &GridMap,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Staged, PlanError> {
-        let ws = map;
+    /// One call of [`plan_detailed`](Self::plan_detailed).
+    fn staged(&self, search: Search<'_, GridMap>) -> Result<Staged, PlanError> {
+        let map = search.ws;
         let started = Instant::now();
         hyplan_core::check::non_negative("near_radius", self.near_radius)?;
         // 1. RRT (2.1): the initial path.
@@ -129,15 +124,17 @@ impl RrtAstarRefine {
             goal_bias: self.goal_bias,
             budget: self.budget,
         };
-        let rrt_plan = rrt.plan(ws, query, rng).map_err(|e| match e {
-            PlanError::BudgetExhausted { mut stats } => {
-                stats.elapsed = started.elapsed();
-                PlanError::BudgetExhausted { stats }
-            }
-            other => other,
-        })?;
+        let rrt_plan = rrt
+            .plan(map, search.query, search.rng)
+            .map_err(|e| match e {
+                PlanError::BudgetExhausted { mut stats } => {
+                    stats.elapsed = started.elapsed();
+                    PlanError::BudgetExhausted { stats }
+                }
+                other => other,
+            })?;
         let raw = rrt_plan.path;
-        let mut checker = CountingChecker::new(ws);
+        let mut checker = CountingChecker::new(map);
         let mut stats = PlanStats {
             iterations: rrt_plan.stats.iterations,
             nodes: rrt_plan.stats.nodes,
@@ -250,4 +247,4 @@ impl RrtAstarRefine {
     }
 }
 
-sampling::impl_planner!(RrtAstarRefine, "rrt-astar-refine", grid_only, plan: plan_detailed);
+sampling::impl_planner!(RrtAstarRefine, "rrt-astar-refine", grid_only, staged: Staged);

@@ -16,8 +16,7 @@
 use std::time::Instant;
 
 use hyplan_core::{Budget, PlanError, Point2, Query, Workspace, Zone};
-use rand::Rng;
-use sampling::{CountingChecker, GrowTree, Run};
+use sampling::{CountingChecker, GrowTree, Run, Search};
 
 use crate::Staged;
 use crate::common::{self, ZoneView};
@@ -68,6 +67,15 @@ use crate::smooth;
 /// assert!(plan.path.iter().all(|&p| map.zone(p) != Zone::Forbidden));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+///
+/// # Errors
+///
+/// [`plan_detailed`](Self::plan_detailed) (which also returns the raw RRT* path and the
+/// pruned path) and `plan` return [`PlanError::InvalidParameter`] for a bad parameter or
+/// budget; [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
+/// workspace or in Forbidden; [`PlanError::Disconnected`] when the map proves that no path
+/// of this planner can exist (an obstacle wall, or a risk band wider than the edges can
+/// cross); [`PlanError::BudgetExhausted`] when no node reached the goal within the budget.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -162,30 +170,15 @@ impl SafeRrtStar {
         sampling::require_connected(cause, started)
     }
 
-    /// Plans a path for `query`, drawing every random number from `rng`, also returning the
-    /// raw RRT* path and the pruned path.
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad parameter or budget;
-    /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or in Forbidden; [`PlanError::Disconnected`] when the map proves that no
-    /// path of this planner can exist (an obstacle wall, or a risk band wider than the
-    /// edges can cross); [`PlanError::BudgetExhausted`] when no node reached the
-    /// goal within the budget.
-    pub fn plan_detailed<W: Workspace + ?Sized, R: Rng + ?Sized>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-    ) -> Result<Staged, PlanError> {
+    /// One call of [`plan_detailed`](Self::plan_detailed).
+    fn staged<W: Workspace + ?Sized>(&self, search: Search<'_, W>) -> Result<Staged, PlanError> {
         self.validate_params()?;
-        let mut run = Run::start(self.step, &self.budget, ws, query)?;
-        self.check_connected(ws, query, run.started())?;
-        let goal = query.goal;
+        let mut run = Run::start(self.step, &self.budget, search.ws, search.query)?;
+        self.check_connected(search.ws, search.query, run.started())?;
+        let goal = search.query.goal;
         let target = goal.center();
-        let bounds = ws.bounds();
-        let view = ZoneView::new(ws, self.step / 16.0);
+        let bounds = search.ws.bounds();
+        let view = ZoneView::new(search.ws, self.step / 16.0);
         let lambda = self.safety_weight;
         // Edge cost: length plus lambda times the length inside Risk.
         let edge_cost = |a: Point2, b: Point2| {
@@ -196,22 +189,26 @@ impl SafeRrtStar {
                 len + lambda * view.risk_length(a, b)
             }
         };
-        let mut checker = CountingChecker::new(ws);
-        let mut tree = GrowTree::with_costs(query.start);
+        let mut checker = CountingChecker::new(search.ws);
+        let mut tree = GrowTree::with_costs(search.query.start);
         // Goal links: (tree node, point appended after it, if any).
         let mut links: Vec<(usize, Option<Point2>)> = Vec::new();
-        if (query.start - target).norm() <= self.goal_radius || goal.contains(query.start) {
-            links.extend(common::finish_at_goal(&mut checker, &goal, query.start).map(|e| (0, e)));
+        if (search.query.start - target).norm() <= self.goal_radius
+            || goal.contains(search.query.start)
+        {
+            links.extend(
+                common::finish_at_goal(&mut checker, &goal, search.query.start).map(|e| (0, e)),
+            );
         }
         let mut near: Vec<(usize, f64)> = Vec::new();
         let mut candidates: Vec<(f64, usize)> = Vec::new();
 
         while (!self.stop_at_first_solution || links.is_empty()) && run.next_iteration() {
             // Sample: the goal, or a point in the Free zone (no samples in Risk, 2.2).
-            let sample = if hyplan_core::uniform01(rng) < self.goal_bias {
+            let sample = if hyplan_core::uniform01(search.rng) < self.goal_bias {
                 Some(target)
             } else {
-                sampling::sample_accepted(&bounds, self.sample_tries, rng, |p| {
+                sampling::sample_accepted(&bounds, self.sample_tries, search.rng, |p| {
                     checker.checks += 1;
                     view.zone(p) == Zone::Free
                 })
@@ -294,4 +291,4 @@ impl SafeRrtStar {
     }
 }
 
-sampling::impl_planner!(SafeRrtStar, "safe-rrt-star", optimizing: |planner| !planner.stop_at_first_solution, plan: plan_detailed);
+sampling::impl_planner!(SafeRrtStar, "safe-rrt-star", optimizing: |planner| !planner.stop_at_first_solution, staged: Staged);

@@ -109,11 +109,7 @@ mod tests {
 
     #[test]
     fn pchip_straightens_when_only_the_polyline_is_free() {
-        let nodes = vec![
-            Point2::new(0.0, 0.0),
-            Point2::new(4.0, 1.0),
-            Point2::new(5.0, 5.0),
-        ];
+        let nodes = [[0.0, 0.0], [4.0, 1.0], [5.0, 5.0]].map(Point2::from);
         // Accept only pieces lying on the input polyline.
         let on = |p: Point2| {
             nodes.windows(2).any(|w| {
@@ -131,12 +127,7 @@ mod tests {
 
     #[test]
     fn bspline_ends_are_exact() {
-        let ctrl = [
-            Point2::new(0.0, 0.0),
-            Point2::new(2.0, 3.0),
-            Point2::new(5.0, 3.0),
-            Point2::new(6.0, 0.0),
-        ];
+        let ctrl = [[0.0, 0.0], [2.0, 3.0], [5.0, 3.0], [6.0, 0.0]].map(Point2::from);
         let c = fit_checked(&ctrl, Fit::BSpline, 0.1, |_, _| true);
         assert!(!c.refused);
         assert_eq!(c.points[0], ctrl[0]);

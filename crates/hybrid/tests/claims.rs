@@ -3,9 +3,7 @@
 //! --nocapture claims`) and recorded in `docs/papers/00{0,1,2,3}-*.md`, "What we
 //! measured".
 
-use std::path::Path;
-
-use envmap::{GridMap, LoadOptions, load_map};
+use envmap::GridMap;
 use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
 use hyplan_core::{Budget, Goal, Point2, Query, Zone};
 use rand::SeedableRng;
@@ -13,6 +11,7 @@ use rand_chacha::ChaCha8Rng;
 use sampling::{RewireRadius, Rrt, RrtStar};
 
 use crate::fixtures::mean;
+use crate::room::{Room, room};
 
 const RUNS: u64 = 100;
 
@@ -25,20 +24,13 @@ fn rng(seed: u64) -> ChaCha8Rng {
 /// raw path), on the 960 x 640 room of Table 2.
 #[test]
 fn seed000_rrt_astar_bt_shorter_with_fewer_nodes_than_rrt() {
-    let png = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/maps/room_960x640.png");
-    let loaded = load_map(
-        &png,
-        &LoadOptions {
-            rectangles: true,
-            safety_radius: Some(20.0),
-            ..LoadOptions::default()
-        },
-    )
-    .unwrap();
-    let safe = loaded.map.avoiding_risk();
-    let start = loaded.frame.to_world(74.0 / 6.34, 1953.0 / 6.34);
-    let goal = loaded.frame.to_world(5501.0 / 6.34, 1308.0 / 6.34);
-    let query = Query::new(start, Goal::Point(goal));
+    let Room {
+        safe,
+        start,
+        goal,
+        query,
+        ..
+    } = room().unwrap();
     let bt = RrtAstarBt::default();
     let rrt = Rrt {
         step: 40.0,

@@ -5,13 +5,18 @@
 use envmap::GridMap;
 use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
 use hyplan_core::{
-    Bounds, Budget, Goal, NoPathCause, Plan, PlanError, Planner, Point2, Query, Workspace, Zone,
+    Budget, Goal, NoPathCause, Plan, PlanError, Planner, Point2, Query, Workspace, Zone,
 };
 use proptest::prelude::*;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use crate::fixtures::{self, Avoids, SEED_1};
+
+#[path = "../../search/tests/open_square.rs"]
+mod open_square;
+
+use open_square::OpenSquare;
 
 /// Checks a plan against the contract: starts at the start, ends at the goal (a point
 /// goal) or in it, every segment free on the planning map, never in Forbidden.
@@ -96,8 +101,7 @@ fn goal_disc_is_reached() {
         Point2::new(2.5, 12.5),
         Goal::disc(Point2::new(37.5, 12.5), 1.5),
     );
-    for (planner, avoids) in fixtures::all_planners(20_000) {
-        let ws = fixtures::planning_map(&map, avoids);
+    for (planner, ws) in fixtures::planners_on(&map, 20_000) {
         let plan = planner
             .plan(&ws, &query, &mut ChaCha8Rng::seed_from_u64(SEED_1))
             .unwrap();
@@ -109,8 +113,7 @@ fn goal_disc_is_reached() {
 fn same_seed_same_plan() {
     let map = fixtures::small_room();
     let query = room_query();
-    for (planner, avoids) in fixtures::all_planners(20_000) {
-        let ws = fixtures::planning_map(&map, avoids);
+    for (planner, ws) in fixtures::planners_on(&map, 20_000) {
         let a = planner
             .plan(&ws, &query, &mut ChaCha8Rng::seed_from_u64(7))
             .unwrap();
@@ -137,8 +140,7 @@ fn same_seed_same_plan() {
 fn budgets_are_honoured() {
     let map = fixtures::small_room();
     let query = room_query();
-    for (planner, avoids) in fixtures::all_planners(3) {
-        let ws = fixtures::planning_map(&map, avoids);
+    for (planner, ws) in fixtures::planners_on(&map, 3) {
         let name = planner.info().name;
         let err = planner
             .plan(&ws, &query, &mut ChaCha8Rng::seed_from_u64(1))
@@ -176,8 +178,7 @@ fn walled_off_goal_gives_no_path() {
     fixtures::add_band(&mut map, 1);
     let query = room_query();
     // Every planner proves it at once, names the wall, and samples nothing.
-    for (planner, avoids) in fixtures::all_planners(2_000) {
-        let ws = fixtures::planning_map(&map, avoids);
+    for (planner, ws) in fixtures::planners_on(&map, 2_000) {
         let name = planner.info().name;
         let err = planner
             .plan(&ws, &query, &mut ChaCha8Rng::seed_from_u64(SEED_1))
@@ -186,6 +187,13 @@ fn walled_off_goal_gives_no_path() {
         assert_eq!(err.cause(), Some(&NoPathCause::Wall), "{name}: {err}");
         assert_eq!(err.stats().unwrap().iterations, 0, "{name}");
     }
+}
+
+/// `P`'s defaults with one `change`, as a boxed planner.
+fn tweaked<P: Planner + Default + 'static>(change: fn(&mut P)) -> Box<dyn Planner> {
+    let mut planner = P::default();
+    change(&mut planner);
+    Box::new(planner)
 }
 
 #[test]
@@ -197,61 +205,25 @@ fn bad_input_is_a_typed_error() {
         PlanError::InvalidParameter { name, .. } => name,
         other => panic!("{other}"),
     };
-    assert_eq!(
-        param(
-            RrtAstarBt {
-                step: 0.0,
-                ..RrtAstarBt::default()
-            }
-            .plan(&map, &query, &mut rng)
-            .unwrap_err()
+    let bad: [(Box<dyn Planner>, &str); 5] = [
+        (tweaked::<RrtAstarBt>(|p| p.step = 0.0), "step"),
+        (tweaked::<RrtAstarBt>(|p| p.candidates = 0), "candidates"),
+        (tweaked::<RrtAstarRefine>(|p| p.step = f64::NAN), "step"),
+        (
+            tweaked::<HybridRrtAstar>(|p| p.goal_bias = 1.5),
+            "goal_bias",
         ),
-        "step"
-    );
-    assert_eq!(
-        param(
-            RrtAstarBt {
-                candidates: 0,
-                ..RrtAstarBt::default()
-            }
-            .plan(&map, &query, &mut rng)
-            .unwrap_err()
+        (
+            tweaked::<SafeRrtStar>(|p| p.safety_weight = -1.0),
+            "safety_weight",
         ),
-        "candidates"
-    );
-    assert_eq!(
-        param(
-            RrtAstarRefine {
-                step: f64::NAN,
-                ..RrtAstarRefine::default()
-            }
-            .plan(&map, &query, &mut rng)
-            .unwrap_err()
-        ),
-        "step"
-    );
-    assert_eq!(
-        param(
-            HybridRrtAstar {
-                goal_bias: 1.5,
-                ..HybridRrtAstar::default()
-            }
-            .plan(&map, &query, &mut rng)
-            .unwrap_err()
-        ),
-        "goal_bias"
-    );
-    assert_eq!(
-        param(
-            SafeRrtStar {
-                safety_weight: -1.0,
-                ..SafeRrtStar::default()
-            }
-            .plan(&map, &query, &mut rng)
-            .unwrap_err()
-        ),
-        "safety_weight"
-    );
+    ];
+    for (planner, name) in bad {
+        assert_eq!(
+            param(planner.plan(&map, &query, &mut rng).unwrap_err()),
+            name
+        );
+    }
     for (planner, _) in fixtures::all_planners(0) {
         assert_eq!(
             param(planner.plan(&map, &query, &mut rng).unwrap_err()),
@@ -273,26 +245,12 @@ fn bad_input_is_a_typed_error() {
     }
 }
 
-/// A workspace that is not a grid map: an empty square.
-struct Open;
-impl Workspace for Open {
-    fn bounds(&self) -> Bounds {
-        Bounds::new(Point2::new(0.0, 0.0), Point2::new(20.0, 20.0))
-    }
-    fn is_free(&self, p: Point2) -> bool {
-        self.bounds().contains(p)
-    }
-    fn segment_free(&self, a: Point2, b: Point2) -> bool {
-        self.is_free(a) && self.is_free(b)
-    }
-}
-
 #[test]
 fn grid_planners_refuse_other_workspaces_and_the_others_accept_them() {
     let query = Query::new(Point2::new(1.0, 1.0), Goal::Point(Point2::new(19.0, 19.0)));
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     for (planner, _) in fixtures::all_planners(5_000) {
-        let result = planner.plan(&Open, &query, &mut rng);
+        let result = planner.plan(&OpenSquare(20.0), &query, &mut rng);
         if planner.info().grid_only {
             assert!(matches!(
                 result,
@@ -324,8 +282,7 @@ proptest! {
         fixtures::fill(&mut map, 0, 0, 3, 3, Zone::Free);
         fixtures::fill(&mut map, 21, 21, 24, 24, Zone::Free);
         let query = Query::new(Point2::new(1.5, 1.5), Goal::Point(Point2::new(22.5, 22.5)));
-        for (planner, avoids) in fixtures::all_planners(3_000) {
-            let ws = fixtures::planning_map(&map, avoids);
+        for (planner, ws) in fixtures::planners_on(&map, 3_000) {
             let name = planner.info().name;
             match planner.plan(&ws, &query, &mut ChaCha8Rng::seed_from_u64(seed)) {
                 Ok(plan) => assert_valid(&plan, &ws, &query, name),

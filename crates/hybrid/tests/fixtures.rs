@@ -2,7 +2,11 @@
 
 use envmap::GridMap;
 use hybrid::{HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
-use hyplan_core::{Budget, Planner, Point2, Zone};
+use hyplan_core::{Budget, Planner, Zone};
+
+// The random maps of `sampling`'s tests, with a risk band added below.
+#[path = "../../sampling/tests/random_map.rs"]
+mod random_grid;
 
 /// A fixed seed for deterministic tests.
 pub const SEED_1: u64 = 0x5eed_0001;
@@ -65,6 +69,17 @@ pub fn all_planners(iterations: u64) -> Vec<(Box<dyn Planner>, Avoids)> {
     ]
 }
 
+/// Every planner with `iterations`, each with `map` as it plans on it ([`planning_map`]).
+pub fn planners_on(map: &GridMap, iterations: u64) -> Vec<(Box<dyn Planner>, GridMap)> {
+    all_planners(iterations)
+        .into_iter()
+        .map(|(planner, avoids)| {
+            let ws = planning_map(map, avoids);
+            (planner, ws)
+        })
+        .collect()
+}
+
 /// The map a planner plans on, given the three-zone map.
 pub fn planning_map(map: &GridMap, avoids: Avoids) -> GridMap {
     match avoids {
@@ -76,17 +91,7 @@ pub fn planning_map(map: &GridMap, avoids: Avoids) -> GridMap {
 /// A random `w x h` grid: each cell forbidden with probability `density`, drawn from the
 /// bytes of `cells`, then a one-cell risk band around the obstacles (8-neighbourhood).
 pub fn random_map(w: usize, h: usize, density: f64, cells: &[u8]) -> GridMap {
-    let threshold = (density * 256.0) as u32;
-    let zones: Vec<Zone> = (0..w * h)
-        .map(|k| {
-            if u32::from(cells[k % cells.len()]) < threshold {
-                Zone::Forbidden
-            } else {
-                Zone::Free
-            }
-        })
-        .collect();
-    let mut map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+    let mut map = random_grid::random_map(w, h, density, cells);
     add_band(&mut map, 1);
     map
 }

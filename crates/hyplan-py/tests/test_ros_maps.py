@@ -149,19 +149,8 @@ def svg_cells(svg, meta, shape):
     return cells
 
 
-ROOM = """SimScenario(
-    name: "room",
-    world: (size: (6.0, 4.0), shapes: [
-        Wall(from: (0.0, 0.05), to: (6.0, 0.05), thickness: 0.1),
-        Wall(from: (0.0, 3.95), to: (6.0, 3.95), thickness: 0.1),
-        Wall(from: (0.05, 0.0), to: (0.05, 4.0), thickness: 0.1),
-        Wall(from: (5.95, 0.0), to: (5.95, 4.0), thickness: 0.1),
-        Box(center: (3.0, 2.0), size: (0.6, 0.6)),
-    ]),
-    start: (1.0, 1.0), goal: (5.0, 3.0), known_map: false,
-    time_limit: 300.0,
-)
-"""
+# The room the CLI tests explore (crates/hyplan/tests/sim.rs reads the same file).
+ROOM = ROOT / "crates" / "hyplan" / "tests" / "data" / "room.ron"
 
 
 def check_built_map(out_dir, figure, shape):
@@ -176,10 +165,8 @@ def check_built_map(out_dir, figure, shape):
 
 
 def test_explored_map_is_map_savers_trinary(tmp_path, hyplan_bin):
-    scenario = tmp_path / "room.ron"
-    scenario.write_text(ROOM)
     out_dir = tmp_path / "explore"
-    out = run(hyplan_bin, "explore", scenario, "--eta", "2", "--seed", "4", "--out", out_dir,
+    out = run(hyplan_bin, "explore", ROOM, "--eta", "2", "--seed", "4", "--out", out_dir,
               codes=(0, 1))
     # The final snapshot (largest time) draws the final map.
     snaps = sorted(out_dir.glob("explore-*s.svg"), key=lambda p: float(p.stem[8:-1]))

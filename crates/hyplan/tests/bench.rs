@@ -4,31 +4,30 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn hyplan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hyplan"))
-        .args(args)
-        .output()
-        .expect("the hyplan binary runs")
-}
+use crate::common::{Scratch, hyplan, repo_file, stderr};
+
+const SCRATCH: Scratch = Scratch("hyplan_bench");
 
 fn arena() -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../data/movingai/arena.map")
-        .display()
-        .to_string()
+    repo_file("data/movingai/arena.map")
 }
 
 /// A fresh output directory of this name (tests run in parallel: one name per test).
 fn out_dir(name: &str) -> PathBuf {
-    let p = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("hyplan_bench")
-        .join(name);
+    let p = SCRATCH.path(name);
     let _ = std::fs::remove_dir_all(&p);
     p
 }
 
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
+/// `hyplan bench --experiment FILE --out OUT`.
+fn bench_experiment(file: &str, out: &Path) -> Output {
+    hyplan(&[
+        "bench",
+        "--experiment",
+        file,
+        "--out",
+        out.to_str().unwrap(),
+    ])
 }
 
 fn bench(out: &Path, extra: &[&str]) -> Output {
@@ -49,21 +48,14 @@ fn bench(out: &Path, extra: &[&str]) -> Output {
 
 #[test]
 fn bad_input_exits_2_before_any_run() {
-    let arena = arena();
-    let ron_dir = out_dir("bad-ron");
-    std::fs::create_dir_all(&ron_dir).unwrap();
-    let malformed = ron_dir.join("malformed.ron");
-    std::fs::write(
-        &malformed,
+    let malformed = SCRATCH.file(
+        "bad-ron/malformed.ron",
         "(problems: [ (map: \"a.map\", queries: [] ) ], planners: [\"rrt\"]",
-    )
-    .unwrap();
-    let unknown_field = ron_dir.join("unknown.ron");
-    std::fs::write(
-        &unknown_field,
+    );
+    let unknown_field = SCRATCH.file(
+        "bad-ron/unknown.ron",
         "(problems: [], planners: [\"rrt\"], rusn: 3)",
-    )
-    .unwrap();
+    );
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (
             vec!["--planner", "rrt-connect", "--planner", "rrt-conect"],
@@ -98,19 +90,12 @@ fn bad_input_exits_2_before_any_run() {
     }
     for (file, needle) in [(&malformed, "malformed.ron:1"), (&unknown_field, "rusn")] {
         let out = out_dir("bad-ron-out");
-        let o = hyplan(&[
-            "bench",
-            "--experiment",
-            file.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = bench_experiment(file, &out);
         let err = stderr(&o);
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert!(err.contains(needle), "should name {needle:?}: {err}");
         assert!(!out.exists());
     }
-    let _ = arena;
 }
 
 fn runs_json(out: &Path) -> serde_json::Value {
@@ -174,27 +159,17 @@ fn results_do_not_depend_on_the_thread_count() {
 
 #[test]
 fn experiment_file_runs_several_problems() {
-    let dir = out_dir("ron");
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("exp.ron");
-    std::fs::write(
-        &file,
+    let file = SCRATCH.file(
+        "ron/exp.ron",
         format!(
             "(name: \"arena\", problems: [(map: {:?}, queries: [((1.5, 11.5), (46.5, 46.5)), \
              ((4.5, 4.5), (40.5, 30.5))])], planners: [\"astar\", \"rrt-connect:step=4\"], \
              runs: 3, seed: 9, limits: Some((1.0, 1.0, 2.0)))",
             arena()
         ),
-    )
-    .unwrap();
-    let out = dir.join("out");
-    let o = hyplan(&[
-        "bench",
-        "--experiment",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    );
+    let out = out_dir("ron/out");
+    let o = bench_experiment(&file, &out);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let j = runs_json(&out);
     assert_eq!(j["runs"].as_array().unwrap().len(), 12);

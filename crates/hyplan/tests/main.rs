@@ -1,5 +1,7 @@
 //! Integration tests of the `hyplan` binary, one module per subcommand.
 
+mod common;
+
 mod bench;
 mod map;
 mod plan;

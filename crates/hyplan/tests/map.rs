@@ -1,36 +1,21 @@
 //! `hyplan map`: runs the built binary and checks exit codes, stdout and stderr.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use envmap::{GridMap, Picture};
 use hyplan_core::Point2;
 
-fn hyplan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hyplan"))
-        .args(args)
-        .output()
-        .expect("the hyplan binary runs")
-}
+use crate::common::{
+    Scratch, assert_error, assert_exit, hyplan, json, nav2_counts, repo_file, stderr,
+};
 
-fn tmp(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_map");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+const SCRATCH: Scratch = Scratch("hyplan_map");
 
-fn tmp_file(name: &str, bytes: &[u8]) -> String {
-    let p = tmp(name);
-    std::fs::write(&p, bytes).unwrap();
-    p.display().to_string()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn json(o: &Output) -> serde_json::Value {
-    serde_json::from_slice(&o.stdout).expect("stdout is one JSON object")
+/// `hyplan map FILE --json EXTRA`, which must succeed: its record.
+fn map_json(file: &str, extra: &[&str]) -> serde_json::Value {
+    let o = hyplan(&[&["map", file, "--json"], extra].concat());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    json(&o)
 }
 
 /// A 50 x 40 white picture with two dark boxes, as PNG.
@@ -50,20 +35,9 @@ fn picture() -> String {
     // binary of another reads it made that read fail.
     static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let n = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let p = tmp(&format!("two_boxes_{n}.png"));
+    let p = SCRATCH.path(&format!("two_boxes_{n}.png"));
     envmap::write_picture(&pic, &p).unwrap();
     p.display().to_string()
-}
-
-/// Asserts exit code 2, one `error:` line naming `needle`, no panic.
-fn assert_error(o: &Output, needles: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert!(err.starts_with("error: "), "{err}");
-    assert!(!err.contains("panicked"), "{err}");
-    for n in needles {
-        assert!(err.contains(n), "stderr should mention {n:?}: {err}");
-    }
 }
 
 #[test]
@@ -106,47 +80,44 @@ fn picture_defaults_follow_the_seed_and_summary_is_human() {
     assert!(out.contains("50 x 40 cells"), "{out}");
     assert!(out.contains("obstacles: 2"), "{out}");
     // Default radius 20 cells: the 50 x 40 picture is mostly high-risk.
-    let v = json(&hyplan(&["map", &pic, "--json"]));
+    let v = map_json(&pic, &[]);
     let with_default = v["risk"].as_u64().unwrap();
-    let v20 = json(&hyplan(&["map", &pic, "--json", "--safety-radius", "20"]));
+    let v20 = map_json(&pic, &["--safety-radius", "20"]);
     assert_eq!(with_default, v20["risk"].as_u64().unwrap());
     // --invert makes the background the obstacle.
-    let inv = json(&hyplan(&[
-        "map",
-        &pic,
-        "--json",
-        "--invert",
-        "--safety-radius",
-        "0",
-    ]));
+    let inv = map_json(&pic, &["--invert", "--safety-radius", "0"]);
     assert_eq!(inv["forbidden"], 2000 - 80);
 }
 
-#[test]
-fn rectangles_and_writers() {
-    let pic = picture();
-    let out = tmp("zones.png");
-    let yaml = tmp("zones.yaml");
-    let o = hyplan(&[
-        "map",
-        &pic,
-        "--rectangles",
+/// `hyplan map` on `pic` with a 3-cell band, writing the zone picture to `out` and the ROS
+/// pair to `yaml`, with or without `--rectangles`: its record.
+fn write_zones(pic: &str, out: &Path, yaml: &Path, rectangles: bool) -> serde_json::Value {
+    let mut extra = vec![
         "--safety-radius",
         "3",
         "--out",
         out.to_str().unwrap(),
         "--yaml",
         yaml.to_str().unwrap(),
-        "--json",
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v = json(&o);
+    ];
+    if rectangles {
+        extra.push("--rectangles");
+    }
+    map_json(pic, &extra)
+}
+
+#[test]
+fn rectangles_and_writers() {
+    let pic = picture();
+    let out = SCRATCH.path("zones.png");
+    let yaml = SCRATCH.path("zones.yaml");
+    let v = write_zones(&pic, &out, &yaml, true);
     assert_eq!(v["obstacle_shape"], "rectangles");
     let zones = envmap::read_picture(&out).unwrap();
     assert_eq!((zones.width(), zones.height()), (50, 40));
     assert_eq!(zones.pixel(5, 5), &envmap::RECTANGLE_COLOUR);
     // The ROS pair loads back to the same counts.
-    let back = json(&hyplan(&["map", yaml.to_str().unwrap(), "--json"]));
+    let back = map_json(yaml.to_str().unwrap(), &[]);
     for key in ["free", "risk", "forbidden", "width", "height"] {
         assert_eq!(back[key], v[key], "{key}");
     }
@@ -155,14 +126,9 @@ fn rectangles_and_writers() {
 
 #[test]
 fn repository_data_maps() {
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data");
-    let arena = data.join("movingai/arena.map");
-    let ros = data.join("ros_maps/turtlebot3_world/map.yaml");
-    for p in [&arena, &ros] {
-        assert!(p.exists(), "test data missing: {}", p.display());
-    }
-    let (arena, ros) = (arena.to_str().unwrap(), ros.to_str().unwrap());
-    let v = json(&hyplan(&["map", arena, "--json"]));
+    let arena = repo_file("data/movingai/arena.map");
+    let ros = repo_file("data/ros_maps/turtlebot3_world/map.yaml");
+    let v = map_json(&arena, &[]);
     assert_eq!(
         (v["width"].as_u64(), v["height"].as_u64()),
         (Some(49), Some(49))
@@ -170,22 +136,15 @@ fn repository_data_maps() {
     assert_eq!(v["free"], 2054);
     assert_eq!(v["risk"], 0);
     assert_eq!(v["frame"], "cells_y_down");
-    let v = json(&hyplan(&["map", ros, "--json"]));
+    let v = map_json(&ros, &[]);
     assert_eq!(v["free"], 7939);
     assert_eq!(v["forbidden"], 795 + 138722);
     assert_eq!(v["resolution"], 0.05);
     assert_eq!(v["origin"], serde_json::json!([-10.0, -10.0]));
-    let v = json(&hyplan(&["map", ros, "--json", "--unknown-free"]));
+    let v = map_json(&ros, &["--unknown-free"]);
     assert_eq!(v["forbidden"], 795);
     // 0.1 m = 2 cells of band around the 795 occupied cells.
-    let v = json(&hyplan(&[
-        "map",
-        ros,
-        "--json",
-        "--unknown-free",
-        "--safety-radius",
-        "0.1",
-    ]));
+    let v = map_json(&ros, &["--unknown-free", "--safety-radius", "0.1"]);
     assert!(v["risk"].as_u64().unwrap() > 795);
 }
 
@@ -196,14 +155,14 @@ fn errors_name_the_file_and_exit_2() {
         &hyplan(&["map", "/no/such/map.yaml"]),
         &["/no/such/map.yaml"],
     );
-    let text = tmp_file("not_an_image.png", b"hello");
+    let text = SCRATCH.file("not_an_image.png", b"hello");
     assert_error(
         &hyplan(&["map", &text]),
         &["not_an_image.png", "not a readable image"],
     );
-    let empty = tmp_file("empty.pgm", b"P5\n0 0\n255\n");
+    let empty = SCRATCH.file("empty.pgm", b"P5\n0 0\n255\n");
     assert_error(&hyplan(&["map", &empty]), &["empty.pgm"]);
-    let map = tmp_file(
+    let map = SCRATCH.file(
         "short.map",
         b"type octile\nheight 3\nwidth 2\nmap\n..\n..\n",
     );
@@ -211,16 +170,16 @@ fn errors_name_the_file_and_exit_2() {
         &hyplan(&["map", &map]),
         &["short.map", "2 rows", "height 3"],
     );
-    let map = tmp_file(
+    let map = SCRATCH.file(
         "ragged.map",
         b"type octile\nheight 2\nwidth 2\nmap\n..\n...\n",
     );
     assert_error(&hyplan(&["map", &map]), &["ragged.map:6", "width 2"]);
-    let map = tmp_file("nomap.map", b"type octile\nheight 2\nwidth 2\n");
+    let map = SCRATCH.file("nomap.map", b"type octile\nheight 2\nwidth 2\n");
     assert_error(&hyplan(&["map", &map]), &["nomap.map", "no `map` line"]);
     let good = "image: x.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n\
                 occupied_thresh: 0.65\nfree_thresh: 0.196\n";
-    let y = tmp_file(
+    let y = SCRATCH.file(
         "nores.yaml",
         good.replace("resolution: 0.05\n", "").as_bytes(),
     );
@@ -228,17 +187,17 @@ fn errors_name_the_file_and_exit_2() {
         &hyplan(&["map", &y]),
         &["nores.yaml", "`resolution`", "missing"],
     );
-    let y = tmp_file("negres.yaml", good.replace("0.05", "-0.05").as_bytes());
+    let y = SCRATCH.file("negres.yaml", good.replace("0.05", "-0.05").as_bytes());
     assert_error(
         &hyplan(&["map", &y]),
         &["negres.yaml", "`resolution`", "-0.05"],
     );
-    let y = tmp_file("thresh.yaml", good.replace("0.65", "1.65").as_bytes());
+    let y = SCRATCH.file("thresh.yaml", good.replace("0.65", "1.65").as_bytes());
     assert_error(
         &hyplan(&["map", &y]),
         &["thresh.yaml", "`occupied_thresh`", "1.65"],
     );
-    let y = tmp_file("noimg.yaml", good.as_bytes());
+    let y = SCRATCH.file("noimg.yaml", good.as_bytes());
     assert_error(&hyplan(&["map", &y]), &["x.pgm"]);
     let pic = picture();
     assert_error(
@@ -255,9 +214,9 @@ fn yaml_out_round_trips_through_the_library() {
         .unwrap()
         .with_frame(0.5, Point2::new(1.0, -2.0))
         .unwrap();
-    let yaml = tmp("lib.yaml");
+    let yaml = SCRATCH.path("lib.yaml");
     envmap::write_ros(&map, &yaml).unwrap();
-    let v = json(&hyplan(&["map", yaml.to_str().unwrap(), "--json"]));
+    let v = map_json(yaml.to_str().unwrap(), &[]);
     assert_eq!(
         (
             v["free"].as_u64(),
@@ -274,13 +233,13 @@ fn yaml_out_round_trips_through_the_library() {
 #[test]
 fn maps_above_the_memory_limit_name_size_limit_and_flag() {
     let n = 30_000;
-    let pgm = tmp_file("huge.pgm", format!("P5\n{n} {n}\n255\n").as_bytes());
-    let map = tmp_file(
+    let pgm = SCRATCH.file("huge.pgm", format!("P5\n{n} {n}\n255\n").as_bytes());
+    let map = SCRATCH.file(
         "huge.map",
         format!("type octile\nheight {n}\nwidth {n}\nmap\n").as_bytes(),
     );
-    tmp_file("huge_img.pgm", format!("P5\n{n} {n}\n255\n").as_bytes());
-    let yaml = tmp_file(
+    SCRATCH.file("huge_img.pgm", format!("P5\n{n} {n}\n255\n").as_bytes());
+    let yaml = SCRATCH.file(
         "huge.yaml",
         b"image: huge_img.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n\
           occupied_thresh: 0.65\nfree_thresh: 0.196\n",
@@ -309,12 +268,7 @@ fn maps_above_the_memory_limit_name_size_limit_and_flag() {
     }
     // The flag lowers the limit too.
     let o = hyplan(&["map", &picture(), "--max-cells", "100"]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("50 x 40 = 2000 cells"),
-        "{}",
-        stderr(&o)
-    );
+    assert_exit(&o, 2, &["50 x 40 = 2000 cells"]);
 }
 
 /// `--out X.pgm` and `--yaml` write binary PGM (`P5`, what Pillow and map_server read),
@@ -326,25 +280,9 @@ fn maps_above_the_memory_limit_name_size_limit_and_flag() {
 fn pgm_outputs_are_p5_and_read_back_by_nav2s_rule() {
     let pic = picture();
     for rectangles in [false, true] {
-        let out = tmp(&format!("zones_{rectangles}.pgm"));
-        let yaml = tmp(&format!("zones_ros_{rectangles}.yaml"));
-        let mut args = vec![
-            "map",
-            &pic,
-            "--safety-radius",
-            "3",
-            "--out",
-            out.to_str().unwrap(),
-            "--yaml",
-            yaml.to_str().unwrap(),
-            "--json",
-        ];
-        if rectangles {
-            args.push("--rectangles");
-        }
-        let o = hyplan(&args);
-        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-        let v = json(&o);
+        let out = SCRATCH.path(&format!("zones_{rectangles}.pgm"));
+        let yaml = SCRATCH.path(&format!("zones_ros_{rectangles}.yaml"));
+        let v = write_zones(&pic, &out, &yaml, rectangles);
         let want = [&v["free"], &v["forbidden"], &v["risk"]].map(|x| x.as_u64().unwrap() as usize);
         assert!(want.iter().all(|&n| n > 0), "{want:?}");
         let yaml_text = std::fs::read_to_string(&yaml).unwrap();
@@ -354,17 +292,7 @@ fn pgm_outputs_are_p5_and_read_back_by_nav2s_rule() {
             assert!(bytes.starts_with(b"P5\n"), "{}: not P5", file.display());
             let grey = envmap::read_picture(&file).unwrap();
             assert_eq!((grey.width(), grey.height(), grey.channels()), (50, 40, 1));
-            let mut n = [0usize; 3];
-            for &g in grey.data() {
-                let occ = (255.0 - f64::from(g)) / 255.0;
-                n[if occ < 0.196 {
-                    0
-                } else if occ > 0.65 {
-                    1
-                } else {
-                    2
-                }] += 1;
-            }
+            let n = nav2_counts(grey.data());
             assert_eq!(n, want, "{}: [free, occupied, unknown]", file.display());
         }
     }

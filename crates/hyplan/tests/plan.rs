@@ -1,25 +1,37 @@
 //! `hyplan plan`: runs the built binary on small MovingAI maps and checks exit codes and
 //! the CSV / JSON / SVG outputs.
 
-use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn hyplan_plan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hyplan"))
-        .arg("plan")
-        .args(args)
-        .output()
-        .expect("the hyplan binary runs")
+use crate::common::{Scratch, assert_error, flags, hyplan, json, repo_file, stderr, stdout};
+
+const SCRATCH: Scratch = Scratch("hyplan_plan");
+
+/// `hyplan plan ARGS`.
+fn plan(args: &[&str]) -> Output {
+    hyplan(&[&["plan"], args].concat())
 }
 
-fn tmp_path(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_plan");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+/// The query of the tests: `--map MAP` from (2.5, 2.5) to (17.5, 2.5), across the wall of
+/// [`walled`].
+fn across(map: &str) -> Vec<&str> {
+    vec!["--map", map, "--start", "2.5,2.5", "--goal", "17.5,2.5"]
+}
+
+/// `hyplan plan` on [`across`] with the flags of `line`.
+fn plan_across(map: &str, line: &str) -> Output {
+    plan(&[across(map), flags(line)].concat())
+}
+
+/// [`plan_across`] a fresh [`walled`] map named `tag`, which must succeed.
+fn plan_walled(tag: &str, line: &str) -> Output {
+    let o = plan_across(&walled(tag), line);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    o
 }
 
 /// A MovingAI `.map` from rows drawn top row first (`.` free, `@` blocked).
-fn movingai(name: &str, rows: &[&str]) -> String {
+fn movingai(name: &str, rows: &[String]) -> String {
     let mut text = format!(
         "type octile\nheight {}\nwidth {}\nmap\n",
         rows.len(),
@@ -29,57 +41,46 @@ fn movingai(name: &str, rows: &[&str]) -> String {
         text.push_str(r);
         text.push('\n');
     }
-    let p = tmp_path(name);
-    std::fs::write(&p, text).unwrap();
-    p.display().to_string()
+    SCRATCH.file(name, text)
 }
 
-/// 20 x 10 with a wall in the middle that leaves a gap at the bottom. Row 0 is the top.
-/// `tag` names the file: tests run in parallel, each writes its own.
+/// 20 x 10 with a wall at x = 10 over the top `wall_rows` rows. Row 0 is the top.
+fn wall_map(name: &str, wall_rows: usize) -> String {
+    let rows: Vec<String> = (0..10)
+        .map(|y| {
+            (0..20)
+                .map(|x| if x == 10 && y < wall_rows { '@' } else { '.' })
+                .collect()
+        })
+        .collect();
+    movingai(name, &rows)
+}
+
+/// The wall leaves a gap in the bottom three rows. `tag` names the file: tests run in
+/// parallel, each writes its own.
 fn walled(tag: &str) -> String {
-    let mut rows = Vec::new();
-    for y in 0..10 {
-        let mut row = String::new();
-        for x in 0..20 {
-            row.push(if x == 10 && y < 7 { '@' } else { '.' });
-        }
-        rows.push(row);
-    }
-    let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
-    movingai(&format!("walled_{tag}.map"), &refs)
+    wall_map(&format!("walled_{tag}.map"), 7)
 }
 
 /// The same with the gap closed: the right half is unreachable from the left.
 fn closed(tag: &str) -> String {
-    let mut rows = Vec::new();
-    for _ in 0..10 {
-        let mut row = String::new();
-        for x in 0..20 {
-            row.push(if x == 10 { '@' } else { '.' });
-        }
-        rows.push(row);
-    }
-    let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
-    movingai(&format!("closed_{tag}.map"), &refs)
+    wall_map(&format!("closed_{tag}.map"), 10)
 }
 
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
+/// A JSON array of `[x, y]` points.
+fn points(v: &serde_json::Value) -> Vec<(f64, f64)> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+        .collect()
 }
 
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-/// Exit code 2, one `error:` line containing every needle, no panic.
-fn assert_error(o: &Output, needles: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert!(!err.contains("panicked"), "{err}");
-    assert!(err.contains("error"), "{err}");
-    for n in needles {
-        assert!(err.contains(n), "{n:?} not in {err:?}");
-    }
+/// The lengths of the segments between consecutive points.
+fn segments(points: &[(f64, f64)]) -> impl Iterator<Item = f64> + '_ {
+    points
+        .windows(2)
+        .map(|w| (w[0].0 - w[1].0).hypot(w[0].1 - w[1].1))
 }
 
 const PLANNERS: [&str; 7] = [
@@ -96,85 +97,34 @@ const PLANNERS: [&str; 7] = [
 fn every_planner_finds_a_path_and_prints_json() {
     let map = walled("every_planner_finds_a_path_and_prints_json");
     for planner in PLANNERS {
-        let o = hyplan_plan(&[
-            "--map",
-            &map,
-            "--start",
-            "2.5,2.5",
-            "--goal",
-            "17.5,2.5",
-            "--planner",
-            planner,
-            "--step",
-            "1.5",
-            "--seed",
-            "3",
-            "--json",
-        ]);
+        let line = format!("--planner {planner} --step 1.5 --seed 3 --json");
+        let o = plan_across(&map, &line);
         assert_eq!(o.status.code(), Some(0), "{planner}: {}", stderr(&o));
-        let out = stdout(&o);
-        let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        let v = json(&o);
         assert_eq!(v["planner"], planner);
         assert_eq!(v["run"], 0);
         assert_eq!(v["solved"], true);
         assert!(v["seed"].is_u64() && v["time_s"].is_f64() && v["nodes"].is_u64());
-        let path = v["path"].as_array().unwrap();
+        let path = points(&v["path"]);
         // The input frame: y counted from the top row; the path starts and ends exactly.
-        assert_eq!(path[0], serde_json::json!([2.5, 2.5]));
-        assert_eq!(path[path.len() - 1], serde_json::json!([17.5, 2.5]));
+        assert_eq!(path[0], (2.5, 2.5));
+        assert_eq!(path[path.len() - 1], (17.5, 2.5));
         // It must go through the gap (rows 7..10 from the top) to cross x = 10.
-        assert!(path.iter().any(|p| p[1].as_f64().unwrap() > 7.0));
-        let length: f64 = path
-            .windows(2)
-            .map(|w| {
-                let (a, b) = (&w[0], &w[1]);
-                (a[0].as_f64().unwrap() - b[0].as_f64().unwrap())
-                    .hypot(a[1].as_f64().unwrap() - b[1].as_f64().unwrap())
-            })
-            .sum();
+        assert!(path.iter().any(|p| p.1 > 7.0));
+        let length: f64 = segments(&path).sum();
         assert!((length - v["length"].as_f64().unwrap()).abs() < 1e-9);
         // Same seed, same path.
-        let again = hyplan_plan(&[
-            "--map",
-            &map,
-            "--start",
-            "2.5,2.5",
-            "--goal",
-            "17.5,2.5",
-            "--planner",
-            planner,
-            "--step",
-            "1.5",
-            "--seed",
-            "3",
-            "--json",
-        ]);
-        let w: serde_json::Value = serde_json::from_str(stdout(&again).trim()).unwrap();
-        assert_eq!(v["path"], w["path"], "{planner}: same seed, same path");
+        let again = json(&plan_across(&map, &line));
+        assert_eq!(v["path"], again["path"], "{planner}: same seed, same path");
     }
 }
 
 #[test]
 fn csv_has_the_ompl_peer_columns_and_one_row_per_run() {
-    let map = walled("csv_has_the_ompl_peer_columns_and_one_row_per_run");
-    let o = hyplan_plan(&[
-        "--map",
-        &map,
-        "--start",
-        "2.5,2.5",
-        "--goal",
-        "17.5,2.5",
-        "--planner",
-        "rrt-connect",
-        "--step",
-        "2",
-        "--goal-radius",
-        "1",
-        "--runs",
-        "4",
-        "--csv",
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = plan_walled(
+        "csv_has_the_ompl_peer_columns_and_one_row_per_run",
+        "--planner rrt-connect --step 2 --goal-radius 1 --runs 4 --csv",
+    );
     let out = stdout(&o);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(
@@ -195,12 +145,10 @@ fn csv_has_the_ompl_peer_columns_and_one_row_per_run() {
 
 #[test]
 fn runs_get_distinct_derived_seeds() {
-    let map = walled("runs_get_distinct_derived_seeds");
-    let o = hyplan_plan(&[
-        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--runs", "3", "--seed", "9",
-        "--json",
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = plan_walled(
+        "runs_get_distinct_derived_seeds",
+        "--runs 3 --seed 9 --json",
+    );
     let seeds: Vec<u64> = stdout(&o)
         .lines()
         .map(|l| {
@@ -213,24 +161,22 @@ fn runs_get_distinct_derived_seeds() {
     assert!(seeds[0] != seeds[1] && seeds[1] != seeds[2] && seeds[0] != seeds[2]);
 }
 
-#[test]
-fn svg_draws_map_tree_and_path() {
-    let map = walled("svg_draws_map_tree_and_path");
-    let svg = tmp_path("walled.svg");
-    let o = hyplan_plan(&[
-        "--map",
-        &map,
-        "--start",
-        "2.5,2.5",
-        "--goal",
-        "17.5,2.5",
-        "--planner",
-        "bi-rrt",
-        "--svg",
-        svg.to_str().unwrap(),
-    ]);
+/// [`plan_across`] a fresh [`walled`] map named `tag`, with `line`'s flags and `--svg`,
+/// which must succeed: its output and the SVG's text.
+fn plan_svg(tag: &str, line: &str) -> (Output, String) {
+    let map = walled(tag);
+    let svg = SCRATCH.path(&format!("{tag}.svg"));
+    let mut args = [across(&map), flags(line)].concat();
+    args.extend(["--svg", svg.to_str().unwrap()]);
+    let o = plan(&args);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let text = std::fs::read_to_string(&svg).unwrap();
+    (o, text)
+}
+
+#[test]
+fn svg_draws_map_tree_and_path() {
+    let (o, text) = plan_svg("svg_draws_map_tree_and_path", "--planner bi-rrt");
     assert!(text.contains("<svg"));
     assert!(text.matches("<path").count() >= 3, "two trees and the path");
     assert!(text.contains("data:image/png;base64,"), "the zone layer");
@@ -241,30 +187,10 @@ fn svg_draws_map_tree_and_path() {
 /// smoothed curve is drawn and reported with its transfer time.
 #[test]
 fn svg_zones_are_seamless_and_the_curve_is_drawn() {
-    let map = walled("svg_zones_are_seamless");
-    let svg = tmp_path("walled_curve.svg");
-    let o = hyplan_plan(&[
-        "--map",
-        &map,
-        "--start",
-        "2.5,2.5",
-        "--goal",
-        "17.5,2.5",
-        "--planner",
-        "rrt-connect",
-        "--smooth",
-        "pchip",
-        "--vmax",
-        "1",
-        "--wmax",
-        "1",
-        "--amax",
-        "1",
-        "--svg",
-        svg.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let text = std::fs::read_to_string(&svg).unwrap();
+    let (o, text) = plan_svg(
+        "svg_zones_are_seamless",
+        "--planner rrt-connect --smooth pchip --vmax 1 --wmax 1 --amax 1",
+    );
     // One raster for the zones, no cell rectangles.
     assert_eq!(text.matches("<image").count(), 1, "{text}");
     assert_eq!(text.matches("<rect").count(), 0, "{text}");
@@ -284,30 +210,20 @@ fn svg_zones_are_seamless_and_the_curve_is_drawn() {
 #[test]
 fn planner_pairs_set_fields_and_bad_keys_are_named() {
     let map = walled("planner_pairs");
-    let common = [
-        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--json",
-    ];
-    let o = hyplan_plan(
-        &[
-            &common[..],
-            &["--planner", "rrt:step=2.5,budget.max_iterations=50000"],
-        ]
-        .concat(),
+    let o = plan_across(
+        &map,
+        "--json --planner rrt:step=2.5,budget.max_iterations=50000",
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let line: serde_json::Value = serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
     assert_eq!(line["planner"], "rrt");
     // Steps of 2.5 cells: no path segment is longer.
-    let path = line["path"].as_array().unwrap();
-    for w in path.windows(2) {
-        let d = ((w[1][0].as_f64().unwrap() - w[0][0].as_f64().unwrap()).powi(2)
-            + (w[1][1].as_f64().unwrap() - w[0][1].as_f64().unwrap()).powi(2))
-        .sqrt();
+    for d in segments(&points(&line["path"])) {
         assert!(d <= 2.5 + 1e-9, "segment {d}");
     }
-    let o = hyplan_plan(&[&common[..], &["--planner", "rrt:stepp=2"]].concat());
+    let o = plan_across(&map, "--json --planner rrt:stepp=2");
     assert_error(&o, &["--planner", "stepp", "goal_bias"]);
-    let o = hyplan_plan(&[&common[..], &["--planner", "rrt-turbo"]].concat());
+    let o = plan_across(&map, "--json --planner rrt-turbo");
     assert_error(&o, &["rrt-turbo", "ga-pchip"]);
 }
 
@@ -315,35 +231,14 @@ fn planner_pairs_set_fields_and_bad_keys_are_named() {
 fn unreachable_goal_is_no_path_with_exit_1() {
     let map = closed("unreachable_goal_is_no_path_with_exit_1");
     let started = std::time::Instant::now();
-    let o = hyplan_plan(&[
-        "--map",
-        &map,
-        "--start",
-        "2.5,2.5",
-        "--goal",
-        "17.5,2.5",
-        "--max-iter",
-        "20000",
-    ]);
+    let o = plan_across(&map, "--max-iter 20000");
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(
         stdout(&o).contains("no path: an obstacle wall separates start and goal"),
         "{}",
         stdout(&o)
     );
-    let csv = hyplan_plan(&[
-        "--map",
-        &map,
-        "--start",
-        "2.5,2.5",
-        "--goal",
-        "17.5,2.5",
-        "--planner",
-        "rrt-connect",
-        "--time-limit",
-        "0.2",
-        "--csv",
-    ]);
+    let csv = plan_across(&map, "--planner rrt-connect --time-limit 0.2 --csv");
     assert_eq!(csv.status.code(), Some(1));
     let out = stdout(&csv);
     let row: Vec<&str> = out.lines().nth(1).unwrap().split(',').collect();
@@ -367,7 +262,7 @@ fn bad_input_is_exit_2_with_a_message() {
             args.extend(["--goal", "17.5,2.5"]);
         }
         args.extend_from_slice(extra);
-        hyplan_plan(&args)
+        plan(&args)
     };
     let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
         (
@@ -402,7 +297,7 @@ fn bad_input_is_exit_2_with_a_message() {
         let o = base(&extra);
         assert_error(&o, &needles);
     }
-    let missing = hyplan_plan(&[
+    let missing = plan(&[
         "--map",
         "/nonexistent/room.png",
         "--start",
@@ -422,28 +317,16 @@ fn the_papers_hybrids_plan_from_the_command_line() {
         "hybrid-rrt-astar",
         "safe-rrt-star",
     ] {
-        let o = hyplan_plan(&[
-            "--map",
+        let o = plan_across(
             &map,
-            "--start",
-            "2.5,2.5",
-            "--goal",
-            "17.5,2.5",
-            "--goal-radius",
-            "1",
-            "--planner",
-            planner,
-            "--step",
-            "1.5",
-            "--json",
-        ]);
+            &format!("--goal-radius 1 --planner {planner} --step 1.5 --json"),
+        );
         assert_eq!(o.status.code(), Some(0), "{planner}: {}", stderr(&o));
-        let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        let v = json(&o);
         assert_eq!(v["planner"], planner);
-        let path = v["path"].as_array().unwrap();
-        assert_eq!(path[0], serde_json::json!([2.5, 2.5]), "{planner}");
-        let last = &path[path.len() - 1];
-        let (x, y) = (last[0].as_f64().unwrap(), last[1].as_f64().unwrap());
+        let path = points(&v["path"]);
+        assert_eq!(path[0], (2.5, 2.5), "{planner}");
+        let (x, y) = path[path.len() - 1];
         assert!(
             (x - 17.5).hypot(y - 2.5) <= 1.0 + 1e-9,
             "{planner} ends at {x},{y}"
@@ -455,27 +338,12 @@ fn the_papers_hybrids_plan_from_the_command_line() {
 fn smoothing_adds_the_checked_curve_turns_and_transfer_time() {
     let map = walled("smoothing_adds_the_checked_curve_turns_and_transfer_time");
     let run = |smooth: &str| {
-        let o = hyplan_plan(&[
-            "--map",
+        let o = plan_across(
             &map,
-            "--start",
-            "2.5,2.5",
-            "--goal",
-            "17.5,2.5",
-            "--planner",
-            "astar",
-            "--smooth",
-            smooth,
-            "--vmax",
-            "1",
-            "--wmax",
-            "1",
-            "--amax",
-            "0.5",
-            "--json",
-        ]);
+            &format!("--planner astar --smooth {smooth} --vmax 1 --wmax 1 --amax 0.5 --json"),
+        );
         assert_eq!(o.status.code(), Some(0), "{smooth}: {}", stderr(&o));
-        serde_json::from_str::<serde_json::Value>(stdout(&o).trim()).unwrap()
+        json(&o)
     };
     let raw = run("none");
     assert!(raw.get("smoothed").is_none());
@@ -484,21 +352,15 @@ fn smoothing_adds_the_checked_curve_turns_and_transfer_time() {
     assert!(raw_time >= raw["length"].as_f64().unwrap());
     for smooth in ["prune", "pchip", "bspline"] {
         let v = run(smooth);
-        let curve = v["smoothed"].as_array().unwrap();
-        assert_eq!(curve[0], serde_json::json!([2.5, 2.5]), "{smooth}");
-        assert_eq!(
-            curve[curve.len() - 1],
-            serde_json::json!([17.5, 2.5]),
-            "{smooth}"
-        );
+        let curve = points(&v["smoothed"]);
+        assert_eq!(curve[0], (2.5, 2.5), "{smooth}");
+        assert_eq!(curve[curve.len() - 1], (17.5, 2.5), "{smooth}");
         // At most a quarter cell apart, and never inside the wall (x = 10, rows 0..7).
-        for w in curve.windows(2) {
-            let (ax, ay) = (w[0][0].as_f64().unwrap(), w[0][1].as_f64().unwrap());
-            let (bx, by) = (w[1][0].as_f64().unwrap(), w[1][1].as_f64().unwrap());
-            assert!((ax - bx).hypot(ay - by) <= 0.25 + 1e-9, "{smooth}");
+        assert!(segments(&curve).all(|d| d <= 0.25 + 1e-9), "{smooth}");
+        for &(x, y) in &curve {
             assert!(
-                !((10.0..11.0).contains(&ax) && ay < 7.0),
-                "{smooth}: ({ax}, {ay}) in the wall"
+                !((10.0..11.0).contains(&x) && y < 7.0),
+                "{smooth}: ({x}, {y}) in the wall"
             );
         }
         assert!(
@@ -511,13 +373,9 @@ fn smoothing_adds_the_checked_curve_turns_and_transfer_time() {
         );
     }
     // Limits come as a set of three.
-    let o = hyplan_plan(&[
-        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--vmax", "1",
-    ]);
+    let o = plan_across(&map, "--vmax 1");
     assert_eq!(o.status.code(), Some(2));
-    let o = hyplan_plan(&[
-        "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5", "--smooth", "wiggly",
-    ]);
+    let o = plan_across(&map, "--smooth wiggly");
     assert_eq!(o.status.code(), Some(2));
 }
 
@@ -526,9 +384,8 @@ fn a_closed_pipe_ends_quietly() {
     use std::process::Stdio;
     let map = walled("a_closed_pipe_ends_quietly");
     let mut child = Command::new(env!("CARGO_BIN_EXE_hyplan"))
-        .args([
-            "plan", "--map", &map, "--start", "2.5,2.5", "--goal", "17.5,2.5",
-        ])
+        .arg("plan")
+        .args(across(&map))
         .args(["--runs", "2000", "--csv"])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -565,7 +422,7 @@ fn floor_plan_picture(name: &str, side: usize) -> (String, String, String) {
             }
         }
     }
-    let path = tmp_path(name);
+    let path = SCRATCH.path(name);
     envmap::write_picture(&envmap::Picture::grey(w, h, data).unwrap(), &path).unwrap();
     let xy = |p: hyplan_core::Point2| format!("{},{}", p.x, h as f64 - p.y);
     (path.display().to_string(), xy(g.start), xy(g.goal))
@@ -579,12 +436,9 @@ fn floor_plan_picture(name: &str, side: usize) -> (String, String, String) {
 #[test]
 fn every_registry_planner_solves_a_floor_plan_and_the_room_at_its_defaults() {
     let (plan_map, start, goal) = floor_plan_picture("floor_plan_1000.png", 1000);
-    let room = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../scenarios/maps/room_960x640.png")
-        .display()
-        .to_string();
+    let room = repo_file("scenarios/maps/room_960x640.png");
     for name in harness::PlannerConfig::names() {
-        let o = hyplan_plan(&[
+        let o = plan(&[
             "--map",
             &plan_map,
             "--start",
@@ -610,7 +464,7 @@ fn every_registry_planner_solves_a_floor_plan_and_the_room_at_its_defaults() {
                 stderr(&o)
             );
         }
-        let o = hyplan_plan(&[
+        let o = plan(&[
             "--map",
             &room,
             "--start",
@@ -635,21 +489,9 @@ fn every_registry_planner_solves_a_floor_plan_and_the_room_at_its_defaults() {
 #[test]
 fn a_spent_budget_names_itself_and_the_flag() {
     let map = walled("a_spent_budget_names_itself_and_the_flag");
-    let o = hyplan_plan(&[
-        "--map",
-        &map,
-        "--start",
-        "2.5,2.5",
-        "--goal",
-        "17.5,2.5",
-        "--planner",
-        "astar",
-        "--max-iter",
-        "3",
-        "--json",
-    ]);
+    let o = plan_across(&map, "--planner astar --max-iter 3 --json");
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    let v: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    let v = json(&o);
     assert_eq!(v["no_path"]["kind"], "budget");
     assert_eq!(v["no_path"]["max_iterations"], 3);
     let msg = v["no_path"]["message"].as_str().unwrap();

@@ -1,48 +1,26 @@
 //! `hyplan scen`: MovingAI scenario files through the built binary.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn hyplan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hyplan"))
-        .args(args)
-        .output()
-        .expect("the hyplan binary runs")
-}
+use crate::common::{Scratch, assert_exit, hyplan, repo_file, stderr, stdout};
 
-/// A file of the repository's `data` folder; a missing one fails the test with its path.
-fn data(rel: &str) -> String {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../data")
-        .join(rel);
-    assert!(p.exists(), "test data missing: {}", p.display());
-    p.display().to_string()
-}
+const SCRATCH: Scratch = Scratch("hyplan_scen");
 
-fn tmp_file(name: &str, text: &str) -> String {
-    // Each test writes under its own names: tests run in parallel.
-    let p = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("hyplan_scen")
-        .join(name);
-    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
-    std::fs::write(&p, text).unwrap();
-    p.display().to_string()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
+/// `hyplan scen --map MAP --scen SCEN EXTRA`.
+fn scen(map: &str, scen: &str, extra: &[&str]) -> Output {
+    hyplan(&[&["scen", "--map", map, "--scen", scen], extra].concat())
 }
 
 const TINY_MAP: &str = "type octile\nheight 4\nwidth 4\nmap\n.@..\n....\n..@.\n....\n";
 
 #[test]
 fn arena_all_scenarios_match() {
-    let arena = data("movingai/arena.map");
-    let scen = data("movingai/arena.map.scen");
+    let arena = repo_file("data/movingai/arena.map");
+    let arena_scen = repo_file("data/movingai/arena.map.scen");
     for algo in ["astar", "dijkstra"] {
-        let o = hyplan(&["scen", "--map", &arena, "--scen", &scen, "--algo", algo]);
+        let o = scen(&arena, &arena_scen, &["--algo", algo]);
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-        let out = String::from_utf8_lossy(&o.stdout).into_owned();
+        let out = stdout(&o);
         let mut lines = out.lines();
         assert_eq!(lines.next(), Some("id,expected,cost,time_us,expanded"));
         let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
@@ -68,17 +46,13 @@ fn arena_all_scenarios_match() {
 
 #[test]
 fn limit_takes_the_first_scenarios() {
-    let o = hyplan(&[
-        "scen",
-        "--map",
-        &data("generated/tiny.map"),
-        "--scen",
-        &data("generated/tiny.scen"),
-        "--limit",
-        "2",
-    ]);
+    let o = scen(
+        &repo_file("data/generated/tiny.map"),
+        &repo_file("data/generated/tiny.scen"),
+        &["--limit", "2"],
+    );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    let out = stdout(&o);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 3, "{out}");
     assert_eq!(lines[0], "id,expected,cost,time_us,expanded");
@@ -89,11 +63,11 @@ fn limit_takes_the_first_scenarios() {
 
 /// Runs `hyplan scen` on the tiny map with one scenario line; returns (exit code, stderr).
 fn bad(line: &str) -> (Option<i32>, String, String) {
-    let map = tmp_file("tiny.map", TINY_MAP);
-    let scen = tmp_file("bad.scen", &format!("version 1\n{line}\n"));
-    let o = hyplan(&["scen", "--map", &map, "--scen", &scen]);
+    let map = SCRATCH.file("tiny.map", TINY_MAP);
+    let file = SCRATCH.file("bad.scen", format!("version 1\n{line}\n"));
+    let o = scen(&map, &file, &[]);
     assert!(o.stdout.is_empty(), "no CSV on bad input");
-    (o.status.code(), stderr(&o), scen)
+    (o.status.code(), stderr(&o), file)
 }
 
 #[test]
@@ -136,17 +110,15 @@ fn bad_input_names_file_and_line_and_exits_2() {
 
 #[test]
 fn dir_prefix_in_map_column_is_ignored_and_missing_files_are_errors() {
-    let map = tmp_file("dir/tiny.map", TINY_MAP);
-    let scen = tmp_file(
+    let map = SCRATCH.file("dir/tiny.map", TINY_MAP);
+    let file = SCRATCH.file(
         "dir/dir.scen",
         "version 1\n0\tmaps/dao/tiny.map\t4\t4\t0\t0\t1\t1\t2\n",
     );
-    let o = hyplan(&["scen", "--map", &map, "--scen", &scen]);
+    let o = scen(&map, &file, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let o = hyplan(&["scen", "--map", &map, "--scen", "/nonexistent/x.scen"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("/nonexistent/x.scen"));
-    let o = hyplan(&["scen", "--map", "/nonexistent/m.map", "--scen", &scen]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("/nonexistent/m.map"));
+    let o = scen(&map, "/nonexistent/x.scen", &[]);
+    assert_exit(&o, 2, &["/nonexistent/x.scen"]);
+    let o = scen("/nonexistent/m.map", &file, &[]);
+    assert_exit(&o, 2, &["/nonexistent/m.map"]);
 }

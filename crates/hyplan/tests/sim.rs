@@ -1,27 +1,10 @@
 //! `hyplan sim`: scenario files through the built binary.
 
 use std::path::Path;
-use std::process::{Command, Output};
 
-fn hyplan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hyplan"))
-        .args(args)
-        .output()
-        .expect("the hyplan binary runs")
-}
+use crate::common::{Scratch, assert_exit, hyplan, nav2_counts, stderr, stdout};
 
-fn tmp_file(name: &str, text: &str) -> String {
-    let p = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("hyplan_sim")
-        .join(name);
-    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
-    std::fs::write(&p, text).unwrap();
-    p.display().to_string()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+const SCRATCH: Scratch = Scratch("hyplan_sim");
 
 /// A 6 m x 3 m hall with a box in the middle and a person crossing.
 fn hall(extra_world: &str, extra: &str, start: &str) -> String {
@@ -38,11 +21,11 @@ fn hall(extra_world: &str, extra: &str, start: &str) -> String {
 
 #[test]
 fn reaches_the_goal_and_writes_outputs() {
-    let f = tmp_file("ok.ron", &hall("", "", "(0.5, 1.5)"));
-    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_sim/out");
+    let f = SCRATCH.file("ok.ron", hall("", "", "(0.5, 1.5)"));
+    let out = SCRATCH.path("out");
     let o = hyplan(&["sim", &f, "--seed", "3", "--out", out.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let text = String::from_utf8_lossy(&o.stdout);
+    let text = stdout(&o);
     assert!(text.contains("goal reached"), "{text}");
     assert!(text.contains("0 at fault"), "{text}");
     for f in [
@@ -73,23 +56,22 @@ fn reaches_the_goal_and_writes_outputs() {
 
 #[test]
 fn other_planners_by_name() {
-    let f = tmp_file("astar.ron", &hall("", "", "(0.5, 1.5)"));
+    let f = SCRATCH.file("astar.ron", hall("", "", "(0.5, 1.5)"));
     let o = hyplan(&["sim", &f, "--planner", "astar"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    assert!(String::from_utf8_lossy(&o.stdout).contains("planner astar"));
+    assert!(stdout(&o).contains("planner astar"));
     let o = hyplan(&["sim", &f, "--planner", "rrt-connect", "--seed", "1"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let o = hyplan(&["sim", &f, "--planner", "no-such-planner"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("no-such-planner"), "{}", stderr(&o));
+    assert_exit(&o, 2, &["no-such-planner"]);
 }
 
 #[test]
 fn unreachable_goal_exits_1() {
     // A wall across the hall: no way through.
-    let f = tmp_file(
+    let f = SCRATCH.file(
         "walled.ron",
-        &hall(
+        hall(
             ", Wall(from: (2.0, 0.0), to: (2.0, 3.0), thickness: 0.2)",
             "\n    navigation: (max_failures: 2, retry_period: 0.5),",
             "(0.5, 1.5)",
@@ -97,7 +79,7 @@ fn unreachable_goal_exits_1() {
     );
     let o = hyplan(&["sim", &f]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    assert!(String::from_utf8_lossy(&o.stdout).contains("not reached"));
+    assert!(stdout(&o).contains("not reached"));
 }
 
 /// Each bad scenario, and what the message must name (file, field, value).
@@ -146,7 +128,7 @@ fn bad_scenarios_exit_2_naming_field_and_value() {
         ),
     ];
     for (name, text, needles) in cases {
-        let f = tmp_file(name, &text);
+        let f = SCRATCH.file(name, text);
         let o = hyplan(&["sim", &f]);
         assert_eq!(o.status.code(), Some(2), "{name}: {}", stderr(&o));
         let err = stderr(&o);
@@ -155,32 +137,21 @@ fn bad_scenarios_exit_2_naming_field_and_value() {
         }
     }
     let o = hyplan(&["sim", "/no/such/file.ron"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("/no/such/file.ron"));
+    assert_exit(&o, 2, &["/no/such/file.ron"]);
 }
 
-/// A 6 m x 4 m room with a box: small enough to explore in a few seconds.
+/// A 6 m x 4 m room with a box, small enough to explore in a few seconds, with `extra`
+/// fields. The Python tests of the written maps explore the same room.
 fn room(extra: &str) -> String {
-    format!(
-        r#"SimScenario(
-    name: "room",
-    world: (size: (6.0, 4.0), shapes: [
-        Wall(from: (0.0, 0.05), to: (6.0, 0.05), thickness: 0.1),
-        Wall(from: (0.0, 3.95), to: (6.0, 3.95), thickness: 0.1),
-        Wall(from: (0.05, 0.0), to: (0.05, 4.0), thickness: 0.1),
-        Wall(from: (5.95, 0.0), to: (5.95, 4.0), thickness: 0.1),
-        Box(center: (3.0, 2.0), size: (0.6, 0.6)),
-    ]),
-    start: (1.0, 1.0), goal: (5.0, 3.0), known_map: false,
-    time_limit: 300.0,{extra}
-)"#
-    )
+    let text = include_str!("data/room.ron");
+    let body = text.trim_end().strip_suffix(')').unwrap().trim_end();
+    format!("{body}{extra}\n)")
 }
 
 #[test]
 fn explore_writes_coverage_map_and_figures() {
-    let f = tmp_file("room.ron", &room(""));
-    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hyplan_sim/explore");
+    let f = SCRATCH.file("room.ron", room(""));
+    let out = SCRATCH.path("explore");
     for detector in ["both", "frontier"] {
         let o = hyplan(&[
             "explore",
@@ -194,7 +165,7 @@ fn explore_writes_coverage_map_and_figures() {
             "--out",
             out.to_str().unwrap(),
         ]);
-        let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+        let stdout = stdout(&o);
         assert_eq!(
             o.status.code(),
             Some(0),
@@ -241,7 +212,7 @@ fn explore_writes_coverage_map_and_figures() {
 /// The animation decodes frame by frame (palette expanded to RGB, as a viewer shows it)
 /// into the five colours of the figure: the last frame has free, occupied and unknown
 /// cells, the track and the robot.
-fn check_animation(file: &std::path::Path) {
+fn check_animation(file: &Path) {
     let mut decoder =
         png::Decoder::new(std::io::BufReader::new(std::fs::File::open(file).unwrap()));
     decoder.set_transformations(png::Transformations::EXPAND);
@@ -275,7 +246,7 @@ fn check_animation(file: &std::path::Path) {
 
 #[test]
 fn explore_bad_input_exits_2_naming_the_field() {
-    let f = tmp_file("room2.ron", &room(""));
+    let f = SCRATCH.file("room2.ron", room(""));
     let cases: [(&[&str], &str); 6] = [
         (&["--eta", "-1"], "--eta"),
         (&["--eta", "inf"], "--eta"),
@@ -291,24 +262,18 @@ fn explore_bad_input_exits_2_naming_the_field() {
         assert_eq!(o.status.code(), Some(2), "{extra:?}: {}", stderr(&o));
         assert!(stderr(&o).contains(needle), "{extra:?}: {}", stderr(&o));
     }
-    let bad = tmp_file(
+    let bad = SCRATCH.file(
         "region.ron",
-        &room("\n    exploration: (region: [(2.0, 0.0), (6.0, 0.0), (6.0, 4.0), (2.0, 4.0)]),"),
+        room("\n    exploration: (region: [(2.0, 0.0), (6.0, 0.0), (6.0, 4.0), (2.0, 4.0)]),"),
     );
     let o = hyplan(&["explore", &bad]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("exploration.region"), "{}", stderr(&o));
-    let bad = tmp_file(
+    assert_exit(&o, 2, &["exploration.region"]);
+    let bad = SCRATCH.file(
         "radius.ron",
-        &room("\n    exploration: (info_radius: -1.0),"),
+        room("\n    exploration: (info_radius: -1.0),"),
     );
     let o = hyplan(&["explore", &bad]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("exploration.info_radius"),
-        "{}",
-        stderr(&o)
-    );
+    assert_exit(&o, 2, &["exploration.info_radius"]);
 }
 
 /// The cells of a ROS map written by `hyplan sim` / `hyplan explore` as Nav2's trinary
@@ -330,19 +295,10 @@ fn trinary_counts(yaml: &Path) -> [usize; 3] {
     assert!(bytes.starts_with(b"P5\n# CREATOR: hyplan"), "a binary PGM");
     let pic = envmap::read_picture(&yaml.with_extension("pgm")).unwrap();
     assert_eq!(pic.channels(), 1);
-    let mut n = [0; 3];
     for &v in pic.data() {
         assert!([254, 0, 205].contains(&v), "grey {v} is not map_saver's");
-        let occ = (255.0 - f64::from(v)) / 255.0;
-        n[if occ > 0.65 {
-            1
-        } else if occ < 0.196 {
-            0
-        } else {
-            2
-        }] += 1;
     }
-    n
+    nav2_counts(pic.data())
 }
 
 /// A world whose grids (or map file) exceed the memory limit: exit 2 before anything is
@@ -350,13 +306,13 @@ fn trinary_counts(yaml: &Path) -> [usize; 3] {
 /// `--max-cells` raises it.
 #[test]
 fn grids_above_the_memory_limit_exit_2_naming_the_flag() {
-    let huge_img = Path::new(&tmp_file("huge_img.pgm", "P5\n30000 30000\n255\n")).to_path_buf();
-    tmp_file(
+    let huge_img = SCRATCH.file("huge_img.pgm", "P5\n30000 30000\n255\n");
+    SCRATCH.file(
         "huge.yaml",
-        &format!(
+        format!(
             "image: {}\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n\
              occupied_thresh: 0.65\nfree_thresh: 0.196\n",
-            huge_img.file_name().unwrap().to_string_lossy()
+            Path::new(&huge_img).file_name().unwrap().to_string_lossy()
         ),
     );
     let cases: [(&str, String, &[&str]); 5] = [
@@ -413,7 +369,7 @@ fn grids_above_the_memory_limit_exit_2_naming_the_flag() {
         ),
     ];
     for (name, text, needles) in cases {
-        let f = tmp_file(name, &text);
+        let f = SCRATCH.file(name, text);
         for cmd in ["sim", "explore"] {
             let o = hyplan(&[cmd, &f]);
             let err = stderr(&o);
@@ -425,14 +381,12 @@ fn grids_above_the_memory_limit_exit_2_naming_the_flag() {
     }
     // The hall's largest grids are 120 x 60 cells: a limit one below refuses it, naming
     // the value that is enough; that value runs.
-    let f = tmp_file("limit.ron", &hall("", "", "(0.5, 1.5)"));
+    let f = SCRATCH.file("limit.ron", hall("", "", "(0.5, 1.5)"));
     let o = hyplan(&["sim", &f, "--max-cells", "7199"]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("--max-cells 7200"), "{}", stderr(&o));
+    assert_exit(&o, 2, &["--max-cells 7200"]);
     let o = hyplan(&["sim", &f, "--max-cells", "7200"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let f = tmp_file("limit_room.ron", &room(""));
+    let f = SCRATCH.file("limit_room.ron", room(""));
     let o = hyplan(&["explore", &f, "--max-cells", "9599"]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("--max-cells 9600"), "{}", stderr(&o));
+    assert_exit(&o, 2, &["--max-cells 9600"]);
 }

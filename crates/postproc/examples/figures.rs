@@ -8,7 +8,8 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use hyplan_core::{Point2, Zone};
+use envmap::GridMap;
+use hyplan_core::{Point2, Workspace, Zone};
 use postproc::{Limits, PathMetrics, Repair, Smoothed, Smoothing, Timing, smooth_checked};
 
 /// Grid size in cells (world units = cells, origin lower left, y up).
@@ -20,54 +21,18 @@ const PX: f64 = 36.0;
 /// Blocked rectangles `(x0, y0, x1, y1)` in cells, half-open.
 const BLOCKS: [(usize, usize, usize, usize); 3] = [(5, 0, 8, 8), (11, 6, 14, 14), (16, 2, 18, 5)];
 
-fn blocked(i: i64, j: i64) -> bool {
-    if i < 0 || j < 0 || i >= W as i64 || j >= H as i64 {
-        return true;
-    }
-    let (i, j) = (i as usize, j as usize);
-    BLOCKS
-        .iter()
-        .any(|&(x0, y0, x1, y1)| (x0..x1).contains(&i) && (y0..y1).contains(&j))
-}
-
-/// Exact check of a closed segment against closed blocked cells.
-fn segment_free(a: Point2, b: Point2) -> bool {
-    let inside = |p: Point2| p.x >= 0.0 && p.y >= 0.0 && p.x <= W as f64 && p.y <= H as f64;
-    if !(inside(a) && inside(b)) {
-        return false;
-    }
-    let d = b - a;
-    let span = |lo: f64, hi: f64| (lo.ceil() as i64 - 1, hi.floor() as i64);
-    let (i0, i1) = span(a.x.min(b.x), a.x.max(b.x));
-    let (j0, j1) = span(a.y.min(b.y), a.y.max(b.y));
-    for j in j0..=j1 {
-        for i in i0..=i1 {
-            if !blocked(i, j) {
-                continue;
-            }
-            let (x, y) = (i as f64, j as f64);
-            let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-            let mut hit = true;
-            for (p, q) in [
-                (-d.x, a.x - x),
-                (d.x, x + 1.0 - a.x),
-                (-d.y, a.y - y),
-                (d.y, y + 1.0 - a.y),
-            ] {
-                if p == 0.0 {
-                    hit &= q >= 0.0;
-                } else if p < 0.0 {
-                    t0 = t0.max(q / p);
-                } else {
-                    t1 = t1.min(q / p);
-                }
-            }
-            if hit && t0 <= t1 {
-                return false;
+/// The world: a `W x H` map of unit cells with the blocks forbidden. Its exact segment
+/// check (closed segments against closed cells) is the smoothing oracle.
+fn world() -> GridMap {
+    let mut map = GridMap::filled(W, H, Zone::Free).expect("a valid size");
+    for &(x0, y0, x1, y1) in &BLOCKS {
+        for j in y0..y1 {
+            for i in x0..x1 {
+                map.set_cell_zone(i, j, Zone::Forbidden);
             }
         }
     }
-    true
+    map
 }
 
 /// An RRT-like zigzag from (1.5, 1.5) to (18.5, 12.5).
@@ -125,7 +90,7 @@ fn dots(svg: &mut String, pts: &[Point2], r: f64, fill: &str) {
     }
 }
 
-fn scene(title: &str, input: &[Point2], s: &Smoothed) -> String {
+fn scene(map: &GridMap, title: &str, input: &[Point2], s: &Smoothed) -> String {
     let (w, h) = (W as f64 * PX + 20.0, H as f64 * PX + 50.0);
     let mut svg = format!(
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif">
@@ -136,11 +101,7 @@ fn scene(title: &str, input: &[Point2], s: &Smoothed) -> String {
     for j in 0..H {
         for i in 0..W {
             // The workspace's one zone scheme (envmap::zone_colour).
-            let [r, g, b] = envmap::zone_colour(if blocked(i as i64, j as i64) {
-                Zone::Forbidden
-            } else {
-                Zone::Free
-            });
+            let [r, g, b] = envmap::zone_colour(map.cell_zone(i, j));
             let fill = format!("#{r:02x}{g:02x}{b:02x}");
             let _ = writeln!(
                 svg,
@@ -269,6 +230,8 @@ fn profiles(timings: &[(&str, &str, Timing)], limits: &Limits) -> String {
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/figures");
     std::fs::create_dir_all(&out)?;
+    let map = world();
+    let segment_free = |a, b| map.segment_free(a, b);
     let input = input_path();
     assert!(
         input.windows(2).all(|w| segment_free(w[0], w[1])),
@@ -311,7 +274,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
         std::fs::write(
             out.join(format!("postproc_{}.svg", method.name().replace('-', "_"))),
-            scene(&title, &input, &s),
+            scene(&map, &title, &input, &s),
         )?;
         match method {
             Smoothing::Prune => timings.push(("prune (stop and turn)", "#1f77b4", t)),

@@ -369,11 +369,9 @@ fn solve_banded(rows: &[(usize, [f64; 4])], p: usize, rhs: &[Vector2<f64>]) -> V
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use nalgebra::point;
 
-    fn p(x: f64, y: f64) -> Point2 {
-        Point2::new(x, y)
-    }
+    use super::*;
 
     #[test]
     fn knots_clamped_uniform() {
@@ -402,7 +400,7 @@ mod tests {
     #[test]
     fn de_boor_matches_bezier_for_four_points() {
         // One span: the clamped cubic B-spline is the Bezier curve.
-        let c = [p(0.0, 0.0), p(1.0, 2.0), p(3.0, 2.0), p(4.0, 0.0)];
+        let c = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]].map(Point2::from);
         let b = BSpline::from_control_points(&c).unwrap();
         let t: f64 = 0.3;
         let mt = 1.0 - t;
@@ -415,13 +413,7 @@ mod tests {
 
     #[test]
     fn derivatives_match_finite_differences() {
-        let nodes = [
-            p(0.0, 0.0),
-            p(1.0, 2.0),
-            p(3.0, 2.5),
-            p(4.0, 0.0),
-            p(6.0, 1.0),
-        ];
+        let nodes = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.0], [6.0, 1.0]].map(Point2::from);
         for b in [
             BSpline::from_control_points(&nodes).unwrap(),
             BSpline::interpolating(&nodes).unwrap(),
@@ -443,7 +435,7 @@ mod tests {
         let nodes: Vec<Point2> = (0..30)
             .map(|i| {
                 let t = f64::from(i) * 0.37;
-                p(t * 3.0 + t.sin(), (2.0 * t).cos() * 2.0)
+                point![t * 3.0 + t.sin(), (2.0 * t).cos() * 2.0]
             })
             .collect();
         let b = BSpline::interpolating(&nodes).unwrap();
@@ -460,9 +452,9 @@ mod tests {
 
     #[test]
     fn triple_control_point_is_on_polyline() {
-        let a = p(0.0, 0.0);
-        let b = p(2.0, 2.0);
-        let c = p(4.0, 0.0);
+        let a = point![0.0, 0.0];
+        let b = point![2.0, 2.0];
+        let c = point![4.0, 0.0];
         let s = BSpline::from_control_points(&[a, b, b, b, c]).unwrap();
         // Parameter 1 is the knot where the curve reaches b.
         assert!((s.eval(1.0) - b).norm() < 1e-14);

@@ -239,12 +239,7 @@ mod tests {
 
     #[test]
     fn derivatives_match_finite_differences() {
-        let nodes = [
-            Point2::new(0.0, 0.0),
-            Point2::new(1.0, 2.0),
-            Point2::new(3.0, 2.5),
-            Point2::new(4.0, 0.0),
-        ];
+        let nodes = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.0]].map(Point2::from);
         let c = Pchip::new(&nodes).unwrap();
         let eps = 1e-6;
         for i in 1..40 {

@@ -65,22 +65,14 @@ pub fn prune_pairwise_passes(
     let mut current = path.to_vec();
     for _ in 0..passes {
         let n = current.len();
-        if n < 3 {
-            return current;
-        }
-        let mut next = Vec::with_capacity(n);
-        next.push(current[0]);
-        let mut i = 0;
-        while i + 1 < n {
+        let next = anchor_walk(&current, |i| {
+            // Node i + 1 is redundant when i sees i + 2: join them directly.
             if i + 2 < n && segment_free(current[i], current[i + 2]) {
-                // Node i + 1 is redundant: join i to i + 2 directly.
-                next.push(current[i + 2]);
-                i += 2;
+                i + 2
             } else {
-                next.push(current[i + 1]);
-                i += 1;
+                i + 1
             }
-        }
+        });
         if next.len() == n {
             return next;
         }
@@ -132,22 +124,14 @@ pub fn shortcut_greedy(
     path: &[Point2],
     mut segment_free: impl FnMut(Point2, Point2) -> bool,
 ) -> Vec<Point2> {
-    let n = path.len();
-    if n < 3 {
-        return path.to_vec();
-    }
-    let mut out = vec![path[0]];
-    let mut anchor = 0;
-    while anchor + 1 < n {
+    anchor_walk(path, |anchor| {
         // The neighbour is always kept: its segment belongs to the input.
         let mut reach = anchor + 1;
-        while reach + 1 < n && segment_free(path[anchor], path[reach + 1]) {
+        while reach + 1 < path.len() && segment_free(path[anchor], path[reach + 1]) {
             reach += 1;
         }
-        out.push(path[reach]);
-        anchor = reach;
-    }
-    out
+        reach
+    })
 }
 
 /// Drops redundant nodes by connecting each anchor to the farthest node it sees, searching
@@ -183,35 +167,40 @@ pub fn shortcut_farthest(
     path: &[Point2],
     mut segment_free: impl FnMut(Point2, Point2) -> bool,
 ) -> Vec<Point2> {
-    let n = path.len();
-    if n < 3 {
+    anchor_walk(path, |anchor| {
+        // The neighbour is the fallback: its segment belongs to the input.
+        (anchor + 2..path.len())
+            .rev()
+            .find(|&j| segment_free(path[anchor], path[j]))
+            .unwrap_or(anchor + 1)
+    })
+}
+
+/// The walk every pruning pass shares: from the start, `reach(anchor)` names the node (after
+/// `anchor`) that the anchor joins, which is kept and becomes the next anchor, until the
+/// last node is kept. Paths of fewer than three nodes come back unchanged.
+fn anchor_walk(path: &[Point2], mut reach: impl FnMut(usize) -> usize) -> Vec<Point2> {
+    if path.len() < 3 {
         return path.to_vec();
     }
     let mut out = vec![path[0]];
     let mut anchor = 0;
-    while anchor + 1 < n {
-        // The neighbour is the fallback: its segment belongs to the input.
-        let reach = (anchor + 2..n)
-            .rev()
-            .find(|&j| segment_free(path[anchor], path[j]))
-            .unwrap_or(anchor + 1);
-        out.push(path[reach]);
-        anchor = reach;
+    while anchor + 1 < path.len() {
+        anchor = reach(anchor);
+        out.push(path[anchor]);
     }
     out
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use nalgebra::point;
 
-    fn p(x: f64, y: f64) -> Point2 {
-        Point2::new(x, y)
-    }
+    use super::*;
 
     #[test]
     fn pairwise_keeps_blocked_corner() {
-        let path = [p(0.0, 0.0), p(0.0, 1.0), p(1.0, 1.0)];
+        let path = [point![0.0, 0.0], point![0.0, 1.0], point![1.0, 1.0]];
         assert_eq!(prune_pairwise(&path, |_, _| false), path.to_vec());
         assert_eq!(prune_pairwise(&path, |_, _| true), vec![path[0], path[2]]);
     }
@@ -220,14 +209,14 @@ mod tests {
     fn short_paths_unchanged() {
         assert!(prune_pairwise(&[], |_, _| true).is_empty());
         assert_eq!(
-            shortcut_greedy(&[p(1.0, 2.0)], |_, _| true),
-            vec![p(1.0, 2.0)]
+            shortcut_greedy(&[point![1.0, 2.0]], |_, _| true),
+            vec![point![1.0, 2.0]]
         );
     }
 
     #[test]
     fn greedy_jumps_to_last_visible() {
-        let path: Vec<_> = (0..6).map(|i| p(f64::from(i), 0.0)).collect();
+        let path: Vec<_> = (0..6).map(|i| point![f64::from(i), 0.0]).collect();
         // Only segments spanning at most two nodes are free.
         let free = |a: Point2, b: Point2| (b.x - a.x).abs() <= 2.0;
         assert_eq!(

@@ -265,25 +265,12 @@ fn fit(
     oracle: &mut impl FnMut(Point2, Point2) -> bool,
     repairs: &mut Vec<Repair>,
 ) -> Result<Fitted, PostprocError> {
-    match fit_with {
-        Fit::Pchip => through_nodes(
-            nodes,
-            |n| Pchip::new(n).map(Curve::Pchip),
-            spacing,
-            insert_rounds,
-            oracle,
-            repairs,
-        ),
-        Fit::BSplineInterpolating => through_nodes(
-            nodes,
-            |n| BSpline::interpolating(n).map(Curve::BSpline),
-            spacing,
-            insert_rounds,
-            oracle,
-            repairs,
-        ),
-        Fit::BSpline => control_points(nodes, spacing, oracle, repairs),
-    }
+    let build: fn(&[Point2]) -> Result<Curve, PostprocError> = match fit_with {
+        Fit::Pchip => |n| Pchip::new(n).map(Curve::Pchip),
+        Fit::BSplineInterpolating => |n| BSpline::interpolating(n).map(Curve::BSpline),
+        Fit::BSpline => return control_points(nodes, spacing, oracle, repairs),
+    };
+    through_nodes(nodes, build, spacing, insert_rounds, oracle, repairs)
 }
 
 /// Checks the pairs `points[start..]` (in order) and then `(last, end)`; returns the first
@@ -322,6 +309,29 @@ fn sample_polyline(
     Ok(points)
 }
 
+/// Samples a curve span by span and checks every sample pair: span `k` runs from `ends[k]`
+/// to `ends[k + 1]`, and `densify(k, points)` appends its inner samples. Returns the
+/// samples (every end included) and, for each span that collides, its index and the first
+/// colliding sample.
+fn sample_spans(
+    ends: &[Point2],
+    oracle: &mut impl FnMut(Point2, Point2) -> bool,
+    mut densify: impl FnMut(usize, &mut Vec<Point2>),
+) -> (Vec<Point2>, Vec<(usize, Point2)>) {
+    let mut points = Vec::new();
+    let mut bad = Vec::new();
+    for k in 0..ends.len() - 1 {
+        let start = points.len();
+        points.push(ends[k]);
+        densify(k, &mut points);
+        if let Some(at) = first_collision(&points[start..], ends[k + 1], oracle) {
+            bad.push((k, at));
+        }
+    }
+    points.extend(ends.last());
+    (points, bad)
+}
+
 type Fitted = (Vec<Point2>, Vec<Point2>, Curve);
 
 /// Smoothing for curves through the nodes (PCHIP, interpolating B-spline): piece `k` runs
@@ -338,30 +348,15 @@ fn through_nodes(
     for round in 0.. {
         let curve = build(&nodes)?;
         let params = curve.breakpoints();
-        let mut points = Vec::new();
-        let mut bad: Vec<(usize, Point2)> = Vec::new();
-        for k in 0..nodes.len() - 1 {
-            let start = points.len();
-            points.push(nodes[k]);
+        let (points, bad) = sample_spans(&nodes, oracle, |k, points| {
             if straight[k] {
-                densify_line(nodes[k], nodes[k + 1], spacing, &mut points);
+                densify_line(nodes[k], nodes[k + 1], spacing, points);
             } else {
                 let f = |t: f64| curve.eval(t);
-                densify_curve(
-                    &f,
-                    params[k],
-                    params[k + 1],
-                    nodes[k],
-                    nodes[k + 1],
-                    spacing,
-                    &mut points,
-                );
+                let (a, b) = (nodes[k], nodes[k + 1]);
+                densify_curve(&f, params[k], params[k + 1], a, b, spacing, points);
             }
-            if let Some(at) = first_collision(&points[start..], nodes[k + 1], oracle) {
-                bad.push((k, at));
-            }
-        }
-        points.extend(nodes.last());
+        });
         let Some(&(_, first_at)) = bad.first() else {
             return Ok((nodes, points, curve));
         };
@@ -410,26 +405,11 @@ fn control_points(
         let degree = spline.degree();
         let breaks = spline.breakpoints();
         let ends: Vec<Point2> = breaks.iter().map(|&u| spline.eval(u)).collect();
-        let mut points = Vec::new();
-        let mut bad: Vec<(usize, Point2)> = Vec::new();
-        for j in 0..breaks.len() - 1 {
-            let start = points.len();
-            points.push(ends[j]);
+        let (points, bad) = sample_spans(&ends, oracle, |j, points| {
             let f = |u: f64| spline.eval(u);
-            densify_curve(
-                &f,
-                breaks[j],
-                breaks[j + 1],
-                ends[j],
-                ends[j + 1],
-                spacing,
-                &mut points,
-            );
-            if let Some(at) = first_collision(&points[start..], ends[j + 1], oracle) {
-                bad.push((j, at));
-            }
-        }
-        points.extend(ends.last());
+            let (a, b) = (ends[j], ends[j + 1]);
+            densify_curve(&f, breaks[j], breaks[j + 1], a, b, spacing, points);
+        });
         if bad.is_empty() {
             return Ok((ctrl, points, Curve::BSpline(spline)));
         }
@@ -471,12 +451,7 @@ mod tests {
 
     #[test]
     fn free_world_needs_no_repair() {
-        let path = [
-            Point2::new(0.0, 0.0),
-            Point2::new(2.0, 3.0),
-            Point2::new(5.0, 3.0),
-            Point2::new(6.0, 0.0),
-        ];
+        let path = [[0.0, 0.0], [2.0, 3.0], [5.0, 3.0], [6.0, 0.0]].map(Point2::from);
         for m in Smoothing::ALL {
             // An empty world: pruning leaves the straight line, nothing collides.
             let s = smooth_checked(&path, m, 0.1, |_, _| true).unwrap();
@@ -497,12 +472,7 @@ mod tests {
     fn blocked_everywhere_but_the_path_straightens() {
         // The oracle accepts only pieces of the input polyline: every curve piece off the
         // polyline collides, so the repairs must bring everything back onto it.
-        let path = vec![
-            Point2::new(0.0, 0.0),
-            Point2::new(4.0, 1.0),
-            Point2::new(5.0, 5.0),
-            Point2::new(1.0, 6.0),
-        ];
+        let path = [[0.0, 0.0], [4.0, 1.0], [5.0, 5.0], [1.0, 6.0]].map(Point2::from);
         let oracle = |a: Point2, b: Point2| {
             path.windows(2).any(|w| {
                 dist_to_segment(a, w[0], w[1]) < 1e-9 && dist_to_segment(b, w[0], w[1]) < 1e-9
@@ -522,11 +492,7 @@ mod tests {
     #[test]
     fn pchip_keeps_axis_aligned_corners() {
         // Shape preservation: x and y are flat on each leg, so PCHIP follows the L exactly.
-        let path = [
-            Point2::new(0.0, 0.0),
-            Point2::new(4.0, 0.0),
-            Point2::new(4.0, 4.0),
-        ];
+        let path = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0]].map(Point2::from);
         let c = Pchip::new(&path).unwrap();
         for i in 0..=40 {
             let q = c.eval(8.0 * f64::from(i) / 40.0);

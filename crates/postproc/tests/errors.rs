@@ -1,18 +1,15 @@
 //! Bad input gives typed errors, never a panic.
 
 use hyplan_core::Point2;
+use nalgebra::point;
 use postproc::{
     BSpline, Limits, Pchip, PostprocError, Smoothing, smooth_checked, time_curve, time_polyline,
 };
 use proptest::prelude::*;
 
-fn p(x: f64, y: f64) -> Point2 {
-    Point2::new(x, y)
-}
-
 #[test]
 fn too_few_nodes() {
-    for path in [vec![], vec![p(1.0, 1.0)]] {
+    for path in [vec![], vec![point![1.0, 1.0]]] {
         let n = path.len();
         let want = PostprocError::TooFewNodes { nodes: n };
         assert_eq!(Pchip::new(&path).unwrap_err(), want);
@@ -30,7 +27,7 @@ fn too_few_nodes() {
 
 #[test]
 fn repeated_and_nan_nodes() {
-    let repeated = [p(0.0, 0.0), p(1.0, 1.0), p(1.0, 1.0), p(2.0, 0.0)];
+    let repeated = [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]].map(Point2::from);
     assert_eq!(
         Pchip::new(&repeated).unwrap_err(),
         PostprocError::RepeatedNode {
@@ -39,14 +36,14 @@ fn repeated_and_nan_nodes() {
             y: 1.0
         }
     );
-    let nan = [p(0.0, 0.0), p(1.0, f64::NAN), p(2.0, 0.0)];
+    let nan = [point![0.0, 0.0], point![1.0, f64::NAN], point![2.0, 0.0]];
     let e = smooth_checked(&nan, Smoothing::BSpline, 0.25, |_, _| true).unwrap_err();
     assert!(
         matches!(e, PostprocError::NonFinite { index: 1, .. }),
         "{e}"
     );
     assert!(e.to_string().contains("node 1"));
-    let inf = [p(0.0, 0.0), p(f64::INFINITY, 0.0)];
+    let inf = [point![0.0, 0.0], point![f64::INFINITY, 0.0]];
     assert!(matches!(
         BSpline::from_control_points(&inf),
         Err(PostprocError::NonFinite { index: 1, .. })
@@ -66,7 +63,7 @@ fn bad_limits_and_spacing() {
             other => panic!("{other:?}"),
         }
     }
-    let path = [p(0.0, 0.0), p(1.0, 0.0)];
+    let path = [point![0.0, 0.0], point![1.0, 0.0]];
     let bad = Limits {
         v_max: 1.0,
         omega_max: 1.0,
@@ -90,7 +87,7 @@ fn bad_limits_and_spacing() {
 
 #[test]
 fn colliding_input_refused() {
-    let path = [p(0.0, 0.0), p(1.0, 0.0), p(2.0, 0.0)];
+    let path = [point![0.0, 0.0], point![1.0, 0.0], point![2.0, 0.0]];
     let e = smooth_checked(&path, Smoothing::None, 0.25, |a, _| a.x < 0.5).unwrap_err();
     assert!(
         matches!(e, PostprocError::SegmentNotFree { index: 1, .. }),
@@ -112,7 +109,7 @@ fn wild() -> impl Strategy<Value = f64> {
 proptest! {
     #[test]
     fn never_panics(pts in prop::collection::vec((wild(), wild()), 0..12), spacing in wild(), v in wild(), w in wild(), a in wild()) {
-        let path: Vec<Point2> = pts.iter().map(|&(x, y)| p(x, y)).collect();
+        let path: Vec<Point2> = pts.iter().map(|&(x, y)| point![x, y]).collect();
         for m in Smoothing::ALL {
             if let Ok(s) = smooth_checked(&path, m, spacing, |a, b| a.x + b.y < 5.0) {
                 let _ = s.time(&Limits { v_max: v, omega_max: w, a_max: a });

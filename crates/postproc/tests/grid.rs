@@ -1,70 +1,42 @@
-//! A tiny exact grid world for the property tests, independent of the crate.
+//! A tiny exact grid world for the property tests: envmap's grid map, independent of
+//! this crate.
 
-use hyplan_core::Point2;
+use envmap::GridMap;
+use hyplan_core::{Point2, Workspace, Zone};
 use proptest::prelude::*;
 
-/// A grid of unit cells, cell (i, j) covering [i, i + 1] x [j, j + 1]; `blocked` row-major.
+/// A grid of unit cells, cell (i, j) covering [i, i + 1] x [j, j + 1], origin at (0, 0).
 #[derive(Debug, Clone)]
 pub struct Grid {
-    pub w: usize,
-    pub h: usize,
-    pub blocked: Vec<bool>,
+    map: GridMap,
 }
 
 impl Grid {
+    /// A `w x h` grid with the cells `blocked[j * w + i]` blocked.
+    pub fn new(w: usize, h: usize, blocked: &[bool]) -> Self {
+        let zones = blocked
+            .iter()
+            .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
+            .collect();
+        let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+        Self { map }
+    }
+
+    /// Whether cell (i, j) is blocked or outside the grid.
     pub fn is_blocked(&self, i: i64, j: i64) -> bool {
-        if i < 0 || j < 0 || i >= self.w as i64 || j >= self.h as i64 {
-            return true;
-        }
-        self.blocked[j as usize * self.w + i as usize]
+        i < 0 || j < 0 || !self.map.cell_free(i as usize, j as usize)
     }
 
     /// Whether `p` lies in a blocked cell (closed squares: boundaries count as blocked) or
     /// outside the grid.
     pub fn point_blocked(&self, p: Point2) -> bool {
-        let (fx, fy) = (p.x.floor() as i64, p.y.floor() as i64);
-        // On a boundary the point touches the cells on both sides.
-        let xs: Vec<i64> = if p.x == p.x.floor() {
-            vec![fx - 1, fx]
-        } else {
-            vec![fx]
-        };
-        let ys: Vec<i64> = if p.y == p.y.floor() {
-            vec![fy - 1, fy]
-        } else {
-            vec![fy]
-        };
-        xs.iter()
-            .any(|&i| ys.iter().any(|&j| self.is_blocked(i, j)))
+        !self.map.is_free(p)
     }
 
     /// Exact: the closed segment misses every closed blocked square and stays inside the
-    /// grid (Liang-Barsky clipping against each blocked cell of the bounding box).
+    /// grid.
     pub fn segment_free(&self, a: Point2, b: Point2) -> bool {
-        let inside =
-            |p: Point2| p.x >= 0.0 && p.y >= 0.0 && p.x <= self.w as f64 && p.y <= self.h as f64;
-        if !(inside(a) && inside(b)) {
-            return false;
-        }
-        let (x0, x1) = (
-            a.x.min(b.x).floor() as i64 - 1,
-            a.x.max(b.x).floor() as i64 + 1,
-        );
-        let (y0, y1) = (
-            a.y.min(b.y).floor() as i64 - 1,
-            a.y.max(b.y).floor() as i64 + 1,
-        );
-        for j in y0..=y1 {
-            for i in x0..=x1 {
-                if i < 0 || j < 0 || i >= self.w as i64 || j >= self.h as i64 {
-                    continue;
-                }
-                if self.is_blocked(i, j) && hits_box(a, b, i as f64, j as f64) {
-                    return false;
-                }
-            }
-        }
-        true
+        self.map.segment_free(a, b)
     }
 
     /// A wiggly free path between two free cell centres: a randomised depth-first search on
@@ -82,11 +54,12 @@ impl Grid {
             rng ^= rng << 17;
             rng
         };
-        let idx = |c: (usize, usize)| c.1 * self.w + c.0;
-        if self.blocked[idx(start)] || self.blocked[idx(goal)] {
+        let (w, h) = (self.map.width(), self.map.height());
+        let idx = |c: (usize, usize)| c.1 * w + c.0;
+        if !self.map.cell_free(start.0, start.1) || !self.map.cell_free(goal.0, goal.1) {
             return None;
         }
-        let mut seen = vec![false; self.w * self.h];
+        let mut seen = vec![false; w * h];
         let mut stack = vec![start];
         seen[idx(start)] = true;
         while let Some(&c) = stack.last() {
@@ -118,32 +91,6 @@ impl Grid {
     }
 }
 
-/// Whether the closed segment a-b meets the closed unit square at (i, j).
-fn hits_box(a: Point2, b: Point2, i: f64, j: f64) -> bool {
-    let d = b - a;
-    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-    for (p, q) in [
-        (-d.x, a.x - i),
-        (d.x, i + 1.0 - a.x),
-        (-d.y, a.y - j),
-        (d.y, j + 1.0 - a.y),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-        }
-    }
-    t0 <= t1
-}
-
 /// A random grid (about `density` blocked) with a free DFS path between two corners.
 pub fn grid_and_path() -> impl Strategy<Value = (Grid, Vec<Point2>)> {
     (
@@ -157,7 +104,7 @@ pub fn grid_and_path() -> impl Strategy<Value = (Grid, Vec<Point2>)> {
             "no path between the corners",
             |(w, h, density, cells_seed, dfs_seed)| {
                 let mut rng = cells_seed | 1;
-                let blocked = (0..w * h)
+                let mut blocked: Vec<bool> = (0..w * h)
                     .map(|_| {
                         rng ^= rng << 13;
                         rng ^= rng >> 7;
@@ -165,9 +112,9 @@ pub fn grid_and_path() -> impl Strategy<Value = (Grid, Vec<Point2>)> {
                         (rng % 10_000) as f64 / 10_000.0 < density
                     })
                     .collect();
-                let mut g = Grid { w, h, blocked };
-                g.blocked[0] = false;
-                g.blocked[w * h - 1] = false;
+                blocked[0] = false;
+                blocked[w * h - 1] = false;
+                let g = Grid::new(w, h, &blocked);
                 let path = g.dfs_path((0, 0), (w - 1, h - 1), dfs_seed)?;
                 Some((g, path))
             },
@@ -176,12 +123,9 @@ pub fn grid_and_path() -> impl Strategy<Value = (Grid, Vec<Point2>)> {
 
 #[test]
 fn oracle_sanity() {
-    let mut g = Grid {
-        w: 3,
-        h: 3,
-        blocked: vec![false; 9],
-    };
-    g.blocked[4] = true; // the centre cell [1, 2] x [1, 2]
+    let mut blocked = vec![false; 9];
+    blocked[4] = true; // the centre cell [1, 2] x [1, 2]
+    let g = Grid::new(3, 3, &blocked);
     assert!(g.segment_free(Point2::new(0.5, 0.5), Point2::new(2.5, 0.5)));
     assert!(!g.segment_free(Point2::new(0.5, 0.5), Point2::new(2.5, 2.5)));
     // Touching the corner (1, 1) counts as a collision.

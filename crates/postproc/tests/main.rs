@@ -2,6 +2,7 @@
 
 mod errors;
 mod grid;
+mod paths;
 mod pchip_props;
 mod prune_props;
 mod scipy;

@@ -4,6 +4,8 @@ use hyplan_core::Point2;
 use postproc::Pchip;
 use proptest::prelude::*;
 
+use crate::paths::any_path;
+
 /// Paths with strictly increasing x and non-decreasing y: both coordinates monotone in s.
 fn monotone_path() -> impl Strategy<Value = Vec<Point2>> {
     prop::collection::vec((0.01f64..5.0, 0.0f64..5.0), 1..25).prop_map(|steps| {
@@ -17,17 +19,9 @@ fn monotone_path() -> impl Strategy<Value = Vec<Point2>> {
     })
 }
 
-fn any_path() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-100.0f64..100.0, -100.0f64..100.0), 2..30).prop_map(|pts| {
-        let mut out: Vec<Point2> = pts.iter().map(|&(x, y)| Point2::new(x, y)).collect();
-        out.dedup();
-        out
-    })
-}
-
 proptest! {
     #[test]
-    fn passes_through_every_node(path in any_path()) {
+    fn passes_through_every_node(path in any_path(100.0, 2..30)) {
         prop_assume!(path.len() >= 2);
         let c = Pchip::new(&path).unwrap();
         for (p, &s) in path.iter().zip(c.knots()) {

@@ -37,16 +37,13 @@ proptest! {
 fn repairs_reported_round_a_pillar() {
     // Seed 003's setting: the control-point B-spline of a path hugging a pillar cuts the
     // corner into it and must be repaired.
-    let mut grid = crate::grid::Grid {
-        w: 10,
-        h: 10,
-        blocked: vec![false; 100],
-    };
+    let mut blocked = vec![false; 100];
     for j in 0..6 {
         for i in 4..6 {
-            grid.blocked[j * 10 + i] = true;
+            blocked[j * 10 + i] = true;
         }
     }
+    let grid = crate::grid::Grid::new(10, 10, &blocked);
     let path = [
         Point2::new(1.0, 1.0),
         Point2::new(3.9, 6.1),

@@ -1,20 +1,13 @@
 //! Clamped B-splines start and end at the path's end points.
 
-use hyplan_core::Point2;
 use postproc::{BSpline, Curve};
 use proptest::prelude::*;
 
-fn any_path() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-1e4f64..1e4, -1e4f64..1e4), 2..40).prop_map(|pts| {
-        let mut out: Vec<Point2> = pts.iter().map(|&(x, y)| Point2::new(x, y)).collect();
-        out.dedup();
-        out
-    })
-}
+use crate::paths::any_path;
 
 proptest! {
     #[test]
-    fn clamped_ends(path in any_path()) {
+    fn clamped_ends(path in any_path(1e4, 2..40)) {
         prop_assume!(path.len() >= 2);
         let n = path.len();
         for b in [BSpline::from_control_points(&path).unwrap(), BSpline::interpolating(&path).unwrap()] {
@@ -29,7 +22,7 @@ proptest! {
     }
 
     #[test]
-    fn control_spline_stays_in_hull_box(path in any_path()) {
+    fn control_spline_stays_in_hull_box(path in any_path(1e4, 2..40)) {
         prop_assume!(path.len() >= 2);
         // Convex hull property, checked against the bounding box of the control points.
         let b = BSpline::from_control_points(&path).unwrap();

@@ -1,14 +1,10 @@
 //! Bi-RRT: two RRTs, one from the start and one from the goal, grown in turn and joined when
 //! a new node of one comes within a free step of the other.
 
-use std::ops::ControlFlow;
-
-use hyplan_core::{Budget, Plan, PlanError, Progress, Query, Workspace};
-use rand::Rng;
+use hyplan_core::{Budget, Plan, PlanError, Workspace};
 
 use crate::common;
-use crate::toolkit::CountingChecker;
-use crate::{Extension, GrowTree};
+use crate::{Extension, Search};
 
 /// The Bi-RRT planner's parameters.
 ///
@@ -65,54 +61,29 @@ impl Default for BiRrt {
 }
 
 impl BiRrt {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
-    /// observer called every 64 iterations; `ControlFlow::Break(())` stops the run
-    /// ([`PlanError::BudgetExhausted`]).
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad step or budget; [`PlanError::InvalidStart`] /
-    /// [`PlanError::InvalidGoal`] for a query outside the workspace or blocked;
-    /// [`PlanError::BudgetExhausted`] (with the statistics) when the trees did not meet.
-    pub fn plan_with<W, R, F>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-        observer: &mut F,
-    ) -> Result<Plan, PlanError>
-    where
-        W: Workspace + ?Sized,
-        R: Rng + ?Sized,
-        F: FnMut(&Progress) -> ControlFlow<()>,
-    {
-        let (goal, step) = (query.goal, self.step);
-        let grow = |trees: &mut [GrowTree; 2],
-                    active: usize,
-                    sample,
-                    checker: &mut CountingChecker<'_, W>| {
-            let other = 1 - active;
+    /// One call of [`plan_with`](Self::plan_with).
+    fn search<W: Workspace + ?Sized>(&self, search: Search<'_, W>) -> Result<Plan, PlanError> {
+        common::grow_two_trees(self.step, &self.budget, search, |turn| {
+            let (active, other) = (turn.active, turn.other);
             // Extend: nearest node, one step towards the sample, exact edge check, add.
-            let Extension::Added { new, .. } = trees[active].extend(sample, step, checker) else {
+            let extension = turn.trees[active].extend(turn.sample, self.step, turn.checker);
+            let Extension::Added { new, .. } = extension else {
                 return None;
             };
-            let new_point = trees[active].point(new);
+            let new_point = turn.trees[active].point(new);
             // Goal test: the start tree inside a goal disc ends the search by itself.
-            if active == 0 && goal.radius() > 0.0 && goal.contains(new_point) {
+            if turn.ends_in_goal(active, new_point) {
                 return Some((new, None));
             }
             // Join: the other tree's nearest node within a step, through a free edge.
-            let (meet, d) = trees[other].nearest(new_point)?;
-            (d <= step && checker.segment_free(new_point, trees[other].point(meet))).then_some(
-                if active == 0 {
-                    (new, Some(meet))
-                } else {
-                    (meet, Some(new))
-                },
-            )
-        };
-        common::grow_two_trees(step, &self.budget, ws, query, rng, observer, grow)
+            let (meet, d) = turn.trees[other].nearest(new_point)?;
+            let free = d <= self.step
+                && turn
+                    .checker
+                    .segment_free(new_point, turn.trees[other].point(meet));
+            free.then(|| turn.joined(new, meet))
+        })
     }
 }
 
-crate::impl_planner!(BiRrt, "bi-rrt", optimizing: |_bi_rrt| false, plan: plan_with);
+crate::impl_planner!(BiRrt, "bi-rrt", optimizing: |_bi_rrt| false, plan: search);

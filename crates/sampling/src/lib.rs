@@ -21,9 +21,10 @@
 //!   rewiring and [`reparent`](GrowTree::reparent), branches and the [`Tree`] of a plan.
 //!   The hybrids and the exploration's frontier detectors grow this tree too.
 //! - [`Run`]: the frame of a run (checks, iterations against the budget, the observer
-//!   every [`OBSERVE_EVERY`] iterations, statistics).
-//! - [`impl_planner!`]: the [`Planner`] implementation (and the generic `plan`) of a
-//!   planner, written once.
+//!   every [`OBSERVE_EVERY`] iterations, statistics), and [`Search`], what one call of a
+//!   planner plans in and with (workspace, query, RNG, observer).
+//! - [`impl_planner!`]: the [`Planner`] implementation (and the generic `plan` and
+//!   `plan_with`) of a planner, written once.
 //! - [`toolkit`], re-exported here: the building blocks the planners are made of, for
 //!   planners in other crates: [`steer`], [`sample_uniform`], [`sample_goal_biased`],
 //!   [`sample_accepted`], [`CountingChecker`], [`branch`], [`plan_of_path`],
@@ -115,7 +116,7 @@ pub use nearest::NearestIndex;
 pub use rrt::Rrt;
 pub use rrt_connect::RrtConnect;
 pub use rrt_star::{RewireRadius, RrtStar};
-pub use run::{OBSERVE_EVERY, Run};
+pub use run::{OBSERVE_EVERY, Run, Search};
 pub use toolkit::{
     CountingChecker, branch, check_connected, plan_of_path, require_connected, sample_accepted,
     sample_goal_biased, sample_uniform, steer, validate_step_and_budget,

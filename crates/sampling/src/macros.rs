@@ -11,13 +11,25 @@
 /// - `impl_planner!(Type, "name", optimizing: |planner| expr, plan: plan_with)` also writes
 ///   the inherent `plan`: `plan_with(ws, query, rng, observer)` with an observer that never
 ///   stops the run.
+/// - `impl_planner!(Type, "name", optimizing: |planner| expr, plan: search)` also writes
+///   the inherent, generic `plan_with(ws, query, rng, observer)`, which hands them as a
+///   [`Search`](crate::Search) to the planner's own `search(&self, Search<'_, W>)`, and
+///   `plan` as above.
 /// - `impl_planner!(Type, "name", optimizing: |planner| expr, plan: plan_detailed)` also
 ///   writes the inherent `plan`: the plan of `plan_detailed(ws, query, rng)` (a
 ///   `Result<T, PlanError>` where `T` has a `plan` field).
-/// - `impl_planner!(Type, "name", grid_only, plan: plan_detailed)`: as the last, for a
-///   planner whose `plan_detailed` takes an `envmap::GridMap`; the `dyn` workspace is found
-///   with `GridMap::of_workspace` (an error naming the planner for any other workspace), so
-///   the calling crate depends on `envmap`.
+/// - `impl_planner!(Type, "name", optimizing: |planner| expr, staged: Staged)` also writes
+///   the inherent, generic `plan_detailed(ws, query, rng)`, which hands them as a
+///   [`Search`](crate::Search) (with an observer that never stops the run) to the
+///   planner's own `staged(&self, Search<'_, W>) -> Result<Staged, PlanError>`, and
+///   `plan` from it as above.
+/// - `impl_planner!(Type, "name", grid_only, staged: Staged)`: as the last, on an
+///   `envmap::GridMap` only (`staged(&self, Search<'_, GridMap>)`), with the `grid_only`
+///   implementation of the next form.
+/// - `impl_planner!(Type, "name", grid_only, plan: plan_detailed)`: as the `plan_detailed`
+///   form above, for a planner whose `plan_detailed` takes an `envmap::GridMap`; the `dyn`
+///   workspace is found with `GridMap::of_workspace` (an error naming the planner for any
+///   other workspace), so the calling crate depends on `envmap`.
 ///
 /// ```
 /// use hyplan_core::{Plan, PlanError, PlanStats, Planner, Query, Workspace};
@@ -85,6 +97,83 @@ macro_rules! impl_planner {
                 self.plan_detailed(map, query, rng).map(|staged| staged.plan)
             }
         }
+    };
+    ($planner:ty, $name:literal, optimizing: |$this:ident| $optimizing:expr, staged: $staged:ty) => {
+        $crate::impl_planner!(@staged $planner, $staged, [W: $crate::Workspace + ?Sized,], W);
+        $crate::impl_planner!($planner, $name, optimizing: |$this| $optimizing, plan: plan_detailed);
+    };
+    ($planner:ty, $name:literal, grid_only, staged: $staged:ty) => {
+        $crate::impl_planner!(@staged $planner, $staged, [], envmap::GridMap);
+        $crate::impl_planner!($planner, $name, grid_only, plan: plan_detailed);
+    };
+    (@staged $planner:ty, $staged:ty, [$($generic:tt)*], $ws:ty) => {
+        impl $planner {
+            /// Plans a path for `query` in `ws`, drawing every random number from `rng`,
+            /// with the stages that led to it (the type's documentation says which).
+            ///
+            /// # Errors
+            ///
+            /// `PlanError::InvalidParameter` for a bad parameter or budget;
+            /// `PlanError::InvalidStart` / `PlanError::InvalidGoal` for a query outside the
+            /// workspace or blocked; any other error as the type's documentation says.
+            pub fn plan_detailed<$($generic)* R: $crate::rand::Rng + ?Sized>(
+                &self,
+                ws: &$ws,
+                query: &$crate::Query,
+                rng: &mut R,
+            ) -> ::std::result::Result<$staged, $crate::PlanError> {
+                // `&mut R` is a sized RNG even when `R` is not: the same draws, in order.
+                let mut rng = rng;
+                self.staged($crate::Search {
+                    ws,
+                    query,
+                    rng: &mut rng,
+                    observer: &mut |_| ::std::ops::ControlFlow::Continue(()),
+                })
+            }
+        }
+    };
+    (@search $planner:ty) => {
+        impl $planner {
+            /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with
+            /// `observer` called every [`OBSERVE_EVERY`](crate::OBSERVE_EVERY) iterations
+            /// with the progress so far; `ControlFlow::Break(())` stops the run: the best
+            /// path found so far for a planner that keeps improving one, else
+            /// [`PlanError::BudgetExhausted`](crate::PlanError::BudgetExhausted).
+            ///
+            /// # Errors
+            ///
+            /// [`PlanError::InvalidParameter`](crate::PlanError::InvalidParameter) for a bad
+            /// parameter or budget; [`PlanError::InvalidStart`](crate::PlanError::InvalidStart)
+            /// / [`PlanError::InvalidGoal`](crate::PlanError::InvalidGoal) for a query outside
+            /// the workspace or blocked;
+            /// [`PlanError::Disconnected`](crate::PlanError::Disconnected) when the workspace
+            /// proves start and goal apart;
+            /// [`PlanError::BudgetExhausted`](crate::PlanError::BudgetExhausted) (with the
+            /// statistics) when no path was found within the budget.
+            pub fn plan_with<W, R, F>(
+                &self,
+                ws: &W,
+                query: &$crate::Query,
+                rng: &mut R,
+                observer: &mut F,
+            ) -> ::std::result::Result<$crate::Plan, $crate::PlanError>
+            where
+                W: $crate::Workspace + ?Sized,
+                R: $crate::rand::Rng + ?Sized,
+                F: FnMut(&$crate::Progress) -> ::std::ops::ControlFlow<()>,
+            {
+                // `&mut R` is a sized RNG even when `R` is not: the same draws, in order.
+                let mut rng = rng;
+                self.search($crate::Search {
+                    ws,
+                    query,
+                    rng: &mut rng,
+                    observer,
+                })
+            }
+        }
+        $crate::impl_planner!(@plan_with $planner);
     };
     (@plan_with $planner:ty) => {
         $crate::impl_planner!(

@@ -3,20 +3,18 @@
 //! extending the nearest node one step towards a random sample, until a node reaches the
 //! goal region.
 
-use std::ops::ControlFlow;
-
-use hyplan_core::{Budget, Plan, PlanError, Progress, Query, Workspace};
-use rand::Rng;
+use hyplan_core::{Budget, Plan, PlanError, Workspace};
 
 use crate::toolkit::{self, CountingChecker};
-use crate::{Extension, GrowTree, Run};
+use crate::{Extension, GrowTree, Run, Search};
 
 /// The RRT planner's parameters.
 ///
-/// The goal region comes from the [`Query`]: with [`Goal::Disc`](hyplan_core::Goal::Disc)
-/// of radius `r > 0` the search stops at the first node within `r` of the goal centre; with
-/// [`Goal::Point`](hyplan_core::Goal::Point) (or radius 0) a node within `step` of the goal
-/// is joined to it by an exact edge check, so the path ends exactly at the goal.
+/// The goal region comes from the [`Query`](hyplan_core::Query): with
+/// [`Goal::Disc`](hyplan_core::Goal::Disc) of radius `r > 0` the search stops at the first
+/// node within `r` of the goal centre; with [`Goal::Point`](hyplan_core::Goal::Point) (or
+/// radius 0) a node within `step` of the goal is joined to it by an exact edge check, so
+/// the path ends exactly at the goal.
 ///
 /// Every edge is checked with [`Workspace::segment_free`], so the returned path is
 /// collision-free in the workspace's own (exact) model. The only randomness is the `rng`
@@ -72,42 +70,26 @@ impl Default for Rrt {
 }
 
 impl Rrt {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
-    /// observer called every 64 iterations with the progress so far; returning
-    /// `ControlFlow::Break(())` stops the run (reported as [`PlanError::BudgetExhausted`]).
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad step, goal bias or budget;
-    /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or blocked; [`PlanError::BudgetExhausted`] (with the statistics) when the
-    /// budget runs out before the goal region is reached.
-    pub fn plan_with<W, R, F>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-        observer: &mut F,
-    ) -> Result<Plan, PlanError>
-    where
-        W: Workspace + ?Sized,
-        R: Rng + ?Sized,
-        F: FnMut(&Progress) -> ControlFlow<()>,
-    {
-        let mut run = Run::start(self.step, &self.budget, ws, query)?;
+    /// One call of [`plan_with`](Self::plan_with).
+    fn search<W: Workspace + ?Sized>(&self, search: Search<'_, W>) -> Result<Plan, PlanError> {
+        let mut run = Run::start(self.step, &self.budget, search.ws, search.query)?;
         hyplan_core::check::probability("goal_bias", self.goal_bias)?;
-        run.check_connected(ws, query)?;
-        let goal = query.goal;
-        let mut checker = CountingChecker::new(ws);
-        let mut tree = GrowTree::rooted_at(query.start);
-        let mut reached = goal.contains(query.start).then_some(0_usize);
+        run.check_connected(search.ws, search.query)?;
+        let goal = search.query.goal;
+        let mut checker = CountingChecker::new(search.ws);
+        let mut tree = GrowTree::rooted_at(search.query.start);
+        let mut reached = goal.contains(search.query.start).then_some(0_usize);
 
         while reached.is_none() && run.next_iteration() {
-            if run.observe(observer, || (tree.len(), None)).is_break() {
+            if run
+                .observe(search.observer, || (tree.len(), None))
+                .is_break()
+            {
                 break;
             }
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
-            let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
+            let sample =
+                toolkit::sample_goal_biased(search.ws, goal.center(), self.goal_bias, search.rng);
             // Nearest, steer one step towards the sample, check the edge exactly, add.
             let new = match tree.extend(sample, self.step, &mut checker) {
                 Extension::Added { new, .. } => new,
@@ -127,4 +109,4 @@ impl Rrt {
     }
 }
 
-crate::impl_planner!(Rrt, "rrt", optimizing: |_rrt| false, plan: plan_with);
+crate::impl_planner!(Rrt, "rrt", optimizing: |_rrt| false, plan: search);

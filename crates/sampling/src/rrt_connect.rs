@@ -2,14 +2,11 @@
 //! sample, the other then greedily connects towards the new node, step after step, until it
 //! reaches it or is blocked. The trees swap roles every iteration.
 
-use std::ops::ControlFlow;
+use hyplan_core::{Budget, Plan, PlanError, Point2, Workspace};
 
-use hyplan_core::{Budget, Plan, PlanError, Point2, Progress, Query, Workspace};
-use rand::Rng;
-
-use crate::GrowTree;
 use crate::common;
 use crate::toolkit::CountingChecker;
+use crate::{GrowTree, Search};
 
 /// The outcome of one extension step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -99,66 +96,40 @@ fn extend<W: Workspace + ?Sized>(
 }
 
 impl RrtConnect {
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
-    /// observer called every 64 iterations; `ControlFlow::Break(())` stops the run
-    /// ([`PlanError::BudgetExhausted`]).
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad step or budget; [`PlanError::InvalidStart`] /
-    /// [`PlanError::InvalidGoal`] for a query outside the workspace or blocked;
-    /// [`PlanError::BudgetExhausted`] (with the statistics) when the trees did not meet.
-    pub fn plan_with<W, R, F>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-        observer: &mut F,
-    ) -> Result<Plan, PlanError>
-    where
-        W: Workspace + ?Sized,
-        R: Rng + ?Sized,
-        F: FnMut(&Progress) -> ControlFlow<()>,
-    {
-        let (goal, step) = (query.goal, self.step);
-        let grow = |trees: &mut [GrowTree; 2],
-                    active: usize,
-                    sample,
-                    checker: &mut CountingChecker<'_, W>| {
-            let other = 1 - active;
+    /// One call of [`plan_with`](Self::plan_with).
+    fn search<W: Workspace + ?Sized>(&self, search: Search<'_, W>) -> Result<Plan, PlanError> {
+        common::grow_two_trees(self.step, &self.budget, search, |turn| {
+            let (active, other) = (turn.active, turn.other);
             // Extend: the active tree one step towards the sample.
-            let new = match extend(&mut trees[active], sample, step, checker) {
+            let new = match extend(
+                &mut turn.trees[active],
+                turn.sample,
+                self.step,
+                turn.checker,
+            ) {
                 ExtendStatus::Trapped => return None,
                 ExtendStatus::Reached(n) | ExtendStatus::Advanced(n) => n,
             };
-            let target = trees[active].point(new);
+            let target = turn.trees[active].point(new);
             // Goal test: the start tree inside a goal disc ends the search by itself.
-            if active == 0 && goal.radius() > 0.0 && goal.contains(target) {
+            if turn.ends_in_goal(active, target) {
                 return Some((new, None));
             }
             // Connect: the other tree steps towards the new node until it reaches it or is
             // blocked.
             loop {
-                match extend(&mut trees[other], target, step, checker) {
+                match extend(&mut turn.trees[other], target, self.step, turn.checker) {
                     ExtendStatus::Advanced(m) => {
-                        let p = trees[other].point(m);
-                        if other == 0 && goal.radius() > 0.0 && goal.contains(p) {
+                        if turn.ends_in_goal(other, turn.trees[other].point(m)) {
                             return Some((m, None));
                         }
                     }
-                    ExtendStatus::Reached(m) => {
-                        return Some(if active == 0 {
-                            (new, Some(m))
-                        } else {
-                            (m, Some(new))
-                        });
-                    }
+                    ExtendStatus::Reached(m) => return Some(turn.joined(new, m)),
                     ExtendStatus::Trapped => return None,
                 }
             }
-        };
-        common::grow_two_trees(step, &self.budget, ws, query, rng, observer, grow)
+        })
     }
 }
 
-crate::impl_planner!(RrtConnect, "rrt-connect", optimizing: |_rrt_connect| false, plan: plan_with);
+crate::impl_planner!(RrtConnect, "rrt-connect", optimizing: |_rrt_connect| false, plan: search);

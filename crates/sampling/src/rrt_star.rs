@@ -1,13 +1,10 @@
 //! RRT*: RRT with choose-parent and rewiring (Karaman and Frazzoli 2011), the asymptotically
 //! optimal variant that seed `003` builds on.
 
-use std::ops::ControlFlow;
-
-use hyplan_core::{Budget, Plan, PlanError, Point2, Progress, Query, Workspace};
-use rand::Rng;
+use hyplan_core::{Budget, Plan, PlanError, Point2, Workspace};
 
 use crate::toolkit::{self, CountingChecker};
-use crate::{GrowTree, Run};
+use crate::{GrowTree, Run, Search};
 
 /// How RRT* picks the neighbours it considers as parents and rewires.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -115,35 +112,14 @@ impl RrtStar {
         }
     }
 
-    /// Plans a path for `query` in `ws`, drawing every random number from `rng`, with an
-    /// observer called every 64 iterations with the progress (including the best cost so
-    /// far); `ControlFlow::Break(())` stops the run and returns the best path found so far,
-    /// or [`PlanError::BudgetExhausted`] if there is none.
-    ///
-    /// # Errors
-    ///
-    /// [`PlanError::InvalidParameter`] for a bad step, goal bias, rewiring rule or budget;
-    /// [`PlanError::InvalidStart`] / [`PlanError::InvalidGoal`] for a query outside the
-    /// workspace or blocked; [`PlanError::BudgetExhausted`] (with the statistics) when no
-    /// node reached the goal region within the budget.
-    pub fn plan_with<W, R, F>(
-        &self,
-        ws: &W,
-        query: &Query,
-        rng: &mut R,
-        observer: &mut F,
-    ) -> Result<Plan, PlanError>
-    where
-        W: Workspace + ?Sized,
-        R: Rng + ?Sized,
-        F: FnMut(&Progress) -> ControlFlow<()>,
-    {
-        let mut run = Run::start(self.step, &self.budget, ws, query)?;
+    /// One call of [`plan_with`](Self::plan_with).
+    fn search<W: Workspace + ?Sized>(&self, search: Search<'_, W>) -> Result<Plan, PlanError> {
+        let mut run = Run::start(self.step, &self.budget, search.ws, search.query)?;
         hyplan_core::check::probability("goal_bias", self.goal_bias)?;
         self.validate_rewire()?;
-        run.check_connected(ws, query)?;
-        let goal = query.goal;
-        let bounds = ws.bounds();
+        run.check_connected(search.ws, search.query)?;
+        let goal = search.query.goal;
+        let bounds = search.ws.bounds();
         let gamma = match self.rewire {
             RewireRadius::Auto => {
                 1.1 * 2.0 * (1.5 * bounds.width() * bounds.height() / std::f64::consts::PI).sqrt()
@@ -151,12 +127,12 @@ impl RrtStar {
             RewireRadius::Gamma(g) => g,
             RewireRadius::KNearest(_) => 0.0,
         };
-        let mut checker = CountingChecker::new(ws);
-        let mut tree = GrowTree::with_costs(query.start);
+        let mut checker = CountingChecker::new(search.ws);
+        let mut tree = GrowTree::with_costs(search.query.start);
         // Nodes in the goal region; the best is chosen at the end (rewiring changes costs).
         let mut goal_nodes: Vec<usize> = Vec::new();
         let mut exact_goal_node: Option<usize> = None;
-        if goal.contains(query.start) {
+        if goal.contains(search.query.start) {
             goal_nodes.push(0);
         }
         let mut near: Vec<(usize, f64)> = Vec::new();
@@ -167,11 +143,12 @@ impl RrtStar {
                 let best = goal_nodes.iter().map(|&g| tree.cost(g));
                 (tree.len(), best.min_by(f64::total_cmp))
             };
-            if run.observe(observer, progress).is_break() {
+            if run.observe(search.observer, progress).is_break() {
                 break;
             }
             // Sample: the goal centre with probability goal_bias, else uniform in the bounds.
-            let sample = toolkit::sample_goal_biased(ws, goal.center(), self.goal_bias, rng);
+            let sample =
+                toolkit::sample_goal_biased(search.ws, goal.center(), self.goal_bias, search.rng);
             // Nearest and steer: at most one step from the nearest node towards the sample.
             let Some(step) = tree.step_towards(sample, self.step) else {
                 break;
@@ -225,4 +202,4 @@ impl RrtStar {
     }
 }
 
-crate::impl_planner!(RrtStar, "rrt-star", optimizing: |planner| !planner.stop_at_first_solution, plan: plan_with);
+crate::impl_planner!(RrtStar, "rrt-star", optimizing: |planner| !planner.stop_at_first_solution, plan: search);

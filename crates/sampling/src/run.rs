@@ -5,11 +5,49 @@ use std::ops::ControlFlow;
 use std::time::Instant;
 
 use hyplan_core::{Budget, PlanError, PlanStats, Progress, Query, Workspace};
+use rand::RngCore;
 
 use crate::toolkit;
 
 /// How often (in iterations) a run calls its observer.
 pub const OBSERVE_EVERY: u64 = 64;
+
+/// What one call of a tree planner's `plan_with` (or a hybrid's `plan_detailed`) plans in
+/// and with: the workspace, the query, the RNG every random number is drawn from and the
+/// observer of the run's progress. [`impl_planner!`](crate::impl_planner) writes the
+/// generic entry point that gathers them, once for every planner; the planner's own loop
+/// takes them from here.
+///
+/// ```
+/// use std::ops::ControlFlow;
+/// use envmap::GridMap;
+/// use hyplan_core::{Goal, Point2, Query};
+/// use rand::SeedableRng;
+/// use sampling::Search;
+///
+/// let map = GridMap::from_ascii("....")?;
+/// let query = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(3.5, 0.5)));
+/// let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+/// let search = Search {
+///     ws: &map,
+///     query: &query,
+///     rng: &mut rng,
+///     observer: &mut |_| ControlFlow::Continue(()),
+/// };
+/// assert!(sampling::sample_uniform(search.ws, search.rng).x < 4.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub struct Search<'a, W: ?Sized> {
+    /// The workspace planned in.
+    pub ws: &'a W,
+    /// The start and the goal region.
+    pub query: &'a Query,
+    /// Where every random number is drawn from.
+    pub rng: &'a mut dyn RngCore,
+    /// Called every [`OBSERVE_EVERY`] iterations ([`Run::observe`]);
+    /// `ControlFlow::Break(())` stops the run.
+    pub observer: &'a mut dyn FnMut(&Progress) -> ControlFlow<()>,
+}
 
 /// One sampling run's clock and counter: when it started, its budget (an unset iteration
 /// cap made the map's, [`Budget::for_sampling`]) and the iterations begun.
@@ -104,7 +142,7 @@ impl Run {
         progress: impl FnOnce() -> (usize, Option<f64>),
     ) -> ControlFlow<()>
     where
-        F: FnMut(&Progress) -> ControlFlow<()>,
+        F: FnMut(&Progress) -> ControlFlow<()> + ?Sized,
     {
         if !self.iterations.is_multiple_of(OBSERVE_EVERY) {
             return ControlFlow::Continue(());

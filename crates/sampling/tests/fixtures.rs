@@ -1,31 +1,18 @@
-//! Shared seeds, maps and planner lists.
+//! Shared seeds and planner lists (the random maps are `random_map.rs`'s).
 
-use envmap::GridMap;
-use hyplan_core::{Budget, Planner, Zone};
+use hyplan_core::{Budget, Planner};
 use sampling::{BiRrt, RewireRadius, Rrt, RrtConnect, RrtStar};
 
 /// A fixed seed for deterministic tests.
 pub const SEED_1: u64 = 0x5eed_0001;
 
-/// A random `w x h` grid: each cell forbidden with probability `density`, drawn from the
-/// bits of `cells` (one byte per cell; 255 * density is the threshold).
-pub fn random_map(w: usize, h: usize, density: f64, cells: &[u8]) -> GridMap {
-    let threshold = (density * 256.0) as u32;
-    let zones = (0..w * h)
-        .map(|k| {
-            if u32::from(cells[k % cells.len()]) < threshold {
-                Zone::Forbidden
-            } else {
-                Zone::Free
-            }
-        })
-        .collect();
-    GridMap::from_zones(w, h, 1.0, hyplan_core::Point2::origin(), zones).unwrap()
-}
-
 /// Every planner with a given step and iteration budget.
 pub fn all_planners(step: f64, iterations: u64) -> Vec<Box<dyn Planner>> {
-    let budget = Budget::iterations(iterations);
+    planners_with(step, Budget::iterations(iterations))
+}
+
+/// Every planner with a given step and budget.
+pub fn planners_with(step: f64, budget: Budget) -> Vec<Box<dyn Planner>> {
     vec![
         Box::new(Rrt {
             step,

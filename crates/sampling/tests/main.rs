@@ -3,3 +3,4 @@
 mod fixtures;
 mod nearest;
 mod planners;
+mod random_map;

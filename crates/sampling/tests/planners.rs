@@ -5,9 +5,10 @@ use hyplan_core::{Budget, Goal, PlanError, Planner, Point2, Query, Workspace};
 use proptest::prelude::*;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use sampling::{BiRrt, RewireRadius, Rrt, RrtConnect, RrtStar};
+use sampling::{RewireRadius, Rrt, RrtStar};
 
-use crate::fixtures::{SEED_1, all_planners, random_map};
+use crate::fixtures::{SEED_1, all_planners, planners_with};
+use crate::random_map::random_map;
 
 /// The path contract: starts at the start bit for bit, ends in the goal region, every
 /// segment free, cost = length.
@@ -234,28 +235,25 @@ fn bad_parameters_are_typed_errors() {
         }
     }
     for bias in [-0.1, 1.5, f64::NAN] {
-        let rrt = Rrt {
-            goal_bias: bias,
-            ..Rrt::default()
-        };
-        assert!(matches!(
-            rrt.plan(&map, &query, &mut rng),
-            Err(PlanError::InvalidParameter {
-                name: "goal_bias",
-                ..
-            })
-        ));
-        let star = RrtStar {
-            goal_bias: bias,
-            ..RrtStar::default()
-        };
-        assert!(matches!(
-            star.plan(&map, &query, &mut rng),
-            Err(PlanError::InvalidParameter {
-                name: "goal_bias",
-                ..
-            })
-        ));
+        let biased: [Box<dyn Planner>; 2] = [
+            Box::new(Rrt {
+                goal_bias: bias,
+                ..Rrt::default()
+            }),
+            Box::new(RrtStar {
+                goal_bias: bias,
+                ..RrtStar::default()
+            }),
+        ];
+        for planner in biased {
+            assert!(matches!(
+                planner.plan(&map, &query, &mut rng),
+                Err(PlanError::InvalidParameter {
+                    name: "goal_bias",
+                    ..
+                })
+            ));
+        }
     }
     for planner in all_planners(1.0, 0) {
         assert!(matches!(
@@ -385,25 +383,7 @@ fn time_limit_stops_the_search() {
     let query = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(9.5, 1.5)));
     let limit = std::time::Duration::from_millis(100);
     let budget = Budget::iterations(u64::MAX).with_time(limit);
-    let planners: Vec<Box<dyn Planner>> = vec![
-        Box::new(Rrt {
-            budget,
-            ..Rrt::default()
-        }),
-        Box::new(RrtStar {
-            budget,
-            ..RrtStar::default()
-        }),
-        Box::new(BiRrt {
-            budget,
-            ..BiRrt::default()
-        }),
-        Box::new(RrtConnect {
-            budget,
-            ..RrtConnect::default()
-        }),
-    ];
-    for planner in planners {
+    for planner in planners_with(1.0, budget) {
         let started = std::time::Instant::now();
         let r = planner.plan(
             &NoProof(&map),

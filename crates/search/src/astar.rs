@@ -62,19 +62,12 @@ use crate::{NotFound, SearchResult, SearchStats};
 /// assert_eq!(tuples.cost, 4.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn astar<N, FN, IN, FH, FS>(
+pub fn astar<N: Eq + Hash + Clone, IN: IntoIterator<Item = (N, f64)>>(
     start: &N,
-    mut successors: FN,
-    mut heuristic: FH,
-    mut success: FS,
-) -> Result<SearchResult<N>, NotFound>
-where
-    N: Eq + Hash + Clone,
-    FN: FnMut(&N) -> IN,
-    IN: IntoIterator<Item = (N, f64)>,
-    FH: FnMut(&N) -> f64,
-    FS: FnMut(&N) -> bool,
-{
+    mut successors: impl FnMut(&N) -> IN,
+    mut heuristic: impl FnMut(&N) -> f64,
+    mut success: impl FnMut(&N) -> bool,
+) -> Result<SearchResult<N>, NotFound> {
     // Nodes live in a vector addressed by index; the map finds a node's index.
     struct Slot<N> {
         node: N,

@@ -84,20 +84,13 @@ impl Default for BacktrackLimits {
 /// assert!(found.path.contains(&(2, 4)));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn backtrack<N, FN, IN, FH, FS>(
+pub fn backtrack<N: Eq + Hash + Clone, IN: IntoIterator<Item = (N, f64)>>(
     start: &N,
-    mut successors: FN,
-    mut heuristic: FH,
-    mut success: FS,
+    mut successors: impl FnMut(&N) -> IN,
+    mut heuristic: impl FnMut(&N) -> f64,
+    mut success: impl FnMut(&N) -> bool,
     limits: BacktrackLimits,
-) -> Result<SearchResult<N>, NotFound>
-where
-    N: Eq + Hash + Clone,
-    FN: FnMut(&N) -> IN,
-    IN: IntoIterator<Item = (N, f64)>,
-    FH: FnMut(&N) -> f64,
-    FS: FnMut(&N) -> bool,
-{
+) -> Result<SearchResult<N>, NotFound> {
     /// One node of the current path and the children it has not tried yet, sorted so that
     /// the best (smallest f) is at the end, ready to `pop`.
     struct Frame<N> {

@@ -36,16 +36,10 @@ use crate::{NotFound, SearchResult, astar};
 /// assert_eq!(found.cost, 3.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn dijkstra<N, FN, IN, FS>(
+pub fn dijkstra<N: Eq + Hash + Clone, IN: IntoIterator<Item = (N, f64)>>(
     start: &N,
-    successors: FN,
-    success: FS,
-) -> Result<SearchResult<N>, NotFound>
-where
-    N: Eq + Hash + Clone,
-    FN: FnMut(&N) -> IN,
-    IN: IntoIterator<Item = (N, f64)>,
-    FS: FnMut(&N) -> bool,
-{
+    successors: impl FnMut(&N) -> IN,
+    success: impl FnMut(&N) -> bool,
+) -> Result<SearchResult<N>, NotFound> {
     astar(start, successors, |_| 0.0, success)
 }

@@ -50,25 +50,21 @@ pub(crate) trait HeapKey: Copy {
     fn lt(a: Self, b: Self) -> bool;
 }
 
-#[cfg(feature = "grid")]
-/// Ordered as integers (Theta*'s keys).
-impl HeapKey for u128 {
-    const MAX: Self = u128::MAX;
-    #[inline(always)]
-    fn lt(a: Self, b: Self) -> bool {
-        a < b
-    }
+/// Unsigned integers are keys ordered as integers: `u128` for Theta*, `u64` for the grid
+/// searches on grids where their keys fit 64 bits.
+macro_rules! integer_heap_key {
+    ($($int:ty),*) => {$(
+        #[cfg(feature = "grid")]
+        impl HeapKey for $int {
+            const MAX: Self = <$int>::MAX;
+            #[inline(always)]
+            fn lt(a: Self, b: Self) -> bool {
+                a < b
+            }
+        }
+    )*};
 }
-
-#[cfg(feature = "grid")]
-/// Ordered as integers (the grid searches' keys on grids where they fit 64 bits).
-impl HeapKey for u64 {
-    const MAX: Self = u64::MAX;
-    #[inline(always)]
-    fn lt(a: Self, b: Self) -> bool {
-        a < b
-    }
-}
+integer_heap_key!(u64, u128);
 
 #[cfg(feature = "grid")]
 /// A key ordered by its upper 64 bits only (one `u64` comparison): the lower half carries

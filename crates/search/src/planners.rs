@@ -19,121 +19,6 @@ enum Algo {
     LazyThetaStar,
 }
 
-/// Grid A* as a planner: optimal 4- or 8-connected paths through cell centres.
-///
-/// The workspace must be an [`envmap::GridMap`] (found through
-/// [`Workspace::as_any`]); its [`blocked_from`](GridMap::blocked_from) says which zones
-/// block. The returned path starts at the query's start point exactly, goes through the
-/// centres of the cells of the grid path and ends at the goal point. For a goal disc the
-/// search runs to the cell of the disc's centre and the path is cut at the first cell
-/// centre inside the disc (so it is valid but, for a large disc, not necessarily the
-/// shortest path into it). `cost` is the Euclidean length of the returned polyline, world
-/// units. `stats.expansions`, `stats.pushes` and `stats.nodes` (distinct cells reached)
-/// come from the search.
-///
-/// ```
-/// use envmap::GridMap;
-/// use hyplan_core::{Goal, Point2, Query};
-/// use search::GridAstar;
-/// let map = GridMap::from_ascii("
-///     ....
-///     .##.
-///     ....
-/// ")?;
-/// let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(3.5, 1.5)));
-/// let plan = GridAstar::default().plan(&map, &query, &mut rand::rng())?;
-/// assert_eq!(plan.path.first(), Some(&query.start));
-/// assert_eq!(plan.path.last(), Some(&Point2::new(3.5, 1.5)));
-/// assert_eq!(plan.cost, 5.0);
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize),
-    serde(default, deny_unknown_fields)
-)]
-pub struct GridAstar {
-    /// Move rules (8-connected, no corner cutting by default).
-    pub options: GridOptions,
-    /// Expansions (`max_iterations`) and wall time the search may spend, the
-    /// connectivity check and the grid's preparation included; unset by default
-    /// (no expansion or time limit): the search ends with the path or when the grid is
-    /// exhausted.
-    pub budget: Budget,
-}
-
-impl Default for GridAstar {
-    fn default() -> Self {
-        Self {
-            options: GridOptions::default(),
-            budget: UNLIMITED,
-        }
-    }
-}
-
-/// Grid Dijkstra as a planner: the same paths as [`GridAstar`] (equal costs), without a
-/// heuristic. Same conventions as [`GridAstar`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize),
-    serde(default, deny_unknown_fields)
-)]
-pub struct GridDijkstra {
-    /// Move rules (8-connected, no corner cutting by default).
-    pub options: GridOptions,
-    /// Expansions (`max_iterations`) and wall time the search may spend, the
-    /// connectivity check and the grid's preparation included; unset by default
-    /// (no expansion or time limit): the search ends with the path or when the grid is
-    /// exhausted.
-    pub budget: Budget,
-}
-
-impl Default for GridDijkstra {
-    fn default() -> Self {
-        Self {
-            options: GridOptions::default(),
-            budget: UNLIMITED,
-        }
-    }
-}
-
-/// Theta* as a planner: any-angle paths between cell centres, each segment free under the
-/// map's exact `segment_free`. Same conventions as [`GridAstar`]. By default the lazy
-/// variant ([`GridSearch::lazy_theta_star`]: one line-of-sight test per expansion);
-/// `lazy: false` is the original ([`GridSearch::theta_star`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize),
-    serde(default, deny_unknown_fields)
-)]
-pub struct ThetaStar {
-    /// Connectivity of the underlying grid moves (corner cutting is never used).
-    pub options: GridOptions,
-    /// Lazy Theta* (Nash, Koenig and Tovey 2010; default `true`): a cell's line of sight
-    /// to its parent is tested once, when it is expanded. `false`: Theta* (Nash et al.
-    /// 2007), which tests it for every neighbour of every expanded cell, several times
-    /// slower on open maps (60 s against 4 s on a 2000 x 2000 floor plan).
-    pub lazy: bool,
-    /// Expansions (`max_iterations`) and wall time the search may spend, the
-    /// connectivity check and the grid's preparation included; unset by default
-    /// (no expansion or time limit): the search ends with the path or when the grid is
-    /// exhausted.
-    pub budget: Budget,
-}
-
-impl Default for ThetaStar {
-    fn default() -> Self {
-        Self {
-            options: GridOptions::default(),
-            lazy: true,
-            budget: UNLIMITED,
-        }
-    }
-}
-
 /// The grid searches' default budget: unset, so they search to the end
 /// ([`Budget::for_search`]).
 const UNLIMITED: Budget = Budget {
@@ -141,8 +26,41 @@ const UNLIMITED: Budget = Budget {
     max_time: None,
 };
 
+/// A grid search as a planner: the parameter struct (its own fields, then the budget, with
+/// their defaults), its inherent `plan` and its [`Planner`] implementation. The struct's
+/// `algo()` names the search it runs.
 macro_rules! grid_planner {
-    ($ty:ident, $name:literal) => {
+    (
+        $(#[$doc:meta])*
+        $ty:ident, $name:literal {
+            $($(#[$field_doc:meta])* $field:ident: $field_ty:ty = $default:expr,)*
+        }
+    ) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        #[cfg_attr(
+            feature = "serde",
+            derive(serde::Serialize, serde::Deserialize),
+            serde(default, deny_unknown_fields)
+        )]
+        pub struct $ty {
+            $($(#[$field_doc])* pub $field: $field_ty,)*
+            /// Expansions (`max_iterations`) and wall time the search may spend, the
+            /// connectivity check and the grid's preparation included; unset by default
+            /// (no expansion or time limit): the search ends with the path or when the grid is
+            /// exhausted.
+            pub budget: Budget,
+        }
+
+        impl Default for $ty {
+            fn default() -> Self {
+                Self {
+                    $($field: $default,)*
+                    budget: UNLIMITED,
+                }
+            }
+        }
+
         impl $ty {
             /// Plans on `map`. The RNG is not used (the search is deterministic); it is
             /// there for the common planner shape. Through the [`Planner`] trait, a
@@ -212,9 +130,65 @@ impl ThetaStar {
     }
 }
 
-grid_planner!(GridAstar, "astar");
-grid_planner!(GridDijkstra, "dijkstra");
-grid_planner!(ThetaStar, "theta-star");
+grid_planner! {
+    /// Grid A* as a planner: optimal 4- or 8-connected paths through cell centres.
+    ///
+    /// The workspace must be an [`envmap::GridMap`] (found through
+    /// [`Workspace::as_any`]); its [`blocked_from`](GridMap::blocked_from) says which zones
+    /// block. The returned path starts at the query's start point exactly, goes through the
+    /// centres of the cells of the grid path and ends at the goal point. For a goal disc the
+    /// search runs to the cell of the disc's centre and the path is cut at the first cell
+    /// centre inside the disc (so it is valid but, for a large disc, not necessarily the
+    /// shortest path into it). `cost` is the Euclidean length of the returned polyline, world
+    /// units. `stats.expansions`, `stats.pushes` and `stats.nodes` (distinct cells reached)
+    /// come from the search.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::{Goal, Point2, Query};
+    /// use search::GridAstar;
+    /// let map = GridMap::from_ascii("
+    ///     ....
+    ///     .##.
+    ///     ....
+    /// ")?;
+    /// let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(3.5, 1.5)));
+    /// let plan = GridAstar::default().plan(&map, &query, &mut rand::rng())?;
+    /// assert_eq!(plan.path.first(), Some(&query.start));
+    /// assert_eq!(plan.path.last(), Some(&Point2::new(3.5, 1.5)));
+    /// assert_eq!(plan.cost, 5.0);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    GridAstar, "astar" {
+        /// Move rules (8-connected, no corner cutting by default).
+        options: GridOptions = GridOptions::default(),
+    }
+}
+
+grid_planner! {
+    /// Grid Dijkstra as a planner: the same paths as [`GridAstar`] (equal costs), without a
+    /// heuristic. Same conventions as [`GridAstar`].
+    GridDijkstra, "dijkstra" {
+        /// Move rules (8-connected, no corner cutting by default).
+        options: GridOptions = GridOptions::default(),
+    }
+}
+
+grid_planner! {
+    /// Theta* as a planner: any-angle paths between cell centres, each segment free under the
+    /// map's exact `segment_free`. Same conventions as [`GridAstar`]. By default the lazy
+    /// variant ([`GridSearch::lazy_theta_star`]: one line-of-sight test per expansion);
+    /// `lazy: false` is the original ([`GridSearch::theta_star`]).
+    ThetaStar, "theta-star" {
+        /// Connectivity of the underlying grid moves (corner cutting is never used).
+        options: GridOptions = GridOptions::default(),
+        /// Lazy Theta* (Nash, Koenig and Tovey 2010; default `true`): a cell's line of sight
+        /// to its parent is tested once, when it is expanded. `false`: Theta* (Nash et al.
+        /// 2007), which tests it for every neighbour of every expanded cell, several times
+        /// slower on open maps (60 s against 4 s on a 2000 x 2000 floor plan).
+        lazy: bool = true,
+    }
+}
 
 fn plan_on_grid(
     map: &GridMap,

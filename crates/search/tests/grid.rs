@@ -8,6 +8,15 @@ use crate::common::{legal_moves, octile_length};
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 
+/// An 8-connected search on `map` that may cut corners.
+fn cutting_corners(map: &GridMap) -> GridSearch {
+    let options = GridOptions {
+        corner_cutting: true,
+        ..GridOptions::default()
+    };
+    GridSearch::new(map, options).unwrap()
+}
+
 #[test]
 fn no_corner_cutting_by_default() {
     // The tiny.map case of the peers: (0,0)->(1,1) in file coordinates costs 2, because the
@@ -23,14 +32,7 @@ fn no_corner_cutting_by_default() {
     let p = s.astar((0, 0), (1, 1)).unwrap();
     assert_eq!(p.cost, 2.0);
     assert_eq!(p.cells, vec![(0, 0), (1, 0), (1, 1)]);
-    let mut cut = GridSearch::new(
-        &map,
-        GridOptions {
-            corner_cutting: true,
-            ..GridOptions::default()
-        },
-    )
-    .unwrap();
+    let mut cut = cutting_corners(&map);
     assert_eq!(cut.astar((0, 0), (1, 1)).unwrap().cost, SQRT2);
 }
 
@@ -43,14 +45,7 @@ fn corner_cutting_never_squeezes_between_two_blocks() {
     ",
     )
     .unwrap();
-    let mut cut = GridSearch::new(
-        &map,
-        GridOptions {
-            corner_cutting: true,
-            ..GridOptions::default()
-        },
-    )
-    .unwrap();
+    let mut cut = cutting_corners(&map);
     assert!(matches!(
         cut.astar((0, 0), (1, 1)),
         Err(GridSearchError::NoPath { .. })

@@ -1,12 +1,17 @@
 //! The `Planner` implementations on world points.
 
 use envmap::GridMap;
-use hyplan_core::{Bounds, Goal, PlanError, Planner, Point2, Query, Workspace};
+use hyplan_core::{Goal, PlanError, Planner, Point2, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use search::{GridAstar, GridDijkstra, ThetaStar};
 
 use crate::common::SEED;
+
+#[path = "open_square.rs"]
+mod open_square;
+
+use open_square::OpenSquare;
 
 fn room() -> GridMap {
     GridMap::from_ascii(
@@ -133,25 +138,11 @@ fn unreachable_goal_is_no_path_with_stats() {
     }
 }
 
-/// Not a grid: a free square.
-struct Square;
-impl Workspace for Square {
-    fn bounds(&self) -> Bounds {
-        Bounds::new(Point2::new(0.0, 0.0), Point2::new(1.0, 1.0))
-    }
-    fn is_free(&self, p: Point2) -> bool {
-        self.bounds().contains(p)
-    }
-    fn segment_free(&self, a: Point2, b: Point2) -> bool {
-        self.is_free(a) && self.is_free(b)
-    }
-}
-
 #[test]
 fn non_grid_workspace_is_refused() {
     let q = Query::new(Point2::new(0.1, 0.1), Goal::Point(Point2::new(0.9, 0.9)));
     for p in planners() {
-        match p.plan(&Square, &q, &mut rand::rng()) {
+        match p.plan(&OpenSquare(1.0), &q, &mut rand::rng()) {
             Err(PlanError::InvalidParameter {
                 name: "workspace", ..
             }) => {}

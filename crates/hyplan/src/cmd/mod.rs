@@ -44,6 +44,28 @@ pub fn sim_scenario_error(e: ::sim::ScenarioError) -> anyhow::Error {
     }
 }
 
+/// World units per input unit: a cell for maps given in cells, else 1.
+pub fn input_scale(frame: &envmap::InputFrame) -> f64 {
+    match *frame {
+        envmap::InputFrame::Cells { resolution, .. } => resolution,
+        envmap::InputFrame::World | envmap::InputFrame::MapFrame { .. } => 1.0,
+    }
+}
+
+/// A point given as `X,Y` on the command line.
+pub fn parse_xy(s: &str) -> anyhow::Result<(f64, f64)> {
+    use anyhow::Context as _;
+    let (x, y) = s
+        .split_once(',')
+        .with_context(|| format!("expected X,Y, got {s:?}"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<f64>()
+            .with_context(|| format!("{v:?} in {s:?} is not a number"))
+    };
+    Ok((parse(x)?, parse(y)?))
+}
+
 pub mod bench;
 pub mod explore;
 pub mod map;

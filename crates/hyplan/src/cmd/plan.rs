@@ -19,6 +19,7 @@ use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
 use serde::Serialize;
 
+use super::{input_scale, parse_xy};
 use crate::planners::{self, PlannerFlags};
 
 /// Options of `hyplan plan`.
@@ -145,26 +146,6 @@ pub struct RunRecord {
     /// When no path was found: why.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub no_path: Option<harness::NoPathRecord>,
-}
-
-fn parse_xy(s: &str) -> Result<(f64, f64), String> {
-    let (x, y) = s
-        .split_once(',')
-        .ok_or_else(|| format!("expected X,Y, got {s:?}"))?;
-    let parse = |v: &str| {
-        v.trim()
-            .parse::<f64>()
-            .map_err(|e| format!("{v:?} in {s:?}: {e}"))
-    };
-    Ok((parse(x)?, parse(y)?))
-}
-
-/// World units per input unit.
-fn input_scale(frame: &InputFrame) -> f64 {
-    match *frame {
-        InputFrame::Cells { resolution, .. } => resolution,
-        InputFrame::World | InputFrame::MapFrame { .. } => 1.0,
-    }
 }
 
 /// What the flags resolve to before any run: the map, its frame, the query and the
@@ -330,20 +311,10 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
 
 /// Run `run`: plan with its seed, score and smooth the plan, and make its record.
 fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
-    let Setup {
-        map,
-        frame,
-        scale,
-        query,
-        config,
-        planner,
-        limits,
-    } = setup;
-    let scale = *scale;
     let seed = harness::run_seed(args.seed, run);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let started = Instant::now();
-    let outcome = planner.plan(map, query, &mut rng);
+    let outcome = setup.planner.plan(&setup.map, &setup.query, &mut rng);
     let time_s = started.elapsed().as_secs_f64();
     let mut curve = None;
     let record = match &outcome {
@@ -351,7 +322,7 @@ fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
             let to_input = |pts: &[hyplan_core::Point2]| -> Vec<[f64; 2]> {
                 pts.iter()
                     .map(|&p| {
-                        let (x, y) = frame.from_world(p);
+                        let (x, y) = setup.frame.from_world(p);
                         [x, y]
                     })
                     .collect()
@@ -362,22 +333,22 @@ fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
             let post = harness::post_process(
                 plan,
                 args.smooth,
-                0.25 * map.resolution(),
-                limits.as_ref(),
-                |a, b| map.segment_free_cells(a, b),
+                0.25 * setup.map.resolution(),
+                setup.limits.as_ref(),
+                |a, b| setup.map.segment_free_cells(a, b),
             )
             .map_err(|e| anyhow::anyhow!("--smooth {}: {e}", args.smooth.name()))?;
             if args.smooth != postproc::Smoothing::None {
                 curve = Some(post.smoothed.points.clone());
             }
             RunRecord {
-                planner: config.name().to_string(),
+                planner: setup.config.name().to_string(),
                 run,
                 seed,
                 solved: true,
                 exact: true,
                 time_s,
-                length: Some(plan.length() / scale),
+                length: Some(plan.length() / setup.scale),
                 states_in_path: Some(path.len()),
                 nodes: plan.stats.nodes,
                 iterations: plan.stats.iterations,
@@ -393,7 +364,7 @@ fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
         Err(e) if e.is_no_path() => {
             let stats = e.stats().copied().unwrap_or_default();
             RunRecord {
-                planner: config.name().to_string(),
+                planner: setup.config.name().to_string(),
                 run,
                 seed,
                 solved: false,
@@ -409,8 +380,8 @@ fn run_once(args: &Args, setup: &Setup, run: u64) -> anyhow::Result<Outcome> {
                 turns: None,
                 transfer_time_s: None,
                 no_path: Some(
-                    harness::NoPathRecord::new(e, scale)
-                        .with_budget(config.budget_on(map), RAISE_BUDGET),
+                    harness::NoPathRecord::new(e, setup.scale)
+                        .with_budget(setup.config.budget_on(&setup.map), RAISE_BUDGET),
                 ),
             }
         }

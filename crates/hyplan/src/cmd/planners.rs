@@ -59,43 +59,30 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
 
 /// The capabilities as a short phrase list.
 fn capability_words(c: &Capabilities) -> String {
-    let mut words = vec![c.family.to_string()];
-    words.push(
-        if c.deterministic {
-            "deterministic"
-        } else {
-            "randomised"
-        }
-        .into(),
-    );
-    if c.grid_only {
-        words.push("grid maps only".into());
-    }
-    if c.has_step {
-        words.push(
-            if c.wants_default_step {
-                "step (map-sized by default)"
-            } else {
-                "step"
-            }
-            .into(),
-        );
-    }
-    if c.goal_bias {
-        words.push("goal bias".into());
-    }
-    if c.own_goal_radius {
-        words.push("own goal radius".into());
-    }
-    if c.uses_risk {
-        words.push("pays for the risk band".into());
-    }
-    words.push(
-        match c.explored {
-            Explored::Nodes => "explored = tree nodes",
-            Explored::Expansions => "explored = cells expanded",
-        }
-        .into(),
-    );
+    let family = c.family.to_string();
+    let randomness = if c.deterministic {
+        "deterministic"
+    } else {
+        "randomised"
+    };
+    let explored = match c.explored {
+        Explored::Nodes => "explored = tree nodes",
+        Explored::Expansions => "explored = cells expanded",
+    };
+    // The phrases of the capabilities a planner may have, in the order they are listed.
+    let optional = [
+        (c.grid_only, "grid maps only"),
+        (
+            c.has_step && c.wants_default_step,
+            "step (map-sized by default)",
+        ),
+        (c.has_step && !c.wants_default_step, "step"),
+        (c.goal_bias, "goal bias"),
+        (c.own_goal_radius, "own goal radius"),
+        (c.uses_risk, "pays for the risk band"),
+    ];
+    let mut words = vec![family.as_str(), randomness];
+    words.extend(optional.iter().filter(|(has, _)| *has).map(|(_, w)| *w));
+    words.push(explored);
     words.join(", ")
 }

@@ -13,13 +13,15 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{Context as _, bail};
-use envmap::{GridMap, InputFrame, LoadOptions};
+use envmap::{GridMap, LoadOptions};
 use harness::bench::{self, BenchRun, Comparison, ExperimentInfo, SummaryRow};
 use harness::{Explored, PlannerConfig, PlannerSpec, Scoring};
 use hyplan_core::{Goal, PlanError, Planner, Query, Zone};
 use serde::{Deserialize, Serialize};
+
 mod output;
 
+use super::{input_scale, parse_xy};
 use output::{markdown, write_csv};
 
 /// Options of `hyplan bench`.
@@ -190,26 +192,6 @@ struct Problem {
     planners: Vec<(PlannerSpec, Box<dyn Planner>)>,
     /// For each planner, the RRT* whose progress is recorded (see [`anytime_rrt_star`]).
     anytime: Vec<Option<sampling::RrtStar>>,
-}
-
-/// World units per input unit.
-fn input_scale(frame: &InputFrame) -> f64 {
-    match *frame {
-        InputFrame::Cells { resolution, .. } => resolution,
-        InputFrame::World | InputFrame::MapFrame { .. } => 1.0,
-    }
-}
-
-fn parse_xy(s: &str) -> anyhow::Result<(f64, f64)> {
-    let (x, y) = s
-        .split_once(',')
-        .with_context(|| format!("expected X,Y, got {s:?}"))?;
-    let parse = |v: &str| {
-        v.trim()
-            .parse::<f64>()
-            .with_context(|| format!("{v:?} in {s:?} is not a number"))
-    };
-    Ok((parse(x)?, parse(y)?))
 }
 
 /// The experiment the flags describe, or the RON file's (its map paths made relative to
