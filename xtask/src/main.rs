@@ -9,6 +9,9 @@
 //!   prints plans checked, colliding and panics per planner.
 //! - `cargo xtask proptest-soak [--minutes N]`: the property tests, round after round
 //!   with fresh seeds; a failure prints the seed that replays it.
+//! - `cargo xtask explore-maps [--maps LIST] [--detectors LIST] [--seeds LIST] [--out DIR]`:
+//!   exploration of every building map (issue 27), each detector and seed; a Markdown
+//!   table and JSON of coverage, how each run ended and simulated / wall time.
 
 use std::process::ExitCode;
 
@@ -16,6 +19,7 @@ use clap::{Parser, Subcommand};
 
 mod bench_peers;
 mod explore004;
+mod explore_maps;
 mod report;
 mod reproduce;
 mod rooms;
@@ -43,6 +47,8 @@ enum Task {
     Soak(soak::Args),
     /// The property tests with fresh seeds, round after round.
     ProptestSoak(soak::PropArgs),
+    /// Explore every building map with every detector and seed: coverage table and JSON.
+    ExploreMaps(explore_maps::Args),
 }
 
 fn main() -> ExitCode {
@@ -52,6 +58,7 @@ fn main() -> ExitCode {
         Task::BenchPeers(args) => bench_peers::run(&args),
         Task::Soak(args) => soak::run(&args),
         Task::ProptestSoak(args) => soak::run_proptests(&args),
+        Task::ExploreMaps(args) => explore_maps::run(&args),
         Task::Table4 => rooms::write_table4(std::path::Path::new("scenarios")).map(|files| {
             for f in files {
                 println!("wrote {}", f.display());

@@ -79,7 +79,7 @@ fn diagnose(
         Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res)
     };
     let start = Point2::new(scenario.start.0, scenario.start.1);
-    let (_, reach) = reachable_free(world, res, start);
+    let (_, reach) = reachable_free(world, res, start, scenario.robot.body_radius);
     let missing = |c: usize| reach[c] && map.value(c % w, c / w) != FREE;
     let last = out.snapshots.last().ok_or("no snapshot")?;
     let costmaps = CostmapBuilder::new(

@@ -82,6 +82,20 @@ impl Default for Controller {
     }
 }
 
+/// The clearance a motion from `here` must keep from the remembered hits: `radius`, or,
+/// when the robot is already closer than that to a hit (it stopped against a wall it had
+/// not mapped, or a person came close), a hair less than what it has now: a motion may
+/// not bring the body nearer to anything, but the robot can always back out of a spot
+/// it is wedged in. (Without this, every motion of a wedged robot fails the test and it
+/// stays there for good.)
+#[must_use]
+pub fn clearance_kept(radius: f64, here: Point2, memory: &ObstacleMemory, tick: u64) -> f64 {
+    match memory.nearest_within(here, radius, tick) {
+        Some((d, _)) => (d - 1e-3).max(0.0),
+        None => radius,
+    }
+}
+
 /// What a control step decided.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Command {
@@ -217,7 +231,12 @@ impl Controller {
         if twist.v <= 0.0 {
             return true;
         }
-        let radius = robot.body_radius + self.margin;
+        let radius = clearance_kept(
+            robot.body_radius + self.margin,
+            Point2::new(pose.x, pose.y),
+            memory,
+            tick,
+        );
         let step = 0.025;
         let n = (dist / step).ceil() as usize;
         let time = dist / twist.v;
@@ -248,6 +267,12 @@ impl Controller {
         }
         let dt = self.period();
         let rest = dt + twist.v / robot.acc_v;
+        let kept = clearance_kept(
+            robot.body_radius + self.margin,
+            Point2::new(pose.x, pose.y),
+            memory,
+            tick,
+        );
         let step = 0.05;
         let n = (rest / step).ceil() as usize;
         (0..=n).all(|s| {
@@ -267,11 +292,7 @@ impl Controller {
                 },
                 dist,
             );
-            !memory.loose_within(
-                Point2::new(p.x, p.y),
-                robot.body_radius + self.margin + self.person_speed * tau,
-                tick,
-            )
+            !memory.loose_within(Point2::new(p.x, p.y), kept + self.person_speed * tau, tick)
         })
     }
 
@@ -384,33 +405,44 @@ impl Controller {
         let here = Point2::new(pose.x, pose.y);
         let (k, q) = project(path, progress, here);
         let goal = *path.last().unwrap_or(&here);
-        let carrot = along(path, k, q, self.lookahead);
-        let d = carrot - here;
-        let (s, c) = pose.phi.sin_cos();
-        let (x, y) = (c * d.x + s * d.y, -s * d.x + c * d.y);
-        let angle = y.atan2(x);
-        let want = if angle.abs() > self.rotate_above_deg.to_radians() {
-            Twist {
-                v: 0.0,
-                omega: self.rotate_speed.copysign(angle),
-            }
-        } else {
-            let l_sq = (x * x + y * y).max(1e-9);
-            let kappa = 2.0 * y / l_sq;
-            let mut v = robot.v_max;
-            if kappa.abs() > 1e-9 && 1.0 / kappa.abs() < self.regulate_radius {
-                v *= (1.0 / kappa.abs()) / self.regulate_radius;
-            }
-            let to_goal = (goal - here).norm();
-            if to_goal < self.approach_distance {
-                v *= to_goal / self.approach_distance;
-            }
-            let v = v.max(self.v_min);
-            Twist {
-                v,
-                omega: v * kappa,
+        // The pure-pursuit command toward the carrot `lookahead` ahead on the path.
+        let toward = |lookahead: f64| {
+            let carrot = along(path, k, q, lookahead);
+            let d = carrot - here;
+            let (s, c) = pose.phi.sin_cos();
+            let (x, y) = (c * d.x + s * d.y, -s * d.x + c * d.y);
+            let angle = y.atan2(x);
+            if angle.abs() > self.rotate_above_deg.to_radians() {
+                Twist {
+                    v: 0.0,
+                    omega: self.rotate_speed.copysign(angle),
+                }
+            } else {
+                let l_sq = (x * x + y * y).max(1e-9);
+                let kappa = 2.0 * y / l_sq;
+                let mut v = robot.v_max;
+                if kappa.abs() > 1e-9 && 1.0 / kappa.abs() < self.regulate_radius {
+                    v *= (1.0 / kappa.abs()) / self.regulate_radius;
+                }
+                let to_goal = (goal - here).norm();
+                if to_goal < self.approach_distance {
+                    v *= to_goal / self.approach_distance;
+                }
+                let v = v.max(self.v_min);
+                Twist {
+                    v,
+                    omega: v * kappa,
+                }
             }
         };
+        // Near a wall the arc to the far carrot may cut the corner the path goes round:
+        // a nearer carrot keeps the arc on the path (which the costmap kept clear), or
+        // turns the robot in place toward it.
+        let want = [1.0, 0.5, 0.25]
+            .into_iter()
+            .map(|f| toward(self.lookahead * f))
+            .find(|&w| self.arc_clear(robot, pose, self.limit(robot, prev, w), memory, tick))
+            .unwrap_or_else(|| toward(self.lookahead));
         let want = self.yield_to(robot, pose, want, movers);
         let mut twist = self.limit(robot, prev, want);
         let dt = self.period();

@@ -30,7 +30,8 @@
 //! - Exploration: [`Exploration`], [`Strategy`], [`ExploreOutcome`], [`Coverage`],
 //!   [`RrtDetector`] ([`DetectorKind`]), [`Filter`], [`Assigner`],
 //!   [`nearest_frontier`] (the baseline), [`ViewPoints`], [`explore_then_navigate`].
-//! - Files: [`Scenario`] (RON), [`ScenarioError`]; [`Trace`], [`Row`], [`Event`],
+//! - Files: [`Scenario`] (RON), [`ScenarioError`], [`MapSpec`] (a map file, or a generated
+//!   building at [`BUILDING_RESOLUTION`]); [`Trace`], [`Row`], [`Event`],
 //!   [`Summary`] and their CSV / JSON / SVG outputs ([`write_all`], [`OutputError`]);
 //!   [`soak`] (generated rooms with people, for the safety figures).
 //!
@@ -63,10 +64,12 @@
 //!
 //! None.
 
+mod building;
 mod control;
 mod costmap;
 mod engine;
 mod explore;
+mod grid_cast;
 mod kinematics;
 mod laser;
 mod mapping;
@@ -81,6 +84,7 @@ mod tracking;
 mod validate;
 mod world;
 
+pub use building::BUILDING_RESOLUTION;
 pub use control::{Command, Controller, FollowInput, LocalController};
 pub use costmap::{
     Costmap, CostmapBuilder, CostmapParams, MEMORY_RESOLUTION, ObstacleMemory, rasterize,
@@ -92,11 +96,11 @@ pub use engine::{
 pub use explore::{
     Assigner, ContactCounter, Coverage, CoverageMeter, DetectorKind, Edge, Exploration,
     ExploreOutcome, Filter, FrameRecorder, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM,
-    Region, RegionError, RrtDetector, SelfMapped, Snapshot, Strategy, TrackRecorder, ViewPoints,
-    animation_png, built_cost, built_cost_reach, costmap_steps, edge_check, explore,
-    explore_then_navigate, explore_with, frontier_cells, frontier_clusters, information_gain,
-    mean_shift, nearest_frontier, reachable_free, region_of, revenue, sees, snapshot_scene,
-    snapshot_svg,
+    LeftCause, LeftRegion, Region, RegionError, RrtDetector, SelfMapped, Snapshot, Strategy,
+    TrackRecorder, ViewPoints, animation_png, built_cost, built_cost_reach, costmap_steps,
+    edge_check, explore, explore_then_navigate, explore_with, frontier_cells, frontier_clusters,
+    information_gain, left_by_cause, left_unknown, mean_shift, nearest_frontier, reachable_free,
+    region_of, revenue, sees, snapshot_scene, snapshot_svg,
 };
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, pose_rate, saturate,

@@ -176,7 +176,12 @@ impl Navigator {
     /// Whether a remembered hit touches the path ahead of the robot.
     fn path_blocked(&self, here: Point2, memory: &ObstacleMemory, tick: u64) -> bool {
         let (k, q) = project(&self.path, self.progress, here);
-        let radius = self.robot.body_radius + self.controller.margin();
+        let radius = crate::control::clearance_kept(
+            self.robot.body_radius + self.controller.margin(),
+            here,
+            memory,
+            tick,
+        );
         let step = 0.05;
         let mut s = 0.2;
         while s <= self.params.blocked_lookahead {
@@ -238,14 +243,22 @@ impl Navigator {
             if tick < self.retry_at {
                 return self.brake(prev);
             }
-            let costmap = self.costmaps.build(built, &memory.points(tick));
-            let found = self.planner.plan(
-                &costmap.map,
-                here,
-                self.goal,
-                self.params.goal_tolerance,
-                &mut self.rng,
-            );
+            let hits = memory.points(tick);
+            let mut plan_on = |hits: &[Point2]| {
+                let costmap = self.costmaps.build(built, hits);
+                self.planner.plan(
+                    &costmap.map,
+                    here,
+                    self.goal,
+                    self.params.goal_tolerance,
+                    &mut self.rng,
+                )
+            };
+            // move_base's first recovery, "clear the costmap": a robot hemmed in by
+            // remembered hits (chair legs it passed between) plans on the map alone;
+            // the controller's arc test still keeps it off the hits.
+            let found =
+                plan_on(&hits).or_else(|| (!hits.is_empty()).then(|| plan_on(&[])).flatten());
             match found {
                 Some(path) => {
                     events.push(if self.plans == 0 {

@@ -63,15 +63,25 @@ impl GlobalPlanner {
     }
 }
 
-/// The passable cell nearest `cell` within `max_r` rings: a robot whose centre is a
-/// little too near an obstacle on the coarse costmap starts from there.
-fn nearest_passable(map: &GridMap, cell: (usize, usize), max_r: usize) -> Option<(usize, usize)> {
+/// How far a plan's start may move to the nearest passable cell, m: a robot whose centre
+/// is a little too near an obstacle on the costmap (it stopped close to a wall it had not
+/// yet mapped) starts from there.
+const START_SLACK: f64 = 0.5;
+
+/// [`START_SLACK`] in rings of cells of side `resolution`.
+pub(crate) fn start_rings(resolution: f64) -> usize {
+    (START_SLACK / resolution).ceil() as usize
+}
+
+/// The passable cell nearest `cell` within [`START_SLACK`].
+fn nearest_passable(map: &GridMap, cell: (usize, usize)) -> Option<(usize, usize)> {
     let size = (map.width(), map.height());
-    envmap::nearest_passable(size, cell, max_r, |i, j| map.cell_free(i, j))
+    let rings = start_rings(map.resolution());
+    envmap::nearest_passable(size, cell, rings, |i, j| map.cell_free(i, j))
 }
 
 fn dijkstra(map: &GridMap, start: Point2, goal: Point2) -> Option<Vec<Point2>> {
-    let s = nearest_passable(map, map.world_to_cell(start)?, 5)?;
+    let s = nearest_passable(map, map.world_to_cell(start)?)?;
     let g = map.world_to_cell(goal)?;
     if !map.cell_free(g.0, g.1) {
         return None;
@@ -106,7 +116,7 @@ fn other(
     tolerance: f64,
     rng: &mut ChaCha8Rng,
 ) -> Option<Vec<Point2>> {
-    let s = nearest_passable(map, map.world_to_cell(start)?, 5)?;
+    let s = nearest_passable(map, map.world_to_cell(start)?)?;
     let s_pt = if s == map.world_to_cell(start)? {
         start
     } else {

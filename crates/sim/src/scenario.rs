@@ -43,6 +43,41 @@ pub enum MapSpec {
         #[serde(default)]
         origin: (f64, f64),
     },
+    /// A generated multi-room building, its lower-left corner at (0, 0): envmap's
+    /// [`floor_plan`](envmap::floor_plan) at [`BUILDING_RESOLUTION`] (0.05 m) per cell.
+    /// Outer walls, then regions split recursively until a split would leave a room
+    /// under `max(4 door, 5 m)` a side (so rooms of 5 to about 10 m with 0.8 m doors); each
+    /// split wall is pierced by one door, at least a wall's thickness from either end, and
+    /// a region four smallest rooms wide is split by a corridor one to two doors wide
+    /// between two walls. Every room is reachable. Lengths are whole cells;
+    /// `door + 2 wall` must be under 5 m. The same seed gives the same building.
+    ///
+    /// ```ron
+    /// world: (map: Some(Building(size: (60.0, 60.0), door: 0.8, wall: 0.15, seed: 0)))
+    /// ```
+    ///
+    /// [`BUILDING_RESOLUTION`]: crate::BUILDING_RESOLUTION
+    Building {
+        /// Width and height, m.
+        size: (f64, f64),
+        /// Width of every door, m (default 0.8).
+        #[serde(default = "default_door")]
+        door: f64,
+        /// Thickness of every wall, m (default 0.15).
+        #[serde(default = "default_wall")]
+        wall: f64,
+        /// Seed of the layout (default 0).
+        #[serde(default)]
+        seed: u64,
+    },
+}
+
+fn default_door() -> f64 {
+    0.8
+}
+
+fn default_wall() -> f64 {
+    0.15
 }
 
 /// The static world.
@@ -316,6 +351,12 @@ impl Scenario {
                             &e.to_string(),
                         )
                     })?,
+                MapSpec::Building {
+                    size,
+                    door,
+                    wall,
+                    seed,
+                } => crate::building::building(*size, *door, *wall, *seed, path, max_cells)?,
             };
             bounds = Some(grid.bounds());
             statics.add_grid(grid.clone());
@@ -410,6 +451,9 @@ impl Scenario {
                 ("world.map.resolution".to_string(), resolution.to_string())
             }
             (None, Some(MapSpec::Ros(file))) => ("world.map".to_string(), file.clone()),
+            (None, Some(MapSpec::Building { size: (w, h), .. })) => {
+                ("world.map.size".to_string(), format!("({w}, {h})"))
+            }
             (None, None) => ("world.size".to_string(), "missing".to_string()),
         };
         // (which grid, the field of its resolution, the resolution, its default)

@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use crate::scenario::{Scenario, ScenarioError};
+use crate::scenario::{MapSpec, Scenario, ScenarioError};
 use crate::world::Shape;
 
 /// Checks against one scenario file.
@@ -192,6 +192,15 @@ impl Check<'_> {
             self.positive("world.size.height", h)?;
         }
         self.point("world.origin", sc.world.origin)?;
+        if let Some(MapSpec::Building {
+            size, door, wall, ..
+        }) = &sc.world.map
+        {
+            self.positive("world.map.size.width", size.0)?;
+            self.positive("world.map.size.height", size.1)?;
+            self.positive("world.map.door", *door)?;
+            self.positive("world.map.wall", *wall)?;
+        }
         for (i, s) in sc.world.shapes.iter().enumerate() {
             self.shape(&format!("world.shapes[{i}]"), s)?;
         }

@@ -8,6 +8,8 @@ use envmap::GridMap;
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
+use crate::grid_cast::GridRays;
+
 /// A static obstacle, in metres (scenario syntax): the workspace's one shape type.
 pub use envmap::Shape;
 
@@ -243,15 +245,21 @@ impl StaticWorld {
     /// Distance from `p` to the nearest obstacle boundary and the nearest boundary point
     /// (`(inf, p)` in an empty world). Inside an obstacle it is still the distance to the
     /// boundary: use [`inside`](Self::inside) to tell.
+    ///
+    /// A loaded map's part is found from its cells (a ring of the distance transform
+    /// around `p`) rather than by sweeping its segments, unless `p` lies in a forbidden
+    /// cell or off the map.
     #[must_use]
     pub fn nearest(&self, p: Point2) -> (f64, Point2) {
-        let mut best = (f64::INFINITY, p);
-        for s in self.segments.iter().chain(&self.grid_segments) {
-            let q = closest_on_segment(p, s.a, s.b);
-            let d = (p - q).norm();
-            if d < best.0 {
-                best = (d, q);
-            }
+        let mut best = nearest_on_segments(p, &self.segments);
+        let from_grid = self
+            .grid
+            .as_ref()
+            .and_then(GridRays::new)
+            .and_then(|g| g.nearest(p))
+            .unwrap_or_else(|| nearest_on_segments(p, &self.grid_segments));
+        if from_grid.0 < best.0 {
+            best = from_grid;
         }
         for d in &self.discs {
             let v = p - d.center;
@@ -280,6 +288,20 @@ pub fn closest_on_segment(p: Point2, a: Point2, b: Point2) -> Point2 {
     }
     let t = ((p - a).dot(&ab) / len_sq).clamp(0.0, 1.0);
     a + ab * t
+}
+
+/// The nearest point of `segments` to `p` and its distance (`(INFINITY, p)` for none),
+/// the first of equals kept.
+fn nearest_on_segments(p: Point2, segments: &[Segment]) -> (f64, Point2) {
+    let mut best = (f64::INFINITY, p);
+    for s in segments {
+        let q = closest_on_segment(p, s.a, s.b);
+        let d = (p - q).norm();
+        if d < best.0 {
+            best = (d, q);
+        }
+    }
+    best
 }
 
 /// The maximal runs of cell edges along each of `lines` grid lines of `len` edges:

@@ -300,8 +300,12 @@ fn reachable_free_of_a_loaded_map_leaves_out_cells_touching_a_wall() {
     let (scenario, world) =
         Scenario::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let res = scenario.mapping.resolution;
-    let (w, reach) =
-        sim::reachable_free(&world, res, Point2::new(scenario.start.0, scenario.start.1));
+    let (w, reach) = sim::reachable_free(
+        &world,
+        res,
+        Point2::new(scenario.start.0, scenario.start.1),
+        0.0,
+    );
     let grid = world.statics.grid.as_ref().unwrap();
     let o = world.bounds.min;
     let forbidden = |i: i64, j: i64| {

@@ -1,7 +1,10 @@
 //! The laser against two independent references: a brute-force f64 cast of every beam
-//! against every obstacle (a 2 x 2 linear solve per segment), and parry2d's ray casts.
+//! against every obstacle (a 2 x 2 linear solve per segment), and parry2d's ray casts;
+//! on loaded maps, the cast over the map's cells against the brute force over its
+//! boundary segments, and the nearest obstacle point likewise.
 
-use hyplan_core::Point2;
+use envmap::GridMap;
+use hyplan_core::{Point2, Zone};
 use nalgebra::{Matrix2, Vector2};
 use parry2d::query::{Ray, RayCast};
 use proptest::prelude::*;
@@ -36,10 +39,10 @@ fn ref_disc(o: Point2, d: Vector2<f64>, c: Point2, r: f64) -> Option<f64> {
 }
 
 /// The brute-force range of the ray from `o` along unit `d`: the nearest hit over every
-/// segment, disc and person.
+/// segment (a loaded map's boundary segments included), disc and person.
 fn reference_range(w: &StaticWorld, people: &[Disc], o: Point2, d: Vector2<f64>) -> f64 {
     let mut best = f64::INFINITY;
-    for s in &w.segments {
+    for s in w.segments.iter().chain(&w.grid_segments) {
         if let Some(t) = ref_segment(o, d, s.a, s.b) {
             best = best.min(t);
         }
@@ -163,6 +166,152 @@ proptest! {
                 "beam {} of {}: laser {} reference {}", k, beams, got, best
             );
         }
+    }
+}
+
+/// A random map of `w x h` cells (`cells` a side) of side `res` from `origin`: each cell
+/// forbidden with probability `density`, else free or (a tenth) high-risk, which is no
+/// obstacle. The laser sweeps a small map's boundary segments and marches over a large
+/// one's cells (past 1.5 segments a beam): both are drawn.
+fn grid_strategy(cells: std::ops::Range<usize>) -> impl Strategy<Value = GridMap> {
+    (
+        cells.clone(),
+        cells,
+        0.02..1.0f64,
+        point(),
+        0.0..0.45f64,
+        any::<u64>(),
+    )
+        .prop_map(|(w, h, res, origin, density, seed)| {
+            use rand::{Rng, SeedableRng};
+            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+            let zones = (0..w * h)
+                .map(|_| {
+                    if rng.random_bool(density) {
+                        Zone::Forbidden
+                    } else if rng.random_bool(0.1) {
+                        Zone::Risk
+                    } else {
+                        Zone::Free
+                    }
+                })
+                .collect();
+            // The origin shifted so that the 10 m test square overlaps the map.
+            let o = Point2::new(
+                origin.0 - 0.5 * w as f64 * res,
+                origin.1 - 0.5 * h as f64 * res,
+            );
+            GridMap::from_zones(w, h, res, o, zones).unwrap()
+        })
+}
+
+/// Every beam of a scan against the brute-force reference (ranges beyond `range_max`
+/// read as no return).
+fn check_scan(
+    w: &StaticWorld,
+    people: &[Disc],
+    o: Point2,
+    heading: f64,
+    (fov, beams, range_max): (f64, usize, f64),
+) -> Result<(), TestCaseError> {
+    let model = LaserModel::new(Laser {
+        fov_deg: fov,
+        beams,
+        range_min: 0.0,
+        range_max,
+        noise_sd: 0.0,
+        ..Laser::default()
+    });
+    let scan = model.cast(w, people, o, heading);
+    let inc = fov.to_radians() / (beams - 1) as f64;
+    for k in 0..beams {
+        let a = heading - fov.to_radians() / 2.0 + k as f64 * inc;
+        let d = Vector2::new(a.cos(), a.sin());
+        let best = reference_range(w, people, o, d);
+        let best = if best > range_max {
+            f64::INFINITY
+        } else {
+            best
+        };
+        let got = scan.ranges[k];
+        prop_assert!(
+            (got.is_infinite() && best.is_infinite()) || (got - best).abs() <= 1e-9 * best.max(1.0),
+            "beam {} of {}: laser {} reference {}",
+            k,
+            beams,
+            got,
+            best
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    /// A loaded map alone, the scanner anywhere (in a free cell, in a forbidden one, off
+    /// the map): the cast over the cells equals the brute force over the boundary
+    /// segments, within and beyond a finite range.
+    #[test]
+    fn a_loaded_map_casts_as_its_segments(
+        map in prop_oneof![grid_strategy(2..24), grid_strategy(40..90)],
+        ox in -1.0..11.0f64, oy in -1.0..11.0f64, heading in -3.2..3.2f64,
+        fov in 30.0..360.0f64, beams in 2usize..200, range_max in 0.5..30.0f64,
+    ) {
+        let mut w = StaticWorld::default();
+        w.add_grid(map);
+        let o = Point2::new(ox, oy);
+        check_scan(&w, &[], o, heading, (fov, beams, range_max))?;
+        check_scan(&w, &[], o, heading, (fov, beams, 1e9))?;
+    }
+
+    /// A loaded map with shapes and a person on it (the scanner outside every obstacle):
+    /// the sweep of the shapes and the cast over the cells together equal the brute force.
+    #[test]
+    fn a_loaded_map_with_shapes_equals_the_reference(
+        map in prop_oneof![grid_strategy(2..24), grid_strategy(40..90)],
+        shapes in prop::collection::vec(shape_strategy(), 0..5),
+        ox in 0.0..10.0f64, oy in 0.0..10.0f64, heading in -3.2..3.2f64,
+        person in (0.0..10.0f64, 0.0..10.0f64, 0.1..0.4f64),
+        beams in 2usize..400,
+    ) {
+        let mut w = world(&shapes);
+        w.add_grid(map);
+        let o = Point2::new(ox, oy);
+        let people = [Disc { center: Point2::new(person.0, person.1), radius: person.2 }];
+        prop_assume!(!w.inside(o) && (o - people[0].center).norm() > people[0].radius);
+        check_scan(&w, &people, o, heading, (360.0, beams, 1e9))?;
+    }
+
+    /// The nearest obstacle point on a loaded map (found from the cells) is as near as the
+    /// nearest point of every segment and disc, and lies on one of them.
+    #[test]
+    fn nearest_on_a_loaded_map_equals_the_segments(
+        map in prop_oneof![grid_strategy(2..24), grid_strategy(40..90)],
+        shapes in prop::collection::vec(shape_strategy(), 0..3),
+        px in -1.0..11.0f64, py in -1.0..11.0f64,
+    ) {
+        let mut w = world(&shapes);
+        w.add_grid(map);
+        let p = Point2::new(px, py);
+        let (got, q) = w.nearest(p);
+        let mut best = f64::INFINITY;
+        let mut on_segment = f64::INFINITY;
+        for s in w.segments.iter().chain(&w.grid_segments) {
+            let e = s.b - s.a;
+            let t = ((p - s.a).dot(&e) / e.norm_squared()).clamp(0.0, 1.0);
+            best = best.min((p - (s.a + e * t)).norm());
+            let tq = ((q - s.a).dot(&e) / e.norm_squared()).clamp(0.0, 1.0);
+            on_segment = on_segment.min((q - (s.a + e * tq)).norm());
+        }
+        for c in &w.discs {
+            best = best.min(((p - c.center).norm() - c.radius).abs());
+            on_segment = on_segment.min(((q - c.center).norm() - c.radius).abs());
+        }
+        prop_assert!(
+            (got.is_infinite() && best.is_infinite()) || (got - best).abs() <= 1e-9 * best.max(1.0),
+            "nearest {} reference {}", got, best
+        );
+        prop_assert!(got.is_infinite() || ((q - p).norm() - got).abs() <= 1e-9 && on_segment <= 1e-9);
     }
 }
 

@@ -1,5 +1,6 @@
 //! Public-API tests of `sim`, one module per area.
 
+mod building;
 mod explore;
 mod kinematics;
 mod laser;

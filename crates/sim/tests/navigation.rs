@@ -207,3 +207,30 @@ proptest::proptest! {
         }
     }
 }
+
+/// The narrowest door the default robot (0.178 m radius, 0.03 m padding, 0.05 m costmap)
+/// drives through on a known map: a 0.65 m clear opening passes, 0.55 m does not (the
+/// costmap keeps the centre 0.279 m from obstacle cell centres: body, padding and a cell
+/// diagonal).
+#[test]
+fn narrowest_door_passed() {
+    let through = |opening: f64| {
+        // Walls 0.1 m thick, which reach half their thickness past their end points.
+        let (a, b) = (2.0 - opening / 2.0 - 0.05, 2.0 + opening / 2.0 + 0.05);
+        let text = format!(
+            "SimScenario(name: \"door\", world: (size: (6.0, 4.0), shapes: [\
+             Wall(from: (3.0, 0.0), to: (3.0, {a}), thickness: 0.1), \
+             Wall(from: (3.0, {b}), to: (3.0, 4.0), thickness: 0.1)]), \
+             start: (1.0, 2.0), goal: (5.0, 2.0), known_map: true, time_limit: 60.0)"
+        );
+        let path = Path::new("door.ron");
+        let sc = Scenario::parse(&text, path).unwrap();
+        let world = sc.build_world(path).unwrap();
+        let out = sim::run(&sc, &world, 1, GlobalPlanner::Dijkstra);
+        let contacts = out.trace.contacts.len();
+        (out.trace.summary.reached, contacts)
+    };
+    assert_eq!(through(0.65), (true, 0));
+    assert_eq!(through(0.70), (true, 0));
+    assert!(!through(0.55).0);
+}

@@ -121,6 +121,29 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         outcome.published,
         outcome.contact_ticks
     )?;
+    // What is left, and why: "it stopped" always comes with "why".
+    let left = sim::left_unknown(&scenario, &world, &outcome);
+    let by_cause = sim::left_by_cause(&left);
+    if by_cause.is_empty() {
+        outln!("left unknown: nothing of the reachable free space")?;
+    } else {
+        outln!(
+            "left unknown: {:.2} m^2 of the reachable free space in {} patches",
+            left.iter().map(|r| r.area).sum::<f64>(),
+            left.len()
+        )?;
+        for (cause, area, n) in &by_cause {
+            let biggest = left.iter().find(|r| r.cause == *cause);
+            outln!(
+                "  {area:8.2} m^2 in {n:3} patches: {}{}",
+                cause.describe(),
+                biggest.map_or(String::new(), |r| format!(
+                    " (largest {:.2} m^2 at ({:.2}, {:.2}))",
+                    r.area, r.centre.x, r.centre.y
+                ))
+            )?;
+        }
+    }
     let [free, occupied, unknown] = outcome.map.counts();
     outln!(
         "built map: {} x {} cells of {} m: {free} free, {occupied} occupied, {unknown} unknown",
@@ -137,6 +160,27 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             outln!("wrote {}", p.display())?;
             Ok(())
         };
+        let summary = serde_json::json!({
+            "scenario": outcome.scenario,
+            "detector": strategy.name(),
+            "seed": args.seed,
+            "finished": outcome.finished,
+            "end_time_s": outcome.end_time,
+            "coverage": outcome.final_coverage(),
+            "reachable_free_m2": outcome.reachable_area,
+            "missed_m2": outcome.missed_area(),
+            "time_to_95_s": outcome.time_to(0.95),
+            "time_to_99_s": outcome.time_to(0.99),
+            "distance_m": outcome.distance,
+            "goals": outcome.goals.len(),
+            "blacklisted": outcome.blacklisted.len(),
+            "left_by_cause": by_cause
+                .iter()
+                .map(|(c, a, n)| serde_json::json!({"cause": c, "area_m2": a, "patches": n}))
+                .collect::<Vec<_>>(),
+            "left": left,
+        });
+        put("summary.json", &serde_json::to_string_pretty(&summary)?)?;
         put("coverage.csv", &outcome.coverage_csv())?;
         put("track.csv", &outcome.track_csv())?;
         let yaml = dir.join("map.yaml");

@@ -77,7 +77,28 @@ pub(crate) struct Explorer {
     pub finished: bool,
     /// Heading turned so far in the initial turn; `None` once it is over.
     turned: Option<f64>,
+    /// Frontiers given up on (no plan, stuck) with the unknown area around them then:
+    /// lifted from the blacklist when the map near them changes.
+    given_up: Vec<GivenUp>,
+    /// Frontiers the final pass sent the robot to: each once.
+    final_tries: Vec<Point2>,
 }
+
+/// A frontier given up on, and what the map around it looked like then.
+#[derive(Debug, Clone, Copy)]
+struct GivenUp {
+    at: Point2,
+    /// Unknown area within the blacklist radius, m^2.
+    unknown: f64,
+    /// Times it may still be lifted.
+    lifts: u8,
+}
+
+/// Change of the unknown area near a given-up frontier that lifts it from the blacklist,
+/// m^2 (forty 5 cm cells: a few laser beams' worth, not noise).
+const LIFT_AREA: f64 = 0.1;
+/// Times a given-up frontier may be lifted: a goal that fails three times is left.
+const MAX_LIFTS: u8 = 2;
 
 impl Explorer {
     pub(crate) fn new(
@@ -145,6 +166,8 @@ impl Explorer {
             anchor: (crate::world::pt(scenario.start), 0),
             finished: false,
             turned: ex.initial_turn.then_some(0.0),
+            given_up: Vec::new(),
+            final_tries: Vec::new(),
             ex,
         }
     }
@@ -221,16 +244,55 @@ impl Explorer {
             ));
         }
         if self.goal.is_none() {
+            self.lift_changed(&sim.map);
             self.choose_goal(sim);
         }
         if self.goal.is_none() {
             let since = *self.idle_since.get_or_insert(tick);
-            if tick - since >= self.clock.finish {
+            if tick - since >= self.clock.finish && !self.final_pass(sim) {
                 self.finished = true;
             }
         } else {
             self.idle_since = None;
         }
+    }
+
+    /// Lifts from the blacklist the given-up frontiers whose surroundings changed on the
+    /// map since (a door seen open, a wall mapped): the reason they failed may be gone.
+    fn lift_changed(&mut self, map: &OccupancyGrid) {
+        let radius = self.ex.blacklist_radius;
+        for g in &mut self.given_up {
+            if g.lifts == 0 {
+                continue;
+            }
+            let unknown = information_gain(map, g.at, radius);
+            if (unknown - g.unknown).abs() >= LIFT_AREA {
+                g.lifts -= 1;
+                g.unknown = unknown;
+                self.assigner.blacklist.retain(|b| *b != g.at);
+            }
+        }
+    }
+
+    /// Before the exploration is declared finished: the nearest frontier of the built map
+    /// the robot can reach on its current costmap (clusters of `min_frontier_cells`),
+    /// whatever the detectors and the blacklist say, each tried once. Whether one was
+    /// sent.
+    fn final_pass(&mut self, sim: &mut Sim<'_>) -> bool {
+        let (here, tick) = (sim.here(), sim.tick());
+        let hits = sim.memory.points(tick);
+        let costmap = sim.nav.costmaps.build(Some(&sim.map), &hits);
+        let radius = self.ex.blacklist_radius;
+        let tried = &self.final_tries;
+        let Some(f) = nearest_frontier(&sim.map, &costmap, here, self.ex.min_frontier_cells, |p| {
+            tried.iter().any(|t| (t - p).norm() <= radius)
+        }) else {
+            return false;
+        };
+        self.final_tries.push(f);
+        self.idle_since = None;
+        self.send(sim, f, f);
+        true
     }
 
     /// Ends the goal `g` when the navigator gave up, the robot is stuck, or the filter's
@@ -276,6 +338,11 @@ impl Explorer {
         } else {
             if given_up {
                 self.failed.push(f);
+                self.given_up.push(GivenUp {
+                    at: f,
+                    unknown: information_gain(&sim.map, f, self.ex.blacklist_radius),
+                    lifts: MAX_LIFTS,
+                });
             }
             self.assigner.blacklist.push(f);
             self.recovering = pinned && self.ex.view_points;
@@ -291,7 +358,7 @@ impl Explorer {
 
     /// Picks the next frontier (and its view point) and sends the navigator there.
     fn choose_goal(&mut self, sim: &mut Sim<'_>) {
-        let (tick, t, here) = (sim.tick(), sim.time(), sim.here());
+        let here = sim.here();
         let (ex, rrt, res) = (&self.ex, self.rrt, self.res);
         let map = &sim.map;
         // The baseline without view points needs the whole costmap (reachability);
@@ -353,23 +420,29 @@ impl Explorer {
             self.candidates = next.map(|(f, _)| f).into_iter().collect();
         }
         if let Some((f, g)) = next {
-            self.goal = Some(g);
-            self.target = (self.ex.view_points && !self.recovering).then_some(f);
-            self.anchor = (here, tick);
-            sim.nav.set_goal(g);
-            self.goals.push((t, g));
-            self.goal_log.push(GoalRecord {
-                t,
-                goal: g,
-                target: f,
-                ended: t,
-                end: GoalEnd::Open,
-                plans: 0,
-                failures: 0,
-                stops: 0,
-                driven: 0.0,
-            });
+            self.send(sim, f, g);
         }
+    }
+
+    /// Sends the navigator to goal `g` for frontier `f`, and opens the goal's record.
+    fn send(&mut self, sim: &mut Sim<'_>, f: Point2, g: Point2) {
+        let (tick, t, here) = (sim.tick(), sim.time(), sim.here());
+        self.goal = Some(g);
+        self.target = (self.ex.view_points && !self.recovering).then_some(f);
+        self.anchor = (here, tick);
+        sim.nav.set_goal(g);
+        self.goals.push((t, g));
+        self.goal_log.push(GoalRecord {
+            t,
+            goal: g,
+            target: f,
+            ended: t,
+            end: GoalEnd::Open,
+            plans: 0,
+            failures: 0,
+            stops: 0,
+            driven: 0.0,
+        });
     }
 }
 

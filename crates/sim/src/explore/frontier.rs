@@ -60,9 +60,9 @@ pub fn frontier_clusters(map: &OccupancyGrid) -> Vec<Vec<(usize, usize)>> {
 
 /// Breadth-first steps from `from` over the costmap cells below the inscribed cost
 /// (`u32::MAX` where unreachable); the start cell is always entered, or, when it is at
-/// the inscribed cost or above, the nearest cell below it within 5 cells (the planner's
-/// rule: else a robot whose centre is a little too near an obstacle on the coarse
-/// costmap would find every cell unreachable).
+/// the inscribed cost or above, the nearest cell below it within the planner's start
+/// slack (else a robot whose centre is a little too near an obstacle on the costmap
+/// would find every cell unreachable).
 #[must_use]
 pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
     let (w, h) = (costmap.map.width(), costmap.map.height());
@@ -75,7 +75,8 @@ pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
         .map(|&c| c < INSCRIBED_INFLATED_OBSTACLE)
         .collect();
     let open = Mask::from_cells(w, h, open).expect("a cost per cell");
-    let start = nearest_passable((w, h), cell, 5, |i, j| open.get(i, j)).unwrap_or(cell);
+    let rings = crate::planner::start_rings(costmap.map.resolution());
+    let start = nearest_passable((w, h), cell, rings, |i, j| open.get(i, j)).unwrap_or(cell);
     steps_from(&open, start, Connectivity::Eight)
 }
 

@@ -20,6 +20,7 @@ mod explorer;
 mod figure;
 mod filter;
 mod frontier;
+mod left;
 mod params;
 mod run;
 mod selfmap;
@@ -31,6 +32,7 @@ pub use explorer::{GLOBAL_STREAM, LOCAL_STREAM};
 pub use figure::{animation_png, snapshot_scene, snapshot_svg};
 pub use filter::{Filter, built_cost, built_cost_reach, information_gain, mean_shift};
 pub use frontier::{costmap_steps, frontier_cells, frontier_clusters, nearest_frontier};
+pub use left::{LeftCause, LeftRegion, left_by_cause, left_unknown};
 pub use params::{Exploration, Strategy};
 pub use run::{
     ContactCounter, Coverage, CoverageMeter, ExploreOutcome, FrameRecorder, GoalEnd, GoalRecord,

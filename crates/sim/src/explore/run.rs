@@ -27,7 +27,7 @@
 //! Every goal's story is kept in
 //! [`ExploreOutcome::goal_log`] (the `explore_why` example prints it).
 
-use envmap::{CellFrame, Connectivity, Mask, flood_fill};
+use envmap::{CellFrame, Connectivity, Mask, distance_transform, flood_fill, nearest_passable};
 use hyplan_core::{Bounds, Point2};
 
 use crate::costmap::{mark_near_segments, rasterize};
@@ -228,7 +228,14 @@ impl ExploreOutcome {
 }
 
 /// The cells of a `res` grid over `bounds` that are free in the true world (no obstacle
-/// reaches into them) and 4-connected to `start`'s cell: (columns, mask).
+/// reaches into them) and reachable for a round robot of `radius` from `start`:
+/// (columns, mask). With `radius` 0, every free cell 4-connected to `start`'s cell.
+///
+/// Reachable for the footprint: the cells the body covers while its centre moves over
+/// the cells whose centre lies at least `radius` plus half a cell from every obstacle
+/// cell's centre, 4-connected to the start (its own cell, or the nearest such cell within
+/// half a metre): a room behind a door narrower than the robot does not count, the
+/// corners of a room it enters do.
 ///
 /// "Reaches into" is [`rasterize`]'s rule for shapes, a cell whose centre lies within half
 /// a cell diagonal of an obstacle's outline, applied to a loaded map's obstacle outline
@@ -239,7 +246,7 @@ impl ExploreOutcome {
 /// mark occupied (a hit on a cell boundary falls on either side with the range noise, and
 /// on the near side when the beam travels towards -x or -y).
 #[must_use]
-pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<bool>) {
+pub fn reachable_free(world: &World, res: f64, start: Point2, radius: f64) -> (usize, Vec<bool>) {
     let (w, h, mut occupied) = rasterize(world.bounds, &world.statics, res);
     let frame = CellFrame::new(world.bounds.min, res, w, h);
     // The margin keeps a cell that only touches a corner on the same side of the rule
@@ -250,8 +257,32 @@ pub fn reachable_free(world: &World, res: f64, start: Point2) -> (usize, Vec<boo
     };
     let free = occupied.iter().map(|&o| !o).collect();
     let free = Mask::from_cells(w, h, free).expect("a cell per cell");
-    let reach = flood_fill(&free, start, Connectivity::Four);
-    (w, reach.cells().to_vec())
+    if radius <= 0.0 {
+        let reach = flood_fill(&free, start, Connectivity::Four);
+        return (w, reach.cells().to_vec());
+    }
+    let body = radius / res + 0.5;
+    let walls = Mask::from_cells(w, h, occupied).expect("a cell per cell");
+    let clear = distance_transform(&walls);
+    let centres = clear
+        .dist_sq()
+        .iter()
+        .map(|&d| f64::from(d) >= body * body)
+        .collect();
+    let centres = Mask::from_cells(w, h, centres).expect("a cell per cell");
+    let rings = crate::planner::start_rings(res);
+    let Some(start) = nearest_passable((w, h), start, rings, |i, j| centres.get(i, j)) else {
+        return (w, vec![false; w * h]);
+    };
+    let driven = flood_fill(&centres, start, Connectivity::Four);
+    let swept = distance_transform(&driven);
+    let reach = swept
+        .dist_sq()
+        .iter()
+        .zip(free.cells())
+        .map(|(&d, &f)| f && f64::from(d) <= body * body)
+        .collect();
+    (w, reach)
 }
 
 /// The region of the scenario's exploration (its corners, or the world's bounds) with
@@ -316,6 +347,7 @@ pub fn explore_with(
         world,
         scenario.mapping.resolution,
         start,
+        scenario.robot.body_radius,
         &sim.map,
         progress,
     );
@@ -365,16 +397,17 @@ pub struct CoverageMeter<'p> {
 }
 
 impl<'p> CoverageMeter<'p> {
-    /// The meter of `world`'s cells of side `res` reachable from `start` ([`reachable_free`]),
-    /// starting from `map`; `progress` sees every sample.
+    /// The meter of `world`'s cells of side `res` reachable from `start` by a robot of
+    /// `radius` ([`reachable_free`]), starting from `map`; `progress` sees every sample.
     pub fn new(
         world: &World,
         res: f64,
         start: Point2,
+        radius: f64,
         map: &OccupancyGrid,
         progress: &'p mut dyn FnMut(&Coverage),
     ) -> Self {
-        let (_, reach) = reachable_free(world, res, start);
+        let (_, reach) = reachable_free(world, res, start, radius);
         let reach_count = reach.iter().filter(|r| **r).count();
         Self {
             free_count: map.count_free(&reach),

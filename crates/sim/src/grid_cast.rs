@@ -1,0 +1,346 @@
+//! Rays and nearest points against a loaded map's own cells, at a cost set by the
+//! distances involved rather than by the map's wall count or extent.
+//!
+//! A loaded map's obstacles are its forbidden cells; [`crate::StaticWorld::add_grid`] also
+//! keeps them as the boundary segments between forbidden and other cells (the grid's
+//! outside counts as not forbidden). A ray meets that boundary first where it first
+//! changes between a forbidden and another cell, so casting it means finding that cell:
+//! a march over the grid's exact distance transform (GridMap's, cached with the map)
+//! crosses open space in strides that cannot reach a forbidden cell, and a cell-by-cell
+//! traversal (Amanatides-Woo) finishes the last cells exactly. The distance returned is
+//! computed from the grid line the ray crosses, as the segment's own intersection would
+//! be, so casts agree with the segment sweep to rounding (a property test checks it).
+
+use envmap::{CellFrame, GridMap};
+use hyplan_core::{Point2, Zone};
+use nalgebra::Vector2;
+
+/// Squared distance transform value (cells^2) from which a cell is crossed by a stride
+/// instead of cell by cell: four cells to the nearest forbidden centre leave a stride of
+/// at least 2.5 cells (fewer make strides that cost more than the cells they skip).
+const STRIDE_FROM: u32 = 16;
+
+/// A loaded map's cells with their distances to the nearest forbidden cell.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct GridRays<'a> {
+    frame: CellFrame,
+    /// Squared distance (cells^2) from each cell centre to the nearest forbidden centre:
+    /// 0 exactly on forbidden cells.
+    dist_sq: &'a [u32],
+    /// `1 / resolution`.
+    per_cell: f64,
+}
+
+impl<'a> GridRays<'a> {
+    /// The map's cells and its (cached) distance transform of the forbidden cells.
+    pub(crate) fn new(map: &'a GridMap) -> Option<Self> {
+        let field = map.distance_from(Zone::Forbidden)?;
+        Some(Self {
+            frame: map.frame(),
+            dist_sq: field.dist_sq(),
+            per_cell: 1.0 / map.resolution(),
+        })
+    }
+
+    /// The squared distance of cell `(i, j)`, which the caller keeps inside the grid.
+    fn d2(&self, i: i64, j: i64) -> u32 {
+        self.dist_sq[j as usize * self.frame.width + i as usize]
+    }
+
+    fn in_grid(&self, i: i64, j: i64) -> bool {
+        i >= 0 && j >= 0 && (i as usize) < self.frame.width && (j as usize) < self.frame.height
+    }
+
+    /// Vertical grid line `i` (as `add_grid` places the segments' ends).
+    fn x_line(&self, i: i64) -> f64 {
+        self.frame.origin.x + i as f64 * self.frame.resolution
+    }
+
+    /// Horizontal grid line `j`.
+    fn y_line(&self, j: i64) -> f64 {
+        self.frame.origin.y + j as f64 * self.frame.resolution
+    }
+
+    /// Distance along unit ray `d` from `o` to the first boundary of the forbidden cells,
+    /// if there is one before `limit` (a hit a rounding error beyond it may be returned:
+    /// the caller compares). Exact to rounding but for rays through a cell corner or
+    /// along a grid line, where the segments' ends decide ties that the traversal breaks
+    /// one way.
+    pub(crate) fn range(&self, o: Point2, d: Vector2<f64>, limit: f64) -> Option<f64> {
+        let (w, h) = (self.frame.width as i64, self.frame.height as i64);
+        let inv = (1.0 / d.x, 1.0 / d.y);
+        let (x_lines, y_lines) = (
+            (self.x_line(0), self.x_line(w)),
+            (self.y_line(0), self.y_line(h)),
+        );
+        let (tx_in, tx_out) = slab(o.x, d.x, inv.0, x_lines);
+        let (ty_in, ty_out) = slab(o.y, d.y, inv.1, y_lines);
+        let t_in = tx_in.max(ty_in).max(0.0);
+        let t_end = tx_out.min(ty_out).min(limit);
+        // A hit found a rounding error past the end is still handed back.
+        let t_end = t_end + 1e-9 * (1.0 + t_end.abs());
+        if t_in.is_nan() || t_end.is_nan() || t_in > t_end {
+            return None;
+        }
+        // The traversal runs in cell units.
+        let end = t_end * self.per_cell;
+        let mut walk = Walk::new(self, o, d, inv, t_in * self.per_cell);
+        let start_forbidden = self.d2(walk.i, walk.j) == 0;
+        if t_in > 0.0 {
+            // Entering the grid from outside, where nothing is forbidden: the map's edge
+            // is a boundary, at the exact (divided) distance of the side crossed last.
+            return if start_forbidden {
+                let exact = |o: f64, d: f64, (lo, hi): (f64, f64)| {
+                    if d > 0.0 {
+                        (lo - o) / d
+                    } else if d < 0.0 {
+                        (hi - o) / d
+                    } else {
+                        f64::NEG_INFINITY
+                    }
+                };
+                Some(exact(o.x, d.x, x_lines).max(exact(o.y, d.y, y_lines)))
+            } else {
+                self.search(walk, t_in * self.per_cell, end)
+            };
+        }
+        if !start_forbidden {
+            return self.search(walk, 0.0, end);
+        }
+        // The scanner stands in a forbidden cell: the boundary is where the ray leaves
+        // the forbidden cells (into a free one or out of the grid).
+        loop {
+            if walk.step() > end {
+                return None;
+            }
+            if !self.in_grid(walk.i, walk.j) || self.d2(walk.i, walk.j) != 0 {
+                return Some(walk.entry(self));
+            }
+        }
+    }
+
+    /// From a cell that is not forbidden, at `s` cells along the ray, the entry into the
+    /// first forbidden cell before `end` cells.
+    fn search(&self, mut walk: Walk, mut s: f64, end: f64) -> Option<f64> {
+        loop {
+            let d2 = self.d2(walk.i, walk.j);
+            if d2 >= STRIDE_FROM {
+                // No forbidden square is nearer to any point p than the distance between
+                // centres minus |p - c| (p to its cell's centre) minus half a diagonal
+                // (the forbidden centre to its square's corner), all in cells. A hair
+                // less covers the rounding of p.
+                let (px, py) = walk.at(s);
+                let (dx, dy) = (
+                    (px - walk.i as f64 - 0.5).abs(),
+                    (py - walk.j as f64 - 0.5).abs(),
+                );
+                // |p - c| <= max + (sqrt 2 - 1) min: a bound without a square root on
+                // the march's critical path.
+                let off = dx.max(dy) + (std::f64::consts::SQRT_2 - 1.0) * dx.min(dy);
+                let stride = f64::from(d2).sqrt() - off - std::f64::consts::FRAC_1_SQRT_2 - 1e-6;
+                if stride > 0.0 {
+                    s += stride;
+                    if s > end {
+                        return None;
+                    }
+                    walk.jump(self, s);
+                    continue;
+                }
+            }
+            s = walk.step();
+            if s > end || !self.in_grid(walk.i, walk.j) {
+                return None;
+            }
+            if self.d2(walk.i, walk.j) == 0 {
+                return Some(walk.entry(self));
+            }
+        }
+    }
+
+    /// The nearest point of the forbidden cells to `p` and its distance, for `p` in a
+    /// cell of the grid that is not forbidden (`None` otherwise: the caller sweeps the
+    /// segments); `Some((INFINITY, p))` on a map with no forbidden cell.
+    pub(crate) fn nearest(&self, p: Point2) -> Option<(f64, Point2)> {
+        let (ci, cj) = self.frame.cell_of(p)?;
+        let d2 = self.dist_sq[cj * self.frame.width + ci];
+        if d2 == 0 {
+            return None;
+        }
+        if d2 == envmap::DistanceField::NONE {
+            return Some((f64::INFINITY, p));
+        }
+        let res = self.frame.resolution;
+        let off = (p - self.frame.cell_center(ci, cj)).norm() / res;
+        // In cells: the nearest forbidden centre is at D from this cell's centre, so its
+        // square is at most D + off from p; a square that near has its centre at most
+        // half a diagonal further, so within D + 2 off + 0.71 of this centre. Only the
+        // ring between D and that radius can hold the nearest square.
+        let outer = f64::from(d2).sqrt() + 2.0 * off + std::f64::consts::FRAC_1_SQRT_2 + 1e-6;
+        let outer2 = outer * outer;
+        let reach = outer.floor() as i64;
+        let mut best = (f64::INFINITY, p);
+        for b in -reach..=reach {
+            let j = cj as i64 + b;
+            let rest = outer2 - (b * b) as f64;
+            if j < 0 || j as usize >= self.frame.height || rest < 0.0 {
+                continue;
+            }
+            let a_hi = rest.sqrt().floor() as i64;
+            // Offsets with a^2 + b^2 < D^2 hold no forbidden centre.
+            let inner = i64::from(d2) - b * b;
+            let a_lo = if inner <= 0 { 0 } else { isqrt_ceil(inner) };
+            for a in a_lo..=a_hi {
+                for i in [ci as i64 - a, ci as i64 + a] {
+                    if i < 0 || i as usize >= self.frame.width || self.d2(i, j) != 0 {
+                        continue;
+                    }
+                    let (x, y) = (self.x_line(i), self.y_line(j));
+                    let q = Point2::new(p.x.clamp(x, x + res), p.y.clamp(y, y + res));
+                    let dist = (p - q).norm();
+                    if dist < best.0 {
+                        best = (dist, q);
+                    }
+                }
+            }
+        }
+        Some(best)
+    }
+}
+
+/// The smallest `a >= 0` with `a * a >= n`, for `n > 0`.
+fn isqrt_ceil(n: i64) -> i64 {
+    let mut a = (n as f64).sqrt() as i64;
+    while a * a < n {
+        a += 1;
+    }
+    while a > 0 && (a - 1) * (a - 1) >= n {
+        a -= 1;
+    }
+    a
+}
+
+/// Parameters where the ray `o + t d` (one axis, `inv` = `1 / d`) is between `lo` and
+/// `hi`: an empty interval when it never is.
+fn slab(o: f64, d: f64, inv: f64, (lo, hi): (f64, f64)) -> (f64, f64) {
+    if d > 0.0 {
+        ((lo - o) * inv, (hi - o) * inv)
+    } else if d < 0.0 {
+        ((hi - o) * inv, (lo - o) * inv)
+    } else if (lo..=hi).contains(&o) {
+        (f64::NEG_INFINITY, f64::INFINITY)
+    } else {
+        (f64::INFINITY, f64::NEG_INFINITY)
+    }
+}
+
+/// A cell-by-cell traversal of a ray, in cell units (the grid's lines at the integers,
+/// the ray's parameter in cells). Each crossing's parameter is computed from the line
+/// itself (no running sums, which drift over a long beam), so a traversal moved on by a
+/// stride picks up exactly.
+#[derive(Debug, Clone, Copy)]
+struct Walk {
+    /// The ray's origin in cells, its direction (unit) and `1 / d` per axis (infinite
+    /// along an axis the ray does not move on).
+    o: (f64, f64),
+    d: Vector2<f64>,
+    inv: (f64, f64),
+    /// The ray's origin in the world, for the exact distance of a hit.
+    from: Point2,
+    /// Cell step per axis, and the offset (1 or 0) of the line the ray leaves a cell by.
+    step: (i64, i64),
+    ahead: (i64, i64),
+    i: i64,
+    j: i64,
+    /// Parameters of the next vertical and horizontal line crossings.
+    sx: f64,
+    sy: f64,
+    /// Whether the last step crossed a vertical line.
+    last_x: bool,
+}
+
+impl Walk {
+    /// The walk of ray `o + t d` (world) from the cell holding its point at `s` cells.
+    fn new(g: &GridRays<'_>, o: Point2, d: Vector2<f64>, inv: (f64, f64), s: f64) -> Self {
+        let origin = g.frame.origin;
+        let mut walk = Self {
+            o: ((o.x - origin.x) * g.per_cell, (o.y - origin.y) * g.per_cell),
+            d,
+            from: o,
+            inv,
+            step: (
+                if d.x > 0.0 { 1 } else { -1 },
+                if d.y > 0.0 { 1 } else { -1 },
+            ),
+            ahead: (i64::from(d.x > 0.0), i64::from(d.y > 0.0)),
+            i: 0,
+            j: 0,
+            sx: 0.0,
+            sy: 0.0,
+            last_x: false,
+        };
+        walk.jump(g, s);
+        walk
+    }
+
+    /// The ray's point at `s` cells, in cells.
+    #[inline]
+    fn at(&self, s: f64) -> (f64, f64) {
+        (self.o.0 + self.d.x * s, self.o.1 + self.d.y * s)
+    }
+
+    /// Moves to the cell holding the ray's point at `s`, clamped to the grid (`s` may put
+    /// the point a rounding error outside).
+    #[inline]
+    fn jump(&mut self, g: &GridRays<'_>, s: f64) {
+        let (u, v) = self.at(s);
+        // Truncation is flooring once clamped to the grid (and needs no libm call).
+        self.i = (u as i64).clamp(0, g.frame.width as i64 - 1);
+        self.j = (v as i64).clamp(0, g.frame.height as i64 - 1);
+        self.sx = self.cross_x();
+        self.sy = self.cross_y();
+    }
+
+    /// Where the ray leaves column `i` (infinite for a ray along y).
+    #[inline]
+    fn cross_x(&self) -> f64 {
+        if self.d.x == 0.0 {
+            return f64::INFINITY;
+        }
+        ((self.i + self.ahead.0) as f64 - self.o.0) * self.inv.0
+    }
+
+    #[inline]
+    fn cross_y(&self) -> f64 {
+        if self.d.y == 0.0 {
+            return f64::INFINITY;
+        }
+        ((self.j + self.ahead.1) as f64 - self.o.1) * self.inv.1
+    }
+
+    /// Moves to the next cell; the parameter (cells) where the ray enters it.
+    #[inline]
+    fn step(&mut self) -> f64 {
+        self.last_x = self.sx < self.sy;
+        if self.last_x {
+            let s = self.sx;
+            self.i += self.step.0;
+            self.sx = self.cross_x();
+            s
+        } else {
+            let s = self.sy;
+            self.j += self.step.1;
+            self.sy = self.cross_y();
+            s
+        }
+    }
+
+    /// The distance (world) where the ray entered the current cell, from the grid line
+    /// it crossed, divided as a segment's intersection is.
+    fn entry(&self, g: &GridRays<'_>) -> f64 {
+        if self.last_x {
+            (g.x_line(self.i + 1 - self.ahead.0) - self.from.x) / self.d.x
+        } else {
+            (g.y_line(self.j + 1 - self.ahead.1) - self.from.y) / self.d.y
+        }
+    }
+}
