@@ -9,8 +9,13 @@
 //! maximum. Each of those runs is checked (99 % coverage, ended by itself or by the time
 //! limit after reaching it): a broken run must not look fast.
 //!
+//! The group `explore-maps` times one exploration (both detectors, seed 0) of each
+//! real-building map of `data/ros_maps/` (the scenarios `scenarios/sim/explore-<map>.ron`)
+//! and prints its simulated seconds per second of thread CPU before the timed loop.
+//!
 //! Run with `cargo bench -p hyplan-benches --bench explore`; `EXPLORE_BENCH_SEEDS=0` skips
-//! the per-seed table.
+//! the per-seed table; `cargo bench -p hyplan-benches --bench explore -- explore-maps` runs
+//! the real maps alone.
 
 use std::path::Path;
 
@@ -65,9 +70,41 @@ fn explore22(c: &mut Criterion) {
     g.finish();
 }
 
+/// The real-building maps with an exploration scenario.
+const MAPS: [&str; 5] = [
+    "aws_small_house",
+    "yujin_rnd_hokuyo",
+    "uos_avz5floor_open",
+    "mit_building_31",
+    "mit_stata_basement",
+];
+
+fn explore_maps(c: &mut Criterion) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim");
+    let mut g = c.benchmark_group("explore-maps");
+    g.sample_size(10);
+    for map in MAPS {
+        let file = dir.join(format!("explore-{map}.ron"));
+        let (scenario, world) = Scenario::load(&file).expect("the exploration scenario loads");
+        let t0 = cpu_time::ThreadTime::now();
+        let out = sim::explore(&scenario, &world, 0, Strategy::Both).expect("valid region");
+        let cpu = t0.elapsed().as_secs_f64();
+        eprintln!(
+            "explore-{map} both seed 0: {:.2} % in {:.0} s simulated, {cpu:.2} s thread CPU ({:.0}x real time)",
+            100.0 * out.final_coverage(),
+            out.end_time,
+            out.end_time / cpu
+        );
+        g.bench_function(map, |b| {
+            b.iter(|| sim::explore(&scenario, &world, 0, Strategy::Both).expect("valid region"));
+        });
+    }
+    g.finish();
+}
+
 /// The criterion entry points (the macro's generated function carries no doc).
 #[allow(missing_docs)]
 mod entry {
-    criterion::criterion_group!(benches, super::explore22);
+    criterion::criterion_group!(benches, super::explore22, super::explore_maps);
 }
 criterion_main!(entry::benches);
