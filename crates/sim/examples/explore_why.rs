@@ -2,21 +2,18 @@
 //! explore_why -- SCENARIO.ron [local|global|both|frontier] [SEED] [--map]`.
 //!
 //! Prints every goal (when, why it ended, what the navigator did for it), then each
-//! patch of reachable free space (8-connected) not known free at the end: its size, where
-//! it is, how much of it is unknown or wrongly occupied, and what stood between it and
-//! the robot: the frontier cells bordering it (how many, their best filter gain, their
-//! built-map cost), the distance from the patch to the nearest cell the robot's centre
-//! may reach (breadth-first on the final costmap from the final pose), and the final
-//! filter frontiers and blacklisted goals near it. `--map` draws the final map around the
+//! patch of reachable free space not known free at the end with its cause
+//! ([`sim::left_unknown`]: its size, where it is, its frontier cells and how many the
+//! robot can reach on its final costmap), and the final filter frontiers and ended goals
+//! near it. `--map` draws the final map around the
 //! reachable space (`#` occupied, `.` free, ` ` unknown, `?` reachable but unknown, `!`
 //! reachable but occupied, `o` robot, `g` goals, `x` given up).
 
-use envmap::{Connectivity, Mask, clusters};
 use hyplan_core::Point2;
 use sim::costmap_steps;
+use sim::reachable_free;
 use sim::{CostmapBuilder, Scenario, Strategy};
 use sim::{FREE, OCCUPIED};
-use sim::{information_gain, reachable_free};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
@@ -74,13 +71,11 @@ fn diagnose(
     let map = &out.map;
     let res = map.params.resolution;
     let o = map.origin();
-    let (w, h) = (map.width(), map.height());
     let centre = |i: usize, j: usize| {
         Point2::new(o.x + (i as f64 + 0.5) * res, o.y + (j as f64 + 0.5) * res)
     };
     let start = Point2::new(scenario.start.0, scenario.start.1);
     let (_, reach) = reachable_free(world, res, start, scenario.robot.body_radius);
-    let missing = |c: usize| reach[c] && map.value(c % w, c / w) != FREE;
     let last = out.snapshots.last().ok_or("no snapshot")?;
     let costmaps = CostmapBuilder::new(
         world.bounds,
@@ -91,12 +86,6 @@ fn diagnose(
     let costmap = costmaps.build(Some(map), &[]);
     let here = Point2::new(last.pose.x, last.pose.y);
     let steps = costmap_steps(&costmap, here);
-    let cw = costmap.map.width();
-    let steps_at = |p: Point2| {
-        let cell = costmap.map.world_to_cell(p);
-        cell.map_or(u32::MAX, |(u, v)| steps[v * cw + u])
-    };
-    let inflation = costmaps.inflation();
     let reachable_cells = steps.iter().filter(|&&s| s != u32::MAX).count();
     let views = sim::ViewPoints {
         costmap: &costmap,
@@ -126,79 +115,30 @@ fn diagnose(
             .map(|g| g.target)
             .any(|b| (b - p).norm() <= scenario.exploration.blacklist_radius)),
     );
-    let missing_mask =
-        Mask::from_cells(w, h, (0..w * h).map(missing).collect()).ok_or("map size")?;
-    let all = (0..h).flat_map(|j| (0..w).map(move |i| (i, j)));
-    let mut patches: Vec<Vec<usize>> = clusters(&missing_mask, all, Connectivity::Eight)
-        .into_iter()
-        .map(|c| c.into_iter().map(|(i, j)| j * w + i).collect())
-        .collect();
-    patches.sort_by_key(|p| std::cmp::Reverse(p.len()));
-    let total: usize = patches.iter().map(Vec::len).sum();
+    // The patches and their causes are the library's (`sim::left_unknown`); the example
+    // adds what the exploration's records say near each.
+    let left = sim::left_unknown(scenario, world, out);
+    let total: f64 = left.iter().map(|r| r.area).sum();
     println!(
-        "reachable cells not known free: {total} ({:.3} m2) in {} patches",
-        total as f64 * res * res,
-        patches.len()
+        "reachable free space not known free: {total:.3} m2 in {} patches",
+        left.len()
     );
-    let wrongly_occupied: usize = patches
-        .iter()
-        .flatten()
-        .filter(|&&c| map.value(c % w, c / w) == OCCUPIED)
-        .count();
-    println!(
-        "  of which occupied on the built map: {wrongly_occupied} ({:.3} m2, {:.2} % of the reachable area); unknown: {} ({:.3} m2, {:.2} %)",
-        wrongly_occupied as f64 * res * res,
-        100.0 * wrongly_occupied as f64 * res * res / out.reachable_area,
-        total - wrongly_occupied,
-        (total - wrongly_occupied) as f64 * res * res,
-        100.0 * (total - wrongly_occupied) as f64 * res * res / out.reachable_area,
-    );
-    println!("patches with unknown cells:");
-    for cells in &patches {
-        let occupied = cells
-            .iter()
-            .filter(|&&c| map.value(c % w, c / w) == OCCUPIED)
-            .count();
-        if occupied == cells.len() {
-            continue;
-        }
-        let n = cells.len() as f64;
-        let (sx, sy) = cells.iter().fold((0.0, 0.0), |(x, y), &c| {
-            let p = centre(c % w, c / w);
-            (x + p.x, y + p.y)
-        });
-        let mid = Point2::new(sx / n, sy / n);
-        let border = border_of(map, cells);
-        let best_gain = border
-            .iter()
-            .map(|&(a, b)| information_gain(map, centre(a, b), scenario.exploration.filter_radius))
-            .fold(0.0, f64::max);
-        let least_cost = border
-            .iter()
-            .map(|&(a, b)| sim::built_cost(map, &inflation, centre(a, b)))
-            .min();
-        let nearest_reach = nearest_reachable(&costmap, &steps, map, cells);
-        let border_reachable = border
-            .iter()
-            .filter(|&&(a, b)| steps_at(centre(a, b)) != u32::MAX)
-            .count();
-        let near = |p: &Point2| {
-            cells
-                .iter()
-                .any(|&c| (centre(c % w, c / w) - p).norm() <= 0.5)
-        };
+    for (cause, area, n) in sim::left_by_cause(&left) {
+        println!("  {area:8.3} m2 in {n:3} patches: {}", cause.describe());
+    }
+    println!("patches:");
+    for r in &left {
+        // "Near": within the radius of a disc of the patch's area, and at least 0.5 m.
+        let near_radius = (r.area / std::f64::consts::PI).sqrt().max(0.5);
+        let near = |p: &Point2| (p - r.centre).norm() <= near_radius;
         println!(
-            "  {:4} cells ({:.3} m2, {} occupied) at ({:.2}, {:.2}): frontier cells {} ({} reachable), best gain {:.3} m2, least cost {:?}; nearest reachable cell {:.2} m; filter frontiers near {}, blacklisted near {}",
-            cells.len(),
-            n * res * res,
-            occupied,
-            mid.x,
-            mid.y,
-            border.len(),
-            border_reachable,
-            best_gain,
-            least_cost,
-            nearest_reach,
+            "  {:8.3} m2 at ({:.2}, {:.2}): {}; frontier cells {} ({} reachable); filter frontiers near {}, goals ended near {}",
+            r.area,
+            r.centre.x,
+            r.centre.y,
+            r.cause.describe(),
+            r.frontier_cells,
+            r.reachable_frontier_cells,
             last.frontiers.iter().filter(|p| near(p)).count(),
             out.goal_log
                 .iter()
@@ -210,49 +150,6 @@ fn diagnose(
         draw_map(map, &reach, here, out);
     }
     Ok(())
-}
-
-/// Free cells of the built map touching the patch (4-neighbours): its frontier.
-fn border_of(map: &sim::OccupancyGrid, cells: &[usize]) -> Vec<(usize, usize)> {
-    let (w, h) = (map.width(), map.height());
-    let mut border = Vec::new();
-    for &c in cells {
-        let (i, j) = (c % w, c / w);
-        for (a, b) in [
-            (i + 1, j),
-            (i.wrapping_sub(1), j),
-            (i, j + 1),
-            (i, j.wrapping_sub(1)),
-        ] {
-            if a < w && b < h && map.value(a, b) == FREE && !border.contains(&(a, b)) {
-                border.push((a, b));
-            }
-        }
-    }
-    border
-}
-
-/// Straight-line distance from the patch to the nearest reachable costmap cell, m.
-fn nearest_reachable(
-    costmap: &sim::Costmap,
-    steps: &[u32],
-    map: &sim::OccupancyGrid,
-    cells: &[usize],
-) -> f64 {
-    let w = map.width();
-    let mut nearest = f64::INFINITY;
-    for v in 0..costmap.map.height() {
-        for u in 0..costmap.map.width() {
-            if steps[v * costmap.map.width() + u] == u32::MAX {
-                continue;
-            }
-            let q = costmap.map.cell_center(u, v);
-            for &c in cells {
-                nearest = nearest.min((map.cell_center(c % w, c / w) - q).norm());
-            }
-        }
-    }
-    nearest
 }
 
 /// The final map around the reachable space (see the module doc for the glyphs).

@@ -430,10 +430,9 @@ impl<'w> Sim<'w> {
             // A hit on a wall lands in the wall's cell or, with the range noise, in the
             // free cell before it: an occupied cell among the 3 x 3 around it explains it.
             let map = &self.map;
-            let near = 1.5 * map.params.resolution * std::f64::consts::SQRT_2;
             self.memory.explain(&scan, |p| {
                 map.cell_of(p)
-                    .is_some_and(|c| map.nearest_occupied_centre(p, c, 1) <= near)
+                    .is_some_and(|c| map.nearest_occupied_centre(p, c, 1).is_finite())
             });
         }
         self.memory.insert(scan, tick);
