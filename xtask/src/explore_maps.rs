@@ -64,6 +64,9 @@ pub struct Args {
     /// when a run starts and ends).
     #[arg(long, default_value_t = 500.0)]
     pub progress_every: f64,
+    /// The conformance check: fail (exit 1) naming every run below 99 % coverage.
+    #[arg(long)]
+    pub check: bool,
 }
 
 /// One run: what it measured.
@@ -207,6 +210,29 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         100.0 * TARGET,
         out.join("table.md").display()
     );
+    let short: Vec<String> = records
+        .iter()
+        .filter(|r| !r.reached())
+        .map(|r| {
+            format!(
+                "{} {} seed {}: {:.1} % ({}, {:.0} s)",
+                r.map,
+                r.detector,
+                r.seed,
+                100.0 * r.coverage,
+                r.ended(),
+                r.end_time_s
+            )
+        })
+        .collect();
+    if args.check && !short.is_empty() {
+        bail!(
+            "{} runs below {:.0} % coverage:\n  {}",
+            short.len(),
+            100.0 * TARGET,
+            short.join("\n  ")
+        );
+    }
     Ok(())
 }
 
@@ -485,6 +511,7 @@ mod tests {
             jobs: Some(1),
             max_time: Some(5.0),
             progress_every: 0.0,
+            check: false,
         }
     }
 

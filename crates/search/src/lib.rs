@@ -18,8 +18,13 @@
 //! - [`GridSearch::astar`], [`GridSearch::dijkstra`]: 4/8-connected, octile costs, corner
 //!   cutting off by default ([`GridOptions`], [`Connectivity`]).
 //! - [`GridSearch::cost_to_go`]: one-to-all Dijkstra, a [`CostField`] for navigation.
-//! - [`GridSearch::theta_star`]: any-angle Theta*.
-//! - [`GridAstar`], [`GridDijkstra`], [`ThetaStar`]: the same as
+//! - [`GridSearch::theta_star`], [`GridSearch::lazy_theta_star`]: any-angle Theta*, eager
+//!   and lazy.
+//! - [`JumpPointSearch`]: jump point search, A*'s optimal costs on 8-connected grids
+//!   without corner cutting, expanding only jump points, with straight jumps scanned 64
+//!   cells at a time over packed bit rows (prepared once per map); [`JpsError`] when the
+//!   move rules rule it out.
+//! - [`GridAstar`], [`GridDijkstra`], [`ThetaStar`], [`LazyThetaStar`], [`Jps`]: the same as
 //!   [`hyplan_core::Planner`]s on world points.
 //!
 //! MovingAI benchmark files: [`read_scen`], [`parse_scen`], [`ScenEntry`], [`ScenError`].
@@ -82,10 +87,13 @@ pub use astar::astar;
 pub use backtrack::{BacktrackLimits, backtrack};
 pub use dijkstra::dijkstra;
 #[cfg(feature = "grid")]
-pub use grid::{Connectivity, CostField, GridOptions, GridPath, GridSearch, GridSearchError};
+pub use grid::{
+    Connectivity, CostField, GridOptions, GridPath, GridSearch, GridSearchError, JpsError,
+    JumpPointSearch,
+};
 pub use movingai::{ScenEntry, ScenError, parse_scen, read_scen};
 #[cfg(feature = "grid")]
-pub use planners::{GridAstar, GridDijkstra, ThetaStar};
+pub use planners::{GridAstar, GridDijkstra, Jps, LazyThetaStar, ThetaStar};
 pub use result::{NotFound, SearchResult, SearchStats};
 
 /// The README's examples, compiled and run as doctests.

@@ -8,7 +8,7 @@ use hyplan_core::{
 };
 use rand_core::RngCore;
 
-use crate::{GridOptions, GridSearch, GridSearchError};
+use crate::{GridOptions, GridPath, GridSearch, GridSearchError, JpsError, JumpPointSearch};
 
 /// Which grid search a planner runs.
 #[derive(Clone, Copy)]
@@ -17,6 +17,7 @@ enum Algo {
     Dijkstra,
     ThetaStar,
     LazyThetaStar,
+    Jps,
 }
 
 /// The grid searches' default budget: unset, so they search to the end
@@ -120,6 +121,18 @@ impl GridDijkstra {
     }
 }
 
+impl Jps {
+    fn algo(&self) -> Algo {
+        Algo::Jps
+    }
+}
+
+impl LazyThetaStar {
+    fn algo(&self) -> Algo {
+        Algo::LazyThetaStar
+    }
+}
+
 impl ThetaStar {
     fn algo(&self) -> Algo {
         if self.lazy {
@@ -175,6 +188,38 @@ grid_planner! {
 }
 
 grid_planner! {
+    /// Jump point search as a planner ([`JumpPointSearch`]): the optimal cost of
+    /// [`GridAstar`] on 8-connected grids without corner cutting, expanding only jump
+    /// points. Same conventions as [`GridAstar`]; `stats.expansions` counts jump points.
+    ///
+    /// The map's passable cells all cost the same (which zones block is the map's
+    /// [`blocked_from`](GridMap::blocked_from)); other move rules (4-connected, corner
+    /// cutting) are refused with [`PlanError::InvalidParameter`] named `options`, whose
+    /// reason names `astar`, the planner that handles them.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::{Goal, Point2, Query};
+    /// use search::{GridAstar, Jps};
+    /// let map = GridMap::from_ascii("
+    ///     ........
+    ///     .######.
+    ///     ........
+    /// ")?;
+    /// let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(7.5, 1.5)));
+    /// let plan = Jps::default().plan(&map, &query, &mut rand::rng())?;
+    /// let astar = GridAstar::default().plan(&map, &query, &mut rand::rng())?;
+    /// assert_eq!(plan.cost, astar.cost);
+    /// assert!(plan.stats.expansions < astar.stats.expansions);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    Jps, "jps" {
+        /// Move rules: only the default (8-connected, no corner cutting) is accepted.
+        options: GridOptions = GridOptions::default(),
+    }
+}
+
+grid_planner! {
     /// Theta* as a planner: any-angle paths between cell centres, each segment free under the
     /// map's exact `segment_free`. Same conventions as [`GridAstar`]. By default the lazy
     /// variant ([`GridSearch::lazy_theta_star`]: one line-of-sight test per expansion);
@@ -187,6 +232,33 @@ grid_planner! {
         /// 2007), which tests it for every neighbour of every expanded cell, several times
         /// slower on open maps (60 s against 4 s on a 2000 x 2000 floor plan).
         lazy: bool = true,
+    }
+}
+
+grid_planner! {
+    /// Lazy Theta* (Nash, Koenig and Tovey 2010) as a planner under its own name: the
+    /// search of [`ThetaStar`] with `lazy: true` ([`GridSearch::lazy_theta_star`]), so the
+    /// same paths as `ThetaStar::default()`; `ThetaStar { lazy: false, .. }` is the eager
+    /// original to compare it with. Same conventions as [`GridAstar`].
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::{Goal, Point2, Query};
+    /// use search::{LazyThetaStar, ThetaStar};
+    /// let map = GridMap::from_ascii("
+    ///     ........
+    ///     ..##....
+    ///     ........
+    /// ")?;
+    /// let query = Query::new(Point2::new(0.5, 1.5), Goal::Point(Point2::new(7.5, 1.5)));
+    /// let lazy = LazyThetaStar::default().plan(&map, &query, &mut rand::rng())?;
+    /// let theta = ThetaStar { lazy: true, ..ThetaStar::default() };
+    /// assert_eq!(lazy.path, theta.plan(&map, &query, &mut rand::rng())?.path);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    LazyThetaStar, "lazy-theta-star" {
+        /// Connectivity of the underlying grid moves (corner cutting is never used).
+        options: GridOptions = GridOptions::default(),
     }
 }
 
@@ -232,9 +304,26 @@ fn plan_on_grid(
             ..stats
         },
     };
-    let mut search = match GridSearch::new_until(map, options, deadline) {
-        Ok(search) => search,
-        Err(GridSearchError::LimitReached { .. }) => return Err(spent(PlanStats::default())),
+    let max_expansions = budget.max_iterations.unwrap_or(u64::MAX);
+    let found = match search_cells(
+        map,
+        options,
+        algo,
+        (deadline, max_expansions),
+        start_cell,
+        goal_cell,
+    ) {
+        Ok(found) => found,
+        Err(JpsError::Grid(GridSearchError::LimitReached { .. })) => {
+            return Err(spent(PlanStats::default()));
+        }
+        Err(JpsError::NotApplicable { .. }) => {
+            return Err(PlanError::InvalidParameter {
+                name: "options",
+                value: format!("{options:?}"),
+                reason: "jump point search needs uniform-cost 8-connected moves without corner cutting; use astar",
+            });
+        }
         Err(e) => {
             return Err(PlanError::InvalidParameter {
                 name: "workspace",
@@ -242,13 +331,6 @@ fn plan_on_grid(
                 reason: "map too large for the grid search",
             });
         }
-    };
-    search.set_limit(budget.max_iterations.unwrap_or(u64::MAX), deadline);
-    let found = match algo {
-        Algo::Astar => search.astar(start_cell, goal_cell),
-        Algo::Dijkstra => search.dijkstra(start_cell, goal_cell),
-        Algo::ThetaStar => search.theta_star(map, start_cell, goal_cell),
-        Algo::LazyThetaStar => search.lazy_theta_star(map, start_cell, goal_cell),
     };
     let mut stats = PlanStats::default();
     let found = match found {
@@ -311,6 +393,35 @@ fn plan_on_grid(
         trees: Vec::new(),
         waypoints: Vec::new(),
         stats,
+    })
+}
+
+/// Prepares the grid search `algo` on `map` with `limit` (deadline, expansions) and runs it
+/// from `start` to `goal` (the inner result). The outer error is the preparation's: the
+/// move rules rule jump point search out, the map is too large, or the deadline passed.
+fn search_cells(
+    map: &GridMap,
+    options: GridOptions,
+    algo: Algo,
+    (deadline, max_expansions): (Option<Instant>, u64),
+    start: (usize, usize),
+    goal: (usize, usize),
+) -> Result<Result<GridPath, GridSearchError>, JpsError> {
+    let grid = || -> Result<GridSearch, JpsError> {
+        let mut search = GridSearch::new_until(map, options, deadline)?;
+        search.set_limit(max_expansions, deadline);
+        Ok(search)
+    };
+    Ok(match algo {
+        Algo::Astar => grid()?.astar(start, goal),
+        Algo::Dijkstra => grid()?.dijkstra(start, goal),
+        Algo::ThetaStar => grid()?.theta_star(map, start, goal),
+        Algo::LazyThetaStar => grid()?.lazy_theta_star(map, start, goal),
+        Algo::Jps => {
+            let mut search = JumpPointSearch::new_until(map, options, deadline)?;
+            search.set_limit(max_expansions, deadline);
+            search.search(start, goal)
+        }
     })
 }
 

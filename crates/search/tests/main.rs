@@ -3,6 +3,7 @@
 mod common;
 mod generic;
 mod grid;
+mod jps;
 mod movingai;
 mod planners;
 mod props;

@@ -128,3 +128,45 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// A search brought up to date by `update_window` over the changed cells answers
+    /// every later query as one built afresh on the changed map; `connected` says
+    /// whether Dijkstra finds a path.
+    #[test]
+    fn update_window_and_connected_agree_with_a_fresh_search(
+        (map, s, g) in scenario(),
+        flips in proptest::collection::vec((0usize..24, 0usize..24), 1..12),
+        corner_cutting in any::<bool>(),
+        four in any::<bool>(),
+    ) {
+        let options = GridOptions {
+            connectivity: if four { Connectivity::Four } else { Connectivity::Eight },
+            corner_cutting,
+        };
+        let mut kept = GridSearch::new(&map, options).unwrap();
+        // A first query leaves words of an older generation behind.
+        let _ = kept.dijkstra(s, g);
+        let mut changed = map.clone();
+        let (w, h) = (map.width(), map.height());
+        let (mut lo, mut hi) = ((w, h), (0, 0));
+        for (i, j) in flips {
+            let (i, j) = (i % w, j % h);
+            let z = if changed.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
+            changed.set_cell_zone(i, j, z);
+            lo = (lo.0.min(i), lo.1.min(j));
+            hi = (hi.0.max(i + 1), hi.1.max(j + 1));
+        }
+        kept.update_window(&changed, lo.0..hi.0, lo.1..hi.1).unwrap();
+        let mut fresh = GridSearch::new(&changed, options).unwrap();
+        let (a, b) = (kept.dijkstra(s, g), fresh.dijkstra(s, g));
+        prop_assert_eq!(a.as_ref().ok().map(|p| (&p.cells, p.cost)), b.as_ref().ok().map(|p| (&p.cells, p.cost)));
+        prop_assert_eq!(kept.astar(g, s).map(|p| p.cells), fresh.astar(g, s).map(|p| p.cells));
+        match kept.connected(s, g) {
+            Ok(joined) => prop_assert_eq!(joined, b.is_ok(), "connected {} vs Dijkstra {:?}", joined, b),
+            Err(_) => prop_assert!(b.is_err()),
+        }
+    }
+}

@@ -363,12 +363,97 @@ impl CostmapBuilder {
     /// The costmap of the prior map, the built map's occupied cells and `hits`.
     #[must_use]
     pub fn build(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Costmap {
-        let res = self.params.resolution;
+        let lethal = self.lethal(built, hits);
+        let costs = self.inflate(&lethal);
+        let risk_from = self.risk_from();
+        let zones = costs.iter().map(|&c| zone_of(c, risk_from)).collect();
+        let f = self.frame;
+        let map = GridMap::from_zones(f.width, f.height, f.resolution, f.origin, zones)
+            .expect("the builder's own size and frame are valid");
+        Costmap { costs, map }
+    }
+
+    /// [`build`](Self::build)'s costmap, kept in `cache` and inflated again only around
+    /// the lethal cells that changed since the cache's last build: the same costs and
+    /// zones, at a cost set by what changed rather than by the grid (which a navigator
+    /// that plans every few seconds on a large building would pay at every plan).
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{CostmapBuilder, CostmapCache, CostmapParams, StaticWorld};
+    /// let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(4.0, 4.0));
+    /// let builder = CostmapBuilder::new(bounds, &StaticWorld::default(), CostmapParams::default(), 0.18);
+    /// let mut cache = CostmapCache::default();
+    /// let hits = [Point2::new(2.0, 2.0)];
+    /// builder.rebuild(&mut cache, None, &hits);
+    /// let again = builder.rebuild(&mut cache, None, &[]);
+    /// assert_eq!(again.costs, builder.build(None, &[]).costs);
+    /// ```
+    pub fn rebuild<'c>(
+        &self,
+        cache: &'c mut CostmapCache,
+        built: Option<&OccupancyGrid>,
+        hits: &[Point2],
+    ) -> &'c Costmap {
+        let lethal = self.lethal(built, hits);
+        let f = self.frame;
+        let window = match &cache.costmap {
+            Some(c) if c.costs.len() == f.cells() && cache.lethal.len() == f.cells() => {
+                changed_window(&cache.lethal, lethal.cells(), f.width)
+            }
+            _ => {
+                cache.costmap = Some(self.build(built, hits));
+                cache.lethal = lethal.cells().to_vec();
+                return cache.costmap.as_ref().expect("just built");
+            }
+        };
+        let costmap = cache.costmap.as_mut().expect("matched above");
+        let Some((columns, rows)) = window else {
+            return costmap;
+        };
+        // A cell's cost depends on the lethal cells within the inflation radius: the
+        // cells that may change are the window grown by that reach, and the lethal cells
+        // that decide them lie within the reach of those.
+        let reach = (self.inflation().inflation_radius / f.resolution).ceil() as usize + 1;
+        let grow = |r: std::ops::Range<usize>, by: usize, n: usize| {
+            r.start.saturating_sub(by)..(r.end + by).min(n)
+        };
+        let (ci, cj) = (grow(columns, reach, f.width), grow(rows, reach, f.height));
+        let (ni, nj) = (
+            grow(ci.clone(), reach, f.width),
+            grow(cj.clone(), reach, f.height),
+        );
+        let sub_w = ni.len();
+        let cells = nj
+            .clone()
+            .flat_map(|j| {
+                lethal.cells()[j * f.width + ni.start..j * f.width + ni.end]
+                    .iter()
+                    .copied()
+            })
+            .collect();
+        let sub = Mask::from_cells(sub_w, nj.len(), cells).expect("a window of the grid");
+        let costs = self.inflate(&sub);
+        let risk_from = self.risk_from();
+        let zones = costmap.map.zones_mut();
+        for j in cj {
+            let from = (j - nj.start) * sub_w + (ci.start - ni.start);
+            let row = &costs[from..from + ci.len()];
+            let at = j * f.width + ci.start;
+            costmap.costs[at..at + ci.len()].copy_from_slice(row);
+            for (z, &c) in zones[at..at + ci.len()].iter_mut().zip(row) {
+                *z = zone_of(c, risk_from);
+            }
+        }
+        cache.lethal = lethal.cells().to_vec();
+        costmap
+    }
+
+    /// The lethal cells: the prior map's, the built map's occupied ones and the hits'.
+    fn lethal(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Mask {
         let f = self.frame;
         let mut mask = Mask::new(f.width, f.height);
-        for (m, &p) in mask.cells_mut().iter_mut().zip(&self.prior) {
-            *m = p;
-        }
+        mask.cells_mut().copy_from_slice(&self.prior);
         let mut mark = |p: Point2| {
             if let Some((i, j)) = f.cell_of(p) {
                 mask.set(i, j, true);
@@ -382,27 +467,74 @@ impl CostmapBuilder {
         for &p in hits {
             mark(p);
         }
-        let inflation = self.inflation();
-        let costs = inflation
-            .inflate(&mask, res)
-            .expect("the builder's own parameters are valid");
-        let risk_from = inflation.cost(self.params.preferred_clearance).max(1);
-        let zones = costs
-            .iter()
-            .map(|&c| {
-                if c >= INSCRIBED_INFLATED_OBSTACLE {
-                    Zone::Forbidden
-                } else if c >= risk_from {
-                    Zone::Risk
-                } else {
-                    Zone::Free
-                }
-            })
-            .collect();
-        let map = GridMap::from_zones(f.width, f.height, res, f.origin, zones)
-            .expect("the builder's own size and frame are valid");
-        Costmap { costs, map }
+        mask
     }
+
+    fn inflate(&self, lethal: &Mask) -> Vec<u8> {
+        self.inflation()
+            .inflate(lethal, self.params.resolution)
+            .expect("the builder's own parameters are valid")
+    }
+
+    /// The least cost of a `Risk` cell: the cost at the preferred clearance.
+    fn risk_from(&self) -> u8 {
+        self.inflation()
+            .cost(self.params.preferred_clearance)
+            .max(1)
+    }
+}
+
+/// The zone of a cell of cost `c`.
+fn zone_of(c: u8, risk_from: u8) -> Zone {
+    if c >= INSCRIBED_INFLATED_OBSTACLE {
+        Zone::Forbidden
+    } else if c >= risk_from {
+        Zone::Risk
+    } else {
+        Zone::Free
+    }
+}
+
+/// A costmap kept between builds ([`CostmapBuilder::rebuild`]).
+#[derive(Debug, Clone, Default)]
+pub struct CostmapCache {
+    /// The lethal cells the costmap was built from.
+    lethal: Vec<bool>,
+    costmap: Option<Costmap>,
+}
+
+impl CostmapCache {
+    /// The costmap of the last build, if any.
+    ///
+    /// ```
+    /// assert!(sim::CostmapCache::default().costmap().is_none());
+    /// ```
+    #[must_use]
+    pub fn costmap(&self) -> Option<&Costmap> {
+        self.costmap.as_ref()
+    }
+}
+
+/// The smallest window (columns, rows) of a `width`-wide row-major grid holding every
+/// cell where `old` and `new` differ; `None` when they are equal.
+pub(crate) fn changed_window<T: PartialEq>(
+    old: &[T],
+    new: &[T],
+    width: usize,
+) -> Option<(std::ops::Range<usize>, std::ops::Range<usize>)> {
+    let mut window: Option<(usize, usize, usize, usize)> = None;
+    for (j, (a, b)) in old.chunks(width).zip(new.chunks(width)).enumerate() {
+        if a == b {
+            continue;
+        }
+        let first = a.iter().zip(b).position(|(x, y)| x != y).unwrap_or(0);
+        let last = width - 1 - a.iter().zip(b).rev().position(|(x, y)| x != y).unwrap_or(0);
+        window = Some(match window {
+            None => (first, last, j, j),
+            Some((i0, i1, j0, _)) => (i0.min(first), i1.max(last), j0, j),
+        });
+    }
+    window.map(|(i0, i1, j0, j1)| (i0..i1 + 1, j0..j1 + 1))
 }
 
 /// Marks the cells of a `res`-sided grid at `origin` (`width` x `height`, row-major from

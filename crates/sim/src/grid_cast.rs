@@ -5,9 +5,10 @@
 //! keeps them as the boundary segments between forbidden and other cells (the grid's
 //! outside counts as not forbidden). A ray meets that boundary first where it first
 //! changes between a forbidden and another cell, so casting it means finding that cell:
-//! a march over the grid's exact distance transform (GridMap's, cached with the map)
-//! crosses open space in strides that cannot reach a forbidden cell, and a cell-by-cell
-//! traversal (Amanatides-Woo) finishes the last cells exactly. The distance returned is
+//! a march over a byte per cell ([`strides`], from the grid's exact distance transform,
+//! cached with the world) crosses open space in strides that cannot reach a forbidden
+//! cell from any point of the cell they start in, and a cell-by-cell traversal
+//! (Amanatides-Woo) finishes the last cells exactly. The distance returned is
 //! computed from the grid line the ray crosses, as the segment's own intersection would
 //! be, so casts agree with the segment sweep to rounding (a property test checks it).
 
@@ -15,10 +16,32 @@ use envmap::{CellFrame, GridMap};
 use hyplan_core::{Point2, Zone};
 use nalgebra::Vector2;
 
-/// Squared distance transform value (cells^2) from which a cell is crossed by a stride
-/// instead of cell by cell: four cells to the nearest forbidden centre leave a stride of
-/// at least 2.5 cells (fewer make strides that cost more than the cells they skip).
-const STRIDE_FROM: u32 = 16;
+/// The shortest stride taken, cells: shorter ones cost more than the cells they skip.
+const STRIDE_FROM: u8 = 2;
+
+/// A byte per cell of `map` (row-major from the bottom row): 0 on forbidden cells,
+/// otherwise 1 + the whole number of cells a ray may advance from any point of the cell
+/// without reaching a forbidden cell (at most 254). The nearest forbidden square is no
+/// nearer to a point of the cell than the distance between the two centres minus half a
+/// diagonal for each square; a hair less covers rounding. A byte keeps the march's
+/// table a quarter of the distance transform's size, so more of it stays in cache.
+pub(crate) fn strides(map: &GridMap) -> Vec<u8> {
+    let Some(field) = map.distance_from(Zone::Forbidden) else {
+        return Vec::new();
+    };
+    field
+        .dist_sq()
+        .iter()
+        .map(|&d2| {
+            if d2 == 0 {
+                0
+            } else {
+                let safe = f64::from(d2).sqrt() - std::f64::consts::SQRT_2 - 1e-6;
+                1 + safe.clamp(0.0, 253.0) as u8
+            }
+        })
+        .collect()
+}
 
 /// A loaded map's cells with their distances to the nearest forbidden cell.
 #[derive(Debug, Clone, Copy)]
@@ -27,17 +50,21 @@ pub(crate) struct GridRays<'a> {
     /// Squared distance (cells^2) from each cell centre to the nearest forbidden centre:
     /// 0 exactly on forbidden cells.
     dist_sq: &'a [u32],
+    /// The march's table ([`strides`]).
+    strides: &'a [u8],
     /// `1 / resolution`.
     per_cell: f64,
 }
 
 impl<'a> GridRays<'a> {
-    /// The map's cells and its (cached) distance transform of the forbidden cells.
-    pub(crate) fn new(map: &'a GridMap) -> Option<Self> {
+    /// The map's cells, its (cached) distance transform of the forbidden cells and its
+    /// [`strides`] table.
+    pub(crate) fn new(map: &'a GridMap, strides: &'a [u8]) -> Option<Self> {
         let field = map.distance_from(Zone::Forbidden)?;
-        Some(Self {
+        (strides.len() == field.dist_sq().len()).then(|| Self {
             frame: map.frame(),
             dist_sq: field.dist_sq(),
+            strides,
             per_cell: 1.0 / map.resolution(),
         })
     }
@@ -45,6 +72,12 @@ impl<'a> GridRays<'a> {
     /// The squared distance of cell `(i, j)`, which the caller keeps inside the grid.
     fn d2(&self, i: i64, j: i64) -> u32 {
         self.dist_sq[j as usize * self.frame.width + i as usize]
+    }
+
+    /// The [`strides`] byte of cell `(i, j)`, which the caller keeps inside the grid.
+    #[inline]
+    fn stride(&self, i: i64, j: i64) -> u8 {
+        self.strides[j as usize * self.frame.width + i as usize]
     }
 
     fn in_grid(&self, i: i64, j: i64) -> bool {
@@ -85,7 +118,7 @@ impl<'a> GridRays<'a> {
         // The traversal runs in cell units.
         let end = t_end * self.per_cell;
         let mut walk = Walk::new(self, o, d, inv, t_in * self.per_cell);
-        let start_forbidden = self.d2(walk.i, walk.j) == 0;
+        let start_forbidden = self.stride(walk.i, walk.j) == 0;
         if t_in > 0.0 {
             // Entering the grid from outside, where nothing is forbidden: the map's edge
             // is a boundary, at the exact (divided) distance of the side crossed last.
@@ -113,7 +146,7 @@ impl<'a> GridRays<'a> {
             if walk.step() > end {
                 return None;
             }
-            if !self.in_grid(walk.i, walk.j) || self.d2(walk.i, walk.j) != 0 {
+            if !self.in_grid(walk.i, walk.j) || self.stride(walk.i, walk.j) != 0 {
                 return Some(walk.entry(self));
             }
         }
@@ -123,35 +156,20 @@ impl<'a> GridRays<'a> {
     /// first forbidden cell before `end` cells.
     fn search(&self, mut walk: Walk, mut s: f64, end: f64) -> Option<f64> {
         loop {
-            let d2 = self.d2(walk.i, walk.j);
-            if d2 >= STRIDE_FROM {
-                // No forbidden square is nearer to any point p than the distance between
-                // centres minus |p - c| (p to its cell's centre) minus half a diagonal
-                // (the forbidden centre to its square's corner), all in cells. A hair
-                // less covers the rounding of p.
-                let (px, py) = walk.at(s);
-                let (dx, dy) = (
-                    (px - walk.i as f64 - 0.5).abs(),
-                    (py - walk.j as f64 - 0.5).abs(),
-                );
-                // |p - c| <= max + (sqrt 2 - 1) min: a bound without a square root on
-                // the march's critical path.
-                let off = dx.max(dy) + (std::f64::consts::SQRT_2 - 1.0) * dx.min(dy);
-                let stride = f64::from(d2).sqrt() - off - std::f64::consts::FRAC_1_SQRT_2 - 1e-6;
-                if stride > 0.0 {
-                    s += stride;
-                    if s > end {
-                        return None;
-                    }
-                    walk.jump(self, s);
-                    continue;
+            let clear = self.stride(walk.i, walk.j);
+            if clear > STRIDE_FROM {
+                s += f64::from(clear - 1);
+                if s > end {
+                    return None;
                 }
+                walk.jump(self, s);
+                continue;
             }
             s = walk.step();
             if s > end || !self.in_grid(walk.i, walk.j) {
                 return None;
             }
-            if self.d2(walk.i, walk.j) == 0 {
+            if self.stride(walk.i, walk.j) == 0 {
                 return Some(walk.entry(self));
             }
         }
@@ -251,9 +269,12 @@ struct Walk {
     ahead: (i64, i64),
     i: i64,
     j: i64,
-    /// Parameters of the next vertical and horizontal line crossings.
+    /// Parameters of the next vertical and horizontal line crossings, when `aimed`.
     sx: f64,
     sy: f64,
+    /// Whether `sx` and `sy` are those of the current cell: a stride moves on without
+    /// them, so they are computed at the first step after it.
+    aimed: bool,
     /// Whether the last step crossed a vertical line.
     last_x: bool,
 }
@@ -276,6 +297,7 @@ impl Walk {
             j: 0,
             sx: 0.0,
             sy: 0.0,
+            aimed: false,
             last_x: false,
         };
         walk.jump(g, s);
@@ -296,8 +318,7 @@ impl Walk {
         // Truncation is flooring once clamped to the grid (and needs no libm call).
         self.i = (u as i64).clamp(0, g.frame.width as i64 - 1);
         self.j = (v as i64).clamp(0, g.frame.height as i64 - 1);
-        self.sx = self.cross_x();
-        self.sy = self.cross_y();
+        self.aimed = false;
     }
 
     /// Where the ray leaves column `i` (infinite for a ray along y).
@@ -320,6 +341,11 @@ impl Walk {
     /// Moves to the next cell; the parameter (cells) where the ray enters it.
     #[inline]
     fn step(&mut self) -> f64 {
+        if !self.aimed {
+            self.sx = self.cross_x();
+            self.sy = self.cross_y();
+            self.aimed = true;
+        }
         self.last_x = self.sx < self.sy;
         if self.last_x {
             let s = self.sx;

@@ -18,7 +18,6 @@ use rand::Rng;
 use rand_distr::{Distribution, Normal};
 use serde::{Deserialize, Serialize};
 
-use crate::grid_cast::GridRays;
 use crate::kinematics::Pose;
 use crate::world::{Disc, StaticWorld};
 
@@ -227,11 +226,9 @@ impl LaserModel {
         let mut order: Vec<(f64, Obstacle)> = Vec::new();
         // A loaded map with more boundary segments than the sweep handles cheaply is cast
         // on its cells below (a world built by hand without the grid is always swept).
-        let march = world
-            .grid
-            .as_ref()
-            .filter(|_| 2 * world.grid_segments.len() > 3 * n)
-            .and_then(GridRays::new);
+        let march = (2 * world.grid_segments.len() > 3 * n)
+            .then(|| world.grid_rays())
+            .flatten();
         let grid_segments: &[crate::world::Segment] = if march.is_some() {
             &[]
         } else {

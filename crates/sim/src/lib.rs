@@ -87,7 +87,8 @@ mod world;
 pub use building::BUILDING_RESOLUTION;
 pub use control::{Command, Controller, FollowInput, LocalController};
 pub use costmap::{
-    Costmap, CostmapBuilder, CostmapParams, MEMORY_RESOLUTION, ObstacleMemory, rasterize,
+    Costmap, CostmapBuilder, CostmapCache, CostmapParams, MEMORY_RESOLUTION, ObstacleMemory,
+    rasterize,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, Observer, PLANNER_STREAM, Sim, TICKS_PER_SECOND,
@@ -96,11 +97,11 @@ pub use engine::{
 pub use explore::{
     Assigner, ContactCounter, Coverage, CoverageMeter, DetectorKind, Edge, Exploration,
     ExploreOutcome, Filter, FrameRecorder, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM,
-    LeftCause, LeftRegion, Region, RegionError, RrtDetector, SelfMapped, Snapshot, Strategy,
-    TrackRecorder, ViewPoints, animation_png, built_cost, built_cost_reach, costmap_steps,
-    edge_check, explore, explore_then_navigate, explore_with, frontier_cells, frontier_clusters,
-    information_gain, left_by_cause, left_unknown, mean_shift, nearest_frontier, reachable_free,
-    region_of, revenue, sees, snapshot_scene, snapshot_svg,
+    LeftCause, LeftRegion, MapFrames, Region, RegionError, RrtDetector, SelfMapped, Snapshot,
+    Strategy, TrackRecorder, ViewPoints, animation_png, built_cost, built_cost_reach,
+    costmap_steps, edge_check, explore, explore_then_navigate, explore_with, frontier_cells,
+    frontier_clusters, information_gain, left_by_cause, left_unknown, mean_shift, nearest_frontier,
+    reachable_free, region_of, revenue, sees, snapshot_scene, snapshot_svg,
 };
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, pose_rate, saturate,
@@ -110,7 +111,7 @@ pub use laser::{Laser, LaserModel, Scan};
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
 pub use people::{PeopleModel, Scripted};
-pub use planner::GlobalPlanner;
+pub use planner::{GlobalPlanner, PlanScratch};
 pub use record::{
     Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, animation_scene,
     trajectory_scene, velocity_svg, write_all,

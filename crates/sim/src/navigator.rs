@@ -20,10 +20,10 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 use crate::control::{FollowInput, LocalController, along, project};
-use crate::costmap::{CostmapBuilder, ObstacleMemory};
+use crate::costmap::{CostmapBuilder, CostmapCache, ObstacleMemory};
 use crate::kinematics::{Pose, Robot, Twist};
 use crate::mapping::OccupancyGrid;
-use crate::planner::GlobalPlanner;
+use crate::planner::{GlobalPlanner, PlanScratch};
 use crate::tracking::Mover;
 
 /// Navigator parameters.
@@ -109,6 +109,8 @@ pub struct Navigator {
     plans: u32,
     path_version: u64,
     rng: ChaCha8Rng,
+    scratch: PlanScratch,
+    costmap: CostmapCache,
 }
 
 impl Navigator {
@@ -138,6 +140,8 @@ impl Navigator {
             planned_at: Point2::origin(),
             plans: 0,
             path_version: 0,
+            scratch: PlanScratch::default(),
+            costmap: CostmapCache::default(),
             rng,
         }
     }
@@ -245,8 +249,9 @@ impl Navigator {
             }
             let hits = memory.points(tick);
             let mut plan_on = |hits: &[Point2]| {
-                let costmap = self.costmaps.build(built, hits);
-                self.planner.plan(
+                let costmap = self.costmaps.rebuild(&mut self.costmap, built, hits);
+                self.planner.plan_with(
+                    &mut self.scratch,
                     &costmap.map,
                     here,
                     self.goal,

@@ -13,6 +13,8 @@ use hyplan_core::{Goal, Planner, Point2, Query, Workspace, Zone};
 use rand_chacha::ChaCha8Rng;
 use search::{GridOptions, GridSearch, GridSearchError};
 
+use crate::costmap::changed_window;
+
 /// Which planner the navigator calls.
 pub enum GlobalPlanner {
     /// Dijkstra on the costmap cells (Algorithm 3), 8-connected, no corner cutting.
@@ -48,11 +50,32 @@ impl GlobalPlanner {
         tolerance: f64,
         rng: &mut ChaCha8Rng,
     ) -> Option<Vec<Point2>> {
-        for blocked in [Zone::Risk, Zone::Forbidden] {
-            let mut m = map.clone();
+        self.plan_with(
+            &mut PlanScratch::default(),
+            map,
+            start,
+            goal,
+            tolerance,
+            rng,
+        )
+    }
+
+    /// [`plan`](Self::plan) with the buffers of earlier plans (a navigator keeps one
+    /// [`PlanScratch`]): the same path, without allocating a search grid per plan.
+    pub fn plan_with(
+        &self,
+        scratch: &mut PlanScratch,
+        map: &GridMap,
+        start: Point2,
+        goal: Point2,
+        tolerance: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<Vec<Point2>> {
+        let mut m = map.clone();
+        for (level, blocked) in [Zone::Risk, Zone::Forbidden].into_iter().enumerate() {
             m.blocked_from = blocked;
             let found = match self {
-                Self::Dijkstra => dijkstra(&m, start, goal),
+                Self::Dijkstra => dijkstra(&mut scratch.levels[level], &m, start, goal),
                 Self::Other(p) => other(p.as_ref(), &m, start, goal, tolerance, rng),
             };
             if let Some(path) = found {
@@ -61,6 +84,58 @@ impl GlobalPlanner {
         }
         None
     }
+}
+
+/// What plans keep between them: a grid search per zone level, built for the first
+/// costmap and brought up to date with the next ones where their zones changed.
+///
+/// ```
+/// let scratch = sim::PlanScratch::default();
+/// assert!(format!("{scratch:?}").contains("PlanScratch"));
+/// ```
+#[derive(Default)]
+pub struct PlanScratch {
+    levels: [Option<Prepared>; 2],
+}
+
+/// A grid search and the zones it was last brought up to date with.
+struct Prepared {
+    search: GridSearch,
+    zones: Vec<Zone>,
+}
+
+impl std::fmt::Debug for PlanScratch {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let built = self.levels.iter().filter(|l| l.is_some()).count();
+        f.debug_struct("PlanScratch")
+            .field("levels_built", &built)
+            .finish()
+    }
+}
+
+/// The search of `slot` brought up to date with `map` (built on the first call, or when
+/// the size changed).
+fn prepared<'s>(slot: &'s mut Option<Prepared>, map: &GridMap) -> Option<&'s mut Prepared> {
+    let fits = slot
+        .as_ref()
+        .is_some_and(|p| p.zones.len() == map.zones().len());
+    if !fits {
+        let search = GridSearch::new(map, GridOptions::default()).ok()?;
+        let zones = map.zones().to_vec();
+        return Some(slot.insert(Prepared { search, zones }));
+    }
+    let p = slot.as_mut()?;
+    if let Some((columns, rows)) = changed_window(&p.zones, map.zones(), map.width()) {
+        p.search
+            .update_window(map, columns.clone(), rows.clone())
+            .ok()?;
+        for j in rows {
+            let at = j * map.width();
+            p.zones[at + columns.start..at + columns.end]
+                .copy_from_slice(&map.zones()[at + columns.start..at + columns.end]);
+        }
+    }
+    Some(p)
 }
 
 /// How far a plan's start may move to the nearest passable cell, m: a robot whose centre
@@ -80,13 +155,24 @@ fn nearest_passable(map: &GridMap, cell: (usize, usize)) -> Option<(usize, usize
     envmap::nearest_passable(size, cell, rings, |i, j| map.cell_free(i, j))
 }
 
-fn dijkstra(map: &GridMap, start: Point2, goal: Point2) -> Option<Vec<Point2>> {
+fn dijkstra(
+    slot: &mut Option<Prepared>,
+    map: &GridMap,
+    start: Point2,
+    goal: Point2,
+) -> Option<Vec<Point2>> {
     let s = nearest_passable(map, map.world_to_cell(start)?)?;
     let g = map.world_to_cell(goal)?;
     if !map.cell_free(g.0, g.1) {
         return None;
     }
-    let mut search = GridSearch::new(map, GridOptions::default()).ok()?;
+    let prepared = prepared(slot, map)?;
+    // A plan that fails floods every cell the start reaches, and a navigator retries
+    // failed plans: the two-sided test costs at most the smaller region, and no costs.
+    let search = &mut prepared.search;
+    if !search.connected(s, g).ok()? {
+        return None;
+    }
     let found = match search.dijkstra(s, g) {
         Ok(p) => p,
         Err(GridSearchError::NoPath { .. }) => return None,

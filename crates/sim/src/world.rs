@@ -8,7 +8,7 @@ use envmap::GridMap;
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
-use crate::grid_cast::GridRays;
+use crate::grid_cast::{GridRays, strides};
 
 /// A static obstacle, in metres (scenario syntax): the workspace's one shape type.
 pub use envmap::Shape;
@@ -146,8 +146,11 @@ pub struct StaticWorld {
     pub discs: Vec<Disc>,
     /// Closed outlines, for inside tests.
     pub polygons: Vec<Vec<Point2>>,
-    /// A loaded map's grid (its forbidden cells are obstacles).
+    /// A loaded map's grid (its forbidden cells are obstacles). Set it with
+    /// [`add_grid`](Self::add_grid): the laser's table of it is made once, on first use.
     pub grid: Option<GridMap>,
+    /// The laser's march table of `grid` (`grid_cast::strides`).
+    ray_strides: std::sync::OnceLock<Vec<u8>>,
 }
 
 impl StaticWorld {
@@ -223,6 +226,13 @@ impl StaticWorld {
             },
         );
         self.grid = Some(map);
+        self.ray_strides = std::sync::OnceLock::new();
+    }
+
+    /// The loaded map's cells as rays and nearest-point queries see them.
+    pub(crate) fn grid_rays(&self) -> Option<GridRays<'_>> {
+        let grid = self.grid.as_ref()?;
+        GridRays::new(grid, self.ray_strides.get_or_init(|| strides(grid)))
     }
 
     /// Whether `p` lies inside (or on) an obstacle.
@@ -253,9 +263,7 @@ impl StaticWorld {
     pub fn nearest(&self, p: Point2) -> (f64, Point2) {
         let mut best = nearest_on_segments(p, &self.segments);
         let from_grid = self
-            .grid
-            .as_ref()
-            .and_then(GridRays::new)
+            .grid_rays()
             .and_then(|g| g.nearest(p))
             .unwrap_or_else(|| nearest_on_segments(p, &self.grid_segments));
         if from_grid.0 < best.0 {

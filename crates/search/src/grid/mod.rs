@@ -6,6 +6,7 @@
 //! - `astar`: [`GridSearch::astar`]; `dijkstra`: [`GridSearch::dijkstra`];
 //!   `theta_star`: [`GridSearch::theta_star`] and its line-of-sight expansion;
 //! - `cost_field`: [`GridSearch::cost_to_go`] and [`CostField`];
+//! - `jps`: [`JumpPointSearch`], jump point search over packed bit rows;
 //! - `engine`: the packed A*/Dijkstra engine the first three share (one word per cell,
 //!   the heap keys, the expansion loop).
 
@@ -17,13 +18,16 @@ use crate::SearchStats;
 use crate::heap::{HeapKey, MinHeap, Upper};
 
 mod astar;
+mod connected;
 mod cost_field;
 mod dijkstra;
 mod engine;
+mod jps;
 mod theta_star;
 
 pub use cost_field::CostField;
 use engine::*;
+pub use jps::{JpsError, JumpPointSearch};
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 /// "No parent" in Theta*'s parent array, "no target" for a one-to-all search.
@@ -278,6 +282,8 @@ pub struct GridSearch {
     slot: Vec<u32>,
     /// When a search gives up (none by default).
     limit: Limit,
+    /// Scratch of [`connected`](GridSearch::connected) (allocated by its first query).
+    reach: connected::Reach,
 }
 
 /// An expansion cap and a deadline (see [`GridSearch::set_limit`]).
@@ -375,6 +381,7 @@ impl GridSearch {
                 max_expansions: u64::MAX,
                 deadline,
             },
+            reach: connected::Reach::default(),
         };
         search.update(map)?;
         Ok(search)
@@ -387,6 +394,60 @@ impl GridSearch {
     /// [`GridSearchError::SizeMismatch`] if `map` has another size than the one this
     /// search was built for.
     pub fn update(&mut self, map: &GridMap) -> Result<(), GridSearchError> {
+        self.refresh(map, 0..map.width(), 0..map.height())?;
+        self.reset_words();
+        Ok(())
+    }
+
+    /// [`update`](GridSearch::update) for a map that differs from the one of the last
+    /// update (or [`new`](GridSearch::new)) only in the cells of `columns` x `rows`, at a
+    /// cost set by the window rather than the map; the same later searches as `update`.
+    /// (A map with another `blocked_from` differs everywhere.)
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use search::{GridOptions, GridSearch};
+    /// let mut map = GridMap::from_ascii(".....\n.....\n.....").unwrap();
+    /// let mut search = GridSearch::new(&map, GridOptions::default()).unwrap();
+    /// // A wall across the middle column leaves no way from left to right.
+    /// for j in 0..3 {
+    ///     map.zones_mut()[j * 5 + 2] = hyplan_core::Zone::Forbidden;
+    /// }
+    /// search.update_window(&map, 2..3, 0..3).unwrap();
+    /// assert!(search.astar((0, 1), (4, 1)).is_err());
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// As [`update`](GridSearch::update).
+    pub fn update_window(
+        &mut self,
+        map: &GridMap,
+        columns: std::ops::Range<usize>,
+        rows: std::ops::Range<usize>,
+    ) -> Result<(), GridSearchError> {
+        let columns = columns.start.min(self.width)..columns.end.min(self.width);
+        let rows = rows.start.min(self.height)..rows.end.min(self.height);
+        self.refresh(map, columns.clone(), rows.clone())?;
+        // Words of cells whose passability may have changed; the others keep their
+        // (older-generation) words, which later queries read as "not reached".
+        for j in rows {
+            let base = (j + 1) * self.pw + 1;
+            for p in base + columns.start..base + columns.end {
+                self.words[p] = if self.passable[p] { u64::MAX } else { 0 };
+            }
+        }
+        Ok(())
+    }
+
+    /// Re-reads the passable cells of `columns` x `rows` (inside the grid) and the moves
+    /// of those cells and of their neighbours.
+    fn refresh(
+        &mut self,
+        map: &GridMap,
+        columns: std::ops::Range<usize>,
+        rows: std::ops::Range<usize>,
+    ) -> Result<(), GridSearchError> {
         if map.width() != self.width || map.height() != self.height {
             return Err(GridSearchError::SizeMismatch {
                 width: self.width,
@@ -395,6 +456,9 @@ impl GridSearch {
                 got_height: map.height(),
             });
         }
+        if columns.is_empty() || rows.is_empty() {
+            return Ok(());
+        }
         // The clock is read every 64 rows (a grid being built for a deadline).
         let deadline = self.limit.deadline;
         let late = |j: usize| j.is_multiple_of(64) && deadline.is_some_and(|d| Instant::now() >= d);
@@ -402,23 +466,29 @@ impl GridSearch {
             stats: SearchStats::default(),
         });
         let blocked = map.blocked_from;
-        for (j, row) in map.zones().chunks_exact(self.width).enumerate() {
+        let zones = map.zones();
+        for j in rows.clone() {
             if late(j) {
                 return stop;
             }
-            let base = (j + 1) * self.pw + 1;
-            for (cell, &zone) in self.passable[base..base + self.width].iter_mut().zip(row) {
+            let row = &zones[j * self.width + columns.start..j * self.width + columns.end];
+            let base = (j + 1) * self.pw + 1 + columns.start;
+            for (cell, &zone) in self.passable[base..base + row.len()].iter_mut().zip(row) {
                 *cell = zone < blocked;
             }
         }
         let (pw, pass) = (self.pw, &self.passable);
         let eight = self.options.connectivity == Connectivity::Eight;
         let cut = self.options.corner_cutting;
-        for j in 1..=self.height {
+        // Padded coordinates: the window's cells are 1 + their own, and their neighbours'
+        // moves change with them.
+        let (i_lo, i_hi) = (columns.start.max(1), (columns.end + 1).min(self.width));
+        let (j_lo, j_hi) = (rows.start.max(1), (rows.end + 1).min(self.height));
+        for j in j_lo..=j_hi {
             if late(j) {
                 return stop;
             }
-            for i in 1..=self.width {
+            for i in i_lo..=i_hi {
                 let p = j * pw + i;
                 let free = |dx: i32, dy: i32| {
                     pass[(p as isize + dy as isize * pw as isize + dx as isize) as usize]
@@ -440,7 +510,6 @@ impl GridSearch {
                 self.moves[p] = mask;
             }
         }
-        self.reset_words();
         Ok(())
     }
 

@@ -5,7 +5,7 @@ use hyplan_core::Point2;
 
 use envmap::Inflation;
 
-use crate::costmap::Costmap;
+use crate::costmap::CostmapCache;
 use crate::engine::{Flow, GoalSource, Sim, TICKS_PER_SECOND, every, stream};
 use crate::explore::assigner::Assigner;
 use crate::explore::detector::{Region, RrtDetector};
@@ -71,7 +71,12 @@ pub(crate) struct Explorer {
     /// After a goal given up without moving: the next goal is a step into the open.
     recovering: bool,
     idle_since: Option<u64>,
-    cached: Option<(u64, Costmap)>,
+    /// The costmap of the view points and the baseline's reachability, and the map
+    /// version it was built at.
+    costmap: CostmapCache,
+    costmap_at: Option<u64>,
+    /// The costmap of the final pass.
+    final_costmap: CostmapCache,
     /// Where the robot was when it last moved 0.2 m, and when.
     anchor: (Point2, u64),
     pub finished: bool,
@@ -162,7 +167,9 @@ impl Explorer {
             look: None,
             recovering: false,
             idle_since: None,
-            cached: None,
+            costmap: CostmapCache::default(),
+            costmap_at: None,
+            final_costmap: CostmapCache::default(),
             anchor: (crate::world::pt(scenario.start), 0),
             finished: false,
             turned: ex.initial_turn.then_some(0.0),
@@ -238,10 +245,10 @@ impl Explorer {
             // next control step: its costmap holds the remembered laser hits too,
             // which can close a gap the map leaves open.
             let hits = sim.memory.points(tick);
-            self.cached = Some((
-                sim.map_version(),
-                sim.nav.costmaps.build(Some(&sim.map), &hits),
-            ));
+            sim.nav
+                .costmaps
+                .rebuild(&mut self.costmap, Some(&sim.map), &hits);
+            self.costmap_at = Some(sim.map_version());
         }
         if self.goal.is_none() {
             self.lift_changed(&sim.map);
@@ -281,10 +288,13 @@ impl Explorer {
     fn final_pass(&mut self, sim: &mut Sim<'_>) -> bool {
         let (here, tick) = (sim.here(), sim.tick());
         let hits = sim.memory.points(tick);
-        let costmap = sim.nav.costmaps.build(Some(&sim.map), &hits);
+        let costmap = sim
+            .nav
+            .costmaps
+            .rebuild(&mut self.final_costmap, Some(&sim.map), &hits);
         let radius = self.ex.blacklist_radius;
         let tried = &self.final_tries;
-        let Some(f) = nearest_frontier(&sim.map, &costmap, here, self.ex.min_frontier_cells, |p| {
+        let Some(f) = nearest_frontier(&sim.map, costmap, here, self.ex.min_frontier_cells, |p| {
             tried.iter().any(|t| (t - p).norm() <= radius)
         }) else {
             return false;
@@ -364,16 +374,11 @@ impl Explorer {
         // The baseline without view points needs the whole costmap (reachability);
         // the RRT filter and the goal test ask about a few points (`built_cost`).
         // Built only when a goal is chosen, and once per map change.
-        if !rrt
-            && !ex.view_points
-            && self
-                .cached
-                .as_ref()
-                .is_none_or(|(at, _)| *at != sim.map_version())
-        {
-            self.cached = Some((sim.map_version(), sim.nav.costmaps.build(Some(map), &[])));
+        if !rrt && !ex.view_points && self.costmap_at != Some(sim.map_version()) {
+            sim.nav.costmaps.rebuild(&mut self.costmap, Some(map), &[]);
+            self.costmap_at = Some(sim.map_version());
         }
-        let costmap = self.cached.as_ref().map(|(_, c)| c);
+        let costmap = self.costmap_at.and_then(|_| self.costmap.costmap());
         let steps = match costmap {
             Some(c) if ex.view_points => costmap_steps(c, here),
             _ => Vec::new(),

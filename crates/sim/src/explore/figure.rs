@@ -97,16 +97,16 @@ pub fn animation_png(outcome: &ExploreOutcome, delay_ms: u16) -> Result<Vec<u8>,
     let map = &outcome.map;
     let res = map.params.resolution;
     let empty = GridImage::filled(map.frame(), palette);
-    let frames = outcome.frames.iter().map(|(t, pose, values)| {
+    let frames = outcome.frames.replay().map(|(t, pose, values)| {
         let mut grid = empty.clone();
-        for (cell, &v) in grid.cells_mut().iter_mut().zip(values) {
+        for (cell, &v) in grid.cells_mut().iter_mut().zip(&values) {
             *cell = match v {
                 FREE => WHITE,
                 OCCUPIED => BLACK,
                 _ => GREY,
             };
         }
-        for (_, p) in outcome.track.iter().take_while(|(s, _)| s <= t) {
+        for (_, p) in outcome.track.iter().take_while(|(s, _)| *s <= t) {
             grid.paint(Point2::new(p.x, p.y), TRACK);
         }
         for dx in -2i32..=2 {

@@ -36,7 +36,7 @@ pub use left::{LeftCause, LeftRegion, left_by_cause, left_unknown};
 pub use params::{Exploration, Strategy};
 pub use run::{
     ContactCounter, Coverage, CoverageMeter, ExploreOutcome, FrameRecorder, GoalEnd, GoalRecord,
-    Snapshot, TrackRecorder, explore, explore_with, reachable_free, region_of,
+    MapFrames, Snapshot, TrackRecorder, explore, explore_with, reachable_free, region_of,
 };
 pub use selfmap::{SelfMapped, explore_then_navigate};
 pub use viewpoint::{ViewPoints, sees};

@@ -150,8 +150,8 @@ pub struct ExploreOutcome {
     pub end_time: f64,
     /// Distance driven, m.
     pub distance: f64,
-    /// Frames of the map being built (`frame_period`): time, robot, ROS values.
-    pub frames: Vec<(f64, Pose, Vec<i8>)>,
+    /// Frames of the map being built (`frame_period`).
+    pub frames: MapFrames,
     /// Laser ticks on which the robot's body overlapped the true static world.
     pub contact_ticks: usize,
 }
@@ -489,8 +489,8 @@ impl Observer for TrackRecorder {
 #[derive(Debug, Default)]
 pub struct FrameRecorder {
     every: Option<u64>,
-    /// Time, s, robot and map values.
-    pub frames: Vec<(f64, Pose, Vec<i8>)>,
+    /// The frames so far.
+    pub frames: MapFrames,
 }
 
 impl FrameRecorder {
@@ -499,7 +499,7 @@ impl FrameRecorder {
     pub fn new(period: Option<f64>) -> Self {
         Self {
             every: period.map(|f| ((f * TICKS_PER_SECOND as f64).round() as u64).max(1)),
-            frames: Vec::new(),
+            frames: MapFrames::default(),
         }
     }
 }
@@ -507,8 +507,87 @@ impl FrameRecorder {
 impl Observer for FrameRecorder {
     fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
         if self.every.is_some_and(|k| info.tick.is_multiple_of(k)) {
-            self.frames.push((info.t, sim.pose(), sim.map.ros_values()));
+            self.frames.push(info.t, sim.pose(), &sim.map.ros_values());
         }
+    }
+}
+
+/// Frames of a map being built, each kept as the cells changed since the frame before:
+/// a long exploration of a large map keeps what was mapped, not a copy of the whole grid
+/// per frame (a 100 x 100 m map at 0.05 m is 4 MB a frame).
+///
+/// ```
+/// use sim::Pose;
+/// let mut frames = sim::MapFrames::default();
+/// frames.push(0.0, Pose::default(), &[-1, -1, -1]);
+/// frames.push(10.0, Pose { x: 1.0, ..Pose::default() }, &[0, 100, -1]);
+/// let all: Vec<_> = frames.replay().map(|(t, _, v)| (t, v)).collect();
+/// assert_eq!(all, vec![(0.0, vec![-1, -1, -1]), (10.0, vec![0, 100, -1])]);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct MapFrames {
+    /// The last frame's values, which the next one is compared with.
+    last: Vec<i8>,
+    changes: Vec<FrameChange>,
+}
+
+/// One frame of [`MapFrames`].
+#[derive(Debug, Clone)]
+struct FrameChange {
+    /// Time, s.
+    t: f64,
+    pose: Pose,
+    /// The cells (index, value) that changed since the frame before.
+    cells: Vec<(u32, i8)>,
+}
+
+impl MapFrames {
+    /// Adds a frame: time `t`, the robot, the map's values (every frame the same size; a
+    /// frame of another size starts afresh).
+    pub fn push(&mut self, t: f64, pose: Pose, values: &[i8]) {
+        if self.last.len() != values.len() {
+            self.changes.clear();
+            self.last = vec![i8::MIN; values.len()];
+        }
+        let changed = self
+            .last
+            .iter_mut()
+            .zip(values)
+            .enumerate()
+            .filter(|(_, (old, new))| old != new)
+            .map(|(k, (old, &new))| {
+                *old = new;
+                (k as u32, new)
+            })
+            .collect();
+        self.changes.push(FrameChange {
+            t,
+            pose,
+            cells: changed,
+        });
+    }
+
+    /// The number of frames.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.changes.len()
+    }
+
+    /// Whether no frame was kept.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.changes.is_empty()
+    }
+
+    /// The frames in order: time, robot, the map's values.
+    pub fn replay(&self) -> impl ExactSizeIterator<Item = (f64, Pose, Vec<i8>)> + '_ {
+        let mut values = vec![i8::MIN; self.last.len()];
+        self.changes.iter().map(move |frame| {
+            for &(k, v) in &frame.cells {
+                values[k as usize] = v;
+            }
+            (frame.t, frame.pose, values.clone())
+        })
     }
 }
 
