@@ -1,5 +1,5 @@
-//! Grid A* workloads shared by the `grid_search` bench and the `grid_astar_rounds`
-//! example: the MovingAI suites, the generated 512 x 512 maps, and the peer
+//! Grid A* and JPS workloads shared by the `grid_search` bench and the `grid_astar_rounds`
+//! and `grid_jps_rounds` examples: the MovingAI suites, the generated 512 x 512 maps, and the peer
 //! (`pathfinding::directed::astar::astar` written as the stand-alone `pathfinding-astar`
 //! peer writes it).
 
@@ -10,7 +10,7 @@ use hyplan_core::Zone;
 use ordered_float::OrderedFloat;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use search::{GridOptions, GridSearch, ScenEntry, SearchStats, read_scen};
+use search::{GridOptions, GridSearch, JumpPointSearch, ScenEntry, SearchStats, read_scen};
 
 const SQRT2: f64 = std::f64::consts::SQRT_2;
 
@@ -294,6 +294,39 @@ pub fn run_peer(s: &Suite) -> f64 {
         .iter()
         .map(|&(a, b, _)| {
             peer_astar(&s.map, std::hint::black_box(a), std::hint::black_box(b)).unwrap_or(0.0)
+        })
+        .sum()
+}
+
+/// Solves every query of `s` once by jump point search on `jps` and asserts each cost is
+/// within `max(1e-3, 1e-5 len)` of the optimum; returns the summed counters (expansions:
+/// jump points).
+pub fn check_jps(s: &Suite, jps: &mut JumpPointSearch) -> SearchStats {
+    let mut total = SearchStats::default();
+    for (k, &(a, b, opt)) in s.queries.iter().enumerate() {
+        let tol = f64::max(1e-3, 1e-5 * opt);
+        let found = jps.search(a, b).ok();
+        assert!(
+            found.as_ref().is_some_and(|p| (p.cost - opt).abs() <= tol),
+            "{} #{k}: JPS {:?} vs {opt}",
+            s.name,
+            found.map(|p| p.cost)
+        );
+        if let Some(p) = found {
+            total.expansions += p.stats.expansions;
+            total.pushes += p.stats.pushes;
+        }
+    }
+    total
+}
+
+/// Every query of `s` by jump point search on `jps`; the summed costs.
+pub fn run_jps(s: &Suite, jps: &mut JumpPointSearch) -> f64 {
+    s.queries
+        .iter()
+        .map(|&(a, b, _)| {
+            let p = jps.search(std::hint::black_box(a), std::hint::black_box(b));
+            p.map_or(0.0, |p| p.cost)
         })
         .sum()
 }

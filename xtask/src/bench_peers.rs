@@ -16,6 +16,11 @@
 //! the peer's default); ours is exact (every cell a segment touches), which costs us time
 //! and never cuts a corner. The `OMPL cut` column counts OMPL paths that cross a blocked
 //! cell (the peer's own `--check-exact`).
+//!
+//! The grid searches' peer is the `pathfinding` crate's A*, in process: the criterion group
+//! `grid_search` (benches/benches/grid_search.rs) and the example `grid_jps_rounds` put our
+//! `jps` and `astar` beside it on the same MovingAI and generated queries and print the
+//! ratios; `--planners jps` here says so.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -109,6 +114,10 @@ const PLANNERS: &[(PlannerKind, Option<&str>)] = &[
     (PlannerKind::BiRrt, None),
 ];
 
+/// Where the grid searches meet their peer, the `pathfinding` crate's A* (not OMPL).
+const GRID_PEER_RUN: &str =
+    "cargo run --release -p hyplan-benches --example grid_jps_rounds -- 5 --generated";
+
 /// `--planners`' value: a registry name of a planner this comparison runs.
 fn compared_planner(name: &str) -> Result<PlannerKind, String> {
     let kind = PlannerConfig::by_name(name)
@@ -116,6 +125,11 @@ fn compared_planner(name: &str) -> Result<PlannerKind, String> {
         .kind();
     if PLANNERS.iter().any(|(k, _)| *k == kind) {
         Ok(kind)
+    } else if kind.capabilities().family == registry::Family::GridSearch {
+        Err(format!(
+            "{name} is a grid search: its peer is the pathfinding crate's A*, timed beside \
+             our jps and astar by `{GRID_PEER_RUN}`"
+        ))
     } else {
         let compared: Vec<&str> = PLANNERS.iter().map(|(k, _)| k.name()).collect();
         Err(format!(
@@ -584,6 +598,8 @@ mod tests {
         let bi = sampling::BiRrt { step, budget };
         assert_eq!(set(PlannerKind::BiRrt), PlannerConfig::BiRrt(bi));
         assert!(compared_planner("rrt-connect").is_ok());
+        let grid = compared_planner("jps").unwrap_err();
+        assert!(grid.contains("grid_jps_rounds"), "{grid}");
         assert!(compared_planner("astar").is_err());
         assert!(compared_planner("nope").is_err());
     }

@@ -83,14 +83,16 @@ fn segments(points: &[(f64, f64)]) -> impl Iterator<Item = f64> + '_ {
         .map(|w| (w[0].0 - w[1].0).hypot(w[0].1 - w[1].1))
 }
 
-const PLANNERS: [&str; 7] = [
+const PLANNERS: [&str; 9] = [
     "rrt",
     "rrt-star",
     "bi-rrt",
     "rrt-connect",
     "astar",
+    "jps",
     "dijkstra",
     "theta-star",
+    "lazy-theta-star",
 ];
 
 #[test]
@@ -117,6 +119,44 @@ fn every_planner_finds_a_path_and_prints_json() {
         let again = json(&plan_across(&map, &line));
         assert_eq!(v["path"], again["path"], "{planner}: same seed, same path");
     }
+}
+
+/// `hyplan plan --json` on the walled map with `--planner planner`: the JSON output.
+fn walled_json(tag: &str, planner: &str) -> serde_json::Value {
+    json(&plan_walled(tag, &format!("--planner {planner} --json")))
+}
+
+/// `jps` finds A*'s length through the gap; `lazy-theta-star` is `theta-star`'s default
+/// (lazy) search by name, and the eager original is still there to compare with.
+#[test]
+fn jps_has_astars_length_and_lazy_theta_star_is_theta_stars_default() {
+    let tag = "jps_has_astars_length_and_lazy_theta_star_is_theta_stars_default";
+    let astar = walled_json(tag, "astar");
+    let jps = walled_json(tag, "jps");
+    assert_eq!(jps["planner"], "jps");
+    let (a, j) = (
+        astar["length"].as_f64().unwrap(),
+        jps["length"].as_f64().unwrap(),
+    );
+    assert!((a - j).abs() < 1e-9, "astar {a}, jps {j}");
+    assert!(
+        jps["nodes"].as_u64().unwrap() < astar["nodes"].as_u64().unwrap(),
+        "jps reaches fewer cells: {} vs {}",
+        jps["nodes"],
+        astar["nodes"]
+    );
+    let lazy = walled_json(tag, "lazy-theta-star");
+    assert_eq!(lazy["planner"], "lazy-theta-star");
+    assert_eq!(lazy["path"], walled_json(tag, "theta-star")["path"]);
+    assert_eq!(
+        lazy["path"],
+        walled_json(tag, "theta-star:lazy=true")["path"]
+    );
+    let eager = walled_json(tag, "theta-star:lazy=false");
+    assert_eq!(eager["solved"], true);
+    // `lazy` is theta-star's field only: the lazy planner's name already says it.
+    let o = plan_across(&walled(tag), "--planner lazy-theta-star:lazy=false");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
 }
 
 #[test]

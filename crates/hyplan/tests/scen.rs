@@ -17,8 +17,12 @@ const TINY_MAP: &str = "type octile\nheight 4\nwidth 4\nmap\n.@..\n....\n..@.\n.
 fn arena_all_scenarios_match() {
     let arena = repo_file("data/movingai/arena.map");
     let arena_scen = repo_file("data/movingai/arena.map.scen");
-    for algo in ["astar", "dijkstra"] {
-        let o = scen(&arena, &arena_scen, &["--algo", algo]);
+    for (flag, planner) in [
+        ("--algo", "astar"),
+        ("--planner", "dijkstra"),
+        ("--planner", "jps"),
+    ] {
+        let o = scen(&arena, &arena_scen, &[flag, planner]);
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
         let out = stdout(&o);
         let mut lines = out.lines();
@@ -42,6 +46,36 @@ fn arena_all_scenarios_match() {
             stderr(&o)
         );
     }
+}
+
+/// The `cost` column of `hyplan scen` on the arena with `--planner planner`.
+fn arena_costs(planner: &str) -> Vec<f64> {
+    let o = scen(
+        &repo_file("data/movingai/arena.map"),
+        &repo_file("data/movingai/arena.map.scen"),
+        &["--planner", planner],
+    );
+    assert_eq!(o.status.code(), Some(0), "{planner}: {}", stderr(&o));
+    stdout(&o)
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(2).unwrap().parse().unwrap())
+        .collect()
+}
+
+/// Jump point search gives A*'s length on every arena query (up to the order in which
+/// the moves' lengths were added), and `--help` says when to pick which.
+#[test]
+fn jps_gives_astars_lengths_and_help_says_which_to_use() {
+    let (astar, jps) = (arena_costs("astar"), arena_costs("jps"));
+    assert_eq!(astar.len(), 160);
+    assert_eq!(jps.len(), astar.len());
+    for (k, (a, j)) in astar.iter().zip(&jps).enumerate() {
+        assert!((a - j).abs() <= 1e-6, "scenario {k}: astar {a}, jps {j}");
+    }
+    let o = hyplan(&["scen", "--help"]);
+    let help = stdout(&o);
+    assert!(help.contains("random-obstacle"), "{help}");
 }
 
 #[test]

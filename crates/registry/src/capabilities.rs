@@ -6,7 +6,7 @@ use crate::{PlannerConfig, PlannerKind};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, strum::IntoStaticStr, strum::Display)]
 #[strum(serialize_all = "kebab-case")]
 pub enum Family {
-    /// A search over the grid's cells (A*, Dijkstra, Theta*).
+    /// A search over the grid's cells (A*, JPS, Dijkstra, Theta*, lazy Theta*).
     GridSearch,
     /// A tree grown toward random samples (the RRT family).
     Sampling,
@@ -71,7 +71,7 @@ impl PlannerKind {
     pub fn capabilities(self) -> Capabilities {
         use PlannerKind as K;
         let family = match self {
-            K::Astar | K::Dijkstra | K::ThetaStar => Family::GridSearch,
+            K::Astar | K::Jps | K::Dijkstra | K::ThetaStar | K::LazyThetaStar => Family::GridSearch,
             K::Rrt | K::RrtStar | K::BiRrt | K::RrtConnect => Family::Sampling,
             K::RrtAstarBt | K::RrtAstarRefine | K::HybridRrtAstar | K::SafeRrtStar => {
                 Family::Hybrid

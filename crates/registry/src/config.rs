@@ -4,7 +4,7 @@
 use hybrid::{GaPchip, HybridRrtAstar, RrtAstarBt, RrtAstarRefine, SafeRrtStar};
 use hyplan_core::{Budget, Planner};
 use sampling::{BiRrt, Rrt, RrtConnect, RrtStar};
-use search::{GridAstar, GridDijkstra, ThetaStar};
+use search::{GridAstar, GridDijkstra, Jps, LazyThetaStar, ThetaStar};
 use serde::{Deserialize, Serialize};
 use strum::{EnumMessage, IntoEnumIterator};
 
@@ -75,12 +75,22 @@ pub enum PlannerConfig {
     /// A* on the grid.
     #[strum(message = "grid A*: optimal cell path (8-connected by default)")]
     Astar(GridAstar),
+    /// Jump point search on the grid.
+    #[strum(
+        message = "jump point search: grid A*'s optimal cost on 8-connected grids, expanding only jump points"
+    )]
+    Jps(Jps),
     /// Dijkstra on the grid.
     #[strum(message = "grid Dijkstra: optimal cell path, no heuristic")]
     Dijkstra(GridDijkstra),
     /// Theta* on the grid.
     #[strum(message = "Theta*: any-angle grid search (line-of-sight parents)")]
     ThetaStar(ThetaStar),
+    /// Lazy Theta* on the grid.
+    #[strum(
+        message = "lazy Theta* (Nash, Koenig and Tovey 2010): Theta* testing line of sight once per expanded cell (theta-star's default, by name)"
+    )]
+    LazyThetaStar(LazyThetaStar),
     /// RRT-A*-BT (seed 000).
     #[strum(
         message = "RRT-A*-BT (seed 000): RRT nodes expanded best-first with back-tracking, then node reduction and a B-spline"
@@ -132,8 +142,10 @@ impl From<PlannerKind> for PlannerConfig {
             PlannerKind::BiRrt => Self::BiRrt(BiRrt::default()),
             PlannerKind::RrtConnect => Self::RrtConnect(RrtConnect::default()),
             PlannerKind::Astar => Self::Astar(GridAstar::default()),
+            PlannerKind::Jps => Self::Jps(Jps::default()),
             PlannerKind::Dijkstra => Self::Dijkstra(GridDijkstra::default()),
             PlannerKind::ThetaStar => Self::ThetaStar(ThetaStar::default()),
+            PlannerKind::LazyThetaStar => Self::LazyThetaStar(LazyThetaStar::default()),
             PlannerKind::RrtAstarBt => Self::RrtAstarBt(RrtAstarBt::default()),
             PlannerKind::RrtAstarRefine => Self::RrtAstarRefine(RrtAstarRefine::default()),
             PlannerKind::HybridRrtAstar => Self::HybridRrtAstar(HybridRrtAstar::default()),
@@ -196,8 +208,10 @@ impl PlannerConfig {
             Self::BiRrt(p) => Box::new(p),
             Self::RrtConnect(p) => Box::new(p),
             Self::Astar(p) => Box::new(p),
+            Self::Jps(p) => Box::new(p),
             Self::Dijkstra(p) => Box::new(p),
             Self::ThetaStar(p) => Box::new(p),
+            Self::LazyThetaStar(p) => Box::new(p),
             Self::RrtAstarBt(p) => Box::new(p),
             Self::RrtAstarRefine(p) => Box::new(p),
             Self::HybridRrtAstar(p) => Box::new(p),
@@ -243,7 +257,11 @@ impl PlannerConfig {
     pub fn budget_on(&self, ws: &dyn hyplan_core::Workspace) -> Option<Budget> {
         let own = self.budget()?;
         Some(match self {
-            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) => own.for_search(),
+            Self::Astar(_)
+            | Self::Jps(_)
+            | Self::Dijkstra(_)
+            | Self::ThetaStar(_)
+            | Self::LazyThetaStar(_) => own.for_search(),
             Self::GaPchip(_) => Budget {
                 max_iterations: own
                     .max_iterations
@@ -287,8 +305,10 @@ impl PlannerConfig {
             Self::SafeRrtStar(p) => Some(&mut p.budget),
             Self::GaPchip(p) => Some(&mut p.budget),
             Self::Astar(p) => Some(&mut p.budget),
+            Self::Jps(p) => Some(&mut p.budget),
             Self::Dijkstra(p) => Some(&mut p.budget),
             Self::ThetaStar(p) => Some(&mut p.budget),
+            Self::LazyThetaStar(p) => Some(&mut p.budget),
         }
     }
 
@@ -302,7 +322,12 @@ impl PlannerConfig {
             Self::RrtAstarRefine(p) => Some(&mut p.step),
             Self::HybridRrtAstar(p) => Some(&mut p.step),
             Self::SafeRrtStar(p) => Some(&mut p.step),
-            Self::Astar(_) | Self::Dijkstra(_) | Self::ThetaStar(_) | Self::GaPchip(_) => None,
+            Self::Astar(_)
+            | Self::Jps(_)
+            | Self::Dijkstra(_)
+            | Self::ThetaStar(_)
+            | Self::LazyThetaStar(_)
+            | Self::GaPchip(_) => None,
         }
     }
 
@@ -364,7 +389,7 @@ mod tests {
     #[test]
     fn every_planner_builds_by_name_and_keeps_its_name() {
         let names = PlannerConfig::names();
-        assert_eq!(names.len(), 12);
+        assert_eq!(names.len(), 14);
         for name in names {
             let c = PlannerConfig::by_name(name).unwrap();
             assert_eq!(c.name(), name);

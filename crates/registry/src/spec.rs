@@ -87,8 +87,12 @@ impl PlannerConfig {
             Self::BiRrt(p) => Self::BiRrt(override_fields(&p, &pairs).map_err(bad)?),
             Self::RrtConnect(p) => Self::RrtConnect(override_fields(&p, &pairs).map_err(bad)?),
             Self::Astar(p) => Self::Astar(override_fields(&p, &pairs).map_err(bad)?),
+            Self::Jps(p) => Self::Jps(override_fields(&p, &pairs).map_err(bad)?),
             Self::Dijkstra(p) => Self::Dijkstra(override_fields(&p, &pairs).map_err(bad)?),
             Self::ThetaStar(p) => Self::ThetaStar(override_fields(&p, &pairs).map_err(bad)?),
+            Self::LazyThetaStar(p) => {
+                Self::LazyThetaStar(override_fields(&p, &pairs).map_err(bad)?)
+            }
             Self::RrtAstarBt(p) => Self::RrtAstarBt(override_fields(&p, &pairs).map_err(bad)?),
             Self::RrtAstarRefine(p) => {
                 Self::RrtAstarRefine(override_fields(&p, &pairs).map_err(bad)?)

@@ -94,12 +94,52 @@ impl<'a> GridRays<'a> {
         self.frame.origin.y + j as f64 * self.frame.resolution
     }
 
-    /// Distance along unit ray `d` from `o` to the first boundary of the forbidden cells,
-    /// if there is one before `limit` (a hit a rounding error beyond it may be returned:
-    /// the caller compares). Exact to rounding but for rays through a cell corner or
-    /// along a grid line, where the segments' ends decide ties that the traversal breaks
-    /// one way.
-    pub(crate) fn range(&self, o: Point2, d: Vector2<f64>, limit: f64) -> Option<f64> {
+    /// Lowers each of `ranges` (the beams along the unit `dirs` from `o`) to the distance
+    /// to the first boundary of the forbidden cells, if there is one before the range and
+    /// `limit` (a hit a rounding error beyond may be handed back: the caller compares).
+    /// Exact to rounding but for rays through a cell corner or along a grid line, where
+    /// the segments' ends decide ties that the traversal breaks one way. The beams'
+    /// marches run [`LANES`] at a time, interleaved, so that the memory waits of one
+    /// beam's strides overlap with the others' (each stride depends on the byte it
+    /// reads, so a lone march waits on every load).
+    pub(crate) fn lower(&self, o: Point2, dirs: &[Vector2<f64>], ranges: &mut [f64], limit: f64) {
+        let mut lanes: [Option<(usize, March)>; LANES] = [None; LANES];
+        let mut next = 0;
+        let mut busy = 0;
+        loop {
+            // Fill the free lanes with the next beams that need a march.
+            for lane in lanes.iter_mut().filter(|l| l.is_none()) {
+                while next < dirs.len() {
+                    let k = next;
+                    next += 1;
+                    match self.begin(o, dirs[k], ranges[k].min(limit)) {
+                        Begin::Done(t) => lower_to(&mut ranges[k], t),
+                        Begin::Search(m) => {
+                            *lane = Some((k, m));
+                            busy += 1;
+                            break;
+                        }
+                    }
+                }
+            }
+            if busy == 0 {
+                return;
+            }
+            for lane in &mut lanes {
+                if let Some((k, m)) = lane
+                    && let Some(t) = self.advance(m)
+                {
+                    lower_to(&mut ranges[*k], t);
+                    *lane = None;
+                    busy -= 1;
+                }
+            }
+        }
+    }
+
+    /// A beam's cast up to its march: the answer when it needs none (off the grid, the
+    /// map's edge, a scanner in a forbidden cell), or where the march starts.
+    fn begin(&self, o: Point2, d: Vector2<f64>, limit: f64) -> Begin {
         let (w, h) = (self.frame.width as i64, self.frame.height as i64);
         let inv = (1.0 / d.x, 1.0 / d.y);
         let (x_lines, y_lines) = (
@@ -113,7 +153,7 @@ impl<'a> GridRays<'a> {
         // A hit found a rounding error past the end is still handed back.
         let t_end = t_end + 1e-9 * (1.0 + t_end.abs());
         if t_in.is_nan() || t_end.is_nan() || t_in > t_end {
-            return None;
+            return Begin::Done(None);
         }
         // The traversal runs in cell units.
         let end = t_end * self.per_cell;
@@ -132,47 +172,52 @@ impl<'a> GridRays<'a> {
                         f64::NEG_INFINITY
                     }
                 };
-                Some(exact(o.x, d.x, x_lines).max(exact(o.y, d.y, y_lines)))
+                Begin::Done(Some(exact(o.x, d.x, x_lines).max(exact(o.y, d.y, y_lines))))
             } else {
-                self.search(walk, t_in * self.per_cell, end)
+                Begin::Search(March {
+                    walk,
+                    s: t_in * self.per_cell,
+                    end,
+                })
             };
         }
         if !start_forbidden {
-            return self.search(walk, 0.0, end);
+            return Begin::Search(March { walk, s: 0.0, end });
         }
         // The scanner stands in a forbidden cell: the boundary is where the ray leaves
         // the forbidden cells (into a free one or out of the grid).
         loop {
             if walk.step() > end {
-                return None;
+                return Begin::Done(None);
             }
             if !self.in_grid(walk.i, walk.j) || self.stride(walk.i, walk.j) != 0 {
-                return Some(walk.entry(self));
+                return Begin::Done(Some(walk.entry(self)));
             }
         }
     }
 
-    /// From a cell that is not forbidden, at `s` cells along the ray, the entry into the
-    /// first forbidden cell before `end` cells.
-    fn search(&self, mut walk: Walk, mut s: f64, end: f64) -> Option<f64> {
-        loop {
-            let clear = self.stride(walk.i, walk.j);
-            if clear > STRIDE_FROM {
-                s += f64::from(clear - 1);
-                if s > end {
-                    return None;
-                }
-                walk.jump(self, s);
-                continue;
+    /// One stride or one cell of march `m` (from a cell that is not forbidden, toward the
+    /// entry into the first forbidden cell before its end): `Some` with the answer when
+    /// it ended (a hit, or `None` past its end), `None` while it goes on.
+    #[inline]
+    fn advance(&self, m: &mut March) -> Option<Option<f64>> {
+        let clear = self.stride(m.walk.i, m.walk.j);
+        if clear > STRIDE_FROM {
+            m.s += f64::from(clear - 1);
+            if m.s > m.end {
+                return Some(None);
             }
-            s = walk.step();
-            if s > end || !self.in_grid(walk.i, walk.j) {
-                return None;
-            }
-            if self.stride(walk.i, walk.j) == 0 {
-                return Some(walk.entry(self));
-            }
+            m.walk.jump(self, m.s);
+            return None;
         }
+        m.s = m.walk.step();
+        if m.s > m.end || !self.in_grid(m.walk.i, m.walk.j) {
+            return Some(None);
+        }
+        if self.stride(m.walk.i, m.walk.j) == 0 {
+            return Some(Some(m.walk.entry(self)));
+        }
+        None
     }
 
     /// The nearest point of the forbidden cells to `p` and its distance, for `p` in a
@@ -222,6 +267,34 @@ impl<'a> GridRays<'a> {
             }
         }
         Some(best)
+    }
+}
+
+/// Beams marched at a time by [`GridRays::lower`].
+const LANES: usize = 4;
+
+/// A march under way: the traversal, its parameter (cells) and where it ends.
+#[derive(Debug, Clone, Copy)]
+struct March {
+    walk: Walk,
+    s: f64,
+    end: f64,
+}
+
+/// How a beam's cast begins ([`GridRays::begin`]).
+enum Begin {
+    /// Answered without a march.
+    Done(Option<f64>),
+    /// A march to run.
+    Search(March),
+}
+
+/// Lowers `r` to a hit `t` nearer than it.
+fn lower_to(r: &mut f64, t: Option<f64>) {
+    if let Some(t) = t
+        && t < *r
+    {
+        *r = t;
     }
 }
 

@@ -301,13 +301,7 @@ impl LaserModel {
         }
         let (lo, hi) = (self.laser.range_min, self.laser.range_max);
         if let Some(grid) = march {
-            for (r, d) in ranges.iter_mut().zip(&dirs) {
-                if let Some(t) = grid.range(origin, *d, r.min(hi))
-                    && t < *r
-                {
-                    *r = t;
-                }
-            }
+            grid.lower(origin, &dirs, &mut ranges, hi);
         }
         rep_117(&mut ranges, lo, hi);
         Scan {
