@@ -168,6 +168,12 @@ pub trait LocalController: std::fmt::Debug {
     fn follow(&self, input: &FollowInput<'_>) -> (Command, usize);
     /// Clearance kept around the body, m (the navigator's blocked-path test uses it).
     fn margin(&self) -> f64;
+    /// Whether the navigator stops and re-plans as soon as a remembered hit touches the
+    /// path ahead (the default); a controller that steers round what it meets answers
+    /// false, and the navigator then re-plans only when it reports obstructed.
+    fn stops_for_blocked_path(&self) -> bool {
+        true
+    }
 }
 
 impl LocalController for Controller {

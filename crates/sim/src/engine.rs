@@ -229,7 +229,9 @@ impl<'w> Sim<'w> {
             world,
             nav: Navigator::new(
                 scenario.navigation,
-                Box::new(scenario.controller),
+                scenario
+                    .local_planner
+                    .build(scenario.controller, &scenario.costmap),
                 planner,
                 costmaps,
                 scenario.robot,

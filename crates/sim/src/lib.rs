@@ -26,7 +26,8 @@
 //! - Navigation: [`CostmapParams`], [`CostmapBuilder`], [`Costmap`], [`ObstacleMemory`];
 //!   [`GlobalPlanner`] (Dijkstra on the costmap, or any [`hyplan_core::Planner`]);
 //!   the [`LocalController`] trait ([`Controller`]: regulated pure pursuit with a
-//!   collision check); [`Navigator`], [`Navigation`], [`NavEvent`], [`NavState`].
+//!   collision check; [`RolloutController`]: `base_local_planner`'s trajectory roll-out
+//!   and DWA, [`Rollout`]), chosen by [`LocalPlanner`]; [`Navigator`], [`Navigation`], [`NavEvent`], [`NavState`].
 //! - Exploration: [`Exploration`], [`Strategy`], [`ExploreOutcome`], [`Coverage`],
 //!   [`RrtDetector`] ([`DetectorKind`]), [`Filter`], [`Assigner`],
 //!   [`nearest_frontier`] (the baseline), [`ViewPoints`], [`explore_then_navigate`].
@@ -77,6 +78,7 @@ mod navigator;
 mod people;
 mod planner;
 mod record;
+mod rollout;
 mod run;
 mod scenario;
 mod soak;
@@ -116,6 +118,7 @@ pub use record::{
     Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, animation_scene,
     trajectory_scene, velocity_svg, write_all,
 };
+pub use rollout::{LocalPlanner, Rollout, RolloutController};
 pub use run::{Outcome, Recorder, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
 pub use soak::{SoakSummary, room, soak};

@@ -290,7 +290,7 @@ impl Navigator {
         if (here - self.planned_at).norm() >= self.params.progress_reset {
             self.failures = 0;
         }
-        if self.path_blocked(here, memory, tick) {
+        if self.controller.stops_for_blocked_path() && self.path_blocked(here, memory, tick) {
             return self.blocked(here, prev, tick, ticks_per_s, events);
         }
         let (cmd, k) = self.controller.follow(&FollowInput {

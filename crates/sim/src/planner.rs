@@ -90,8 +90,20 @@ impl GlobalPlanner {
 /// costmap and brought up to date with the next ones where their zones changed.
 ///
 /// ```
-/// let scratch = sim::PlanScratch::default();
-/// assert!(format!("{scratch:?}").contains("PlanScratch"));
+/// use envmap::GridMap;
+/// use hyplan_core::Point2;
+/// use rand::SeedableRng;
+/// use sim::{GlobalPlanner, PlanScratch};
+/// let map = GridMap::from_ascii("......\n.####.\n......")?;
+/// let (s, g) = (Point2::new(0.5, 0.5), Point2::new(5.5, 0.5));
+/// let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
+/// let mut scratch = PlanScratch::default();
+/// let first = GlobalPlanner::Dijkstra.plan_with(&mut scratch, &map, s, g, 0.1, &mut rng);
+/// let again = GlobalPlanner::Dijkstra.plan_with(&mut scratch, &map, s, g, 0.1, &mut rng);
+/// assert!(first.is_some());
+/// assert_eq!(first, again);
+/// assert_eq!(first, GlobalPlanner::Dijkstra.plan(&map, s, g, 0.1, &mut rng));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Default)]
 pub struct PlanScratch {

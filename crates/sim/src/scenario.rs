@@ -24,6 +24,7 @@ use crate::kinematics::{Pose, Robot, wrap_angle};
 use crate::laser::Laser;
 use crate::mapping::Mapping;
 use crate::navigator::Navigation;
+use crate::rollout::LocalPlanner;
 use crate::world::{Person, Shape, StaticWorld, World, pt};
 
 /// A map file as the static world (instead of, or beside, shapes).
@@ -152,9 +153,14 @@ pub struct Scenario {
     /// Costmap.
     #[serde(default)]
     pub costmap: CostmapParams,
-    /// Path follower.
+    /// Regulated pure pursuit's parameters, and the control rate of every local planner.
     #[serde(default)]
     pub controller: Controller,
+    /// Which local planner drives (default `Rpp`, [`Scenario::controller`]'s pure
+    /// pursuit; a file without this key means it): `Trajectory(( .. ))` or `Dwa(( .. ))`
+    /// for `base_local_planner`'s roll-out.
+    #[serde(default)]
+    pub local_planner: LocalPlanner,
     /// Navigator.
     #[serde(default)]
     pub navigation: Navigation,

@@ -129,6 +129,7 @@ pub fn room(seed: u64, index: u64) -> Scenario {
         mapping: Default::default(),
         costmap: Default::default(),
         controller: Default::default(),
+        local_planner: Default::default(),
         navigation: Default::default(),
     }
 }

@@ -120,6 +120,9 @@ impl Check<'_> {
         self.non_negative("controller.approach_distance", k.approach_distance)?;
         self.non_negative("controller.v_min", k.v_min)?;
         self.non_negative("controller.margin", k.margin)?;
+        if let Some((field, v, reason)) = sc.local_planner.rollout().and_then(|r| r.problem()) {
+            return Err(self.fail(format!("local_planner.{field}"), v, reason));
+        }
         let n = &sc.navigation;
         self.positive("navigation.goal_tolerance", n.goal_tolerance)?;
         self.positive("navigation.blocked_lookahead", n.blocked_lookahead)?;

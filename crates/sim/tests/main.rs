@@ -5,4 +5,5 @@ mod explore;
 mod kinematics;
 mod laser;
 mod navigation;
+mod rollout;
 mod tracking;

@@ -27,6 +27,10 @@ pub struct Args {
     /// Seed of the run's random streams (laser noise, planner, each detector).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// Local planner: `rpp`, `trajectory` or `dwa`, as `hyplan sim --controller`.
+    /// Default: the scenario's.
+    #[arg(long, value_parser = super::sim::CONTROLLERS)]
+    pub controller: Option<String>,
     /// Folder for coverage.csv, track.csv, the final map (map.yaml + map.pgm), the
     /// figures (map, track, trees and frontiers at the scenario's snapshot times and at
     /// the end; SVG) and animation.png (the map being built, an animated PNG with a
@@ -53,6 +57,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         scenario.exploration.strategy = sim::Strategy::parse(d).with_context(|| {
             format!("--detector = {d:?}: must be one of local, global, both, frontier")
         })?;
+    }
+    if let Some(name) = &args.controller {
+        super::sim::set_local_planner(&mut scenario, name)?;
     }
     if let Some(eta) = args.eta {
         if !(eta.is_finite() && eta > 0.0) {

@@ -20,6 +20,12 @@ pub struct Args {
     /// costmap, default) or any other planner of the registry, as `hyplan plan` runs it.
     #[arg(long, default_value = "dijkstra", value_parser = SpecParser::with_help(SIM_HELP))]
     pub planner: String,
+    /// Local planner: `rpp` (regulated pure pursuit), `trajectory` (base_local_planner's
+    /// Trajectory Rollout) or `dwa` (its Dynamic Window Approach). Default: the
+    /// scenario's `local_planner` (`rpp` when it says nothing); a roll-out keeps the
+    /// scenario's roll-out parameters when it has some.
+    #[arg(long, value_parser = CONTROLLERS)]
+    pub controller: Option<String>,
     /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver
     /// writes it: free 254, occupied 0, unknown 205, `mode: trinary`) and the figures
     /// (trajectory, v and omega, animation; SVG).
@@ -31,6 +37,22 @@ pub struct Args {
     /// before they are allocated.
     #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
     pub max_cells: usize,
+}
+
+/// The names `--controller` takes.
+pub(crate) const CONTROLLERS: [&str; 3] = ["rpp", "trajectory", "dwa"];
+
+/// Sets `scenario`'s local planner to the one `name` names (one of [`CONTROLLERS`]),
+/// keeping the scenario's roll-out parameters when it has some.
+pub(crate) fn set_local_planner(scenario: &mut sim::Scenario, name: &str) -> anyhow::Result<()> {
+    let params = scenario.local_planner.rollout();
+    scenario.local_planner = sim::LocalPlanner::from_name(name, params).with_context(|| {
+        format!(
+            "--controller = {name:?}: must be one of {}",
+            CONTROLLERS.join(", ")
+        )
+    })?;
+    Ok(())
 }
 
 /// `--planner`'s help lines where the simulator reads a name otherwise than `hyplan plan`.
@@ -68,8 +90,11 @@ fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
 
 /// Runs `hyplan sim`: a summary on stdout; exit 0 goal reached, 1 not reached, 2 bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let (scenario, world) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
+    let (mut scenario, world) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
         .map_err(super::sim_scenario_error)?;
+    if let Some(name) = &args.controller {
+        set_local_planner(&mut scenario, name)?;
+    }
     let planner = global_planner(&args.planner)?;
     let outcome = sim::run(&scenario, &world, args.seed, planner);
     let m = &outcome.trace.summary;
@@ -111,4 +136,25 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     } else {
         ExitCode::from(crate::EXIT_NO_PATH)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn controller_flag_keeps_the_scenarios_rollout() {
+        let text = r#"SimScenario(name: "t", world: (size: (4.0, 4.0)), start: (1.0, 1.0),
+            goal: (3.0, 3.0), local_planner: Trajectory((sim_time: 1.7)))"#;
+        let mut sc = sim::Scenario::parse(text, std::path::Path::new("t.ron")).unwrap();
+        set_local_planner(&mut sc, "dwa").unwrap();
+        let want = sim::Rollout {
+            sim_time: 1.7,
+            ..sim::Rollout::default()
+        };
+        assert_eq!(sc.local_planner, sim::LocalPlanner::Dwa(want));
+        set_local_planner(&mut sc, "rpp").unwrap();
+        assert_eq!(sc.local_planner, sim::LocalPlanner::Rpp);
+        assert!(set_local_planner(&mut sc, "teb").is_err());
+    }
 }
