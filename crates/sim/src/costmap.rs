@@ -363,8 +363,12 @@ impl CostmapBuilder {
     /// The costmap of the prior map, the built map's occupied cells and `hits`.
     #[must_use]
     pub fn build(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Costmap {
-        let lethal = self.lethal(built, hits);
-        let costs = self.inflate(&lethal);
+        self.costmap_of(&self.lethal(built, hits))
+    }
+
+    /// The costmap of the lethal cells `lethal`.
+    fn costmap_of(&self, lethal: &Mask) -> Costmap {
+        let costs = self.inflate(lethal);
         let risk_from = self.risk_from();
         let zones = costs.iter().map(|&c| zone_of(c, risk_from)).collect();
         let f = self.frame;
@@ -402,7 +406,7 @@ impl CostmapBuilder {
                 changed_window(&cache.lethal, lethal.cells(), f.width)
             }
             _ => {
-                cache.costmap = Some(self.build(built, hits));
+                cache.costmap = Some(self.costmap_of(&lethal));
                 cache.lethal = lethal.cells().to_vec();
                 return cache.costmap.as_ref().expect("just built");
             }

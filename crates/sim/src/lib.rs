@@ -121,7 +121,7 @@ pub use record::{
 pub use rollout::{LocalPlanner, Rollout, RolloutController};
 pub use run::{Outcome, Recorder, run};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
-pub use soak::{SoakSummary, room, soak};
+pub use soak::{SoakSummary, room, soak, soak_with};
 pub use tracking::{Mover, Tracker};
 pub use world::{Disc, Person, Segment, Shape, StaticWorld, Walk, World};
 

@@ -9,7 +9,8 @@
 //!   robot's top speed, setting off within the first 20 s, once or back and forth.
 //!
 //! Every default of the robot, laser (720 beams at 40 Hz), map, costmap, controller and
-//! navigator applies.
+//! navigator applies; the local planner is regulated pure pursuit unless [`soak_with`]
+//! is given another.
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -17,6 +18,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::kinematics::Robot;
 use crate::planner::GlobalPlanner;
+use crate::rollout::LocalPlanner;
 use crate::scenario::{Scenario, WorldSpec};
 use crate::world::{Person, Shape, Walk};
 
@@ -155,12 +157,26 @@ pub struct SoakSummary {
     pub simulated_s: f64,
 }
 
-/// Runs rooms `0..n` of a soak seeded `seed` (each run seeded with its index).
+/// Runs rooms `0..n` of a soak seeded `seed` (each run seeded with its index), driven by
+/// regulated pure pursuit: [`soak_with`] and [`LocalPlanner::Rpp`].
 #[must_use]
 pub fn soak(seed: u64, n: u64) -> SoakSummary {
+    soak_with(seed, n, LocalPlanner::Rpp)
+}
+
+/// Runs rooms `0..n` of a soak seeded `seed` (each run seeded with its index), each room's
+/// `local_planner` replaced by `local`.
+///
+/// ```no_run
+/// let s = sim::soak_with(2026, 12, sim::LocalPlanner::Trajectory(Default::default()));
+/// println!("{} of {} reached, {} at-fault contacts", s.reached, s.rooms, s.contacts_at_fault);
+/// ```
+#[must_use]
+pub fn soak_with(seed: u64, n: u64, local: LocalPlanner) -> SoakSummary {
     let mut s = SoakSummary::default();
     for k in 0..n {
-        let sc = room(seed, k);
+        let mut sc = room(seed, k);
+        sc.local_planner = local;
         let Ok(world) = sc.build_world(std::path::Path::new(&sc.name)) else {
             s.invalid += 1;
             continue;

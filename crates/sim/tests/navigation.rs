@@ -119,12 +119,31 @@ fn soak_small() {
     assert!(s.reached >= s.rooms * 3 / 4, "{s:?}");
 }
 
+/// The small soak driven by the trajectory roll-out (issue 28: no at-fault contact with it).
+#[test]
+fn soak_small_trajectory() {
+    let s = sim::soak_with(
+        2026,
+        12,
+        sim::LocalPlanner::Trajectory(sim::Rollout::default()),
+    );
+    assert_eq!(s.contacts_at_fault, 0, "{s:?}");
+    assert!(s.reached >= s.rooms * 3 / 4, "{s:?}");
+}
+
 /// The full soak of the issue: `cargo test -p sim --release -- --ignored soak_1000 --nocapture`.
+/// `SOAK_CONTROLLER=trajectory|dwa|rpp` (default rpp) picks the local planner and
+/// `SOAK_ROOMS=N` (default 1000) the number of rooms.
 #[test]
 #[ignore = "minutes; run by hand for the safety figure"]
 fn soak_1000() {
-    let s = sim::soak(2026, 1000);
+    let name = std::env::var("SOAK_CONTROLLER").unwrap_or_else(|_| "rpp".into());
+    let local = sim::LocalPlanner::from_name(&name, None).expect("SOAK_CONTROLLER");
+    let n = std::env::var("SOAK_ROOMS").map_or(1000, |v| v.parse().expect("SOAK_ROOMS"));
+    let t = std::time::Instant::now();
+    let s = sim::soak_with(2026, n, local);
     println!("{}", serde_json::to_string_pretty(&s).unwrap());
+    println!("{name}: {n} rooms, {:.1} s wall", t.elapsed().as_secs_f64());
     assert_eq!(s.contacts_at_fault, 0, "{s:?}");
 }
 

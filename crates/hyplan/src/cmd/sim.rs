@@ -99,13 +99,14 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let outcome = sim::run(&scenario, &world, args.seed, planner);
     let m = &outcome.trace.summary;
     outln!(
-        "{}: {} (planner {}, seed {})",
+        "{}: {} (planner {}, controller {}, seed {})",
         m.scenario,
         match m.travel_time {
             Some(t) => format!("goal reached in {t:.2} s"),
             None => format!("goal not reached (stopped at {:.2} s)", m.end_time),
         },
         m.planner,
+        scenario.local_planner.name(),
         m.seed
     )?;
     outln!(

@@ -94,6 +94,7 @@ use crate::costmap::CostmapParams;
 /// use sim::{LocalPlanner, Rollout};
 /// assert_eq!(LocalPlanner::default(), LocalPlanner::Rpp);
 /// assert_eq!(LocalPlanner::from_name("dwa", None), Some(LocalPlanner::Dwa(Rollout::default())));
+/// assert_eq!(LocalPlanner::Dwa(Rollout::default()).name(), "dwa");
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub enum LocalPlanner {
@@ -117,6 +118,16 @@ impl LocalPlanner {
             "trajectory" => Some(Self::Trajectory(p)),
             "dwa" => Some(Self::Dwa(p)),
             _ => None,
+        }
+    }
+
+    /// The planner's name, as [`from_name`](Self::from_name) takes it.
+    #[must_use]
+    pub const fn name(&self) -> &'static str {
+        match self {
+            Self::Rpp => "rpp",
+            Self::Trajectory(_) => "trajectory",
+            Self::Dwa(_) => "dwa",
         }
     }
 
