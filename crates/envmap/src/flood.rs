@@ -127,14 +127,34 @@ pub fn clusters(
 /// ```
 #[must_use]
 pub fn steps_from(mask: &Mask, start: (usize, usize), conn: Connectivity) -> Vec<u32> {
+    steps_from_cells(mask, [start], conn)
+}
+
+/// [`steps_from`] the nearest of several cells (`seeds`; those outside are skipped): the
+/// steps to the nearest seed, each seed entered whatever its value.
+///
+/// ```
+/// use envmap::{Connectivity, Mask, steps_from_cells};
+/// let open = Mask::from_cells(4, 1, vec![true, true, false, true]).unwrap();
+/// let steps = steps_from_cells(&open, [(0, 0), (3, 0)], Connectivity::Four);
+/// assert_eq!(steps, vec![0, 1, u32::MAX, 0]);
+/// ```
+#[must_use]
+pub fn steps_from_cells(
+    mask: &Mask,
+    seeds: impl IntoIterator<Item = (usize, usize)>,
+    conn: Connectivity,
+) -> Vec<u32> {
     let (w, h) = (mask.width(), mask.height());
     let mut dist = vec![u32::MAX; w * h];
-    if start.0 >= w || start.1 >= h {
-        return dist;
-    }
     let open = mask.cells();
-    let s = start.1 * w + start.0;
-    dist[s] = 0;
+    let mut queue = Vec::new();
+    for (i, j) in seeds {
+        if i < w && j < h && dist[j * w + i] != 0 {
+            dist[j * w + i] = 0;
+            queue.push(j * w + i);
+        }
+    }
     // Distances do not depend on the order neighbours are visited in: a plain vector is
     // the queue, and cells off the border skip the bounds tests.
     let mut offsets = [0isize; 8];
@@ -142,7 +162,6 @@ pub fn steps_from(mask: &Mask, start: (usize, usize), conn: Connectivity) -> Vec
         *o = dj as isize * w as isize + di as isize;
     }
     let offsets = &offsets[..conn.offsets().len()];
-    let mut queue = vec![s];
     let mut head = 0;
     while head < queue.len() {
         let c = queue[head];

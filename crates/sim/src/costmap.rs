@@ -401,13 +401,15 @@ impl CostmapBuilder {
     ) -> &'c Costmap {
         let lethal = self.lethal(built, hits);
         let f = self.frame;
-        let window = match &cache.costmap {
-            Some(c) if c.costs.len() == f.cells() && cache.lethal.len() == f.cells() => {
-                changed_window(&cache.lethal, lethal.cells(), f.width)
+        let window = match (&cache.costmap, &cache.lethal) {
+            (Some(c), Some(last))
+                if c.costs.len() == f.cells() && last.cells().len() == f.cells() =>
+            {
+                changed_window(last.cells(), lethal.cells(), f.width)
             }
             _ => {
                 cache.costmap = Some(self.costmap_of(&lethal));
-                cache.lethal = lethal.cells().to_vec();
+                cache.lethal = Some(lethal);
                 return cache.costmap.as_ref().expect("just built");
             }
         };
@@ -449,7 +451,7 @@ impl CostmapBuilder {
                 *z = zone_of(c, risk_from);
             }
         }
-        cache.lethal = lethal.cells().to_vec();
+        cache.lethal = Some(lethal);
         costmap
     }
 
@@ -503,7 +505,7 @@ fn zone_of(c: u8, risk_from: u8) -> Zone {
 #[derive(Debug, Clone, Default)]
 pub struct CostmapCache {
     /// The lethal cells the costmap was built from.
-    lethal: Vec<bool>,
+    lethal: Option<Mask>,
     costmap: Option<Costmap>,
 }
 

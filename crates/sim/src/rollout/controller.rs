@@ -239,7 +239,6 @@ impl RolloutController {
             .max(sample.omega.abs() / p.angular_sim_granularity);
         let steps = ((raw + 0.5) as usize).max(1);
         let dt = p.sim_time / steps as f64;
-        let unreachable = g.path.len() as u32;
         let (mut pose, mut v, mut w) = (s.pose, s.prev.v, s.prev.omega);
         let (mut occ, mut path_d, mut goal_d) = (0u8, 0u32, 0u32);
         let mut end = pose;
@@ -259,7 +258,7 @@ impl RolloutController {
             }
             occ = occ.max(g.costs[c]);
             (path_d, goal_d) = (g.path[c], g.goal[c]);
-            if path_d >= unreachable || goal_d >= unreachable {
+            if path_d == u32::MAX || goal_d == u32::MAX {
                 return None;
             }
             end = pose;

@@ -1,7 +1,7 @@
 //! The roll-out's local costmap (a rolling window of the remembered hits, inflated) and
 //! its two breadth-first distance grids (the package's `MapGrid`).
 
-use envmap::{CellFrame, DistanceField, Inflation, Mask};
+use envmap::{CellFrame, Connectivity, DistanceField, Inflation, Mask, steps_from_cells};
 use hyplan_core::Point2;
 
 use super::Rollout;
@@ -15,12 +15,11 @@ pub(super) struct LocalGrids {
     pub(super) dist_sq: Vec<u32>,
     /// Nav2 cost per cell.
     pub(super) costs: Vec<u8>,
-    /// Steps to the nearest path cell.
+    /// Steps to the nearest path cell (4-connected, crossing no illegal cell; `u32::MAX`
+    /// where none is reached).
     pub(super) path: Vec<u32>,
-    /// Steps to the local goal cell.
+    /// Steps to the local goal cell, likewise.
     pub(super) goal: Vec<u32>,
-    blocked: Vec<bool>,
-    queue: Vec<usize>,
 }
 
 impl LocalGrids {
@@ -61,17 +60,19 @@ impl LocalGrids {
             .expect("the scenario's inflation was validated");
         g.dist_sq.clear();
         g.dist_sq.extend_from_slice(field.dist_sq());
-        // Obstacle cells for the distance grids: illegal cells, except those under the
-        // robot now (the package's `within_robot`).
+        // Cells the distance grids cross: legal cells, and those under the robot now (the
+        // package's `within_robot`).
         let clear_sq = (clear / res).powi(2);
         let body_sq = (footprint / res).powi(2);
-        g.blocked.clear();
-        g.blocked.extend((0..n * n).map(|c| {
-            let d = g.dist_sq[c];
-            let centre = frame.cell_center(c % n, c / n);
-            let under = ((centre - here).norm() / res).powi(2) <= body_sq;
-            d != DistanceField::NONE && f64::from(d) <= clear_sq && !under
-        }));
+        let open = (0..n * n)
+            .map(|c| {
+                let d = g.dist_sq[c];
+                let centre = frame.cell_center(c % n, c / n);
+                let under = ((centre - here).norm() / res).powi(2) <= body_sq;
+                d == DistanceField::NONE || f64::from(d) > clear_sq || under
+            })
+            .collect();
+        let open = Mask::from_cells(n, n, open).expect("n x n cells");
         // The path from the robot's projection on, densified to the resolution.
         let mut seeds = Vec::new();
         let mut local_goal = None;
@@ -93,82 +94,8 @@ impl LocalGrids {
             }
             a = b;
         }
-        let mut queue = std::mem::take(&mut g.queue);
-        let mut out = std::mem::take(&mut g.path);
-        wave(&frame, &g.blocked, &seeds, &mut out, &mut queue);
-        g.path = out;
-        let mut out = std::mem::take(&mut g.goal);
-        wave(
-            &frame,
-            &g.blocked,
-            local_goal.as_slice(),
-            &mut out,
-            &mut queue,
-        );
-        g.goal = out;
-        g.queue = queue;
-    }
-}
-
-/// Breadth-first steps (4-connected) from `seeds` over `frame`'s cells into `out`: a
-/// `blocked` cell met gets the obstacle value (the cell count) and is not crossed, an
-/// unreached one the cell count plus one (the package's `MapGrid` values).
-fn wave(
-    frame: &CellFrame,
-    blocked: &[bool],
-    seeds: &[usize],
-    out: &mut Vec<u32>,
-    queue: &mut Vec<usize>,
-) {
-    let (w, h) = (frame.width, frame.height);
-    let n = w * h;
-    out.clear();
-    out.resize(n, n as u32 + 1);
-    queue.clear();
-    // `out` below `n + 1` marks a visited cell.
-    for &s in seeds {
-        if out[s] != 0 {
-            out[s] = 0;
-            queue.push(s);
-        }
-    }
-    let mut head = 0;
-    while head < queue.len() {
-        let c = queue[head];
-        head += 1;
-        let next = out[c] + 1;
-        let (i, j) = (c % w, c / w);
-        let around = [
-            (i > 0).then(|| c - 1),
-            (i + 1 < w).then(|| c + 1),
-            (j > 0).then(|| c - w),
-            (j + 1 < h).then(|| c + w),
-        ];
-        for nb in around.into_iter().flatten() {
-            if out[nb] != n as u32 + 1 {
-                continue;
-            }
-            if blocked[nb] {
-                out[nb] = n as u32;
-            } else {
-                out[nb] = next;
-                queue.push(nb);
-            }
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn wave_counts_steps_round_obstacles() {
-        let frame = CellFrame::new(Point2::origin(), 1.0, 3, 3);
-        // A wall in the middle column but its top cell.
-        let blocked = [false, true, false, false, true, false, false, false, false];
-        let (mut out, mut queue) = (Vec::new(), Vec::new());
-        wave(&frame, &blocked, &[0], &mut out, &mut queue);
-        assert_eq!(out, vec![0, 9, 6, 1, 9, 5, 2, 3, 4]);
+        let cell = |c: usize| (c % n, c / n);
+        g.path = steps_from_cells(&open, seeds.iter().map(|&c| cell(c)), Connectivity::Four);
+        g.goal = steps_from_cells(&open, local_goal.map(cell), Connectivity::Four);
     }
 }
