@@ -14,7 +14,7 @@ seconds=${1:-600}
 shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-    targets=(movingai scen ros_yaml image grid_search scenario_ron cli_args)
+    targets=(movingai scen ros_yaml image grid_search scenario_ron cli_args mcap_map)
 fi
 mkdir -p logs
 status=0

@@ -6,7 +6,8 @@
 //!   planners against OMPL 1.5, table of median-time ratios.
 //! - `cargo xtask soak [--minutes N] [--seed S]`: every planner and smoothing method on
 //!   seeded generated maps, each path checked by an exact segment-versus-cell test;
-//!   prints plans checked, colliding and panics per planner.
+//!   prints plans checked, colliding and panics per planner; `--maps M --shard K/N
+//!   --out DIR` runs one shard of M maps, `cargo xtask soak-merge DIR...` joins them.
 //! - `cargo xtask proptest-soak [--minutes N]`: the property tests, round after round
 //!   with fresh seeds; a failure prints the seed that replays it.
 //! - `cargo xtask explore-maps [--maps LIST] [--detectors LIST] [--seeds LIST] [--out DIR]`:
@@ -45,6 +46,8 @@ enum Task {
     Table4,
     /// Every planner and smoothing method on generated maps, paths checked exactly.
     Soak(soak::Args),
+    /// Check that soak shards cover one soak exactly once and print the whole table.
+    SoakMerge(soak::MergeArgs),
     /// The property tests with fresh seeds, round after round.
     ProptestSoak(soak::PropArgs),
     /// Explore every building map with every detector and seed: coverage table and JSON.
@@ -57,6 +60,7 @@ fn main() -> ExitCode {
         Task::Reproduce(args) => reproduce::run(&args),
         Task::BenchPeers(args) => bench_peers::run(&args),
         Task::Soak(args) => soak::run(&args),
+        Task::SoakMerge(args) => soak::merge(&args),
         Task::ProptestSoak(args) => soak::run_proptests(&args),
         Task::ExploreMaps(args) => explore_maps::run(&args),
         Task::Table4 => rooms::write_table4(std::path::Path::new("scenarios")).map(|files| {

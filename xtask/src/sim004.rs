@@ -21,7 +21,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use sim::{GlobalPlanner, Outcome, Row, Scenario, ScenarioError, World, run};
+use sim::{GlobalPlanner, Outcome, Profile, Row, Scenario, ScenarioError, World, run};
 use viz::Table;
 
 /// The scenario files of the replay, in order.
@@ -35,6 +35,8 @@ pub use viz::Claim;
 pub struct Seed004 {
     /// Seed used.
     pub seed: u64,
+    /// The navigation stack's values.
+    pub profile: Profile,
     /// Each scenario with its world and outcome.
     pub runs: Vec<(Scenario, World, Outcome)>,
     /// Claims.
@@ -139,15 +141,17 @@ fn static_claims(o2: &Outcome) -> [Claim; 2] {
     [turns, peaks_claim]
 }
 
-/// Runs the three scenarios in `dir` with `seed` and checks the claims.
+/// Runs the three scenarios in `dir` with `seed` on `profile` and checks the claims.
 ///
 /// # Errors
 ///
 /// A scenario file that does not load.
-pub fn seed004(dir: &Path, seed: u64) -> Result<Seed004, ScenarioError> {
+pub fn seed004(dir: &Path, seed: u64, profile: Profile) -> Result<Seed004, ScenarioError> {
     let mut loaded = Vec::new();
     for f in FILES {
-        loaded.push(Scenario::load(&dir.join(f))?);
+        let (mut sc, world) = Scenario::load(&dir.join(f))?;
+        profile.apply(&mut sc);
+        loaded.push((sc, world));
     }
     let started = std::time::Instant::now();
     let runs: Vec<(Scenario, World, Outcome)> = loaded
@@ -258,6 +262,7 @@ pub fn seed004(dir: &Path, seed: u64) -> Result<Seed004, ScenarioError> {
     });
     Ok(Seed004 {
         seed,
+        profile,
         runs,
         claims,
         elapsed_s,
@@ -272,12 +277,16 @@ impl Seed004 {
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "## `004_3e5a323113b41ded.txt` Figs. 6-9: 004-navigation\n"
+            "### Profile `{}` ({})\n",
+            self.profile.name(),
+            self.runs
+                .first()
+                .map_or("", |(sc, _, _)| sc.local_planner.name())
         );
         let _ = writeln!(
             s,
-            "Three runs of `sim` (Dijkstra, seed {}), scenario files in `scenarios/sim/`; \
-             {:.2} s of computing for {:.1} s simulated. See `docs/papers/004-dynamic-obstacles.md`.\n",
+            "Three runs of `sim` (Dijkstra, seed {}), scenario files in `scenarios/sim/` with the profile's values; \
+             {:.2} s of computing for {:.1} s simulated.\n",
             self.seed,
             self.elapsed_s,
             self.runs
@@ -316,9 +325,6 @@ impl Seed004 {
         }
         s.push_str(&table.to_markdown());
         s.push('\n');
-        s.push_str(&viz::claims_markdown(&self.claims));
-        let held = viz::claims_held(&self.claims);
-        let _ = writeln!(s, "\nClaims held: {held} of {}.\n", self.claims.len());
         if let Some(dir) = figures {
             let _ = writeln!(s, "Figures:");
             for (sc, _, _) in &self.runs {
@@ -346,22 +352,89 @@ impl Seed004 {
     }
 }
 
-/// Runs the replay, writes its figures under `figures/004-navigation/`, and returns the
-/// report section and (claims held, claims).
-pub fn section(root: &Path, figures: &Path) -> anyhow::Result<(String, usize, usize)> {
-    let replay = seed004(&root.join("scenarios/sim"), 0)?;
-    replay.write_figures(&figures.join("004-navigation"))?;
-    let held = replay.claims.iter().filter(|c| c.held).count();
-    eprintln!(
-        "004-navigation: 3 runs in {:.2} s, claims held {held}/{}",
-        replay.elapsed_s,
-        replay.claims.len()
+/// The figures' folder of `profile` under `figures/` (the `hyplan` profile's keeps the
+/// folder of earlier reports).
+fn figure_dir(profile: Profile) -> String {
+    match profile {
+        Profile::Hyplan => "004-navigation".into(),
+        p => format!("004-navigation/{}", p.name()),
+    }
+}
+
+/// The claims of every profile side by side: a row per claim, a verdict per profile.
+#[must_use]
+pub fn claims_side_by_side(replays: &[(Profile, &[Claim])]) -> String {
+    let mut table = Table::new(
+        ["claim", "paper"].into_iter().map(String::from).chain(
+            replays
+                .iter()
+                .map(|(p, _)| format!("`{}` profile", p.name())),
+        ),
     );
-    Ok((
-        replay.markdown(Some("figures/004-navigation")),
-        held,
-        replay.claims.len(),
-    ))
+    let rows = replays.first().map_or(0, |(_, c)| c.len());
+    for k in 0..rows {
+        let first = &replays[0].1[k];
+        table.row(
+            [first.text.clone(), first.paper.clone()]
+                .into_iter()
+                .chain(replays.iter().map(|(_, claims)| {
+                    claims.get(k).map_or("-".into(), |c| {
+                        format!("{}: {}", if c.held { "held" } else { "not held" }, c.ours)
+                    })
+                })),
+        );
+    }
+    let mut s = table.to_markdown();
+    for (p, claims) in replays {
+        let _ = write!(
+            s,
+            "\n`{}` profile: {} of {} held.",
+            p.name(),
+            viz::claims_held(claims),
+            claims.len()
+        );
+    }
+    s.push('\n');
+    s
+}
+
+/// Runs the replay on every profile, writes its figures under `figures/004-navigation/`,
+/// and returns the report section and (claims held, claims) over the profiles.
+pub fn section(root: &Path, figures: &Path) -> anyhow::Result<(String, usize, usize)> {
+    let mut replays = Vec::new();
+    for profile in Profile::ALL {
+        let replay = seed004(&root.join("scenarios/sim"), 0, profile)?;
+        replay.write_figures(&figures.join(figure_dir(profile)))?;
+        eprintln!(
+            "004-navigation ({} profile): 3 runs in {:.2} s, claims held {}/{}",
+            profile.name(),
+            replay.elapsed_s,
+            viz::claims_held(&replay.claims),
+            replay.claims.len()
+        );
+        replays.push(replay);
+    }
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "## `004_3e5a323113b41ded.txt` Figs. 6-9: 004-navigation\n\n\
+         The three scenarios on two navigation stacks: `hyplan` (regulated pure pursuit with \
+         stop and re-plan, our defaults) and `tutorial` (the values of \
+         `rrt_exploration_tutorials`, `base_local_planner`'s trajectory roll-out; each value's \
+         source in `sim::Profile`). See `docs/papers/004-dynamic-obstacles.md`.\n"
+    );
+    let pairs: Vec<(Profile, &[Claim])> = replays
+        .iter()
+        .map(|r| (r.profile, r.claims.as_slice()))
+        .collect();
+    s.push_str(&claims_side_by_side(&pairs));
+    s.push('\n');
+    for r in &replays {
+        s.push_str(&r.markdown(Some(&format!("figures/{}", figure_dir(r.profile)))));
+    }
+    let held = replays.iter().map(|r| viz::claims_held(&r.claims)).sum();
+    let total = replays.iter().map(|r| r.claims.len()).sum();
+    Ok((s, held, total))
 }
 
 #[cfg(test)]
@@ -371,10 +444,17 @@ mod tests {
     #[test]
     fn the_replay_reports_the_seed_and_its_verdicts() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim");
-        let replay = super::seed004(&dir, 0).unwrap();
+        let replay = super::seed004(&dir, 0, sim::Profile::Tutorial).unwrap();
         assert_eq!(replay.runs.len(), 3);
+        assert!(
+            replay
+                .runs
+                .iter()
+                .all(|(sc, _, _)| sc.controller.rate_hz == 5.0)
+        );
         let md = replay.markdown(None);
-        assert!(md.contains("## `004_3e5a323113b41ded.txt`"));
-        assert!(md.contains("held"));
+        assert!(md.contains("### Profile `tutorial` (trajectory)"));
+        let table = super::claims_side_by_side(&[(replay.profile, &replay.claims)]);
+        assert!(table.contains("`tutorial` profile:"));
     }
 }

@@ -2,6 +2,12 @@
 //! each path and curve checked by an exact test of its own; and `cargo xtask
 //! proptest-soak`: the property tests over and over with fresh seeds.
 //!
+//! `--maps M` runs a fixed number of maps instead of a time limit, and `--shard K/N` runs
+//! the maps `k` of `0..M` with `k mod N = K` only (`harness::bench::shard`'s rule),
+//! writing the maps' records and a shard manifest into `--out`; `cargo xtask soak-merge
+//! DIR... [--out DIR]` checks that the shards cover one soak exactly once and prints (and
+//! writes) the table of the whole soak.
+//!
 //! The collision check here is written independently of `GridMap::segment_free`: for
 //! every segment of a path and every blocked cell near it, an exact separating-axis test
 //! between the closed segment and the closed square (the axes x and y, and the
@@ -9,18 +15,22 @@
 //! cell, even at a single corner point, or leaves the map.
 
 use std::collections::BTreeMap;
+use std::fmt::Write as _;
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use anyhow::bail;
+use anyhow::{Context as _, bail};
 use envmap::GridMap;
 use envmap::HardMap;
 use harness::PlannerConfig;
+use harness::bench::shard::{self, Shard, ShardManifest};
 use hyplan_core::{Budget, Goal, Point2, Query, Workspace};
 use postproc::Smoothing;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
 
 /// Options of `cargo xtask soak`.
 #[derive(clap::Args)]
@@ -35,8 +45,56 @@ pub struct Args {
     #[arg(long, default_value_t = 8)]
     pub queries: usize,
     /// Replay one map only (its seed as printed in a collision report) and stop.
-    #[arg(long)]
+    #[arg(long, conflicts_with_all = ["maps", "shard"])]
     pub only_map: Option<u64>,
+    /// Run this many maps (seeds seed..seed + M) instead of --minutes.
+    #[arg(long, value_name = "M")]
+    pub maps: Option<u64>,
+    /// Run shard K of N of the --maps only (maps k with k mod N = K, K from 0) and write
+    /// its records and manifest into --out; `cargo xtask soak-merge` joins the shards.
+    #[arg(long, value_name = "K/N", requires = "maps")]
+    pub shard: Option<Shard>,
+    /// With --shard: the shard's folder.
+    #[arg(long, default_value = "soak-out")]
+    pub out: PathBuf,
+}
+
+/// Options of `cargo xtask soak-merge`.
+#[derive(clap::Args)]
+pub struct MergeArgs {
+    /// The shards' folders (each a `--out` of `cargo xtask soak --shard K/N`).
+    #[arg(required = true, value_name = "DIR")]
+    pub dirs: Vec<PathBuf>,
+    /// Also write the table to DIR/soak.txt.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+/// The tool name in the shard manifests.
+const TOOL: &str = "xtask soak";
+/// A shard's records file: a first line with the soak's options, then one map per line.
+const RECORDS: &str = "maps.jsonl";
+
+/// What decides a sharded soak's work: its maps and queries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+struct SoakOptions {
+    /// Seed of map 0.
+    seed: u64,
+    /// Queries per map.
+    queries: usize,
+    /// Maps.
+    maps: u64,
+}
+
+/// One map's counts and failures.
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+struct MapRecord {
+    /// Index of the map (its seed is the soak's seed + k).
+    k: u64,
+    /// Counts per planner and smoothing method.
+    tallies: BTreeMap<String, Tally>,
+    /// Collisions and panics, described.
+    failures: Vec<String>,
 }
 
 /// Map kinds of the soak: the generators' kinds (the 2000 x 2000 floor plan left out:
@@ -52,7 +110,7 @@ const KINDS: &[HardMap] = &[
 ];
 
 /// Counts for one planner or one smoothing method.
-#[derive(Default, Clone, Copy)]
+#[derive(Default, Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 struct Tally {
     /// Plans (or curves) returned and checked.
     checked: u64,
@@ -64,52 +122,101 @@ struct Tally {
     panics: u64,
 }
 
-/// Runs the collision soak.
+/// Runs the collision soak (or one shard of it).
 ///
 /// # Errors
 ///
-/// When a collision or a panic was found (after the report).
+/// When a collision or a panic was found (after the report); a shard's records that
+/// cannot be written.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let deadline = Instant::now() + Duration::from_secs_f64(args.minutes.max(0.0) * 60.0);
-    let mut tallies: BTreeMap<String, Tally> = BTreeMap::new();
-    let mut failures: Vec<String> = Vec::new();
-    let mut maps = 0u64;
     let started = Instant::now();
-    let mut k = 0u64;
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    if args.shard.is_some() {
+        shard::begin_shard(&args.out)?;
+    }
+    let mut records: Vec<MapRecord> = Vec::new();
     // A panic inside a planner is counted, not printed through the default hook.
     let default_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));
-    loop {
-        let map_seed = args.only_map.unwrap_or(args.seed.wrapping_add(k));
-        soak_map(map_seed, args.queries, &mut tallies, &mut failures);
-        maps += 1;
-        k += 1;
-        if args.only_map.is_some() || Instant::now() >= deadline {
+    for k in 0.. {
+        if args.maps.is_some_and(|m| k >= m) {
             break;
         }
-        if maps.is_multiple_of(50) {
-            let plans: u64 = tallies.values().map(|t| t.checked + t.no_path).sum();
+        if !shard.takes(k) {
+            continue;
+        }
+        let map_seed = args.only_map.unwrap_or(args.seed.wrapping_add(k));
+        let mut record = MapRecord {
+            k,
+            ..MapRecord::default()
+        };
+        soak_map(
+            map_seed,
+            args.queries,
+            &mut record.tallies,
+            &mut record.failures,
+        );
+        records.push(record);
+        if args.only_map.is_some() || (args.maps.is_none() && Instant::now() >= deadline) {
+            break;
+        }
+        if records.len().is_multiple_of(50) {
+            let plans: u64 = records
+                .iter()
+                .flat_map(|r| r.tallies.values())
+                .map(|t| t.checked + t.no_path)
+                .sum();
             eprintln!(
-                "soak: {maps} maps, {plans} calls, {:.0} s",
+                "soak: {} maps, {plans} calls, {:.0} s",
+                records.len(),
                 started.elapsed().as_secs_f64()
             );
         }
     }
     std::panic::set_hook(default_hook);
-    println!(
-        "collision soak: {maps} maps (seeds {}..{}), {:.1} min, {} queries per map",
-        args.seed,
-        args.seed + maps,
-        started.elapsed().as_secs_f64() / 60.0,
+    let minutes = started.elapsed().as_secs_f64() / 60.0;
+    if let (Some(which), Some(maps)) = (args.shard, args.maps) {
+        let options = SoakOptions {
+            seed: args.seed,
+            queries: args.queries,
+            maps,
+        };
+        return write_shard(&args.out, which, options, minutes, &records);
+    }
+    let first = args.only_map.unwrap_or(args.seed);
+    let header = format!(
+        "collision soak: {} maps (seeds {first}..{}), {minutes:.1} min, {} queries per map",
+        records.len(),
+        first + records.len() as u64,
         args.queries
     );
-    println!(
+    let (table, failed) = report(&header, &records);
+    print!("{table}");
+    failed
+}
+
+/// The table of a soak's maps (and up to 20 failures), and an error when any path
+/// collided or any call panicked.
+fn report(header: &str, records: &[MapRecord]) -> (String, anyhow::Result<()>) {
+    let mut tallies: BTreeMap<&str, Tally> = BTreeMap::new();
+    for (name, t) in records.iter().flat_map(|r| &r.tallies) {
+        let sum = tallies.entry(name).or_default();
+        sum.checked += t.checked;
+        sum.colliding += t.colliding;
+        sum.no_path += t.no_path;
+        sum.panics += t.panics;
+    }
+    let mut s = format!("{header}\n");
+    let _ = writeln!(
+        s,
         "{:<28} {:>10} {:>10} {:>10} {:>8}",
         "planner / smoothing", "checked", "colliding", "no path", "panics"
     );
     let mut total = Tally::default();
     for (name, t) in &tallies {
-        println!(
+        let _ = writeln!(
+            s,
             "{name:<28} {:>10} {:>10} {:>10} {:>8}",
             t.checked, t.colliding, t.no_path, t.panics
         );
@@ -118,21 +225,114 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         total.no_path += t.no_path;
         total.panics += t.panics;
     }
-    println!(
+    let _ = writeln!(
+        s,
         "{:<28} {:>10} {:>10} {:>10} {:>8}",
         "total", total.checked, total.colliding, total.no_path, total.panics
     );
-    for f in failures.iter().take(20) {
-        println!("FAILURE {f}");
+    for f in records.iter().flat_map(|r| &r.failures).take(20) {
+        let _ = writeln!(s, "FAILURE {f}");
     }
-    if total.colliding + total.panics > 0 {
-        bail!(
+    let verdict = if total.colliding + total.panics > 0 {
+        Err(anyhow::anyhow!(
             "{} colliding paths or curves and {} panics",
             total.colliding,
             total.panics
+        ))
+    } else {
+        Ok(())
+    };
+    (s, verdict)
+}
+
+/// Writes a soak shard's records (the options, then one map per line) and manifest.
+fn write_shard(
+    out: &Path,
+    which: Shard,
+    options: SoakOptions,
+    minutes: f64,
+    records: &[MapRecord],
+) -> anyhow::Result<()> {
+    let mut text = serde_json::to_string(&(options, minutes))?;
+    text.push('\n');
+    for r in records {
+        text.push_str(&serde_json::to_string(r)?);
+        text.push('\n');
+    }
+    let manifest = ShardManifest::new(
+        TOOL,
+        env!("CARGO_PKG_VERSION"),
+        &shard::experiment_hash(&options)?,
+        which,
+        options.maps,
+    );
+    shard::finish_shard(out, manifest, RECORDS, text.as_bytes())?;
+    println!(
+        "soak shard {which}: {} of {} maps in {minutes:.1} min; records in {} \
+         (join the shards with `cargo xtask soak-merge DIR...`)",
+        records.len(),
+        options.maps,
+        out.display()
+    );
+    Ok(())
+}
+
+/// Runs `cargo xtask soak-merge`: checks that the shards cover one soak exactly once,
+/// then prints (and writes) the whole soak's table.
+///
+/// # Errors
+///
+/// Missing, duplicate, foreign or unfinished shards, each named; records that do not
+/// match their manifest; a collision or a panic in any shard (after the report).
+pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
+    let shards = shard::read_shards(&args.dirs, TOOL)?;
+    let mut options: Option<SoakOptions> = None;
+    let mut minutes = 0.0;
+    let mut records: Vec<MapRecord> = Vec::new();
+    for s in &shards {
+        let where_ = || format!("{} (shard {})", s.dir.display(), s.manifest.shard);
+        let mut lines = s.records.lines();
+        let (o, m): (SoakOptions, f64) = serde_json::from_str(lines.next().unwrap_or(""))
+            .with_context(|| format!("{}: the options line", where_()))?;
+        if options.is_some_and(|x| x != o) {
+            bail!("{}: the options differ from the other shards'", where_());
+        }
+        options = Some(o);
+        minutes += m;
+        for line in lines {
+            let r: MapRecord =
+                serde_json::from_str(line).with_context(|| format!("{}: a map", where_()))?;
+            if !s.manifest.shard.takes(r.k) || r.k >= o.maps {
+                bail!("{}: map {} is not this shard's", where_(), r.k);
+            }
+            records.push(r);
+        }
+    }
+    let o = options.context("no shard")?;
+    records.sort_by_key(|r| r.k);
+    let every = records.iter().map(|r| r.k).eq(0..o.maps);
+    if !every {
+        bail!(
+            "the shards' records do not hold every map of 0..{} exactly once",
+            o.maps
         );
     }
-    Ok(())
+    let header = format!(
+        "collision soak: {} maps (seeds {}..{}), {minutes:.1} min in {} shards, {} queries per map",
+        o.maps,
+        o.seed,
+        o.seed + o.maps,
+        shards.len(),
+        o.queries
+    );
+    let (table, failed) = report(&header, &records);
+    print!("{table}");
+    if let Some(out) = &args.out {
+        std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+        let path = out.join("soak.txt");
+        std::fs::write(&path, &table).with_context(|| format!("writing {}", path.display()))?;
+    }
+    failed
 }
 
 /// One generated map (kind, step and band from its seed) and `queries` random queries,
@@ -414,6 +614,74 @@ mod tests {
         // Out of the map.
         let p = [Point2::new(0.5, 0.5), Point2::new(3.5, 0.5)];
         assert!(path_collision(&map, &p).is_some());
+    }
+
+    /// Shards of a soak merge to its table: every planner called as often (the counts of
+    /// checked and no-path calls may move with the clock: 200 ms budgets).
+    #[test]
+    fn soak_shards_merge_to_the_whole_soak() {
+        let root = std::env::temp_dir().join(format!("xtask-soak-{}", std::process::id()));
+        let args = |shard: Option<Shard>, out: PathBuf| Args {
+            minutes: 0.0,
+            seed: 3,
+            queries: 1,
+            only_map: None,
+            maps: Some(5),
+            shard,
+            out,
+        };
+        let dirs: Vec<PathBuf> = Shard::all(2)
+            .map(|s| root.join(s.index().to_string()))
+            .collect();
+        for (s, d) in Shard::all(2).zip(&dirs) {
+            run(&args(Some(s), d.clone())).unwrap();
+        }
+        let calls = |records: &[MapRecord]| {
+            let mut c: BTreeMap<String, u64> = BTreeMap::new();
+            for (n, t) in records.iter().flat_map(|r| &r.tallies) {
+                *c.entry(n.clone()).or_default() += t.checked + t.no_path + t.panics;
+            }
+            c
+        };
+        let mut merged = Vec::new();
+        for d in &dirs {
+            let text = std::fs::read_to_string(d.join(RECORDS)).unwrap();
+            merged.extend(
+                text.lines()
+                    .skip(1)
+                    .map(|l| serde_json::from_str::<MapRecord>(l).unwrap()),
+            );
+        }
+        let whole: Vec<MapRecord> = (0..5)
+            .map(|k| {
+                let mut r = MapRecord {
+                    k,
+                    ..MapRecord::default()
+                };
+                soak_map(3 + k, 1, &mut r.tallies, &mut r.failures);
+                r
+            })
+            .collect();
+        assert_eq!(calls(&merged), calls(&whole));
+        let out = root.join("merged");
+        merge(&MergeArgs {
+            dirs: dirs.clone(),
+            out: Some(out.clone()),
+        })
+        .unwrap();
+        let table = std::fs::read_to_string(out.join("soak.txt")).unwrap();
+        assert!(
+            table.starts_with("collision soak: 5 maps (seeds 3..8)"),
+            "{table}"
+        );
+        // A missing shard is named.
+        let err = merge(&MergeArgs {
+            dirs: dirs[..1].to_vec(),
+            out: None,
+        })
+        .unwrap_err();
+        assert!(err.to_string().contains("missing shard 1/2"), "{err}");
+        let _ = std::fs::remove_dir_all(&root);
     }
 
     #[test]

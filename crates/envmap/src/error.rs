@@ -56,6 +56,17 @@ pub enum MapError {
         /// The file.
         path: PathBuf,
     },
+    /// Reading ROS 2 bags needs the `mcap` feature of `envmap`.
+    #[error("{}: ROS 2 bags (MCAP) need the `mcap` feature of envmap", path.display())]
+    NoMcapSupport {
+        /// The file.
+        path: PathBuf,
+    },
+    /// A ROS 2 bag (MCAP) could not be read as a map; the error names the file, the topic
+    /// and the field.
+    #[cfg(feature = "mcap")]
+    #[error(transparent)]
+    Bag(Box<bag::BagError>),
     /// The image has no pixels.
     #[error("{}: image is {width} x {height} pixels, it has no pixels", path.display())]
     EmptyImage {
@@ -134,4 +145,13 @@ pub enum MapError {
         #[source]
         source: GridError,
     },
+}
+
+#[cfg(feature = "mcap")]
+impl From<bag::BagError> for MapError {
+    fn from(e: bag::BagError) -> Self {
+        // Boxed: a bag's errors carry the topic and the schema names, and every result
+        // of the workspace's loaders carries a MapError.
+        Self::Bag(Box::new(e))
+    }
 }

@@ -36,7 +36,8 @@
 //!
 //! Files:
 //! - [`load_map`] with [`LoadOptions`] → [`LoadedMap`]: any supported file, by extension,
-//!   within a memory limit ([`DEFAULT_MAX_CELLS`]).
+//!   within a memory limit ([`DEFAULT_MAX_CELLS`]); [`load_map_topic`]: a ROS 2 bag's
+//!   (`.mcap`) map from a topic other than [`DEFAULT_MAP_TOPIC`] (feature `mcap`).
 //! - [`read_movingai`], [`parse_movingai`]: MovingAI `.map`.
 //! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`]: ROS map_server; [`write_ros`]
 //!   (a three-zone map, `mode: scale`) and [`write_ros_occupancy`] (free / occupied /
@@ -78,6 +79,7 @@
 //! # Features
 //!
 //! - `image` (default): PNG / PGM / PPM decoding and encoding.
+//! - `mcap`: maps from ROS 2 bags (MCAP files, crate `bag`).
 //! - `serde`: derives for the plain data types.
 
 mod binarize;
@@ -134,7 +136,9 @@ pub use io::ros::{
     RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml, ros_cell_counts, write_ros,
     write_ros_occupancy,
 };
-pub use io::{DEFAULT_MAX_CELLS, LoadOptions, LoadedMap, MapKind, load_map};
+pub use io::{
+    DEFAULT_MAP_TOPIC, DEFAULT_MAX_CELLS, LoadOptions, LoadedMap, MapKind, load_map, load_map_topic,
+};
 pub use mask::Mask;
 pub use picture::Picture;
 pub use pipeline::{Pipeline, PipelineOutput};

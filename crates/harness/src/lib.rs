@@ -26,7 +26,8 @@
 //!   paper's ordering claim on our runs, with its p-value and effect size.
 //! - [`report`]: the replay's claims decided on the runs, and its Markdown report.
 //! - [`bench`](mod@bench): `hyplan bench`'s runs on a user's problems: [`bench::run_once`], the
-//!   summary and pairwise rank tests, and [`bench::ompl_log`], OMPL's benchmark log format.
+//!   summary and pairwise rank tests, [`bench::ompl_log`], OMPL's benchmark log format, and
+//!   [`bench::shard`], experiments cut into shards that merge (manifests, exact-cover check).
 //! - `world_figure`, `draw_world`, `chart_metrics` (feature `plot`): a scenario's world
 //!   with a run's trees and path (PNG or SVG), box plots of run metrics (SVG), drawn by
 //!   crate `viz`; `Scene` (`viz::PlanFigure`), `chart_box`, `chart_success` re-exported.

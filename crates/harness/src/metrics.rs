@@ -2,13 +2,13 @@
 
 use hyplan_core::{Plan, PlanError, Point2, Workspace};
 use postproc::{Limits, PathMetrics, Smoothing};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The measures of one run, in the scenario's units.
 ///
 /// Failed runs keep `success = false`, their time and explored nodes; path measures are
 /// NaN for them so that statistics skip them.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunMetrics {
     /// Run index.
     pub run: u32,

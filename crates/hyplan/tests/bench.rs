@@ -197,16 +197,7 @@ fn experiment_file_runs_several_problems() {
 #[test]
 fn ompl_database_holds_every_run() {
     let script = "ompl_benchmark_statistics";
-    if !Command::new(script)
-        .arg("--help")
-        .output()
-        .is_ok_and(|o| o.status.success())
-    {
-        assert!(
-            std::env::var_os("HYPLAN_REQUIRE_TOOLS").is_none(),
-            "`{script}` not found (apt-get install ompl-demos) and HYPLAN_REQUIRE_TOOLS is set"
-        );
-        eprintln!("SKIPPED: `{script}` not found (apt-get install ompl-demos)");
+    if !crate::common::ompl_statistics_available() {
         return;
     }
     let out = out_dir("ompl");

@@ -3,6 +3,7 @@
 mod common;
 
 mod bench;
+mod bench_shard;
 mod map;
 mod plan;
 mod scen;

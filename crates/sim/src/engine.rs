@@ -81,7 +81,7 @@ pub enum Flow {
 }
 
 /// What happened in one tick, for the observers.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct TickInfo<'a> {
     /// The tick.
     pub tick: u64,
@@ -95,6 +95,22 @@ pub struct TickInfo<'a> {
     pub events: &'a [NavEvent],
     /// The goal source ended the run at this tick.
     pub stopped: bool,
+    /// The goal source, for what it shows ([`GoalSource::frontiers`],
+    /// [`GoalSource::tree_edges`]).
+    pub goals: &'a dyn GoalSource,
+}
+
+impl std::fmt::Debug for TickInfo<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("TickInfo")
+            .field("tick", &self.tick)
+            .field("t", &self.t)
+            .field("sensed", &self.sensed)
+            .field("controlled", &self.controlled)
+            .field("events", &self.events)
+            .field("stopped", &self.stopped)
+            .finish_non_exhaustive()
+    }
 }
 
 /// Chooses where the robot goes: a fixed goal, an exploration strategy, a script.
@@ -119,6 +135,15 @@ pub trait GoalSource {
     }
     /// After the robot moved from `from` to `to`, a distance `step`.
     fn moved(&mut self, _from: Pose, _to: Pose, _step: f64) {}
+    /// The frontier points it currently considers (exploration), for observers that
+    /// show them.
+    fn frontiers(&self) -> Vec<Point2> {
+        Vec::new()
+    }
+    /// The edges of the trees it grows (the RRT detectors), for observers that show them.
+    fn tree_edges(&self) -> Vec<(Point2, Point2)> {
+        Vec::new()
+    }
 }
 
 /// Watches a run: traces, coverage, snapshots, animation frames, logs.
@@ -127,8 +152,28 @@ pub trait Observer {
     fn map_updating(&mut self, _sim: &Sim<'_>, _scan: &Scan) {}
     /// After the scan was integrated (and the footprint cleared, if the run does).
     fn map_updated(&mut self, _sim: &Sim<'_>, _scan: &Scan) {}
+    /// On every laser tick, after the map update (if any): the scan just taken.
+    fn sensed(&mut self, _sim: &Sim<'_>, _scan: &Scan) {}
     /// At the end of every tick, before the robot moves.
     fn ticked(&mut self, _sim: &Sim<'_>, _info: &TickInfo<'_>) {}
+}
+
+/// Several observers as one, in order: a ready-made run's own observers and its caller's.
+pub(crate) struct Each<'a, 'o>(pub(crate) &'a mut [&'o mut dyn Observer]);
+
+impl Observer for Each<'_, '_> {
+    fn map_updating(&mut self, sim: &Sim<'_>, scan: &Scan) {
+        self.0.iter_mut().for_each(|o| o.map_updating(sim, scan));
+    }
+    fn map_updated(&mut self, sim: &Sim<'_>, scan: &Scan) {
+        self.0.iter_mut().for_each(|o| o.map_updated(sim, scan));
+    }
+    fn sensed(&mut self, sim: &Sim<'_>, scan: &Scan) {
+        self.0.iter_mut().for_each(|o| o.sensed(sim, scan));
+    }
+    fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
+        self.0.iter_mut().for_each(|o| o.ticked(sim, info));
+    }
 }
 
 /// The goal source of a plain navigation run: the navigator's goal, until it is reached
@@ -394,6 +439,7 @@ impl<'w> Sim<'w> {
             controlled,
             events: &self.events,
             stopped: flow == Flow::Stop,
+            goals: &*goals,
         };
         for o in observers.iter_mut() {
             o.ticked(self, &info);
@@ -436,6 +482,9 @@ impl<'w> Sim<'w> {
                 map.cell_of(p)
                     .is_some_and(|c| map.nearest_occupied_centre(p, c, 1).is_finite())
             });
+        }
+        for ob in observers.iter_mut() {
+            ob.sensed(self, &scan);
         }
         self.memory.insert(scan, tick);
     }

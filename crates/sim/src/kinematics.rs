@@ -177,13 +177,25 @@ pub fn saturate(robot: &Robot, twist: Twist) -> Twist {
 /// `phi + omega dt / 2`, which is exact and has no `v / omega` blow-up near `omega = 0`.
 #[must_use]
 pub fn integrate(pose: Pose, twist: Twist, dt: f64) -> Pose {
-    let dphi = twist.omega * dt;
-    let half = dphi / 2.0;
-    let sinc = if half.abs() < 1e-9 {
+    integrate_arc(pose, twist, dt, arc_sinc(twist.omega * dt / 2.0))
+}
+
+/// `sinc(half)`, the chord factor of [`integrate`] for a half turn `half = omega dt / 2`:
+/// a caller stepping many times with one twist computes it once.
+#[must_use]
+pub(crate) fn arc_sinc(half: f64) -> f64 {
+    if half.abs() < 1e-9 {
         1.0 - half * half / 6.0
     } else {
         half.sin() / half
-    };
+    }
+}
+
+/// [`integrate`] with its chord factor `sinc` = [`arc_sinc`]`(omega dt / 2)` given.
+#[must_use]
+pub(crate) fn integrate_arc(pose: Pose, twist: Twist, dt: f64, sinc: f64) -> Pose {
+    let dphi = twist.omega * dt;
+    let half = dphi / 2.0;
     let chord = twist.v * dt * sinc;
     let (s, c) = (pose.phi + half).sin_cos();
     Pose {

@@ -13,8 +13,9 @@
 //! - The engine: [`Sim`], one tick loop whose state is one struct; [`GoalSource`] (where
 //!   the robot goes: [`FixedGoal`], exploration's detectors, a caller) and [`Observer`]
 //!   (what is recorded: [`Recorder`], [`CoverageMeter`], [`TrackRecorder`],
-//!   [`FrameRecorder`], [`ContactCounter`]) plug into it; [`run()`] and [`explore()`] are
-//!   the two ready-made runs. [`TICKS_PER_SECOND`], [`stream`] (the seeded random streams).
+//!   [`FrameRecorder`], [`ContactCounter`], `BagRecorder` with feature `mcap`) plug into
+//!   it; [`run()`] ([`run_with`] with more observers) and [`explore()`] are the two
+//!   ready-made runs. [`TICKS_PER_SECOND`], [`stream`] (the seeded random streams).
 //! - The robot: [`Robot`], [`Pose`], [`Twist`], [`WheelSpeeds`], eqs. (2)-(4)
 //!   ([`jacobian`], [`jacobian_inverse`], [`wheel_speeds`], [`twist_of`]), wheel
 //!   saturation ([`saturate`]) and exact arc integration ([`integrate`]).
@@ -31,6 +32,9 @@
 //! - Exploration: [`Exploration`], [`Strategy`], [`ExploreOutcome`], [`Coverage`],
 //!   [`RrtDetector`] ([`DetectorKind`]), [`Filter`], [`Assigner`],
 //!   [`nearest_frontier`] (the baseline), [`ViewPoints`], [`explore_then_navigate`].
+//! - Profiles: [`Profile`] (`tutorial`, the stack of `rrt_exploration_tutorials` with
+//!   every value's source; `hyplan`, our defaults), [`DetectorCost`] (the reference
+//!   detectors' compute time), [`FilterPool`], [`AssignerMode`].
 //! - Files: [`Scenario`] (RON), [`ScenarioError`], [`MapSpec`] (a map file, or a generated
 //!   building at [`BUILDING_RESOLUTION`]); [`Trace`], [`Row`], [`Event`],
 //!   [`Summary`] and their CSV / JSON / SVG outputs ([`write_all`], [`OutputError`]);
@@ -63,8 +67,10 @@
 //!
 //! # Features
 //!
-//! None.
+//! - `mcap`: `BagRecorder`, a run written as a ROS 2 bag (MCAP) for Foxglove and RViz.
 
+#[cfg(feature = "mcap")]
+mod bag_observer;
 mod building;
 mod control;
 mod costmap;
@@ -77,6 +83,7 @@ mod mapping;
 mod navigator;
 mod people;
 mod planner;
+mod profile;
 mod record;
 mod rollout;
 mod run;
@@ -86,6 +93,8 @@ mod tracking;
 mod validate;
 mod world;
 
+#[cfg(feature = "mcap")]
+pub use bag_observer::BagRecorder;
 pub use building::BUILDING_RESOLUTION;
 pub use control::{Command, Controller, FollowInput, LocalController};
 pub use costmap::{
@@ -97,13 +106,14 @@ pub use engine::{
     TickInfo, every, stream, time_of,
 };
 pub use explore::{
-    Assigner, ContactCounter, Coverage, CoverageMeter, DetectorKind, Edge, Exploration,
-    ExploreOutcome, Filter, FrameRecorder, GLOBAL_STREAM, GoalEnd, GoalRecord, LOCAL_STREAM,
-    LeftCause, LeftRegion, MapFrames, Region, RegionError, RrtDetector, SelfMapped, Snapshot,
-    Strategy, TrackRecorder, ViewPoints, animation_png, built_cost, built_cost_reach,
-    costmap_steps, edge_check, explore, explore_then_navigate, explore_with, frontier_cells,
-    frontier_clusters, information_gain, left_by_cause, left_unknown, mean_shift, nearest_frontier,
-    reachable_free, region_of, revenue, sees, snapshot_scene, snapshot_svg,
+    Assigner, AssignerMode, ContactCounter, Coverage, CoverageMeter, DetectorCost, DetectorKind,
+    Edge, Exploration, ExploreOutcome, Filter, FilterPool, FrameRecorder, GLOBAL_STREAM, GoalEnd,
+    GoalRecord, LOCAL_STREAM, LeftCause, LeftRegion, MapFrames, Region, RegionError, RrtDetector,
+    SelfMapped, Snapshot, Strategy, TrackRecorder, ViewPoints, animation_png, built_cost,
+    built_cost_reach, costmap_steps, edge_check, explore, explore_observed, explore_then_navigate,
+    explore_with, frontier_cells, frontier_clusters, information_gain, left_by_cause, left_unknown,
+    mean_shift, nearest_frontier, reachable_free, region_of, revenue, sees, snapshot_scene,
+    snapshot_svg,
 };
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, pose_rate, saturate,
@@ -114,14 +124,15 @@ pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
 pub use people::{PeopleModel, Scripted};
 pub use planner::{GlobalPlanner, PlanScratch};
+pub use profile::Profile;
 pub use record::{
     Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, animation_scene,
     trajectory_scene, velocity_svg, write_all,
 };
 pub use rollout::{LocalPlanner, Rollout, RolloutController};
-pub use run::{Outcome, Recorder, run};
+pub use run::{Outcome, Recorder, run, run_with};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
-pub use soak::{SoakSummary, room, soak, soak_with};
+pub use soak::{SoakSummary, room, soak, soak_each, soak_with};
 pub use tracking::{Mover, Tracker};
 pub use world::{Disc, Person, Segment, Shape, StaticWorld, Walk, World};
 

@@ -437,6 +437,37 @@ impl OccupancyGrid {
         n
     }
 
+    /// Unknown cells whose centre lies within `radius` of both `a` and `b`.
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{Mapping, OccupancyGrid};
+    /// let p = Point2::new;
+    /// let map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(4.0, 4.0)), Mapping::default());
+    /// assert_eq!(map.count_unknown_within_both(p(2.0, 2.0), p(2.0, 2.0), 0.5),
+    ///            map.count_unknown_within(p(2.0, 2.0), 0.5));
+    /// assert_eq!(map.count_unknown_within_both(p(1.0, 2.0), p(3.0, 2.0), 0.5), 0);
+    /// ```
+    #[must_use]
+    pub fn count_unknown_within_both(&self, a: Point2, b: Point2, radius: f64) -> usize {
+        let res = self.params.resolution;
+        let o = self.origin;
+        let (cols, rows) = self.window(a, radius);
+        let r2 = radius * radius;
+        let mut n = 0usize;
+        for j in rows {
+            let y = o.y + (j as f64 + 0.5) * res;
+            let row = &self.logodds[j * self.width..(j + 1) * self.width];
+            for (i, l) in row.iter().enumerate().take(cols.end).skip(cols.start) {
+                let x = o.x + (i as f64 + 0.5) * res;
+                let inside = (x - a.x).powi(2) + (y - a.y).powi(2) <= r2
+                    && (x - b.x).powi(2) + (y - b.y).powi(2) <= r2;
+                n += usize::from(inside && l.to_bits() == 0x8000_0000);
+            }
+        }
+        n
+    }
+
     /// Sets cell `(i, j)` to the ROS value `v` (-1 unknown, 0 free, anything else
     /// occupied) with one update's log-odds, for hand-made maps in tests and tools; a
     /// cell outside the grid is ignored.

@@ -259,7 +259,8 @@ impl Navigator {
                     &mut self.rng,
                 )
             };
-            // move_base's first recovery, "clear the costmap": a robot hemmed in by
+            // Ours, like move_base's costmap-clearing recovery (which the tutorial
+            // disables, `recovery_behavior_enabled: false`): a robot hemmed in by
             // remembered hits (chair legs it passed between) plans on the map alone;
             // the controller's arc test still keeps it off the hits.
             let found =

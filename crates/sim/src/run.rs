@@ -3,7 +3,7 @@
 use hyplan_core::Point2;
 use serde::{Deserialize, Serialize};
 
-use crate::engine::{FixedGoal, Observer, Sim, TickInfo, time_of};
+use crate::engine::{Each, FixedGoal, Observer, Sim, TickInfo, time_of};
 use crate::kinematics;
 use crate::mapping::OccupancyGrid;
 use crate::navigator::NavEvent;
@@ -28,11 +28,24 @@ pub struct Outcome {
 /// gives up, or the time limit.
 #[must_use]
 pub fn run(scenario: &Scenario, world: &World, seed: u64, planner: GlobalPlanner) -> Outcome {
+    run_with(scenario, world, seed, planner, &mut [])
+}
+
+/// [`run()`], with more `observers` watching beside the trace's recorder (a bag writer,
+/// a log); they do not change the run.
+#[must_use]
+pub fn run_with(
+    scenario: &Scenario,
+    world: &World,
+    seed: u64,
+    planner: GlobalPlanner,
+    observers: &mut [&mut dyn Observer],
+) -> Outcome {
     let planner_name = planner.name();
     let goal = Point2::new(scenario.goal.0, scenario.goal.1);
     let mut sim = Sim::new(scenario, world, seed, planner, goal);
     let mut recorder = Recorder::new(world.people.len());
-    let end_tick = sim.run(&mut FixedGoal, &mut [&mut recorder]);
+    let end_tick = sim.run(&mut FixedGoal, &mut [&mut recorder, &mut Each(observers)]);
     let end_time = time_of(end_tick);
     let trace = recorder.finish(
         scenario.name.clone(),

@@ -173,10 +173,22 @@ pub fn soak(seed: u64, n: u64) -> SoakSummary {
 /// ```
 #[must_use]
 pub fn soak_with(seed: u64, n: u64, local: LocalPlanner) -> SoakSummary {
+    soak_each(seed, n, |sc| sc.local_planner = local)
+}
+
+/// Runs rooms `0..n` of a soak seeded `seed`, each room's scenario changed by `set` first
+/// (a [`Profile`](crate::Profile), a local planner...).
+///
+/// ```no_run
+/// let s = sim::soak_each(2026, 12, |sc| sim::Profile::Tutorial.apply(sc));
+/// println!("{} of {} reached, {} at-fault contacts", s.reached, s.rooms, s.contacts_at_fault);
+/// ```
+#[must_use]
+pub fn soak_each(seed: u64, n: u64, set: impl Fn(&mut Scenario)) -> SoakSummary {
     let mut s = SoakSummary::default();
     for k in 0..n {
         let mut sc = room(seed, k);
-        sc.local_planner = local;
+        set(&mut sc);
         let Ok(world) = sc.build_world(std::path::Path::new(&sc.name)) else {
             s.invalid += 1;
             continue;

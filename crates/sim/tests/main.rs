@@ -5,5 +5,6 @@ mod explore;
 mod kinematics;
 mod laser;
 mod navigation;
+mod profile;
 mod rollout;
 mod tracking;

@@ -119,6 +119,14 @@ fn soak_small() {
     assert!(s.reached >= s.rooms * 3 / 4, "{s:?}");
 }
 
+/// The small soak on the tutorial profile (trajectory roll-out at 5 Hz, its costmaps).
+#[test]
+fn soak_small_tutorial() {
+    let s = sim::soak_each(2026, 12, |sc| sim::Profile::Tutorial.apply(sc));
+    assert_eq!(s.contacts_at_fault, 0, "{s:?}");
+    assert!(s.reached >= s.rooms * 3 / 4, "{s:?}");
+}
+
 /// The small soak driven by the trajectory roll-out (issue 28: no at-fault contact with it).
 #[test]
 fn soak_small_trajectory() {
@@ -132,16 +140,33 @@ fn soak_small_trajectory() {
 }
 
 /// The full soak of the issue: `cargo test -p sim --release -- --ignored soak_1000 --nocapture`.
-/// `SOAK_CONTROLLER=trajectory|dwa|rpp` (default rpp) picks the local planner and
-/// `SOAK_ROOMS=N` (default 1000) the number of rooms.
+/// `SOAK_PROFILE=tutorial|hyplan` (default: none, the rooms' own values) applies a
+/// profile first; `SOAK_CONTROLLER=trajectory|dwa|rpp` (default: the profile's, else rpp)
+/// then picks the local planner, keeping the profile's roll-out parameters; `SOAK_ROOMS=N`
+/// (default 1000) the number of rooms.
 #[test]
 #[ignore = "minutes; run by hand for the safety figure"]
 fn soak_1000() {
-    let name = std::env::var("SOAK_CONTROLLER").unwrap_or_else(|_| "rpp".into());
-    let local = sim::LocalPlanner::from_name(&name, None).expect("SOAK_CONTROLLER");
+    let profile = std::env::var("SOAK_PROFILE")
+        .ok()
+        .map(|p| sim::Profile::parse(&p).expect("SOAK_PROFILE"));
+    let controller = std::env::var("SOAK_CONTROLLER").ok();
     let n = std::env::var("SOAK_ROOMS").map_or(1000, |v| v.parse().expect("SOAK_ROOMS"));
     let t = std::time::Instant::now();
-    let s = sim::soak_with(2026, n, local);
+    let s = sim::soak_each(2026, n, |sc| {
+        if let Some(p) = profile {
+            p.apply(sc);
+        }
+        if let Some(name) = &controller {
+            let params = sc.local_planner.rollout();
+            sc.local_planner = sim::LocalPlanner::from_name(name, params).expect("SOAK_CONTROLLER");
+        }
+    });
+    let name = format!(
+        "profile {}, controller {}",
+        profile.map_or("none", sim::Profile::name),
+        controller.as_deref().unwrap_or("the profile's")
+    );
     println!("{}", serde_json::to_string_pretty(&s).unwrap());
     println!("{name}: {n} rooms, {:.1} s wall", t.elapsed().as_secs_f64());
     assert_eq!(s.contacts_at_fault, 0, "{s:?}");

@@ -1,6 +1,7 @@
-//! Loading maps from files: pictures, ROS map_server YAML, MovingAI `.map`.
+//! Loading maps from files: pictures, ROS map_server YAML, MovingAI `.map`, ROS 2 bags.
 
 pub(crate) mod image;
+pub(crate) mod mcap;
 pub(crate) mod movingai;
 pub(crate) mod ros;
 
@@ -81,6 +82,8 @@ pub enum MapKind {
     MovingAi,
     /// `.yaml` / `.yml`: ROS map_server.
     Ros,
+    /// `.mcap`: a ROS 2 bag, its last `nav_msgs/msg/OccupancyGrid` on a topic.
+    Mcap,
     /// Anything else: a picture.
     Picture,
 }
@@ -96,6 +99,7 @@ impl MapKind {
         {
             Some("map") => Self::MovingAi,
             Some("yaml" | "yml") => Self::Ros,
+            Some("mcap") => Self::Mcap,
             _ => Self::Picture,
         }
     }
@@ -142,6 +146,33 @@ pub struct LoadedMap {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn load_map(path: &Path, opts: &LoadOptions) -> Result<LoadedMap, MapError> {
+    load_map_topic(path, DEFAULT_MAP_TOPIC, opts)
+}
+
+/// The topic [`load_map`] reads a ROS 2 bag's map from.
+pub const DEFAULT_MAP_TOPIC: &str = "/map";
+
+/// [`load_map`], reading a ROS 2 bag's (`.mcap`) map from `topic`; other files ignore it.
+///
+/// A bag's map is its last `nav_msgs/msg/OccupancyGrid` on the topic, with its resolution
+/// and origin ([`InputFrame::World`], or [`InputFrame::MapFrame`] when the origin has a
+/// yaw, as for YAML); cells hold the occupancy in percent and are classified as a ROS
+/// map's pixels are, with map_saver's thresholds ([`RosMapMeta::classify_occupancy`](crate::RosMapMeta::classify_occupancy)):
+/// 0 free, 100 occupied, -1 unknown.
+///
+/// # Errors
+///
+/// As [`load_map`]; for bags `MapError::Bag` (feature `mcap`) naming the file, the topic and the field
+/// (malformed or truncated file, absent topic, another message type, `data` not holding
+/// `width x height` cells, more than [`LoadOptions::max_cells`] cells), or
+/// [`MapError::NoMcapSupport`] without the `mcap` feature.
+///
+/// ```no_run
+/// use envmap::{load_map_topic, LoadOptions};
+/// let loaded = load_map_topic("robot.mcap".as_ref(), "/map_updates", &LoadOptions::default())?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn load_map_topic(path: &Path, topic: &str, opts: &LoadOptions) -> Result<LoadedMap, MapError> {
     let kind = MapKind::of(path);
     if let Some(r) = opts.safety_radius
         && !(r.is_finite() && r >= 0.0)
@@ -186,6 +217,20 @@ pub fn load_map(path: &Path, opts: &LoadOptions) -> Result<LoadedMap, MapError> 
             pipeline.safety_radius = opts.safety_radius.unwrap_or(0.0) / meta.resolution;
             let out = pipeline.run_mask(mask, map.zones())?;
             (out, meta.resolution, Some(meta.origin), true)
+        }
+        MapKind::Mcap => {
+            let unknown = if opts.unknown_free {
+                Zone::Free
+            } else {
+                Zone::Forbidden
+            };
+            let read = mcap::read_bag_map(path, topic, opts.max_cells, unknown)?;
+            yaw = read.yaw;
+            let (res, origin) = (read.map.resolution(), read.map.origin());
+            let mask = Mask::from_zones_at_least(&read.map, Zone::Forbidden);
+            pipeline.safety_radius = opts.safety_radius.unwrap_or(0.0) / res;
+            let out = pipeline.run_mask(mask, read.map.zones())?;
+            (out, res, Some(origin), true)
         }
     };
     let PipelineOutput {

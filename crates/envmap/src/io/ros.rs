@@ -227,17 +227,36 @@ impl RosMapMeta {
                 _ => RosCell::Unknown,
             },
             RosMode::Trinary | RosMode::Scale => {
-                let occ = if self.negate { s } else { 1.0 - s };
-                if occ > self.occupied_thresh {
-                    RosCell::Occupied
-                } else if occ < self.free_thresh {
-                    RosCell::Free
-                } else if self.mode == RosMode::Scale {
-                    RosCell::Graded
-                } else {
-                    RosCell::Unknown
-                }
+                self.classify_occupancy(if self.negate { s } else { 1.0 - s })
             }
+        }
+    }
+
+    /// Classifies an occupancy probability `occ` in `[0, 1]` by the thresholds: occupied
+    /// above `occupied_thresh`, free below `free_thresh`, else graded (`scale`) or
+    /// unknown. The one rule for pictures and for `nav_msgs/OccupancyGrid` cells (whose
+    /// value is the occupancy in percent).
+    ///
+    /// ```
+    /// use envmap::{RosCell, RosMapMeta, RosMode};
+    /// let meta = RosMapMeta {
+    ///     image: "map.pgm".into(), resolution: 0.05, origin: hyplan_core::Point2::origin(),
+    ///     yaw: 0.0, negate: false, occupied_thresh: 0.65, free_thresh: 0.196,
+    ///     mode: RosMode::Trinary,
+    /// };
+    /// assert_eq!(meta.classify_occupancy(1.0), RosCell::Occupied);
+    /// assert_eq!(meta.classify_occupancy(0.5), RosCell::Unknown);
+    /// ```
+    #[must_use]
+    pub fn classify_occupancy(&self, occ: f64) -> RosCell {
+        if occ > self.occupied_thresh {
+            RosCell::Occupied
+        } else if occ < self.free_thresh {
+            RosCell::Free
+        } else if self.mode == RosMode::Scale {
+            RosCell::Graded
+        } else {
+            RosCell::Unknown
         }
     }
 

@@ -5,9 +5,12 @@
 //!
 //! A problem is a map and a query; an experiment is one problem and the planners run on
 //! it, as in OMPL. [`run_once`] plans and scores one run; [`summarise`] and [`compare`]
-//! reduce the runs; [`experiment_log`] writes them in OMPL's format.
+//! reduce the runs; [`experiment_log`] writes them in OMPL's format. [`shard`] cuts an
+//! experiment's runs into shards that run apart and checks that their records cover it
+//! exactly once before they merge.
 
 pub mod ompl_log;
+pub mod shard;
 
 use std::collections::BTreeMap;
 use std::time::Instant;
@@ -15,7 +18,7 @@ use std::time::Instant;
 use hyplan_core::{Plan, PlanError, Planner, Query};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use serde::Serialize;
+use serde::{Deserialize, Deserializer, Serialize};
 
 use crate::stats::{Alternative, Verdict, decide_less, mann_whitney_u};
 pub use crate::stats::{Spread, quantile};
@@ -23,7 +26,10 @@ use crate::{RunMetrics, Scoring, measure};
 use ompl_log::{Experiment, PlannerBlock, Property, PropertyType, Status, Value};
 
 /// One run of one planner on one problem, as the CSV, the JSON and the OMPL log hold it.
-#[derive(Debug, Clone, Serialize)]
+///
+/// Serialised as RON it reads back bit for bit (NaN and infinities included; JSON
+/// writes those as `null`): the records of a shard ([`shard`]).
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct BenchRun {
     /// Index of the problem (map and query) in the experiment list.
     pub problem: usize,
@@ -39,9 +45,10 @@ pub struct BenchRun {
     pub exact: bool,
     /// How the planning call ended: `exact solution`, `timeout` (budget spent), `no path`
     /// (proved) or `invalid input` (a parameter or the query refused by the planner).
-    pub status: &'static str,
+    #[serde(deserialize_with = "status_from_str")]
+    pub status: String,
     /// The planner's message when it refused its input.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
     /// Wall time of the planning call alone, s (OMPL's `time`, the `solve` call).
     pub planning_time_s: f64,
@@ -54,7 +61,7 @@ pub struct BenchRun {
     pub collision_checks: u64,
     /// An anytime planner's progress (RRT* run through [`PlanCall::RrtStar`]): samples
     /// every 64 iterations and one at the end; empty for the others.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub progress: Vec<ProgressPoint>,
     /// Largest discrete curvature of the final path, 1 / world unit (turning angle over
     /// the mean of the two adjacent segment lengths): at the nodes of a polyline left
@@ -63,11 +70,25 @@ pub struct BenchRun {
     pub max_curvature: f64,
 }
 
+/// The run statuses [`score_run`] gives.
+pub const STATUSES: [&str; 4] = ["exact solution", "timeout", "no path", "invalid input"];
+
+fn status_from_str<'de, D: Deserializer<'de>>(d: D) -> Result<String, D::Error> {
+    let s = String::deserialize(d)?;
+    if STATUSES.contains(&s.as_str()) {
+        Ok(s)
+    } else {
+        Err(serde::de::Error::custom(format!(
+            "unknown run status {s:?}"
+        )))
+    }
+}
+
 impl BenchRun {
     /// The OMPL `status` enum value of the run.
     #[must_use]
     pub fn ompl_status(&self) -> Status {
-        match self.status {
+        match self.status.as_str() {
             "exact solution" => Status::ExactSolution,
             "timeout" => Status::Timeout,
             _ => Status::Unknown,
@@ -77,7 +98,7 @@ impl BenchRun {
 
 /// One sample of an anytime planner's progress: OMPL's progress properties `time`,
 /// `iterations` and `best cost`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ProgressPoint {
     /// Time since the planning call started, s.
     pub time_s: f64,
@@ -228,7 +249,7 @@ pub fn score_run(
         problem,
         planner: label.to_string(),
         exact: outcome.is_ok(),
-        status,
+        status: status.into(),
         error,
         planning_time_s: wall,
         raw_length: outcome.as_ref().map_or(f64::NAN, Plan::length),
@@ -585,6 +606,53 @@ mod tests {
         assert!(quantile(&[], 0.5).is_nan());
         let s = Spread::of([3.0, f64::NAN, 1.0, 2.0]);
         assert_eq!((s.q1, s.median, s.q3), (1.5, 2.0, 2.5));
+    }
+
+    #[test]
+    fn runs_read_back_from_ron_bit_for_bit() {
+        let metrics = RunMetrics {
+            run: 3,
+            seed: u64::MAX,
+            success: false,
+            time_s: 0.1 + 0.2,
+            cpu_time_s: f64::NAN,
+            length: f64::INFINITY,
+            nodes: 1e-310,
+            inner_nodes: -0.0,
+            segments: 2.0,
+            turns: 0.0,
+            explored: 7.0,
+            transfer_time_s: f64::NEG_INFINITY,
+            min_clearance: 1.5,
+            path: Vec::new(),
+            trees: Vec::new(),
+        };
+        let run = BenchRun {
+            problem: 1,
+            planner: "rrt:step=2,goal_bias=0.1".into(),
+            metrics,
+            exact: false,
+            status: "timeout".into(),
+            error: None,
+            planning_time_s: 0.25,
+            raw_length: f64::NAN,
+            iterations: 9,
+            collision_checks: 11,
+            progress: vec![ProgressPoint {
+                time_s: 0.5,
+                iterations: 64,
+                best_cost: f64::NAN,
+            }],
+            max_curvature: 2.0,
+        };
+        let text = ron::to_string(&run).unwrap();
+        let back: BenchRun = ron::from_str(&text).unwrap();
+        // Bit for bit: written again, the same text.
+        assert_eq!(ron::to_string(&back).unwrap(), text);
+        assert_eq!(back.metrics.nodes.to_bits(), 1e-310_f64.to_bits());
+        assert_eq!(back.status, "timeout");
+        let bad = text.replace("timeout", "timed out");
+        assert!(ron::from_str::<BenchRun>(&bad).is_err());
     }
 
     #[test]

@@ -5,7 +5,7 @@ for maps made with ``GridMap.from_array`` and ROS YAML maps; cells with y counte
 from the top row for pictures and MovingAI ``.map`` files.
 """
 
-from . import scenario
+from . import bench, scenario
 from ._hyplan import (
     GridMap,
     PlanResult,
@@ -36,6 +36,7 @@ __all__ = [
     "GridMap",
     "NoPathError",
     "PlanResult",
+    "bench",
     "plan",
     "planner_info",
     "planner_params",

@@ -1,3 +1,4 @@
+from . import bench as bench
 from . import scenario as scenario
 from ._hyplan import (
     GridMap as GridMap,

@@ -31,6 +31,13 @@ pub struct Args {
     /// Default: the scenario's.
     #[arg(long, value_parser = super::sim::CONTROLLERS)]
     pub controller: Option<String>,
+    /// Navigation-stack profile: `tutorial` (the values of rrt_exploration_tutorials:
+    /// trajectory roll-out at 5 Hz, its costmaps, gmapping's range and rate, the reference
+    /// detectors' compute time, filter and assigner; each value's source in docs/sim.md)
+    /// or `hyplan` (our defaults). It overwrites the scenario's values of those keys;
+    /// `--controller` then still chooses the local planner. Default: the scenario as written.
+    #[arg(long, value_parser = super::sim::PROFILES)]
+    pub profile: Option<String>,
     /// Folder for coverage.csv, track.csv, the final map (map.yaml + map.pgm), the
     /// figures (map, track, trees and frontiers at the scenario's snapshot times and at
     /// the end; SVG) and animation.png (the map being built, an animated PNG with a
@@ -39,6 +46,16 @@ pub struct Args {
     /// `mode: trinary`.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Write the run as a ROS 2 bag (MCAP) for Foxglove or RViz: /map, /scan, /odom, /tf,
+    /// /cmd_vel, /plan, /frontiers, /rrt_tree, stamped with simulated time (see
+    /// docs/sim.md).
+    #[arg(long, value_name = "FILE")]
+    pub mcap: Option<PathBuf>,
+    /// With `--mcap`: write one scan in N on /scan (1: every scan, the laser's rate;
+    /// /odom and /tf keep the laser's rate). The noisy ranges are most of a long run's
+    /// bag (see docs/measurements/issue-32.md).
+    #[arg(long, value_name = "N", default_value_t = 1, requires = "mcap")]
+    pub mcap_scan_every: u64,
     /// Memory limit, cells: the scenario's map file and every grid the run keeps over the
     /// world (the built map, the costmap, the obstacle memory: the world's size over each
     /// grid's resolution) may have at most this many cells; larger ones are refused
@@ -53,6 +70,9 @@ pub struct Args {
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let (mut scenario, _) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
         .map_err(super::sim_scenario_error)?;
+    if let Some(name) = &args.profile {
+        super::sim::apply_profile(&mut scenario, name)?;
+    }
     if let Some(d) = &args.detector {
         scenario.exploration.strategy = sim::Strategy::parse(d).with_context(|| {
             format!("--detector = {d:?}: must be one of local, global, both, frontier")
@@ -83,7 +103,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         .map_err(super::sim_scenario_error)?;
     let strategy = scenario.exploration.strategy;
     let mut next_line = 0.0;
-    let outcome = sim::explore_with(&scenario, &world, args.seed, strategy, &mut |c| {
+    let mut progress = |c: &sim::Coverage| {
         if c.t >= next_line {
             eprintln!(
                 "explore: t {:6.0} s, coverage {:5.1} %",
@@ -92,7 +112,23 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             );
             next_line += 60.0;
         }
-    })?;
+    };
+    let outcome = match &args.mcap {
+        None => sim::explore_with(&scenario, &world, args.seed, strategy, &mut progress)?,
+        Some(path) => {
+            let mut bag = sim::BagRecorder::create(path)?.with_scan_every(args.mcap_scan_every);
+            let outcome = sim::explore_observed(
+                &scenario,
+                &world,
+                args.seed,
+                strategy,
+                &mut progress,
+                &mut [&mut bag],
+            )?;
+            bag.finish()?;
+            outcome
+        }
+    };
     let time = |f: f64| {
         outcome
             .time_to(f)
@@ -208,6 +244,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             let svg = sim::snapshot_svg(&outcome, snap, &world)?;
             put(&format!("explore-{:04.0}s.svg", snap.t), &svg)?;
         }
+    }
+    if let Some(path) = &args.mcap {
+        outln!("wrote {}", path.display())?;
     }
     Ok(if outcome.finished {
         ExitCode::SUCCESS

@@ -10,8 +10,12 @@ use hyplan_core::Point2;
 /// Options of `hyplan map`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// An image (PNG, PGM, PPM), a ROS map_server `.yaml` or a MovingAI `.map`.
+    /// An image (PNG, PGM, PPM), a ROS map_server `.yaml`, a MovingAI `.map` or a ROS 2
+    /// bag (`.mcap`: its last `nav_msgs/msg/OccupancyGrid` on `--topic`).
     pub input: PathBuf,
+    /// ROS 2 bags: the topic of the map.
+    #[arg(long, default_value = envmap::DEFAULT_MAP_TOPIC)]
+    pub topic: String,
     /// Pictures: pixels with luminance below this are obstacles (seed 000: 100).
     #[arg(long, default_value_t = 100)]
     pub threshold: u8,
@@ -57,7 +61,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         unknown_free: args.unknown_free,
         max_cells: args.max_cells,
     };
-    let loaded = super::load_map(&args.input, &opts)?;
+    let loaded = super::load_map_topic(&args.input, &args.topic, &opts)?;
     let rects: Vec<CellRect> = loaded.components.iter().map(|c| c.rect).collect();
     if let Some(out) = &args.out {
         let shown: &[CellRect] = if args.rectangles { &rects } else { &[] };
@@ -84,6 +88,7 @@ fn kind_name(kind: MapKind) -> &'static str {
         MapKind::MovingAi => "movingai",
         MapKind::Ros => "ros",
         MapKind::Picture => "picture",
+        MapKind::Mcap => "mcap",
     }
 }
 
@@ -141,6 +146,7 @@ fn print_summary(args: &Args, loaded: &LoadedMap) -> std::io::Result<()> {
         MapKind::MovingAi => "MovingAI map",
         MapKind::Ros => "ROS map",
         MapKind::Picture => "picture",
+        MapKind::Mcap => "ROS 2 bag map",
     };
     outln!(
         "{}: {kind}, {} x {} cells, resolution {}, origin ({}, {})",

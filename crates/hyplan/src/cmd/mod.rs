@@ -15,7 +15,16 @@ pub fn load_map(
     path: &std::path::Path,
     opts: &envmap::LoadOptions,
 ) -> anyhow::Result<envmap::LoadedMap> {
-    envmap::load_map(path, opts).map_err(|e| match e {
+    load_map_topic(path, envmap::DEFAULT_MAP_TOPIC, opts)
+}
+
+/// [`load_map`], a ROS 2 bag's map read from `topic`.
+pub fn load_map_topic(
+    path: &std::path::Path,
+    topic: &str,
+    opts: &envmap::LoadOptions,
+) -> anyhow::Result<envmap::LoadedMap> {
+    envmap::load_map_topic(path, topic, opts).map_err(|e| match e {
         envmap::MapError::TooLarge { width, height, .. } => anyhow::anyhow!(
             "{e}; raise the limit with --max-cells {}",
             width.saturating_mul(height)

@@ -25,9 +25,18 @@ use crate::planners::{self, PlannerFlags};
 /// Options of `hyplan plan`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The map: a picture (PNG, PGM, PPM), a ROS map_server `.yaml` or a MovingAI `.map`.
+    /// The map: a picture (PNG, PGM, PPM), a ROS map_server `.yaml`, a MovingAI `.map` or
+    /// a ROS 2 bag (`.mcap`: its last `nav_msgs/msg/OccupancyGrid` on `--topic`).
     #[arg(long)]
     pub map: PathBuf,
+    /// ROS 2 bags: the topic of the map.
+    #[arg(long, default_value = envmap::DEFAULT_MAP_TOPIC)]
+    pub topic: String,
+    /// Write the first run as a ROS 2 bag (MCAP) for Foxglove or RViz: the map on /map
+    /// (free 0, high-risk 50, forbidden 100), the path on /plan, the smoothed curve on
+    /// /plan_smoothed, the trees on /tree (LINE_LIST markers); world frame `map`, stamp 0.
+    #[arg(long, value_name = "FILE")]
+    pub mcap: Option<PathBuf>,
     /// Start `X,Y` in the input's frame (pictures and `.map`: column, row from the top).
     #[arg(long, value_parser = parse_xy, allow_hyphen_values = true)]
     pub start: (f64, f64),
@@ -196,6 +205,11 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     if !args.csv && !args.json && args.runs > 1 {
         print_summary(&records)?;
     }
+    if let Some(path) = &args.mcap {
+        let plan = first.as_ref().and_then(|o| o.plan.as_ref());
+        let curve = first.as_ref().and_then(|o| o.curve.as_deref());
+        write_bag(path, &setup.map, plan, curve)?;
+    }
     if let Some(svg_path) = &args.svg {
         let plan = first.as_ref().and_then(|o| o.plan.as_ref());
         let curve = first.as_ref().and_then(|o| o.curve.as_deref());
@@ -220,7 +234,7 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
         max_cells: args.max_cells,
         ..LoadOptions::default()
     };
-    let loaded = super::load_map(&args.map, &opts)
+    let loaded = super::load_map_topic(&args.map, &args.topic, &opts)
         .with_context(|| format!("loading {}", args.map.display()))?;
     let frame = loaded.frame;
     let map = if args.avoid_risk {
@@ -460,5 +474,77 @@ fn print_summary(records: &[RunRecord]) -> std::io::Result<()> {
         time * 1e3,
         length.map_or_else(|| "-".to_string(), |l| format!("{l:.3}"))
     )?;
+    Ok(())
+}
+
+/// Writes the map, the plan, its smoothed curve and the trees as a ROS 2 bag (world
+/// frame `map`, every stamp 0).
+fn write_bag(
+    path: &std::path::Path,
+    map: &GridMap,
+    plan: Option<&Plan>,
+    curve: Option<&[Point2]>,
+) -> anyhow::Result<()> {
+    use bag::{ColorRGBA, Header, Marker, MarkerArray};
+    use hyplan_core::Zone;
+    let mut out = bag::BagWriter::create(path)?;
+    let origin = map.origin();
+    let grid = bag::OccupancyGrid {
+        header: Header::at(0, "map"),
+        info: bag::MapMetaData {
+            resolution: map.resolution() as f32,
+            width: u32::try_from(map.width())?,
+            height: u32::try_from(map.height())?,
+            origin: bag::Pose::planar(origin.x, origin.y, 0.0),
+            ..bag::MapMetaData::default()
+        },
+        data: map
+            .zones()
+            .iter()
+            .map(|z| match z {
+                Zone::Free => 0,
+                Zone::Risk => 50,
+                Zone::Forbidden => 100,
+            })
+            .collect(),
+    };
+    out.write("/map", 0, &grid)?;
+    let xy = |pts: &[Point2]| pts.iter().map(|p| (p.x, p.y)).collect::<Vec<_>>();
+    if let Some(plan) = plan {
+        out.write("/plan", 0, &bag::Path::planar(0, "map", xy(&plan.path)))?;
+        let blue = ColorRGBA {
+            r: 0.2,
+            g: 0.4,
+            b: 1.0,
+            a: 0.6,
+        };
+        let width = 0.3 * map.resolution();
+        let markers =
+            plan.trees
+                .iter()
+                .enumerate()
+                .map(|(k, tree)| {
+                    let edges =
+                        tree.parent.iter().enumerate().filter_map(|(i, p)| {
+                            p.map(|p| [tree.points[p as usize], tree.points[i]])
+                        });
+                    let points = edges.flatten().map(|p| (p.x, p.y));
+                    Marker::planar(
+                        Header::at(0, "map"),
+                        "tree",
+                        k as i32,
+                        Marker::LINE_LIST,
+                        width,
+                        blue,
+                        points,
+                    )
+                })
+                .collect();
+        out.write("/tree", 0, &MarkerArray { markers })?;
+    }
+    if let Some(curve) = curve {
+        out.write("/plan_smoothed", 0, &bag::Path::planar(0, "map", xy(curve)))?;
+    }
+    out.finish()?;
     Ok(())
 }

@@ -26,17 +26,43 @@ pub struct Args {
     /// scenario's roll-out parameters when it has some.
     #[arg(long, value_parser = CONTROLLERS)]
     pub controller: Option<String>,
+    /// Navigation-stack profile: `tutorial` (the values of rrt_exploration_tutorials:
+    /// trajectory roll-out at 5 Hz, its costmaps, gmapping's range and rate, the reference
+    /// detectors' compute time, filter and assigner; each value's source in docs/sim.md)
+    /// or `hyplan` (our defaults). It overwrites the scenario's values of those keys;
+    /// `--controller` then still chooses the local planner. Default: the scenario as written.
+    #[arg(long, value_parser = PROFILES)]
+    pub profile: Option<String>,
     /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver
     /// writes it: free 254, occupied 0, unknown 205, `mode: trinary`) and the figures
     /// (trajectory, v and omega, animation; SVG).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Write the run as a ROS 2 bag (MCAP) for Foxglove or RViz: /map, /scan, /odom, /tf,
+    /// /cmd_vel, /plan, /people, stamped with simulated time (see docs/sim.md).
+    #[arg(long, value_name = "FILE")]
+    pub mcap: Option<PathBuf>,
     /// Memory limit, cells: the scenario's map file and every grid the run keeps over the
     /// world (the built map, the costmap, the obstacle memory: the world's size over each
     /// grid's resolution) may have at most this many cells; larger ones are refused
     /// before they are allocated.
     #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
     pub max_cells: usize,
+}
+
+/// The names `--profile` takes.
+pub(crate) const PROFILES: [&str; 2] = ["hyplan", "tutorial"];
+
+/// Applies the profile `name` (one of [`PROFILES`]) to `scenario`.
+pub(crate) fn apply_profile(scenario: &mut sim::Scenario, name: &str) -> anyhow::Result<()> {
+    let profile = sim::Profile::parse(name).with_context(|| {
+        format!(
+            "--profile = {name:?}: must be one of {}",
+            PROFILES.join(", ")
+        )
+    })?;
+    profile.apply(scenario);
+    Ok(())
 }
 
 /// The names `--controller` takes.
@@ -92,11 +118,22 @@ fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let (mut scenario, world) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
         .map_err(super::sim_scenario_error)?;
+    if let Some(name) = &args.profile {
+        super::sim::apply_profile(&mut scenario, name)?;
+    }
     if let Some(name) = &args.controller {
         set_local_planner(&mut scenario, name)?;
     }
     let planner = global_planner(&args.planner)?;
-    let outcome = sim::run(&scenario, &world, args.seed, planner);
+    let outcome = match &args.mcap {
+        None => sim::run(&scenario, &world, args.seed, planner),
+        Some(path) => {
+            let mut bag = sim::BagRecorder::create(path)?;
+            let outcome = sim::run_with(&scenario, &world, args.seed, planner, &mut [&mut bag]);
+            bag.finish()?;
+            outcome
+        }
+    };
     let m = &outcome.trace.summary;
     outln!(
         "{}: {} (planner {}, controller {}, seed {})",
@@ -132,6 +169,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             outln!("wrote {}", f.display())?;
         }
     }
+    if let Some(path) = &args.mcap {
+        outln!("wrote {}", path.display())?;
+    }
     Ok(if m.reached {
         ExitCode::SUCCESS
     } else {
@@ -157,5 +197,12 @@ mod tests {
         set_local_planner(&mut sc, "rpp").unwrap();
         assert_eq!(sc.local_planner, sim::LocalPlanner::Rpp);
         assert!(set_local_planner(&mut sc, "teb").is_err());
+        apply_profile(&mut sc, "tutorial").unwrap();
+        assert_eq!(sc.controller.rate_hz, 5.0);
+        assert_eq!(sc.local_planner.name(), "trajectory");
+        set_local_planner(&mut sc, "dwa").unwrap();
+        assert!(matches!(sc.local_planner, sim::LocalPlanner::Dwa(r) if r.acc_lim_x == 0.05));
+        let err = apply_profile(&mut sc, "nav2").unwrap_err().to_string();
+        assert!(err.contains("--profile = \"nav2\""), "{err}");
     }
 }

@@ -96,3 +96,23 @@ pub fn nav2_counts(grey: &[u8]) -> [usize; 3] {
     }
     n
 }
+
+/// Whether OMPL's `ompl_benchmark_statistics` (package ompl-demos) runs here. Without it
+/// a test prints one SKIPPED line and returns, unless `HYPLAN_REQUIRE_TOOLS` is set (as
+/// `.ci/run` sets it): then it fails.
+pub fn ompl_statistics_available() -> bool {
+    let script = "ompl_benchmark_statistics";
+    if std::process::Command::new(script)
+        .arg("--help")
+        .output()
+        .is_ok_and(|o| o.status.success())
+    {
+        return true;
+    }
+    assert!(
+        std::env::var_os("HYPLAN_REQUIRE_TOOLS").is_none(),
+        "`{script}` not found (apt-get install ompl-demos) and HYPLAN_REQUIRE_TOOLS is set"
+    );
+    eprintln!("SKIPPED: `{script}` not found (apt-get install ompl-demos)");
+    false
+}

@@ -1,5 +1,8 @@
-//! The assigner (`rrt_exploration`'s `assigner.py`): the robot, when free, is sent to the
-//! frontier of best revenue.
+//! The assigner (`rrt_exploration`'s `assigner.py`): the robot is sent to the frontier of
+//! best revenue, when it is free ([`AssignerMode::Idle`](crate::AssignerMode::Idle),
+//! ours) or, as the reference's loop does, every cycle, re-targeting a moving robot
+//! ([`AssignerMode::Reference`](crate::AssignerMode::Reference), scored by
+//! [`Assigner::ranked_with`]).
 //!
 //! Revenue = `info_multiplier` x information gain - distance, the gain (unknown area
 //! within `info_radius`) multiplied by `hysteresis_gain` when the frontier lies within
@@ -71,14 +74,57 @@ impl Assigner {
     /// The frontiers not blacklisted, best revenue first (ties in the given order).
     #[must_use]
     pub fn ranked(&self, robot: Point2, frontiers: &[Point2], map: &OccupancyGrid) -> Vec<Point2> {
+        self.ranked_with(robot, frontiers, map, None)
+    }
+
+    /// [`ranked`](Self::ranked) as `assigner.py` scores: with `last`, the robot's last
+    /// goal and whether it is still driving there. Driving: a frontier within the
+    /// hysteresis radius of that goal scores its full gain times the hysteresis gain.
+    /// Free: every gain is first reduced by `discount()`'s count of unknown cells within
+    /// `info_radius` of both the frontier and the last goal (one per cell, as the
+    /// reference subtracts, though its gain is an area).
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{Assigner, Mapping, OccupancyGrid};
+    /// let p = Point2::new;
+    /// let map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(10.0, 10.0)), Mapping::default());
+    /// let a = Assigner { info_radius: 1.0, info_multiplier: 3.0, hysteresis_radius: 3.0,
+    ///     hysteresis_gain: 2.0, ..Default::default() };
+    /// let fs = [p(2.0, 2.0), p(8.0, 8.0)];
+    /// // Free after a goal at (2, 2): the frontier there is discounted away.
+    /// assert_eq!(a.ranked_with(p(5.0, 5.0), &fs, &map, Some((p(2.0, 2.0), false)))[0], p(8.0, 8.0));
+    /// ```
+    #[must_use]
+    pub fn ranked_with(
+        &self,
+        robot: Point2,
+        frontiers: &[Point2],
+        map: &OccupancyGrid,
+        last: Option<(Point2, bool)>,
+    ) -> Vec<Point2> {
         let mut scored: Vec<(f64, Point2)> = frontiers
             .iter()
             .filter(|&&f| !self.blacklisted(f))
             .map(|&f| {
-                let gain = information_gain(map, f, self.info_radius);
+                let mut gain = information_gain(map, f, self.info_radius);
+                let distance = (f - robot).norm();
+                match last {
+                    Some((goal, false)) => gain -= shared_unknown(map, f, goal, self.info_radius),
+                    Some((goal, true)) if (f - goal).norm() < self.hysteresis_radius => {
+                        // The reference's near-goal rule replaces its near-robot
+                        // doubling: undone here, so that `revenue` gives gain x
+                        // hysteresis_gain once.
+                        gain *= self.hysteresis_gain;
+                        if distance <= self.hysteresis_radius {
+                            gain /= self.hysteresis_gain;
+                        }
+                    }
+                    _ => {}
+                }
                 let r = revenue(
                     gain,
-                    (f - robot).norm(),
+                    distance,
                     self.info_multiplier,
                     self.hysteresis_radius,
                     self.hysteresis_gain,
@@ -90,4 +136,12 @@ impl Assigner {
         scored.sort_by(|a, b| b.0.total_cmp(&a.0));
         scored.into_iter().map(|(_, f)| f).collect()
     }
+}
+
+/// Unknown cells within `r` of both `a` and `b` (`assigner.py`'s `discount()` count).
+fn shared_unknown(map: &OccupancyGrid, a: Point2, b: Point2, r: f64) -> f64 {
+    if (a - b).norm() > 2.0 * r {
+        return 0.0;
+    }
+    map.count_unknown_within_both(a, b, r) as f64
 }

@@ -23,6 +23,7 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use sampling::GrowTree;
 
+use crate::explore::cost::DetectorCost;
 use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
 
 /// Why the 5 points do not make a region.
@@ -139,23 +140,23 @@ pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
 }
 
 /// One iteration of a detector's tree: sample, nearest, steer by `eta`, check. Returns
-/// the edge's verdict (the node is added when free).
+/// the edge's verdict (the node is added when free) and the edge's length, m.
 fn grow(
     tree: &mut GrowTree,
     map: &OccupancyGrid,
     region: &Region,
     eta: f64,
     rng: &mut ChaCha8Rng,
-) -> Edge {
+) -> (Edge, f64, Point2) {
     let x_rand = region.sample(rng);
     let Some(step) = tree.step_towards(x_rand, eta) else {
-        return Edge::Occupied;
+        return (Edge::Occupied, 0.0, x_rand);
     };
     let edge = edge_check(map, step.from, step.to);
     if edge == Edge::Free {
         tree.add(step.to, step.near);
     }
-    edge
+    (edge, (step.to - step.from).norm(), step.from)
 }
 
 /// Which of the paper's two detectors a tree is.
@@ -227,14 +228,35 @@ impl RrtDetector {
     /// when the new edge reached unknown space (a local tree is then reset at `robot`;
     /// a global one ignores `robot`).
     pub fn step(&mut self, map: &OccupancyGrid, robot: Point2) -> Option<Point2> {
-        match grow(&mut self.tree, map, &self.region, self.eta, &mut self.rng) {
+        self.step_timed(map, robot, None).0
+    }
+
+    /// [`step`](Self::step), and the seconds the reference's iteration would have taken
+    /// by `cost` (0 when `None`), counted on the tree before the iteration.
+    pub fn step_timed(
+        &mut self,
+        map: &OccupancyGrid,
+        robot: Point2,
+        cost: Option<&DetectorCost>,
+    ) -> (Option<Point2>, f64) {
+        let nodes = self.tree.len();
+        let (edge, length, from) = grow(&mut self.tree, map, &self.region, self.eta, &mut self.rng);
+        let took = cost.map_or(0.0, |c| {
+            let unknown_at = match edge {
+                Edge::Unknown(p) => Some((p - from).norm()),
+                _ => None,
+            };
+            let steps = c.steps(length, unknown_at, map.params.resolution);
+            c.iteration_s(nodes, steps, map.width() * map.height())
+        });
+        match edge {
             Edge::Unknown(p) => {
                 if self.kind == DetectorKind::Local {
                     self.tree = GrowTree::rooted_at(robot);
                 }
-                Some(p)
+                (Some(p), took)
             }
-            _ => None,
+            _ => (None, took),
         }
     }
 

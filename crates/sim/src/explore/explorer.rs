@@ -8,10 +8,11 @@ use envmap::Inflation;
 use crate::costmap::CostmapCache;
 use crate::engine::{Flow, GoalSource, Sim, TICKS_PER_SECOND, every, stream};
 use crate::explore::assigner::Assigner;
+use crate::explore::cost::DetectorCost;
 use crate::explore::detector::{Region, RrtDetector};
 use crate::explore::filter::{Filter, built_cost, built_cost_reach, information_gain};
 use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
-use crate::explore::params::{Exploration, Strategy};
+use crate::explore::params::{AssignerMode, Exploration, Strategy};
 use crate::explore::run::{GoalEnd, GoalRecord, Snapshot};
 use crate::explore::viewpoint::ViewPoints;
 use crate::kinematics::{self, Pose, Twist};
@@ -87,6 +88,18 @@ pub(crate) struct Explorer {
     given_up: Vec<GivenUp>,
     /// Frontiers the final pass sent the robot to: each once.
     final_tries: Vec<Point2>,
+    /// The last frontier assigned (the start before the first: the reference's assigner
+    /// first sends the robot where it stands).
+    last_goal: Point2,
+    /// With a detector cost: when the global and the local detector may next run, s.
+    ready: [f64; 2],
+    /// With a detector cost: the detectors' summed compute time, s.
+    pub busy: f64,
+    /// Iterations of the global and the local detector.
+    pub iterations: [u64; 2],
+    /// With `stop_at_coverage`: the fraction that ends the run, and the coverage meter's
+    /// last sample.
+    pub coverage_seen: Option<(f64, std::rc::Rc<std::cell::Cell<f64>>)>,
 }
 
 /// A frontier given up on, and what the map around it looked like then.
@@ -146,7 +159,8 @@ impl Explorer {
                 ex.costmap_threshold,
                 ex.filter_radius,
                 ex.min_gain,
-            ),
+            )
+            .with_pool(ex.filter_pool),
             assigner: Assigner {
                 info_radius: ex.info_radius,
                 info_multiplier: ex.info_multiplier,
@@ -175,6 +189,11 @@ impl Explorer {
             turned: ex.initial_turn.then_some(0.0),
             given_up: Vec::new(),
             final_tries: Vec::new(),
+            ready: [0.0; 2],
+            last_goal: crate::world::pt(scenario.start),
+            busy: 0.0,
+            iterations: [0; 2],
+            coverage_seen: None,
             ex,
         }
     }
@@ -249,6 +268,9 @@ impl Explorer {
                 .costmaps
                 .rebuild(&mut self.costmap, Some(&sim.map), &hits);
             self.costmap_at = Some(sim.map_version());
+        }
+        if self.rrt && self.ex.assigner_mode == AssignerMode::Reference && !self.recovering {
+            self.retarget(sim);
         }
         if self.goal.is_none() {
             self.lift_changed(&sim.map);
@@ -366,6 +388,31 @@ impl Explorer {
         }
     }
 
+    /// The reference assigner's every-cycle choice while the robot drives: the best
+    /// frontier by `assigner.py`'s busy scores replaces the goal when it is another
+    /// frontier (farther than the mean-shift bandwidth from the goal's; the reference
+    /// re-sends even the same one, which only re-plans).
+    fn retarget(&mut self, sim: &mut Sim<'_>) {
+        let (Some(g), None) = (self.goal, self.look) else {
+            return;
+        };
+        let f = self.target.unwrap_or(g);
+        let ranked =
+            self.assigner
+                .ranked_with(sim.here(), &self.candidates, &sim.map, Some((f, true)));
+        let Some(&best) = ranked.first() else { return };
+        if (best - f).norm() <= self.ex.bandwidth {
+            return;
+        }
+        if let Some(r) = self.goal_log.last_mut() {
+            r.ended = sim.time();
+            r.end = GoalEnd::Retargeted;
+        }
+        self.goal = None;
+        self.target = None;
+        self.send(sim, best, best);
+    }
+
     /// Picks the next frontier (and its view point) and sends the navigator there.
     fn choose_goal(&mut self, sim: &mut Sim<'_>) {
         let here = sim.here();
@@ -398,6 +445,13 @@ impl Explorer {
         let assigner = &self.assigner;
         let next = match (rrt, views) {
             (_, Some(views)) if self.recovering => views.open_cell(here, 0.5).map(|v| (v, v)),
+            (true, None) if ex.assigner_mode == AssignerMode::Reference => {
+                let last = (self.last_goal, false);
+                assigner
+                    .ranked_with(here, &self.candidates, map, Some(last))
+                    .first()
+                    .map(|&f| (f, f))
+            }
             (true, None) => assigner.choose(here, &self.candidates, map).map(|f| (f, f)),
             (true, Some(views)) => assigner
                 .ranked(here, &self.candidates, map)
@@ -429,10 +483,36 @@ impl Explorer {
         }
     }
 
+    /// The detectors with the reference's compute time: each runs when its previous
+    /// iteration and the loop's period are over, on its own clock (an iteration that
+    /// became due within the last tick started when it became due).
+    fn timed_detectors(&mut self, sim: &Sim<'_>, cost: &DetectorCost) {
+        let (now, here) = (sim.time(), sim.here());
+        let tick_s = 1.0 / TICKS_PER_SECOND as f64;
+        let [ready_global, ready_local] = &mut self.ready;
+        let [n_global, n_local] = &mut self.iterations;
+        for (detector, ready, n) in [
+            (self.global.as_mut(), ready_global, n_global),
+            (self.local.as_mut(), ready_local, n_local),
+        ] {
+            let Some(d) = detector else { continue };
+            if now + 1e-9 < *ready {
+                continue;
+            }
+            *n += 1;
+            let start = if now - *ready < tick_s { *ready } else { now };
+            let (p, took) = d.step_timed(&sim.map, here, Some(cost));
+            *ready = start + cost.next_after(took);
+            self.busy += took;
+            self.published.extend(p);
+        }
+    }
+
     /// Sends the navigator to goal `g` for frontier `f`, and opens the goal's record.
     fn send(&mut self, sim: &mut Sim<'_>, f: Point2, g: Point2) {
         let (tick, t, here) = (sim.tick(), sim.time(), sim.here());
         self.goal = Some(g);
+        self.last_goal = f;
         self.target = (self.ex.view_points && !self.recovering).then_some(f);
         self.anchor = (here, tick);
         sim.nav.set_goal(g);
@@ -454,17 +534,18 @@ impl Explorer {
 impl GoalSource for Explorer {
     fn decide(&mut self, sim: &mut Sim<'_>) -> Flow {
         let tick = sim.tick();
-        if tick.is_multiple_of(self.clock.detector) {
+        if let Some(cost) = self.ex.detector_cost {
+            self.timed_detectors(sim, &cost);
+        } else if tick.is_multiple_of(self.clock.detector) {
             let here = sim.here();
-            if let Some(g) = self.global.as_mut()
-                && let Some(p) = g.step(&sim.map, here)
+            for (k, detector) in [self.global.as_mut(), self.local.as_mut()]
+                .into_iter()
+                .enumerate()
             {
-                self.published.push(p);
-            }
-            if let Some(l) = self.local.as_mut()
-                && let Some(p) = l.step(&sim.map, here)
-            {
-                self.published.push(p);
+                if let Some(d) = detector {
+                    self.iterations[k] += 1;
+                    self.published.extend(d.step(&sim.map, here));
+                }
             }
         }
         if tick.is_multiple_of(self.clock.cycle) && self.turned.is_none() {
@@ -474,7 +555,11 @@ impl GoalSource for Explorer {
             let s = self.snapshot(sim.time(), sim.pose(), &sim.map);
             self.snapshots.push(s);
         }
-        if self.finished {
+        let covered = self
+            .coverage_seen
+            .as_ref()
+            .is_some_and(|(stop, seen)| seen.get() >= *stop);
+        if self.finished || covered {
             Flow::Stop
         } else {
             Flow::Continue
@@ -526,6 +611,20 @@ impl GoalSource for Explorer {
             }
         }
         Flow::Continue
+    }
+
+    /// The filter's candidates of the last cycle (what the snapshots draw).
+    fn frontiers(&self) -> Vec<Point2> {
+        self.candidates.clone()
+    }
+
+    /// The global tree's edges, then the local tree's.
+    fn tree_edges(&self) -> Vec<(Point2, Point2)> {
+        [self.global.as_ref(), self.local.as_ref()]
+            .into_iter()
+            .flatten()
+            .flat_map(RrtDetector::edges)
+            .collect()
     }
 
     fn moved(&mut self, from: Pose, to: Pose, step: f64) {

@@ -1,6 +1,8 @@
 //! The filter between the detectors and the assigner (`rrt_exploration`'s `filter.py`):
-//! cluster the published points, drop the centres the robot cannot use, keep the rest
-//! and test them again on every later map.
+//! cluster the published points, pass on the centres the robot can use, and cluster and
+//! test again on every later map what was kept: the centres that passed
+//! ([`FilterPool::Passed`], ours) or, as the reference does, every centre
+//! ([`FilterPool::Reference`]).
 //!
 //! Choices: mean shift with a flat kernel and every point as a seed, as scikit-learn's
 //! `MeanShift` (which the reference calls) does; centres closer than the bandwidth are
@@ -16,6 +18,7 @@ use sampling::NearestIndex;
 use envmap::Inflation;
 
 use crate::costmap::ros_cost;
+use crate::explore::params::FilterPool;
 use crate::mapping::OccupancyGrid;
 
 /// Flat-kernel mean shift: each point climbs to the mean of the points within
@@ -115,7 +118,12 @@ pub struct Filter {
     pub radius: f64,
     /// Least information gain kept, m^2.
     pub min_gain: f64,
+    /// What is kept between cycles.
+    pub pool: FilterPool,
+    /// The centres carried to the next cycle: those that passed, or every centre.
     kept: Vec<Point2>,
+    /// The centres that passed the last cycle's tests.
+    passed: Vec<Point2>,
     /// The last cycle's verdicts on its centres, keyed by position, with the map version
     /// they hold at: a centre far from the robot keeps its place and its verdict from
     /// cycle to cycle, and its area of the map has not changed.
@@ -131,14 +139,30 @@ impl Filter {
             costmap_threshold,
             radius,
             min_gain,
+            pool: FilterPool::Passed,
             kept: Vec::new(),
+            passed: Vec::new(),
             verdicts: HashMap::new(),
         }
     }
 
+    /// The same filter keeping `pool` between cycles.
+    ///
+    /// ```
+    /// use sim::{Filter, FilterPool};
+    /// let f = Filter::new(0.3, 70, 0.5, 0.2).with_pool(FilterPool::Reference);
+    /// assert_eq!(f.pool, FilterPool::Reference);
+    /// ```
+    #[must_use]
+    pub fn with_pool(mut self, pool: FilterPool) -> Self {
+        self.pool = pool;
+        self
+    }
+
     /// One cycle: the kept frontiers and the `published` points since the last cycle are
     /// clustered, and the centres that pass on `map` (information gain) and `cost` (the
-    /// costmap value at a point, e.g. [`built_cost`]) are kept (and returned).
+    /// costmap value at a point, e.g. [`built_cost`]) are returned; they are kept for the
+    /// next cycle, or every centre is with [`FilterPool::Reference`].
     ///
     /// `cost` must read nothing but `map`, and that no farther than `cost_reach` m from
     /// its point (for [`built_cost`]: [`built_cost_reach`]). A centre found
@@ -158,6 +182,7 @@ impl Filter {
         let version = map.version();
         let before = std::mem::take(&mut self.verdicts);
         let mut kept = Vec::new();
+        let mut passed = Vec::new();
         for c in mean_shift(&all, self.bandwidth) {
             let key = [c.x.to_bits(), c.y.to_bits()];
             let pass = match before.get(&key) {
@@ -169,16 +194,20 @@ impl Filter {
             };
             self.verdicts.insert(key, (version, pass));
             if pass {
+                passed.push(c);
+            }
+            if pass || self.pool == FilterPool::Reference {
                 kept.push(c);
             }
         }
         self.kept = kept;
-        &self.kept
+        self.passed = passed;
+        &self.passed
     }
 
-    /// The frontiers kept by the last cycle.
+    /// The frontiers that passed the last cycle.
     #[must_use]
     pub fn frontiers(&self) -> &[Point2] {
-        &self.kept
+        &self.passed
     }
 }

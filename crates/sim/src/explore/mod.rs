@@ -15,6 +15,7 @@
 //! the paper does not state its own, see the docs page).
 
 mod assigner;
+mod cost;
 mod detector;
 mod explorer;
 mod figure;
@@ -27,16 +28,18 @@ mod selfmap;
 mod viewpoint;
 
 pub use assigner::{Assigner, revenue};
+pub use cost::DetectorCost;
 pub use detector::{DetectorKind, Edge, Region, RegionError, RrtDetector, edge_check};
 pub use explorer::{GLOBAL_STREAM, LOCAL_STREAM};
 pub use figure::{animation_png, snapshot_scene, snapshot_svg};
 pub use filter::{Filter, built_cost, built_cost_reach, information_gain, mean_shift};
 pub use frontier::{costmap_steps, frontier_cells, frontier_clusters, nearest_frontier};
 pub use left::{LeftCause, LeftRegion, left_by_cause, left_unknown};
-pub use params::{Exploration, Strategy};
+pub use params::{AssignerMode, Exploration, FilterPool, Strategy};
 pub use run::{
     ContactCounter, Coverage, CoverageMeter, ExploreOutcome, FrameRecorder, GoalEnd, GoalRecord,
-    MapFrames, Snapshot, TrackRecorder, explore, explore_with, reachable_free, region_of,
+    MapFrames, Snapshot, TrackRecorder, explore, explore_observed, explore_with, reachable_free,
+    region_of,
 };
 pub use selfmap::{SelfMapped, explore_then_navigate};
 pub use viewpoint::{ViewPoints, sees};

@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::explore::cost::DetectorCost;
+
 /// Which frontier detector drives the exploration.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Strategy {
@@ -38,6 +40,34 @@ impl Strategy {
     }
 }
 
+/// What the filter keeps from cycle to cycle.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum FilterPool {
+    /// The centres that passed the filter's tests (ours): a frontier dropped once is
+    /// gone unless a detector publishes near it again.
+    #[default]
+    Passed,
+    /// Every centre (`filter.py`: `frontiers = copy(centroids)` before the tests): a
+    /// failed centre stays in the pool, is clustered with the new points and tested
+    /// again every cycle.
+    Reference,
+}
+
+/// When the assigner sends the robot to a frontier.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum AssignerMode {
+    /// Only when the robot has no goal (ours).
+    #[default]
+    Idle,
+    /// Every cycle (`assigner.py`): the frontiers are re-scored and the best one is sent,
+    /// which may re-target a moving robot. While the robot drives, the gain of a
+    /// frontier within `hysteresis_radius` of its goal is its full gain times
+    /// `hysteresis_gain`; when the robot is free, `discount()` first subtracts one (a
+    /// cell count, not an area: the reference's own comment says so) for every unknown
+    /// cell within `info_radius` of both the frontier and the last goal.
+    Reference,
+}
+
 /// Exploration parameters. Defaults are `rrt_exploration`'s launch and script defaults
 /// (`simple.launch`, `filter.py`, `assigner.py`) unless a field says otherwise.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -53,8 +83,16 @@ pub struct Exploration {
     /// Growth rate of the local tree, m (launch default 1).
     pub eta_local: f64,
     /// Detector iterations per simulated second, each detector (the reference's loop
-    /// rate, 100 Hz).
+    /// rate, 100 Hz), when `detector_cost` is `None`.
     pub detector_rate_hz: f64,
+    /// The reference detectors' compute time per iteration (`None`, the default: every
+    /// iteration is free and the detectors run at `detector_rate_hz`; the tutorial
+    /// profile sets [`DetectorCost::reference`]).
+    pub detector_cost: Option<DetectorCost>,
+    /// What the filter keeps between cycles (default [`FilterPool::Passed`]).
+    pub filter_pool: FilterPool,
+    /// When the assigner sends a goal (default [`AssignerMode::Idle`]).
+    pub assigner_mode: AssignerMode,
     /// Mean-shift bandwidth, m (`filter.py`: 0.3).
     pub bandwidth: f64,
     /// Costmap value (0-100) above which a frontier is dropped (`filter.py`: 70).
@@ -111,6 +149,10 @@ pub struct Exploration {
     pub frame_period: Option<f64>,
     /// Simulated times at which the trees, frontiers and map are kept for figures, s.
     pub snapshots: Vec<f64>,
+    /// End the run once this fraction of the reachable free area is known (`None`, the
+    /// default: the run ends when no frontier is left, or at the time limit). The
+    /// replay's eta sweep compares times to 95 and 99 % and ends its runs at 0.995.
+    pub stop_at_coverage: Option<f64>,
 }
 
 impl Default for Exploration {
@@ -121,6 +163,9 @@ impl Default for Exploration {
             eta_global: 15.0,
             eta_local: 1.0,
             detector_rate_hz: 100.0,
+            detector_cost: None,
+            filter_pool: FilterPool::Passed,
+            assigner_mode: AssignerMode::Idle,
             bandwidth: 0.3,
             costmap_threshold: 70,
             filter_radius: 0.5,
@@ -140,6 +185,7 @@ impl Default for Exploration {
             initial_turn: true,
             frame_period: None,
             snapshots: vec![30.0, 90.0],
+            stop_at_coverage: None,
         }
     }
 }
@@ -188,6 +234,16 @@ impl Exploration {
             if !(0..=100).contains(&v) {
                 return bad(f, v.to_string(), "must be in 0..=100");
             }
+        }
+        if let Some(f) = self.stop_at_coverage.filter(|f| !(*f > 0.0 && *f <= 1.0)) {
+            return bad("stop_at_coverage", f.to_string(), "must be in (0, 1]");
+        }
+        if let Some((f, v)) = self.detector_cost.as_ref().and_then(DetectorCost::problem) {
+            return bad(
+                &format!("detector_cost.{f}"),
+                v.to_string(),
+                "must be finite and > 0 (costs >= 0)",
+            );
         }
         if let Some(t) = self
             .snapshots

@@ -31,7 +31,7 @@ use envmap::{CellFrame, Connectivity, Mask, distance_transform, flood_fill, near
 use hyplan_core::{Bounds, Point2};
 
 use crate::costmap::{mark_near_segments, rasterize};
-use crate::engine::{Observer, Sim, TICKS_PER_SECOND, TickInfo, time_of};
+use crate::engine::{Each, Observer, Sim, TICKS_PER_SECOND, TickInfo, time_of};
 use crate::explore::detector::{Region, RegionError};
 use crate::explore::explorer::Explorer;
 use crate::explore::params::Strategy;
@@ -87,6 +87,9 @@ pub enum GoalEnd {
     Cost,
     /// The filter's gain test failed on it (its unknown area was seen).
     Gain,
+    /// The assigner sent the robot to another frontier on its way
+    /// ([`AssignerMode::Reference`](crate::AssignerMode::Reference)); not blacklisted.
+    Retargeted,
     /// Still the goal when the run ended.
     Open,
 }
@@ -154,6 +157,10 @@ pub struct ExploreOutcome {
     pub frames: MapFrames,
     /// Laser ticks on which the robot's body overlapped the true static world.
     pub contact_ticks: usize,
+    /// Iterations of the global and the local detector (0 for one not run).
+    pub detector_iterations: [u64; 2],
+    /// With the scenario's `detector_cost`: the detectors' summed compute time, s.
+    pub detector_busy: f64,
 }
 
 impl ExploreOutcome {
@@ -332,6 +339,41 @@ pub fn explore_with(
     strategy: Strategy,
     progress: &mut dyn FnMut(&Coverage),
 ) -> Result<ExploreOutcome, RegionError> {
+    explore_observed(scenario, world, seed, strategy, progress, &mut [])
+}
+
+/// [`explore_with`], with `observers` watching the run after its own (a ROS 2 bag,
+/// a log): they see every tick, and the explorer's frontiers and trees through
+/// [`TickInfo::goals`](crate::TickInfo::goals). They do not change the run.
+///
+/// ```no_run
+/// use sim::{Observer, Sim, Strategy, TickInfo};
+/// /// Counts the frontiers the explorer shows at each tick.
+/// #[derive(Default)]
+/// struct Shown(usize);
+/// impl Observer for Shown {
+///     fn ticked(&mut self, _sim: &Sim<'_>, info: &TickInfo<'_>) {
+///         self.0 += info.goals.frontiers().len();
+///     }
+/// }
+/// let (scenario, world) = sim::Scenario::load("scenarios/sim/explore-22m.ron".as_ref())?;
+/// let mut shown = Shown::default();
+/// let out =
+///     sim::explore_observed(&scenario, &world, 1, Strategy::Both, &mut |_| {}, &mut [&mut shown])?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+///
+/// As [`explore`].
+pub fn explore_observed(
+    scenario: &Scenario,
+    world: &World,
+    seed: u64,
+    strategy: Strategy,
+    progress: &mut dyn FnMut(&Coverage),
+    observers: &mut [&mut dyn Observer],
+) -> Result<ExploreOutcome, RegionError> {
     let region = region_of(scenario, world.bounds)?;
     let start = crate::world::pt(scenario.start);
     let mut sim =
@@ -343,20 +385,36 @@ pub fn explore_with(
         seed,
         strategy,
     );
+    // The explorer ends the run at `stop_at_coverage`: it reads the meter's last sample.
+    let latest = std::rc::Rc::new(std::cell::Cell::new(0.0));
+    explorer.coverage_seen = scenario
+        .exploration
+        .stop_at_coverage
+        .map(|f| (f, std::rc::Rc::clone(&latest)));
+    let mut sample = |c: &Coverage| {
+        latest.set(c.fraction);
+        progress(c);
+    };
     let mut coverage = CoverageMeter::new(
         world,
         scenario.mapping.resolution,
         start,
         scenario.robot.body_radius,
         &sim.map,
-        progress,
+        &mut sample,
     );
     let mut track = TrackRecorder::default();
     let mut frames = FrameRecorder::new(scenario.exploration.frame_period);
     let mut contacts = ContactCounter::default();
     let end_tick = sim.run(
         &mut explorer,
-        &mut [&mut coverage, &mut track, &mut frames, &mut contacts],
+        &mut [
+            &mut coverage,
+            &mut track,
+            &mut frames,
+            &mut contacts,
+            &mut Each(observers),
+        ],
     );
     let end_time = time_of(end_tick);
     explorer.finish(end_time, sim.pose(), &sim.map);
@@ -381,6 +439,8 @@ pub fn explore_with(
         distance,
         frames: frames.frames,
         contact_ticks: contacts.ticks,
+        detector_iterations: explorer.iterations,
+        detector_busy: explorer.busy,
     })
 }
 

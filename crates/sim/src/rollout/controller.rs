@@ -242,6 +242,7 @@ impl RolloutController {
         let (mut pose, mut v, mut w) = (s.pose, s.prev.v, s.prev.omega);
         let (mut occ, mut path_d, mut goal_d) = (0u8, 0u32, 0u32);
         let mut end = pose;
+        let mut sinc = 1.0;
         for k in 0..steps {
             let c = s.frame.index_of(Point2::new(pose.x, pose.y))?;
             let d = g.dist_sq[c];
@@ -263,8 +264,14 @@ impl RolloutController {
             }
             end = pose;
             v = toward(sample.v, v, s.acc.0 * dt);
-            w = toward(sample.omega, w, s.acc.1 * dt);
-            pose = kinematics::integrate(pose, Twist { v, omega: w }, dt);
+            let w_next = toward(sample.omega, w, s.acc.1 * dt);
+            // Once the turn rate has ramped to the sample's, the arc's chord factor is
+            // the same at every step.
+            if k == 0 || w_next.to_bits() != w.to_bits() {
+                sinc = kinematics::arc_sinc(w_next * dt / 2.0);
+            }
+            w = w_next;
+            pose = kinematics::integrate_arc(pose, Twist { v, omega: w }, dt, sinc);
         }
         let cost = s.weights.0 * f64::from(path_d)
             + s.weights.1 * f64::from(goal_d)
@@ -284,7 +291,10 @@ fn toward(want: f64, now: f64, step: f64) -> f64 {
 
 impl LocalController for RolloutController {
     fn limit(&self, robot: &Robot, prev: Twist, want: Twist) -> Twist {
-        let (v_top, w_top, acc_x, acc_w) = self.limits(robot);
+        // The base follows the command at its own accelerations: the package's limits
+        // shape the samples, not the base (the Kobuki's Gazebo plugin has no ramp).
+        let (v_top, w_top, _, _) = self.limits(robot);
+        let (acc_x, acc_w) = (robot.acc_v, robot.acc_omega);
         let dt = self.period();
         let v = toward(want.v.clamp(0.0, v_top), prev.v, acc_x * dt).clamp(0.0, v_top);
         let omega =

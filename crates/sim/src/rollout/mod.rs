@@ -30,10 +30,12 @@
 //!    when it costs no more and looks, `heading_lookahead` m ahead of where it ends,
 //!    nearest the local goal, unless that direction was already tried since the robot
 //!    last moved `oscillation_reset_dist` m (the package's oscillation flags);
-//! 6. the command sent is the winning sample limited by the accelerations for one
-//!    control period (the velocity a base that smooths its commands, as the Kobuki's
-//!    does, reaches; the roll-out assumed that ramp). When no sample is legal, the
-//!    command brakes and reports obstructed: the navigator stops and re-plans.
+//! 6. the command sent is the winning sample, which the base reaches at its own
+//!    accelerations ([`crate::Robot`]'s `acc_v`, `acc_omega`) over one control period:
+//!    the package publishes the sample as it is, and the tutorial's Kobuki (its Gazebo
+//!    plugin drives the wheels at a torque limit, with no ramp) follows it within a few
+//!    milliseconds. When no sample is legal, the command brakes and reports obstructed:
+//!    the navigator stops and re-plans.
 //!
 //! Our deviations, each for a reason:
 //! - the footprint is the round body plus the costmap's padding, and it touches a lethal

@@ -6,6 +6,11 @@
 //!
 //! Everything is validated before the first run: maps load, queries lie in free cells,
 //! planners and their parameter names exist; bad input exits 2.
+//!
+//! One path for every way of running: the runs (all of them, or one shard's) become
+//! records ([`BenchRun`]); the outputs are written from records ([`output::write_outputs`]),
+//! whether they come straight from the runs or from shards read back by `hyplan bench
+//! merge` ([`shard`]).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -14,19 +19,25 @@ use std::time::Instant;
 
 use anyhow::{Context as _, bail};
 use envmap::{GridMap, LoadOptions};
-use harness::bench::{self, BenchRun, Comparison, ExperimentInfo, SummaryRow};
+use harness::bench::shard::Shard;
+use harness::bench::{self, BenchRun};
 use harness::{Explored, PlannerConfig, PlannerSpec, Scoring};
 use hyplan_core::{Goal, PlanError, Planner, Query, Zone};
 use serde::{Deserialize, Serialize};
 
 mod output;
+mod shard;
 
 use super::{input_scale, parse_xy};
-use output::{markdown, write_csv};
+use output::{Clock, Outputs, Timing};
 
 /// Options of `hyplan bench`.
 #[derive(clap::Args, Debug)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub struct Args {
+    /// `merge`: the outputs of a sharded experiment from its shards' folders.
+    #[command(subcommand)]
+    pub command: Option<Command>,
     /// An experiment file (RON): maps, queries, planners and options together (see
     /// docs/bench.md). Excludes --map, --query and --planner.
     #[arg(long, conflicts_with_all = ["map", "query", "planner"])]
@@ -65,9 +76,14 @@ pub struct Args {
     /// transfer time.
     #[arg(long)]
     pub limits: Option<String>,
-    /// Output directory [default: bench-out].
+    /// Output directory [default: bench-out]. With --shard: the shard's records and
+    /// manifest only (`hyplan bench merge` writes the outputs).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Run shard K of N only (K from 0 to N - 1): the work items (problem x planner x
+    /// run) j with j mod N = K. Overrides the experiment file's `shard`.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<Shard>,
     /// Worker threads [default: all cores]; the results do not depend on it.
     #[arg(long)]
     pub threads: Option<usize>,
@@ -77,6 +93,14 @@ pub struct Args {
     /// Memory limit: maps with more cells (width x height) are refused before loading.
     #[arg(long, value_name = "N", default_value_t = envmap::DEFAULT_MAX_CELLS)]
     pub max_cells: usize,
+}
+
+/// `hyplan bench`'s subcommands.
+#[derive(clap::Subcommand, Debug)]
+pub enum Command {
+    /// Check that shard folders cover one experiment exactly once and write its outputs
+    /// (the same as an unsharded run's, the clocks aside).
+    Merge(shard::MergeArgs),
 }
 
 /// An experiment as a RON file gives it (and as the flags build it).
@@ -108,6 +132,9 @@ pub struct Experiment {
     /// Robot limits (v_max, omega_max, a_max) in input units.
     #[serde(default)]
     pub limits: Option<(f64, f64, f64)>,
+    /// Run this shard only (`Some("K/N")`); `hyplan bench merge` joins the shards.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shard: Option<Shard>,
 }
 
 /// One map and the queries run on it.
@@ -243,9 +270,13 @@ fn experiment(args: &Args) -> anyhow::Result<Experiment> {
             smooth: default_smooth(),
             goal_radius: 0.0,
             limits: None,
+            shard: None,
         }
     };
     // Flags override the file's options.
+    if args.shard.is_some() {
+        e.shard = args.shard;
+    }
     if let Some(r) = args.runs {
         e.runs = r;
     }
@@ -385,10 +416,10 @@ pub struct Report {
     /// Every run.
     pub runs: Vec<BenchRun>,
     /// One row per planner and problem.
-    pub summary: Vec<SummaryRow>,
+    pub summary: Vec<bench::SummaryRow>,
     /// Every pair of planners on each problem.
-    pub comparisons: Vec<Comparison>,
-    /// Wall time of the runs, s.
+    pub comparisons: Vec<bench::Comparison>,
+    /// Wall time of the runs, s (summed over the shards of a merged experiment).
     pub wall_s: f64,
     /// Sum of the runs' times (planning and post-processing), s.
     pub sum_run_time_s: f64,
@@ -398,12 +429,12 @@ pub struct Report {
     pub sum_planning_cpu_s: f64,
     /// CPU time of the whole command (every thread) up to the report, s.
     pub command_cpu_s: f64,
-    /// Worker threads.
+    /// Worker threads (summed over the shards of a merged experiment).
     pub threads: usize,
 }
 
 /// A problem in the report.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ProblemRecord {
     /// The log's experiment name.
     pub name: String,
@@ -413,12 +444,18 @@ pub struct ProblemRecord {
     pub query: String,
 }
 
-/// Runs `hyplan bench`.
+/// Each planner's settings on one problem, by label: the OMPL log's `common` properties.
+pub type Settings = BTreeMap<String, BTreeMap<String, String>>;
+
+/// Runs `hyplan bench` (or `hyplan bench merge`).
 ///
 /// # Errors
 ///
 /// Bad input (before any run), or an output that cannot be written.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    if let Some(Command::Merge(m)) = &args.command {
+        return shard::merge(m);
+    }
     let started = Instant::now();
     let cpu_started = cpu_time::ProcessTime::try_now().ok();
     let e = experiment(args)?;
@@ -432,7 +469,13 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from("bench-out"));
-    std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let sharded = e.shard.is_some();
+    let shard = e.shard.unwrap_or(Shard::WHOLE);
+    if sharded {
+        harness::bench::shard::begin_shard(&out)?;
+    } else {
+        std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    }
     let threads = args.threads.unwrap_or(0);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -454,8 +497,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             spacing: 0.25 * p.map.resolution(),
         })
         .collect();
+    let start = bench::utc_timestamp();
     let runs_started = Instant::now();
-    let runs = run_all(&pool, &problems, &scorings, &e);
+    let runs = run_all(&pool, &problems, &scorings, &e, shard);
     let wall_s = runs_started.elapsed().as_secs_f64();
     if let Some(bad) = runs.iter().find(|r| r.status == "invalid input") {
         bail!(
@@ -464,16 +508,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             bad.error.as_deref().unwrap_or("invalid input")
         );
     }
-
-    let summary = bench::summarise(&runs);
-    let comparisons = bench::compare(&runs, args.alpha);
-    let sum_run_time_s: f64 = runs.iter().map(|r| r.metrics.time_s).sum();
-    let sum_planning_time_s: f64 = runs.iter().map(|r| r.planning_time_s).sum();
-    let sum_planning_cpu_s: f64 = runs.iter().map(|r| r.metrics.cpu_time_s).sum();
-
-    write_problem_outputs(&out, &e, &problems, &runs, &summary, wall_s)?;
-
-    let mut report = Report {
+    let outputs = Outputs {
         problems: problems
             .iter()
             .map(|p| ProblemRecord {
@@ -482,43 +517,77 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                 query: p.query_text.clone(),
             })
             .collect(),
-        experiment: e,
+        settings: problems.iter().map(|p| settings(&e, p)).collect(),
+        experiment: Experiment { shard: None, ..e },
+        alpha: args.alpha,
         runs,
-        summary,
-        comparisons,
-        wall_s,
-        sum_run_time_s,
-        sum_planning_time_s,
-        sum_planning_cpu_s,
-        command_cpu_s: f64::NAN,
-        threads,
+        timing: Timing {
+            host: host_name(),
+            start,
+            wall_s,
+            threads,
+        },
     };
-    write_csv(&out.join("runs.csv"), &report)?;
-    let json = serde_json::to_string_pretty(&report)?;
-    std::fs::write(out.join("runs.json"), json).context("writing runs.json")?;
-    // Everything but writing the report itself is in these totals.
-    report.command_cpu_s = cpu_started.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
-    let md = markdown(&report, args.alpha, started.elapsed().as_secs_f64());
-    std::fs::write(out.join("summary.md"), &md).context("writing summary.md")?;
-    outln!("{md}")?;
-    outln!("outputs in {}", out.display())?;
+    if !sharded {
+        let clock = Clock::Live {
+            started,
+            cpu: cpu_started,
+        };
+        output::write_outputs(&out, outputs, &clock)?;
+    } else {
+        let total_s = started.elapsed().as_secs_f64();
+        let cpu_s = cpu_started.map_or(f64::NAN, |t| t.elapsed().as_secs_f64());
+        shard::write_shard(&out, shard, &outputs, total_s, cpu_s)?;
+    }
     Ok(ExitCode::SUCCESS)
 }
 
-/// Every run of every planner on every problem, on the worker threads, with a progress
-/// bar.
+/// The machine's name for the OMPL log (`UNKNOWN` where it has none).
+fn host_name() -> String {
+    std::fs::read_to_string("/etc/hostname")
+        .map(|h| h.trim().to_string())
+        .ok()
+        .filter(|h| !h.is_empty())
+        .unwrap_or_else(|| "UNKNOWN".into())
+}
+
+/// Every planner's settings on a problem, as `hyplan planners` shows them.
+fn settings(e: &Experiment, prob: &Problem) -> Settings {
+    prob.planners
+        .iter()
+        .map(|(spec, _)| {
+            let mut s: BTreeMap<String, String> = spec.planner.params().into_iter().collect();
+            s.insert("planner".into(), spec.planner.name().to_string());
+            s.insert("smoothing".into(), e.smooth.clone());
+            (spec.label().to_string(), s)
+        })
+        .collect()
+}
+
+/// The work items of an experiment in its order (problem, then planner, then run
+/// index): item j is `jobs[j]`, as (problem, planner, run).
+fn work_items(
+    problems: usize,
+    planners: usize,
+    runs: u32,
+) -> impl Iterator<Item = (usize, usize, u32)> {
+    (0..problems)
+        .flat_map(move |p| (0..planners).flat_map(move |i| (0..runs).map(move |k| (p, i, k))))
+}
+
+/// The runs of `shard`'s work items (every run for [`Shard::WHOLE`]), in the
+/// experiment's order, on the worker threads, with a progress bar.
 fn run_all(
     pool: &rayon::ThreadPool,
     problems: &[Problem],
     scorings: &[Scoring<'_>],
     e: &Experiment,
+    shard: Shard,
 ) -> Vec<BenchRun> {
-    let jobs: Vec<(usize, usize, u32)> = problems
-        .iter()
+    let jobs: Vec<(usize, usize, u32)> = work_items(problems.len(), e.planners.len(), e.runs)
         .enumerate()
-        .flat_map(|(p, prob)| {
-            (0..prob.planners.len()).flat_map(move |i| (0..e.runs).map(move |k| (p, i, k)))
-        })
+        .filter(|&(j, _)| shard.takes(j as u64))
+        .map(|(_, job)| job)
         .collect();
     let bar = indicatif::ProgressBar::new(jobs.len() as u64).with_style(
         indicatif::ProgressStyle::with_template(
@@ -557,84 +626,6 @@ fn run_all(
     });
     bar.finish_and_clear();
     runs
-}
-
-/// Per problem: its OMPL benchmark log and Planner Arena's default views (time and
-/// length box plots, success bars).
-fn write_problem_outputs(
-    out: &Path,
-    e: &Experiment,
-    problems: &[Problem],
-    runs: &[BenchRun],
-    summary: &[SummaryRow],
-    wall_s: f64,
-) -> anyhow::Result<()> {
-    let host = std::fs::read_to_string("/etc/hostname")
-        .map(|h| h.trim().to_string())
-        .ok()
-        .filter(|h| !h.is_empty())
-        .unwrap_or_else(|| "UNKNOWN".into());
-    let start = bench::utc_timestamp();
-    for (p, prob) in problems.iter().enumerate() {
-        let mine: Vec<&BenchRun> = runs.iter().filter(|r| r.problem == p).collect();
-        let settings: BTreeMap<String, BTreeMap<String, String>> = prob
-            .planners
-            .iter()
-            .map(|(spec, _)| {
-                // Every field of the planner, as `hyplan planners` shows them.
-                let mut s: BTreeMap<String, String> = spec.planner.params().into_iter().collect();
-                s.insert("planner".into(), spec.planner.name().to_string());
-                s.insert("smoothing".into(), e.smooth.clone());
-                (spec.label().to_string(), s)
-            })
-            .collect();
-        let info = ExperimentInfo {
-            name: prob.name.clone(),
-            host: host.clone(),
-            start: start.clone(),
-            setup: format!(
-                "hyplan bench\nmap {}\nquery {} (goal radius {})\nsmoothing {}\nseed {}",
-                prob.map_path.display(),
-                prob.query_text,
-                e.goal_radius,
-                e.smooth,
-                e.seed
-            ),
-            seed: e.seed,
-            max_time: e.time_limit.unwrap_or(0.0),
-            run_count: u64::from(e.runs),
-            total_duration: wall_s,
-        };
-        let log = bench::experiment_log(&info, &mine, &settings).to_log()?;
-        let path = out.join(format!("{}.log", prob.name));
-        std::fs::write(&path, log).with_context(|| format!("writing {}", path.display()))?;
-        // Planner Arena's default views.
-        let groups = bench::groups(runs);
-        let mine: Vec<&(_, Vec<&BenchRun>)> = groups.iter().filter(|((q, _), _)| *q == p).collect();
-        for (file, measure, get) in [
-            (
-                "time",
-                "time (s)",
-                (|r: &BenchRun| r.metrics.time_s) as fn(&BenchRun) -> f64,
-            ),
-            ("length", "path length", |r: &BenchRun| r.metrics.length),
-        ] {
-            let series: Vec<(String, Vec<f64>)> = mine
-                .iter()
-                .map(|((_, l), rs)| (l.clone(), rs.iter().map(|r| get(r)).collect()))
-                .collect();
-            let path = out.join(format!("{}-{file}.svg", prob.name));
-            harness::chart_box(&prob.name, measure, &series, &path)?;
-        }
-        let rates: Vec<(String, f64)> = summary
-            .iter()
-            .filter(|s| s.problem == p)
-            .map(|s| (s.planner.clone(), s.success_rate))
-            .collect();
-        let path = out.join(format!("{}-success.svg", prob.name));
-        harness::chart_success(&prob.name, &rates, &path)?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]
