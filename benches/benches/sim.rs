@@ -5,6 +5,10 @@
 //! (the machine it runs on is shared and noisy; CPU time is what one core spends), with
 //! the best and the median of `SIM_BENCH_RUNS` runs (default 20).
 //!
+//! `driven-step/004-nav-3-person`: one control period (0.1 s: 20 ticks, 4 scans) of the
+//! robot driven by its caller (`sim::Driven`, the loop under `hyplan.gym.NavEnv`), on a
+//! 1 m circle near the start of scenario 3, with the person walking.
+//!
 //! `laser-cast/explore-22m`: one full scan (720 beams, exact) from each of 400 poses on a
 //! grid over the free space of the 22 m exploration world, the hot path of every run.
 
@@ -56,6 +60,31 @@ fn scenario3(c: &mut Criterion) {
     );
 }
 
+fn driven_step(c: &mut Criterion) {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/3-person.ron");
+    let (scenario, world) = Scenario::load(&file).expect("scenario 3 loads");
+    let turn = sim::Twist { v: 0.3, omega: 0.3 };
+    // 600 steps (60 s, the person crossing meanwhile) per iteration, from the start.
+    let steps = 600;
+    let mut robot = sim::Driven::new(&scenario, &world, 1);
+    for _ in 0..steps {
+        robot.step(turn);
+    }
+    let o = robot.observation();
+    assert!(!o.static_contact && o.ranges.len() == 720, "{o:?}");
+    c.bench_function(
+        &format!("driven-step/004-nav-3-person/{steps}-steps"),
+        |b| {
+            b.iter(|| {
+                let mut robot = sim::Driven::new(&scenario, &world, 1);
+                for _ in 0..steps {
+                    std::hint::black_box(robot.step(turn));
+                }
+            });
+        },
+    );
+}
+
 fn laser_cast(c: &mut Criterion) {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/explore-22m.ron");
     let (scenario, world) = Scenario::load(&file).expect("the exploration scenario loads");
@@ -91,7 +120,7 @@ mod entry {
     criterion::criterion_group! {
         name = benches;
         config = criterion::Criterion::default().sample_size(10);
-        targets = super::scenario3, super::laser_cast
+        targets = super::scenario3, super::driven_step, super::laser_cast
     }
 }
 criterion_main!(entry::benches);

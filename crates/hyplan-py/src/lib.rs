@@ -1,6 +1,6 @@
 //! Python bindings of hyplan (`import hyplan`): maps from NumPy arrays or files, every
 //! planner of `hyplan plan` with the same seeds and flags, smoothing, transfer time and
-//! scenario runs.
+//! scenario runs; seed 004's simulated robot (`Sim`), driven step by step.
 //!
 //! Coordinates are in the map's *input frame*, as on the command line: world units with y
 //! up for maps made from arrays and for ROS YAML maps; cells with y counted down from the
@@ -20,9 +20,11 @@ use pyo3::types::{PyDict, PyList};
 
 mod map;
 mod plan;
+mod simulator;
 
 use map::PyGridMap;
 use plan::PlanResult;
+use simulator::PySim;
 
 fn value_err(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
@@ -183,6 +185,8 @@ fn planner_info<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyDict>
 fn _hyplan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyGridMap>()?;
     m.add_class::<PlanResult>()?;
+    m.add_class::<PySim>()?;
+    m.add_function(wrap_pyfunction!(simulator::_builtin_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(plan::plan, m)?)?;
     m.add_function(wrap_pyfunction!(smooth, m)?)?;
     m.add_function(wrap_pyfunction!(transfer_time, m)?)?;

@@ -159,8 +159,8 @@ pub struct FollowInput<'a> {
 
 /// A local controller: turns the global path into velocity commands and keeps the robot
 /// off what the laser saw. The navigator drives any of them; today's is regulated pure
-/// pursuit ([`Controller`]).
-pub trait LocalController: std::fmt::Debug {
+/// pursuit ([`Controller`]). `Send`, as [`crate::PeopleModel`].
+pub trait LocalController: std::fmt::Debug + Send {
     /// The command nearest `want` that the robot's limits allow one step after `prev`.
     fn limit(&self, robot: &Robot, prev: Twist, want: Twist) -> Twist;
     /// One step along the path: the command (and whether the way is obstructed) and the

@@ -235,6 +235,8 @@ pub struct Sim<'w> {
     noise: ChaCha8Rng,
     rates: Rates,
     clear_footprint: bool,
+    sensing_only: bool,
+    tracking: bool,
     tick: u64,
     pose: Pose,
     twist: Twist,
@@ -298,6 +300,8 @@ impl<'w> Sim<'w> {
             noise: stream(seed, NOISE_STREAM),
             rates,
             clear_footprint: false,
+            sensing_only: false,
+            tracking: true,
             tick: 0,
             pose: scenario.start_pose(),
             twist: Twist::default(),
@@ -313,6 +317,39 @@ impl<'w> Sim<'w> {
     pub fn clearing_footprint(mut self) -> Self {
         self.clear_footprint = true;
         self
+    }
+
+    /// Scans feed the people tracker and the observers only: no map is built and no
+    /// obstacle memory kept. For a caller that drives the robot itself (every control
+    /// tick's command comes from [`GoalSource::command`]), which needs neither.
+    #[must_use]
+    pub fn sensing_only(mut self) -> Self {
+        self.sensing_only = true;
+        self
+    }
+
+    /// No people tracker: the navigator sees no movers and [`Sim::tracker`] stays empty.
+    /// For a caller that drives the robot itself and does not read the tracks.
+    #[must_use]
+    pub fn without_tracker(mut self) -> Self {
+        self.tracking = false;
+        self
+    }
+
+    /// Back to the scenario's start at tick 0, with the laser noise of `seed` and no
+    /// tracks, keeping everything built from the world (costmaps, priors): a new episode
+    /// without the cost of [`Sim::new`]. Only for a [`Sim::sensing_only`] run with the
+    /// scripted people (the map, the obstacle memory and the navigator are not reset).
+    pub(crate) fn restart(&mut self, seed: u64) {
+        debug_assert!(self.sensing_only, "only a sensing-only run restarts");
+        self.tick = 0;
+        self.pose = self.scenario.start_pose();
+        self.twist = Twist::default();
+        self.distance = 0.0;
+        self.people.clear();
+        self.events.clear();
+        self.noise = stream(seed, NOISE_STREAM);
+        self.tracker.forget();
     }
 
     /// Replaces the people's model (scripted walkers by default).
@@ -394,6 +431,20 @@ impl<'w> Sim<'w> {
         self.tick - 1
     }
 
+    /// One tick, then the tick counter moves on unless the tick stopped the run: one turn
+    /// of [`Sim::run`]'s loop, for a caller that runs the loop itself.
+    pub fn advance(
+        &mut self,
+        goals: &mut dyn GoalSource,
+        observers: &mut [&mut dyn Observer],
+    ) -> Flow {
+        let flow = self.step(goals, observers);
+        if flow == Flow::Continue {
+            self.tick += 1;
+        }
+        flow
+    }
+
     /// One tick (see the module doc). Does not advance the tick counter past a stop.
     pub fn step(
         &mut self,
@@ -459,7 +510,7 @@ impl<'w> Sim<'w> {
         let (o, h) = self.laser.origin(&self.pose);
         let mut scan = self.laser.cast(&self.world.statics, &self.people, o, h);
         self.laser.add_noise(&mut scan, &mut self.noise);
-        if tick.is_multiple_of(self.rates.map) {
+        if !self.sensing_only && tick.is_multiple_of(self.rates.map) {
             for ob in observers.iter_mut() {
                 ob.map_updating(self, &scan);
             }
@@ -473,7 +524,15 @@ impl<'w> Sim<'w> {
                 ob.map_updated(self, &scan);
             }
         }
-        self.tracker.update(&scan, tick);
+        if self.tracking {
+            self.tracker.update(&scan, tick);
+        }
+        if self.sensing_only {
+            for ob in observers.iter_mut() {
+                ob.sensed(self, &scan);
+            }
+            return;
+        }
         if !self.scenario.known_map {
             // A hit on a wall lands in the wall's cell or, with the range noise, in the
             // free cell before it: an occupied cell among the 3 x 3 around it explains it.

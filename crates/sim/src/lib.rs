@@ -15,7 +15,9 @@
 //!   (what is recorded: [`Recorder`], [`CoverageMeter`], [`TrackRecorder`],
 //!   [`FrameRecorder`], [`ContactCounter`], `BagRecorder` with feature `mcap`) plug into
 //!   it; [`run()`] ([`run_with`] with more observers) and [`explore()`] are the two
-//!   ready-made runs. [`TICKS_PER_SECOND`], [`stream`] (the seeded random streams).
+//!   ready-made runs. [`Driven`] hands the commands to a caller, one control period
+//!   and one [`Observation`] at a time (a learning environment's loop).
+//!   [`TICKS_PER_SECOND`], [`stream`] (the seeded random streams).
 //! - The robot: [`Robot`], [`Pose`], [`Twist`], [`WheelSpeeds`], eqs. (2)-(4)
 //!   ([`jacobian`], [`jacobian_inverse`], [`wheel_speeds`], [`twist_of`]), wheel
 //!   saturation ([`saturate`]) and exact arc integration ([`integrate`]).
@@ -69,6 +71,7 @@
 //!
 //! - `mcap`: `BagRecorder`, a run written as a ROS 2 bag (MCAP) for Foxglove and RViz.
 
+mod agent;
 #[cfg(feature = "mcap")]
 mod bag_observer;
 mod building;
@@ -93,6 +96,7 @@ mod tracking;
 mod validate;
 mod world;
 
+pub use agent::{Driven, Observation};
 #[cfg(feature = "mcap")]
 pub use bag_observer::BagRecorder;
 pub use building::BUILDING_RESOLUTION;

@@ -7,8 +7,9 @@
 use crate::kinematics::Pose;
 use crate::world::{Disc, Person};
 
-/// People's positions over time.
-pub trait PeopleModel {
+/// People's positions over time. `Send`, so that a simulation can move to a worker
+/// thread (the Python bindings step it with the GIL released).
+pub trait PeopleModel: Send {
     /// Everyone's body at time `t`, s, with the robot at `robot`; called once per tick,
     /// in time order.
     fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc>;

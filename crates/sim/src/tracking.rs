@@ -190,6 +190,11 @@ impl Tracker {
         }
     }
 
+    /// Forgets every track, keeping the static prior: a new run in the same world.
+    pub fn forget(&mut self) {
+        self.tracks.clear();
+    }
+
     /// Whether `p` is within about a cell of the static prior (or outside the world:
     /// nothing walks there).
     fn explained(&self, p: Point2) -> bool {

@@ -9,6 +9,7 @@ from . import bench, scenario
 from ._hyplan import (
     GridMap,
     PlanResult,
+    Sim,
     plan,
     planner_info,
     planner_params,
@@ -36,6 +37,7 @@ __all__ = [
     "GridMap",
     "NoPathError",
     "PlanResult",
+    "Sim",
     "bench",
     "plan",
     "planner_info",
