@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
 
-use numpy::{PyArray1, PyArray2};
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -113,6 +113,27 @@ fn driven(owned: Owned, seed: u64, track_people: bool) -> SimCell {
     })
 }
 
+/// `[v, omega]` from a float32 or float64 array or a sequence of two numbers.
+fn action_of(action: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
+    let pair = if let Ok(a) = action.cast::<PyArray1<f32>>() {
+        a.readonly()
+            .as_slice()
+            .ok()
+            .map(|s| s.iter().map(|&x| f64::from(x)).collect())
+    } else if let Ok(a) = action.cast::<PyArray1<f64>>() {
+        a.readonly().as_slice().ok().map(<[f64]>::to_vec)
+    } else {
+        action.extract::<Vec<f64>>().ok()
+    };
+    match pair.as_deref() {
+        Some(&[v, omega]) => Ok([v, omega]),
+        _ => Err(PyValueError::new_err(format!(
+            "action: expected [v, omega] (two numbers), got {}",
+            action.repr()?
+        ))),
+    }
+}
+
 /// `hyplan.gym.NavEnv`'s observation and outcome: the scan as float32 in `[0, range_max]`,
 /// the goal's distance and bearing, the command in force, then the goal distance (f64),
 /// contact, reached, timed out.
@@ -170,7 +191,7 @@ impl PySim {
             .cell
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner);
-        f(&*guard)
+        f(&guard)
     }
 }
 
@@ -274,9 +295,19 @@ impl PySim {
         observation(py, cell.borrow_dependent().observation())
     }
 
-    /// `step` for `hyplan.gym.NavEnv`: `(scan, goal, velocity, goal_distance, contact,
-    /// reached, timed_out)`, the first three float32 arrays of its observation.
-    fn _step_gym<'py>(&self, py: Python<'py>, v: f64, omega: f64) -> PyResult<GymStep<'py>> {
+    /// `step` for `hyplan.gym.NavEnv`, with `action` `[v, omega]` (a float32 or float64
+    /// array or a sequence) clipped to `[0, v_max] x [-omega_max, omega_max]`: `(scan,
+    /// goal, velocity, goal_distance, contact, reached, timed_out)`, the first three the
+    /// float32 arrays of its observation.
+    fn _step_gym<'py>(
+        &self,
+        py: Python<'py>,
+        action: &Bound<'py, PyAny>,
+    ) -> PyResult<GymStep<'py>> {
+        let [v, omega] = action_of(action)?;
+        let robot = self.with(|c| c.borrow_owner().scenario.robot);
+        let v = v.clamp(0.0, robot.v_max);
+        let omega = omega.clamp(-robot.omega_max, robot.omega_max);
         let guard = self.drive(py, v, omega)?;
         let cell = &*guard;
         let range_max = cell.borrow_owner().scenario.laser.range_max;

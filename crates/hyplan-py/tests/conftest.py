@@ -1,5 +1,7 @@
 import os
 import shutil
+import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -44,3 +46,24 @@ def hyplan_bin():
     if found:
         return found
     pytest.fail("no hyplan CLI: build it (cargo build -p hyplan) or set HYPLAN_BIN")
+
+
+def ticks_during(call):
+    """``call()``'s result and how many times a Python thread counted meanwhile: many
+    counts if (and only if) the call runs without the GIL."""
+    ticks = [0]
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks[0] += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    time.sleep(0.05)
+    before = ticks[0]
+    out = call()
+    during = ticks[0] - before
+    stop.set()
+    t.join()
+    return out, during

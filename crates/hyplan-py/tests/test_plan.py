@@ -1,13 +1,11 @@
 import json
 import subprocess
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import hyplan
-from conftest import ROOT, maze, write_pgm
+from conftest import ROOT, maze, ticks_during, write_pgm
 
 START_CELL = (5.0, 5.0)  # x, y counted down from the top row (the CLI's picture frame)
 GOAL_CELL = (74.0, 74.0)
@@ -248,21 +246,9 @@ def test_gil_is_released_while_planning():
     # if (and only if) the plan runs without the GIL.
     n = 1200
     m = hyplan.GridMap.from_array(np.zeros((n, n), bool))
-    ticks = [0]
-    stop = threading.Event()
-
-    def count():
-        while not stop.is_set():
-            ticks[0] += 1
-
-    t = threading.Thread(target=count)
-    t.start()
-    time.sleep(0.05)
-    before = ticks[0]
-    r = hyplan.plan(m, (1, 1), (n - 1, n - 1), planner="dijkstra", max_iter=10**9)
-    during = ticks[0] - before
-    stop.set()
-    t.join()
+    r, during = ticks_during(
+        lambda: hyplan.plan(m, (1, 1), (n - 1, n - 1), planner="dijkstra", max_iter=10**9)
+    )
     assert r.solved
     assert r.time_s > 0.05, "plan too quick to tell"
     assert during > 1000, f"the counter thread ran {during} times during a {r.time_s:.3f} s plan"

@@ -3,6 +3,7 @@ from . import scenario as scenario
 from ._hyplan import (
     GridMap as GridMap,
     PlanResult as PlanResult,
+    Sim as Sim,
     plan as plan,
     planner_info as planner_info,
     planner_params as planner_params,

@@ -109,3 +109,44 @@ def planner_info(name: str) -> dict:
     ``has_step``, ``wants_default_step``, ``goal_bias``, ``own_goal_radius``,
     ``deterministic``) and ``params``: dicts of ``name``, ``type``, ``default`` (RON text)
     and ``doc``."""
+
+class Sim:
+    """Seed 004's robot in a scenario of ``hyplan sim``, driven one control period at a
+    time. ``step`` returns a dict: ``t``, ``pose`` ``[x, y, phi]``, ``velocity`` ``[v,
+    omega]``, ``ranges`` (float32, REP 117), ``tracked`` ``(K, 5)`` ``x, y, vx, vy,
+    radius``, ``people`` ``(M, 3)`` ``x, y, radius``, ``contacts`` ``{"static": bool,
+    "people": [int]}``, ``clearance``, ``goal_distance``, ``goal_bearing``, ``reached``,
+    ``timed_out``."""
+
+    def __init__(
+        self, scenario: Union[_Path, dict], seed: int = 0, track_people: bool = True
+    ) -> None: ...
+    @staticmethod
+    def from_ron(text: str, seed: int = 0, track_people: bool = True) -> "Sim": ...
+    def reset(self, seed: Optional[int] = None) -> dict:
+        """Back to the start (with a new seed if given); the first observation."""
+    def step(self, v: float, omega: float) -> dict:
+        """One control period commanding ``v`` (m/s) and ``omega`` (rad/s)."""
+    def observation(self) -> dict: ...
+    def run(self) -> dict:
+        """The built-in stack from the start, as ``hyplan sim``: ``summary.json`` as a
+        dict, with ``track`` ``(N, 6)``: ``t, x, y, phi, v, omega``."""
+    @property
+    def period(self) -> float: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def goal(self) -> Tuple[float, float]: ...
+    @property
+    def time_limit(self) -> float: ...
+    @property
+    def laser(self) -> dict:
+        """``beams``, ``angle_min``, ``angle_increment``, ``range_min``, ``range_max``,
+        ``rate_hz``."""
+    @property
+    def robot(self) -> dict:
+        """``body_radius``, ``v_max``, ``omega_max``, ``acc_v``, ``acc_omega``."""
+
+def _builtin_scenario(name: str) -> str: ...

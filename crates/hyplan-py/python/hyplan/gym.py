@@ -118,29 +118,25 @@ class NavEnv(gymnasium.Env):
         observation of ``hyplan.Sim.step`` (pose, REP 117 ranges, people, contacts)."""
         return self._sim
 
-    def _outcome(self, out):
-        scan, goal, velocity, distance, contact, reached, timed_out = out
-        return {"scan": scan, "goal": goal, "velocity": velocity}, distance, contact, reached, timed_out
-
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
         super().reset(seed=seed)
         if seed is None:
             seed = int(self.np_random.integers(0, 2**63 - 1))
         self._sim.reset(seed=seed)
-        obs, self._distance, _, _, _ = self._outcome(self._sim._observe_gym())
-        return obs, {}
+        scan, goal, velocity, self._distance, _, _, _ = self._sim._observe_gym()
+        return {"scan": scan, "goal": goal, "velocity": velocity}, {}
 
     def step(self, action):
-        v = min(max(float(action[0]), 0.0), self._v_max)
-        omega = min(max(float(action[1]), -self._omega_max), self._omega_max)
-        obs, d, contact, reached, timed_out = self._outcome(self._sim._step_gym(v, omega))
-        reward = (self._distance - d) - STEP_COST
+        # The action is clipped to the box in Rust, with the step.
+        scan, goal, velocity, d, contact, reached, timed_out = self._sim._step_gym(action)
+        reward = self._distance - d - STEP_COST
         self._distance = d
         if reached:
             reward += GOAL_REWARD
         if contact:
             reward -= CONTACT_PENALTY
         terminated = reached or contact
+        obs = {"scan": scan, "goal": goal, "velocity": velocity}
         return obs, reward, terminated, timed_out and not terminated, {}
 
 
