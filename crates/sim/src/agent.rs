@@ -4,6 +4,8 @@
 //! The caller's command replaces the navigator's; the robot reaches it at its own
 //! accelerations (the local controller's `limit`), the laser fires at its rate, people
 //! walk, and nothing else of the navigation stack runs (no map, no costmap, no plans).
+//! As everywhere in the simulator, nothing stops the body where it touches a wall or a
+//! person: contacts are reported in the [`Observation`], and the caller decides.
 
 use hyplan_core::Point2;
 

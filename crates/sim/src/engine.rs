@@ -21,7 +21,7 @@ use crate::kinematics::{self, Pose, Twist};
 use crate::laser::{LaserModel, Scan};
 use crate::mapping::OccupancyGrid;
 use crate::navigator::{NavEvent, Navigator};
-use crate::people::{PeopleModel, Scripted};
+use crate::people::PeopleModel;
 use crate::planner::GlobalPlanner;
 use crate::scenario::Scenario;
 use crate::tracking::Tracker;
@@ -247,7 +247,7 @@ pub struct Sim<'w> {
 
 impl<'w> Sim<'w> {
     /// A robot at the scenario's start, navigating toward `goal` with `planner`; the
-    /// people walk their scripted routes.
+    /// people move as the scenario's `people_model` says (scripted routes by default).
     #[must_use]
     pub fn new(
         scenario: &'w Scenario,
@@ -294,7 +294,9 @@ impl<'w> Sim<'w> {
                 scenario.costmap.obstacle_range,
                 TICKS_PER_SECOND as f64,
             ),
-            people_model: Box::new(Scripted::new(&world.people)),
+            people_model: scenario
+                .people_model
+                .build(world, scenario.robot.body_radius),
             people: Vec::new(),
             laser: LaserModel::new(scenario.laser),
             noise: stream(seed, NOISE_STREAM),
@@ -338,8 +340,9 @@ impl<'w> Sim<'w> {
 
     /// Back to the scenario's start at tick 0, with the laser noise of `seed` and no
     /// tracks, keeping everything built from the world (costmaps, priors): a new episode
-    /// without the cost of [`Sim::new`]. Only for a [`Sim::sensing_only`] run with the
-    /// scripted people (the map, the obstacle memory and the navigator are not reset).
+    /// without the cost of [`Sim::new`]. Only for a [`Sim::sensing_only`] run (the map,
+    /// the obstacle memory and the navigator are not reset); the people models start
+    /// over when time goes back to 0.
     pub(crate) fn restart(&mut self, seed: u64) {
         debug_assert!(self.sensing_only, "only a sensing-only run restarts");
         self.tick = 0;

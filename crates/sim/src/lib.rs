@@ -22,7 +22,9 @@
 //!   ([`jacobian`], [`jacobian_inverse`], [`wheel_speeds`], [`twist_of`]), wheel
 //!   saturation ([`saturate`]) and exact arc integration ([`integrate`]).
 //! - The world: [`Shape`], [`StaticWorld`], [`World`], [`Disc`]; people: [`Person`],
-//!   [`Walk`] and the [`PeopleModel`] trait ([`Scripted`] walkers).
+//!   [`Walk`] and the [`PeopleModel`] trait ([`Scripted`] walkers; [`SocialForce`],
+//!   Helbing and Molnár's social forces, [`SocialForceParams`]), chosen by
+//!   [`PeopleModelKind`].
 //! - Sensing and mapping: [`Laser`], [`LaserModel`], [`Scan`] (exact ray casts, seeded
 //!   noise); [`Mapping`], [`OccupancyGrid`] (clamped log-odds, ROS values [`FREE`],
 //!   [`OCCUPIED`], [`UNKNOWN`]); [`Tracker`], [`Mover`] (people's velocities).
@@ -92,6 +94,7 @@ mod rollout;
 mod run;
 mod scenario;
 mod soak;
+mod social_force;
 mod tracking;
 mod validate;
 mod world;
@@ -137,6 +140,7 @@ pub use rollout::{LocalPlanner, Rollout, RolloutController};
 pub use run::{Outcome, Recorder, run, run_with};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
 pub use soak::{SoakSummary, room, soak, soak_each, soak_with};
+pub use social_force::{KEEP_RIGHT, MAX_STEP, PeopleModelKind, SocialForce, SocialForceParams};
 pub use tracking::{Mover, Tracker};
 pub use world::{Disc, Person, Segment, Shape, StaticWorld, Walk, World};
 

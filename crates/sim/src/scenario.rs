@@ -25,6 +25,7 @@ use crate::laser::Laser;
 use crate::mapping::Mapping;
 use crate::navigator::Navigation;
 use crate::rollout::LocalPlanner;
+use crate::social_force::PeopleModelKind;
 use crate::world::{Person, Shape, StaticWorld, World, pt};
 
 /// A map file as the static world (instead of, or beside, shapes).
@@ -127,6 +128,11 @@ pub struct Scenario {
     /// People.
     #[serde(default)]
     pub people: Vec<Person>,
+    /// How the people move (default `Scripted`: their routes, blind to everything;
+    /// a file without this key means it): `SocialForce(( .. ))` for Helbing and Molnár's
+    /// social forces ([`crate::SocialForce`]), e.g. `SocialForce((sees_robot: false))`.
+    #[serde(default)]
+    pub people_model: PeopleModelKind,
     /// Start position, m.
     pub start: (f64, f64),
     /// Start heading, degrees counter-clockwise from +x.

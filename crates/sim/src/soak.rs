@@ -120,6 +120,7 @@ pub fn room(seed: u64, index: u64) -> Scenario {
             map: None,
         },
         people,
+        people_model: Default::default(),
         start,
         start_heading_deg: rng.random_range(-180.0..180.0),
         goal,

@@ -222,6 +222,9 @@ impl Check<'_> {
             self.positive(&format!("{f}.radius"), p.radius)?;
             self.non_negative(&format!("{f}.start"), p.start)?;
         }
+        if let Some((field, v, reason)) = sc.people_model.problem() {
+            return Err(self.fail(format!("people_model.{field}"), v, reason));
+        }
         Ok(())
     }
 }

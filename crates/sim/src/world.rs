@@ -31,8 +31,10 @@ pub enum Walk {
     BackAndForth,
 }
 
-/// A person: a disc on scripted way-points who does not react to the robot (as the
-/// paper's Gazebo 7 actors did not).
+/// A person: a disc with a route of way-points and a walking speed. The scenario's
+/// `people_model` says how they move: along the route blind to everything ([`crate::Scripted`],
+/// the default, as the paper's Gazebo 7 actors did), or toward each way-point in turn
+/// under social forces ([`crate::SocialForce`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Person {

@@ -7,4 +7,5 @@ mod laser;
 mod navigation;
 mod profile;
 mod rollout;
+mod social_force;
 mod tracking;

@@ -1,0 +1,637 @@
+//! People who react: Helbing and Molnár's social force model ([`SocialForce`]), and the
+//! scenario's choice of people model ([`PeopleModelKind`]).
+
+use hyplan_core::Point2;
+use nalgebra::Vector2;
+use serde::{Deserialize, Serialize};
+
+use crate::kinematics::Pose;
+use crate::people::{PeopleModel, Scripted};
+use crate::world::{Disc, Person, StaticWorld, Walk, World, pt};
+
+/// How much further to their left each person sees the others by default, m
+/// ([`SocialForceParams::keep_right`]): the deterministic tie-break of exactly symmetric
+/// encounters (see [`SocialForce`]).
+pub const KEEP_RIGHT: f64 = 1e-3;
+
+/// The longest integration step, s: a call whose time advanced more is split into equal
+/// sub-steps (the engine's 5 ms tick is one step).
+pub const MAX_STEP: f64 = 0.01;
+
+/// The social force model's parameters (scenario syntax), each defaulting to the paper's
+/// value (Helbing and Molnár 1995, the parameters of its simulations).
+///
+/// ```ron
+/// people_model: SocialForce((sees_robot: false)),
+/// ```
+///
+/// ```
+/// let p = sim::SocialForceParams::default();
+/// assert_eq!((p.relaxation_time, p.person_strength, p.person_range), (0.5, 2.1, 0.3));
+/// assert!(p.problem().is_none());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SocialForceParams {
+    /// Whether people see the robot (default true): it then repels them like a person of
+    /// the robot's body radius walking at its velocity; when false they walk into it (the
+    /// hard case for the robot).
+    pub sees_robot: bool,
+    /// Relaxation time `tau`, s (0.5).
+    pub relaxation_time: f64,
+    /// Strength of another person's repulsion `V0`, m^2/s^2 (2.1).
+    pub person_strength: f64,
+    /// Range of another person's repulsion `sigma`, m (0.3).
+    pub person_range: f64,
+    /// Time `dt` of the step `s = |v| dt` that stretches a walking person's repulsion
+    /// ahead of them, s (2: the paper's `dt`, "of the order of the step width" once
+    /// multiplied by a speed).
+    pub step_time: f64,
+    /// Strength of a wall's repulsion `U0`, m^2/s^2 (10).
+    pub wall_strength: f64,
+    /// Range of a wall's repulsion `R`, m (0.2).
+    pub wall_range: f64,
+    /// Field of view `2 phi`, degrees (200).
+    pub view_deg: f64,
+    /// Weight `c` of a repulsion from outside the field of view (0.5).
+    pub outside_view_weight: f64,
+    /// Speed cap as a multiple of the desired speed, `v_max / v0` (1.3).
+    pub max_speed_ratio: f64,
+    /// Distance from a way-point at which a person heads for the next one, m (0.5; ours,
+    /// the paper's people have one destination).
+    pub switch_distance: f64,
+    /// How much further to their left each person sees the others, m (ours, in place of
+    /// the paper's fluctuations; 0 for none): the side preference that breaks exactly
+    /// symmetric encounters toward passing on the right (see [`SocialForce`]).
+    pub keep_right: f64,
+}
+
+impl Default for SocialForceParams {
+    fn default() -> Self {
+        Self {
+            sees_robot: true,
+            relaxation_time: 0.5,
+            person_strength: 2.1,
+            person_range: 0.3,
+            step_time: 2.0,
+            wall_strength: 10.0,
+            wall_range: 0.2,
+            view_deg: 200.0,
+            outside_view_weight: 0.5,
+            max_speed_ratio: 1.3,
+            switch_distance: 0.5,
+            keep_right: KEEP_RIGHT,
+        }
+    }
+}
+
+impl SocialForceParams {
+    /// The first value out of range, as (field, value, what it must be); `None` when all
+    /// are valid.
+    ///
+    /// ```
+    /// let p = sim::SocialForceParams { person_range: 0.0, ..Default::default() };
+    /// assert_eq!(p.problem(), Some(("person_range", 0.0, "must be finite and > 0")));
+    /// ```
+    #[must_use]
+    pub fn problem(&self) -> Option<(&'static str, f64, &'static str)> {
+        let positive = [
+            ("relaxation_time", self.relaxation_time),
+            ("person_range", self.person_range),
+            ("wall_range", self.wall_range),
+            ("max_speed_ratio", self.max_speed_ratio),
+        ];
+        let non_negative = [
+            ("person_strength", self.person_strength),
+            ("step_time", self.step_time),
+            ("wall_strength", self.wall_strength),
+            ("switch_distance", self.switch_distance),
+            ("keep_right", self.keep_right),
+        ];
+        let c = self.outside_view_weight;
+        positive
+            .into_iter()
+            .find(|&(_, v)| !(v.is_finite() && v > 0.0))
+            .map(|(f, v)| (f, v, "must be finite and > 0"))
+            .or_else(|| {
+                non_negative
+                    .into_iter()
+                    .find(|&(_, v)| !(v.is_finite() && v >= 0.0))
+                    .map(|(f, v)| (f, v, "must be finite and >= 0"))
+            })
+            .or_else(|| {
+                (!(self.view_deg > 0.0 && self.view_deg <= 360.0)).then_some((
+                    "view_deg",
+                    self.view_deg,
+                    "must be > 0 and at most 360",
+                ))
+            })
+            .or_else(|| {
+                (!(0.0..=1.0).contains(&c)).then_some((
+                    "outside_view_weight",
+                    c,
+                    "must be between 0 and 1",
+                ))
+            })
+    }
+}
+
+/// Which model moves the people (a scenario's `people_model`, default `Scripted`).
+///
+/// ```ron
+/// people_model: SocialForce((sees_robot: true)),
+/// ```
+///
+/// ```
+/// use sim::{PeopleModelKind, SocialForceParams};
+/// assert_eq!(PeopleModelKind::default(), PeopleModelKind::Scripted);
+/// let kind = PeopleModelKind::SocialForce(SocialForceParams::default());
+/// assert!(kind.problem().is_none());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub enum PeopleModelKind {
+    /// Their scripted routes, blind to everything ([`Scripted`]).
+    #[default]
+    Scripted,
+    /// Helbing and Molnár's social forces ([`SocialForce`]).
+    SocialForce(SocialForceParams),
+}
+
+impl PeopleModelKind {
+    /// The model of `world`'s people among its static obstacles, with a robot of body
+    /// radius `robot_radius`, m.
+    #[must_use]
+    pub fn build<'w>(&self, world: &'w World, robot_radius: f64) -> Box<dyn PeopleModel + 'w> {
+        match *self {
+            Self::Scripted => Box::new(Scripted::new(&world.people)),
+            Self::SocialForce(params) => Box::new(SocialForce::new(
+                &world.people,
+                &world.statics,
+                robot_radius,
+                params,
+            )),
+        }
+    }
+
+    /// The first parameter out of range, as (field, value, what it must be).
+    #[must_use]
+    pub fn problem(&self) -> Option<(&'static str, f64, &'static str)> {
+        match self {
+            Self::Scripted => None,
+            Self::SocialForce(p) => p.problem(),
+        }
+    }
+}
+
+/// One person's state.
+#[derive(Debug, Clone, Copy)]
+struct Walker {
+    pos: Point2,
+    vel: Vector2<f64>,
+    /// The leg walked, in walking order (its end is the goal).
+    leg: usize,
+    /// The last desired direction (the field of view's axis while standing).
+    facing: Vector2<f64>,
+}
+
+/// People pushed by social forces (D. Helbing, P. Molnár, "Social force model for
+/// pedestrian dynamics", Phys. Rev. E 51, 4282, 1995): each walks their route at their
+/// speed, and keeps away from the others, from the walls and, if
+/// [`SocialForceParams::sees_robot`], from the robot.
+///
+/// Each person walks their [`Person`] route: the way-points are successive goals, the
+/// desired velocity is `speed` toward the next one. Their velocity `v` changes as
+///
+/// ```text
+/// dv/dt = (v0 e - v) / tau  +  sum over others b of w(e, -f_ab) f_ab  +  f_aB
+/// ```
+///
+/// - `(v0 e - v) / tau`: the pull toward the desired speed `v0` in the desired direction
+///   `e`, relaxed in `tau`;
+/// - `f_ab = -grad V(b)`, `V(b) = V0 exp(-b / sigma)`: the repulsion of another person
+///   (or of the robot), whose equipotentials are ellipses around the other's body
+///   stretched along their next step `s = |v_b| dt`:
+///   `2 b = sqrt((|r| + |r - s e_b|)^2 - s^2)`, `r` from the other to this person;
+/// - `w(e, -f) = 1` when the source lies within the field of view `2 phi` around `e`, else
+///   `c`;
+/// - `f_aB = -grad U`, `U(d) = U0 exp(-d / R)`, `d` the distance to the nearest wall point;
+///
+/// and the speed is capped at `v_max = 1.3 v0`. Parameters are the paper's
+/// ([`SocialForceParams`]). The paper's fluctuations and attractions (groups, shop
+/// windows) are left out: positions are a deterministic function of the scenario and of
+/// the robot's poses.
+///
+/// Where this model departs from the paper, and why (people walking at 1.3 m/s in the
+/// figures):
+///
+/// - **Bodies.** The paper's people are points. Here `r` is measured between body edges
+///   (the centre distance less both radii): with centre distances, two people of 0.25 m
+///   pressing on at 1.3 m/s settle where `V0 / sigma exp(-d / sigma) = v0 / tau`, at
+///   `d` = 0.30 m, inside each other's bodies; from the edges they stay 0.30 m apart.
+///   Walls keep the paper's centre distance (its `R` already holds a person 0.59 m from
+///   a wall they walk into). Overlapping bodies push apart at the potential's largest
+///   force, `V0 / sigma`, along the line of centres.
+/// - **Symmetry.** Two people walking head-on along one line feel no sideways force at
+///   all: the paper's fluctuations are what separates them, and without them they stop
+///   face to face. Instead each person sees the others `keep_right` ([`KEEP_RIGHT`],
+///   1 mm) further to their left than they are, so that an exact tie is broken toward
+///   passing on the right (a side preference); set it to 0 for the paper's forces alone.
+/// - **Arrival.** On a `Walk::Once` route the desired speed toward the last way-point is
+///   `min(v0, distance / tau)`, so that people stop at the end instead of circling it.
+///
+/// # Cost
+///
+/// One [`PeopleModel::people`] call with `n` people costs `n (n - 1)` pair forces (a
+/// square root, an exponential and a few products each), `n` robot forces and `n` calls
+/// of [`StaticWorld::nearest`] (a sweep of the static segments, or a ring of the loaded
+/// map's distance transform): O(n^2) + n nearest-wall queries, with no allocation beyond
+/// the returned discs. A call spanning more than [`MAX_STEP`] is integrated in equal
+/// sub-steps, each costing as much.
+///
+/// # Use
+///
+/// The state (positions, velocities, legs) advances by the time between successive
+/// calls, by semi-implicit Euler; a call at an earlier time than the last one starts over
+/// from the people's first way-points (a restarted episode). The robot's velocity, which
+/// stretches its repulsion ahead of it, is its displacement between calls over their
+/// interval. People wait at their first way-point until their `start` (they can still be
+/// pushed) and never go faster than `max_speed_ratio` times their `speed` (so a person of
+/// speed 0 stands like a post).
+///
+/// ```
+/// use sim::{PeopleModel, Person, Pose, SocialForce, SocialForceParams, StaticWorld, Walk};
+/// let walker = Person { path: vec![(0.0, 0.0), (10.0, 0.0)], speed: 1.0, start: 0.0,
+///     radius: 0.25, walk: Walk::Once };
+/// let people = [walker];
+/// let world = StaticWorld::default();
+/// let mut model = SocialForce::new(&people, &world, 0.2, SocialForceParams::default());
+/// let mut now = Vec::new();
+/// for tick in 0..=800 {
+///     now = model.people(tick as f64 * 0.005, Pose { x: 5.0, y: 5.0, phi: 0.0 });
+/// }
+/// // 4 s at 1 m/s, less about tau x speed lost getting up to speed.
+/// assert!((now[0].center.x - 3.5).abs() < 0.05, "{}", now[0].center.x);
+/// ```
+#[derive(Debug, Clone)]
+pub struct SocialForce<'w> {
+    params: SocialForceParams,
+    people: &'w [Person],
+    statics: &'w StaticWorld,
+    robot_radius: f64,
+    /// `cos phi`, the field of view's edge.
+    cos_half_view: f64,
+    walkers: Vec<Walker>,
+    accel: Vec<Vector2<f64>>,
+    /// Time of the last call and the robot's position then.
+    last: Option<(f64, Point2)>,
+}
+
+impl<'w> SocialForce<'w> {
+    /// `people` at their first way-points, standing, among `statics`, with a robot of body
+    /// radius `robot_radius`, m.
+    #[must_use]
+    pub fn new(
+        people: &'w [Person],
+        statics: &'w StaticWorld,
+        robot_radius: f64,
+        params: SocialForceParams,
+    ) -> Self {
+        let mut model = Self {
+            params,
+            people,
+            statics,
+            robot_radius,
+            cos_half_view: (0.5 * params.view_deg).to_radians().cos(),
+            walkers: Vec::with_capacity(people.len()),
+            accel: vec![Vector2::zeros(); people.len()],
+            last: None,
+        };
+        model.reset();
+        model
+    }
+
+    /// Everyone back at their first way-point, standing, facing their first leg.
+    fn reset(&mut self) {
+        self.walkers.clear();
+        self.walkers.extend(self.people.iter().map(|p| {
+            let first = p.path.first().map_or(Point2::origin(), |&q| pt(q));
+            let facing = p
+                .path
+                .get(1)
+                .map(|&q| pt(q) - first)
+                .and_then(|d| d.try_normalize(0.0))
+                .unwrap_or_else(|| Vector2::new(1.0, 0.0));
+            Walker {
+                pos: first,
+                vel: Vector2::zeros(),
+                leg: 0,
+                facing,
+            }
+        }));
+        self.last = None;
+    }
+
+    fn discs(&self) -> Vec<Disc> {
+        self.walkers
+            .iter()
+            .zip(self.people)
+            .map(|(w, p)| Disc {
+                center: w.pos,
+                radius: p.radius,
+            })
+            .collect()
+    }
+
+    /// The desired velocity of person `k` at time `t`, after moving on to the next leg
+    /// when near the current goal.
+    fn desired(&mut self, k: usize, t: f64) -> Vector2<f64> {
+        let people = self.people;
+        let p = &people[k];
+        let w = &mut self.walkers[k];
+        if t < p.start || p.speed <= 0.0 {
+            return Vector2::zeros();
+        }
+        let Some(mut goal) = goal_of(p, w.leg) else {
+            return Vector2::zeros();
+        };
+        let last = |leg| p.walk == Walk::Once && goal_of(p, leg + 1).is_none();
+        if !last(w.leg) && (pt(p.path[goal]) - w.pos).norm() < self.params.switch_distance {
+            w.leg = next_leg(p, w.leg);
+            goal = goal_of(p, w.leg).unwrap_or(goal);
+        }
+        let to_goal = pt(p.path[goal]) - w.pos;
+        let distance = to_goal.norm();
+        if distance <= 0.0 {
+            return Vector2::zeros();
+        }
+        let e = to_goal / distance;
+        w.facing = e;
+        let speed = if last(w.leg) {
+            p.speed.min(distance / self.params.relaxation_time)
+        } else {
+            p.speed
+        };
+        e * speed
+    }
+
+    /// The repulsion on a body at `at` of radius `radius` facing `facing`, of a body at
+    /// `other` of radius `other_radius` moving at `velocity` (the elliptical potential,
+    /// from the bodies' edges), weighted by the field of view.
+    fn person_force(
+        &self,
+        (at, radius, facing): (Point2, f64, Vector2<f64>),
+        (other, other_radius, velocity): (Point2, f64, Vector2<f64>),
+    ) -> Vector2<f64> {
+        let p = &self.params;
+        let peak = p.person_strength / p.person_range;
+        let left = Vector2::new(-facing.y, facing.x);
+        let r = at - other;
+        let centres = r.norm();
+        let contact = radius + other_radius;
+        let force = if centres <= contact {
+            // Overlapping bodies: the potential's largest push, along the line of centres.
+            let away = if centres > 0.0 { r / centres } else { -left };
+            away * peak
+        } else {
+            let gap = r * ((centres - contact) / centres) - left * p.keep_right;
+            let step = velocity * p.step_time;
+            let ahead = gap - step;
+            let (n1, n2, s) = (gap.norm(), ahead.norm(), step.norm());
+            let sum = n1 + n2;
+            let b = 0.5 * (sum * sum - s * s).max(0.0).sqrt();
+            // grad b = (|r| + |r - s e|) (r / |r| + (r - s e) / |r - s e|) / (4 b).
+            let unit = |v: Vector2<f64>, n: f64| if n > 0.0 { v / n } else { Vector2::zeros() };
+            let grad = if b > 1e-12 {
+                (unit(gap, n1) + unit(ahead, n2)) * (sum / (4.0 * b))
+            } else {
+                unit(gap, n1)
+            };
+            grad * (peak * (-b / p.person_range).exp())
+        };
+        force * self.view_weight(facing, force)
+    }
+
+    /// `w(e, -f)`: 1 when the source of `force` (opposite to it) lies within the field of
+    /// view around `facing`, else `c`.
+    fn view_weight(&self, facing: Vector2<f64>, force: Vector2<f64>) -> f64 {
+        if facing.dot(&-force) >= force.norm() * self.cos_half_view {
+            1.0
+        } else {
+            self.params.outside_view_weight
+        }
+    }
+
+    /// The repulsion of the nearest wall point on a body at `at` of radius `radius`
+    /// (from the centre).
+    fn wall_force(&self, at: Point2, radius: f64) -> Vector2<f64> {
+        let (d, q) = self.statics.nearest(at);
+        if !(d.is_finite() && d > 0.0) {
+            return Vector2::zeros();
+        }
+        let mut away = (at - q) / d;
+        // A centre within a body's radius of a boundary may be on its far side.
+        if d <= radius && self.statics.inside(at) {
+            away = -away;
+        }
+        let p = &self.params;
+        away * (p.wall_strength / p.wall_range * (-d / p.wall_range).exp())
+    }
+
+    /// One step of `h` seconds from time `t`, the robot at `robot` moving at
+    /// `robot_velocity`: every acceleration from the current state, then velocities
+    /// (capped) and positions (semi-implicit Euler).
+    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+        let n = self.walkers.len();
+        for k in 0..n {
+            let desired = self.desired(k, t);
+            let w = self.walkers[k];
+            let me = (w.pos, self.people[k].radius, w.facing);
+            let mut a = (desired - w.vel) / self.params.relaxation_time;
+            for (j, o) in self.walkers.iter().enumerate() {
+                if j != k {
+                    a += self.person_force(me, (o.pos, self.people[j].radius, o.vel));
+                }
+            }
+            if self.params.sees_robot {
+                a += self.person_force(me, (robot, self.robot_radius, robot_velocity));
+            }
+            a += self.wall_force(w.pos, self.people[k].radius);
+            self.accel[k] = a;
+        }
+        for ((w, p), a) in self.walkers.iter_mut().zip(self.people).zip(&self.accel) {
+            w.vel += a * h;
+            let cap = self.params.max_speed_ratio * p.speed.max(0.0);
+            let speed = w.vel.norm();
+            if speed > cap {
+                w.vel *= if speed > 0.0 { cap / speed } else { 0.0 };
+            }
+            w.pos += w.vel * h;
+        }
+    }
+}
+
+impl PeopleModel for SocialForce<'_> {
+    fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc> {
+        let here = Point2::new(robot.x, robot.y);
+        let Some((before, robot_before)) = self.last.filter(|&(before, _)| t >= before) else {
+            // The first call, or time went back (a restarted episode): start over.
+            self.reset();
+            self.last = Some((t, here));
+            return self.discs();
+        };
+        let dt = t - before;
+        if dt > 0.0 {
+            let robot_velocity = (here - robot_before) / dt;
+            let steps = (dt / MAX_STEP).ceil().max(1.0);
+            let h = dt / steps;
+            for i in 0..steps as u64 {
+                self.step(before + i as f64 * h, h, here, robot_velocity);
+            }
+        }
+        self.last = Some((t, here));
+        self.discs()
+    }
+}
+
+/// The way-point person `p` heads for on leg `leg`, in walking order (`None` past the end
+/// of a `Once` route, or for a route of fewer than two points).
+fn goal_of(p: &Person, leg: usize) -> Option<usize> {
+    let n = p.path.len();
+    if n < 2 {
+        return None;
+    }
+    match p.walk {
+        Walk::Once => (leg + 1 < n).then_some(leg + 1),
+        Walk::Loop => Some((leg + 1) % n),
+        Walk::BackAndForth => {
+            let round = 2 * (n - 1);
+            let m = (leg + 1) % round;
+            Some(if m < n { m } else { round - m })
+        }
+    }
+}
+
+/// The leg after `leg` (kept within one round of a cyclic walk, so it never overflows).
+fn next_leg(p: &Person, leg: usize) -> usize {
+    let n = p.path.len().max(2);
+    match p.walk {
+        Walk::Once => leg + 1,
+        Walk::Loop => (leg + 1) % n,
+        Walk::BackAndForth => (leg + 1) % (2 * (n - 1)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn person(path: &[(f64, f64)], walk: Walk) -> Person {
+        Person {
+            path: path.to_vec(),
+            speed: 1.0,
+            start: 0.0,
+            radius: 0.25,
+            walk,
+        }
+    }
+
+    /// Goals follow `Person::position`'s walking order.
+    #[test]
+    fn goals_in_walking_order() {
+        let path = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)];
+        let goals = |walk| {
+            let p = person(&path, walk);
+            let mut leg = 0;
+            let mut out = Vec::new();
+            for _ in 0..6 {
+                out.push(goal_of(&p, leg));
+                leg = next_leg(&p, leg);
+            }
+            out
+        };
+        let s = Some;
+        assert_eq!(goals(Walk::Once), [s(1), s(2), None, None, None, None]);
+        assert_eq!(goals(Walk::Loop), [s(1), s(2), s(0), s(1), s(2), s(0)]);
+        assert_eq!(
+            goals(Walk::BackAndForth),
+            [s(1), s(2), s(1), s(0), s(1), s(2)]
+        );
+    }
+
+    /// The elliptical potential's force: away from a standing body, as strong as
+    /// `V0 / sigma exp(-gap / sigma)`; ahead of a walking body it is stronger than behind.
+    #[test]
+    fn repulsion_is_the_papers() {
+        let statics = StaticWorld::default();
+        let people = [];
+        let params = SocialForceParams {
+            view_deg: 360.0,
+            ..SocialForceParams::default()
+        };
+        let m = SocialForce::new(&people, &statics, 0.2, params);
+        let facing = Vector2::new(1.0, 0.0);
+        let f = m.person_force(
+            (Point2::new(1.0, 0.0), 0.25, facing),
+            (Point2::origin(), 0.25, Vector2::zeros()),
+        );
+        let expected = 2.1 / 0.3 * (-0.5_f64 / 0.3).exp();
+        assert!((f.x - expected).abs() < 1e-3 * expected, "{f:?}");
+        assert!(f.y.abs() < 1e-2 * expected, "{f:?}");
+        let walking = Vector2::new(1.0, 0.0);
+        let ahead = m.person_force(
+            (Point2::new(3.0, 0.0), 0.25, facing),
+            (Point2::origin(), 0.25, walking),
+        );
+        let behind = m.person_force(
+            (Point2::new(-3.0, 0.0), 0.25, facing),
+            (Point2::origin(), 0.25, walking),
+        );
+        assert!(ahead.norm() > 2.0 * behind.norm(), "{ahead:?} {behind:?}");
+        // Exactly head-on, the tie-break pushes toward the right (-y when facing +x).
+        let toward = m.person_force(
+            (Point2::new(-2.0, 0.0), 0.25, facing),
+            (Point2::origin(), 0.25, -walking),
+        );
+        assert!(toward.y < -1.0, "{toward:?}");
+    }
+
+    /// Outside the field of view a repulsion counts `c` times.
+    #[test]
+    fn field_of_view_weights() {
+        let statics = StaticWorld::default();
+        let people = [];
+        let m = SocialForce::new(&people, &statics, 0.2, SocialForceParams::default());
+        let facing = Vector2::new(1.0, 0.0);
+        let at = (Point2::new(1.0, 0.0), 0.25, facing);
+        let front = m.person_force(at, (Point2::new(2.0, 0.0), 0.25, Vector2::zeros()));
+        let back = m.person_force(at, (Point2::origin(), 0.25, Vector2::zeros()));
+        assert!((front.norm() - 2.0 * back.norm()).abs() < 1e-9 * front.norm());
+    }
+
+    #[test]
+    fn parameters_are_checked() {
+        let bad = |p: SocialForceParams| p.problem().map(|(f, _, _)| f);
+        let d = SocialForceParams::default();
+        assert_eq!(bad(d), None);
+        let p = SocialForceParams {
+            relaxation_time: f64::NAN,
+            ..d
+        };
+        assert_eq!(bad(p), Some("relaxation_time"));
+        let p = SocialForceParams {
+            wall_strength: -1.0,
+            ..d
+        };
+        assert_eq!(bad(p), Some("wall_strength"));
+        let p = SocialForceParams {
+            view_deg: 400.0,
+            ..d
+        };
+        assert_eq!(bad(p), Some("view_deg"));
+        let p = SocialForceParams {
+            outside_view_weight: 1.5,
+            ..d
+        };
+        assert_eq!(bad(p), Some("outside_view_weight"));
+    }
+}
