@@ -5,7 +5,7 @@
 //!
 //! | topic | type | when |
 //! |---|---|---|
-//! | `/map` | `nav_msgs/msg/OccupancyGrid` | the built map, at map updates that changed it |
+//! | `/map` | `nav_msgs/msg/OccupancyGrid` | the known map once at the start (a run with `known_map`), else the built map at map updates that changed it |
 //! | `/scan` | `sensor_msgs/msg/LaserScan` | every scan (the laser's rate; one in `n` with [`BagRecorder::with_scan_every`]); REP 117 ranges |
 //! | `/odom` | `nav_msgs/msg/Odometry` | every scan, the pose the trace records |
 //! | `/tf` | `tf2_msgs/msg/TFMessage` | with `/odom`: map->odom, odom->base_link, base_link->laser |
@@ -36,6 +36,7 @@ use hyplan_core::Point2;
 
 use crate::engine::{Observer, Sim, TICKS_PER_SECOND, TickInfo};
 use crate::laser::Scan;
+use crate::mapping::{FREE, OCCUPIED};
 use crate::navigator::NavEvent;
 
 /// Nanoseconds per tick.
@@ -184,8 +185,25 @@ impl BagRecorder {
         }
     }
 
+    /// The map the robot navigates on as a map server publishes it: with the map known
+    /// (`known_map`), the known static world once, on the built map's grid (100 where it
+    /// reaches into a cell, 0 elsewhere); else the built map whenever an update changed
+    /// it, as gmapping does.
     fn publish_map(&mut self, sim: &Sim<'_>) {
-        let values = sim.map.ros_values();
+        let values = if sim.scenario.known_map {
+            if !self.map.is_empty() {
+                return;
+            }
+            let frame = sim.map.frame();
+            let (_, _, cells) =
+                crate::costmap::rasterize(sim.world.bounds, &sim.world.mapped, frame.resolution);
+            cells
+                .iter()
+                .map(|&c| if c { OCCUPIED } else { FREE })
+                .collect()
+        } else {
+            sim.map.ros_values()
+        };
         if values == self.map {
             return;
         }
@@ -412,6 +430,9 @@ impl Observer for BagRecorder {
     }
 
     fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
+        if sim.scenario.known_map && self.map.is_empty() {
+            self.publish_map(sim);
+        }
         // What the goal source shows, every SHOW_EVERY ticks and at the end.
         if self.shown_tick.is_none_or(|t| info.tick >= t + SHOW_EVERY) || info.stopped {
             self.shown_tick = Some(info.tick);
