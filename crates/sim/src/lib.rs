@@ -133,8 +133,8 @@ pub use people::{PeopleModel, Scripted};
 pub use planner::{GlobalPlanner, PlanScratch};
 pub use profile::Profile;
 pub use record::{
-    Contact, ContactClass, Event, EventKind, OutputError, Row, Summary, Trace, animation_scene,
-    trajectory_scene, velocity_svg, write_all,
+    Contact, ContactClass, Event, EventKind, OutputError, PERSONAL_SPACE, Row, Summary, Trace,
+    animation_scene, trajectory_scene, velocity_svg, write_all,
 };
 pub use rollout::{LocalPlanner, Rollout, RolloutController};
 pub use run::{Outcome, Recorder, run, run_with};

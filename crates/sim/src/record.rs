@@ -83,6 +83,15 @@ pub struct Event {
     pub kind: EventKind,
 }
 
+/// A person's personal space, m from the edge of their body: the near phase of Hall's
+/// personal distance, 0.45-0.75 m (E. T. Hall, *The Hidden Dimension*, 1966, ch. X),
+/// the zone crowd-navigation work counts the robot's intrusions into.
+///
+/// ```
+/// assert_eq!(sim::PERSONAL_SPACE, 0.45);
+/// ```
+pub const PERSONAL_SPACE: f64 = 0.45;
+
 /// Totals of a run.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Summary {
@@ -110,6 +119,10 @@ pub struct Summary {
     pub min_obstacle_distance: f64,
     /// Smallest gap to a person, m.
     pub min_person_distance: Option<f64>,
+    /// Time the robot's body spent within [`PERSONAL_SPACE`] of a person's edge, s (crowd
+    /// navigation's intrusion time; 0 without people).
+    #[serde(default)]
+    pub personal_space_time: f64,
     /// Contacts the robot caused.
     pub contacts_at_fault: usize,
     /// Contacts while the robot stood still.

@@ -76,6 +76,8 @@ pub struct Recorder {
     /// Where the exact distance to the static world was last taken, and its value.
     near: Option<(Point2, f64)>,
     path_version: u64,
+    /// Ticks with the body within [`crate::PERSONAL_SPACE`] of a person's edge.
+    personal_ticks: u64,
 }
 
 impl Recorder {
@@ -154,6 +156,7 @@ impl Recorder {
                 .iter()
                 .filter_map(|r| r.d_person)
                 .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.min(d)))),
+            personal_space_time: crate::engine::time_of(self.personal_ticks),
             contacts_at_fault: of_class(ContactClass::AtFault),
             contacts_robot_stopped: of_class(ContactClass::RobotStopped),
             contacts_not_approaching: of_class(ContactClass::NotApproaching),
@@ -231,6 +234,9 @@ impl Observer for Recorder {
                 self.contact(t, format!("person {k}"), classify(p.center));
             }
             self.in_contact_person[k] = touching;
+        }
+        if d_person < crate::record::PERSONAL_SPACE {
+            self.personal_ticks += 1;
         }
         if record {
             let w = kinematics::wheel_speeds(&robot, twist);

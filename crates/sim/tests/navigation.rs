@@ -306,3 +306,42 @@ proptest::proptest! {
         }
     }
 }
+
+#[test]
+fn time_in_personal_space_counts_the_pass_by_a_person() {
+    // The robot drives along y = 1.5 past a person standing at (3, 0.7): centres 0.8 m
+    // apart at the closest, a gap of 0.8 - 0.25 - 0.178 = 0.372 m, inside the 0.45 m of
+    // personal space for the 0.72 m of route where the centres are within 0.878 m.
+    let hall = |people: &str| {
+        format!(
+            r#"SimScenario(name: "pass-by", world: (size: (6.0, 3.0)), people: [{people}],
+                start: (0.5, 1.5), goal: (5.5, 1.5))"#
+        )
+    };
+    let path = Path::new("pass-by.ron");
+    let run = |text: String| {
+        let scenario = Scenario::parse(&text, path).unwrap();
+        let world = scenario.build_world(path).unwrap();
+        sim::run(&scenario, &world, 1, GlobalPlanner::Dijkstra)
+            .trace
+            .summary
+    };
+    let alone = run(hall(""));
+    assert!(alone.reached);
+    assert_eq!(alone.personal_space_time, 0.0);
+    let passed = run(hall(
+        "(path: [(3.0, 0.7), (3.0, 0.2)], speed: 0.5, start: 1000.0)",
+    ));
+    assert!(passed.reached, "{passed:?}");
+    let gap = passed.min_person_distance.unwrap();
+    assert!(gap > 0.0 && gap < sim::PERSONAL_SPACE, "{passed:?}");
+    // Passing at 0.3 m/s with the closest centre distance c = gap + 0.428, the centres
+    // are within 0.878 m over 2 sqrt(0.878^2 - c^2) of route.
+    let c = gap + 0.25 + 0.178;
+    let inside = 2.0 * (0.878_f64.powi(2) - c * c).sqrt() / 0.3;
+    assert!(
+        (passed.personal_space_time - inside).abs() < 0.1 * inside,
+        "{} s inside, {inside} s expected: {passed:?}",
+        passed.personal_space_time
+    );
+}

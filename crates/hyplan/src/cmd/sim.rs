@@ -147,14 +147,16 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         m.seed
     )?;
     outln!(
-        "distance {:.2} m, stops {}, re-plans {}, plan failures {}, min gap obstacle {:.3} m, min gap person {}",
+        "distance {:.2} m, stops {}, re-plans {}, plan failures {}, min gap obstacle {:.3} m, min gap person {}, within {} m of a person {:.2} s",
         m.distance,
         m.stops,
         m.replans,
         m.failures,
         m.min_obstacle_distance,
         m.min_person_distance
-            .map_or("-".to_string(), |d| format!("{d:.3} m"))
+            .map_or("-".to_string(), |d| format!("{d:.3} m")),
+        sim::PERSONAL_SPACE,
+        m.personal_space_time
     )?;
     outln!(
         "contacts: {} at fault, {} with the robot stopped, {} other",
