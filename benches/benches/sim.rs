@@ -9,6 +9,12 @@
 //! robot driven by its caller (`sim::Driven`, the loop under `hyplan.gym.NavEnv`), on a
 //! 1 m circle near the start of scenario 3, with the person walking.
 //!
+//! `crowd/004-nav-3-person`: scenario 3's run with nobody in the hall, and with 20 people
+//! walking back and forth across it at 1.3 m/s under social forces (who see the robot):
+//! issue 29 asks the crowd to cost at most twice the run without people. The two runs
+//! differ in what the robot does too (it stops and re-plans for people), so the bench
+//! also prints the cost per simulated second of each.
+//!
 //! `laser-cast/explore-22m`: one full scan (720 beams, exact) from each of 400 poses on a
 //! grid over the free space of the 22 m exploration world, the hot path of every run.
 
@@ -85,6 +91,49 @@ fn driven_step(c: &mut Criterion) {
     );
 }
 
+fn crowd(c: &mut Criterion) {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/3-person.ron");
+    let (mut empty, _) = Scenario::load(&file).expect("scenario 3 loads");
+    empty.people.clear();
+    let mut crowd = empty.clone();
+    // Ten lanes each way across the hall below the dividing wall, staggered in time.
+    crowd.people = (0..20)
+        .map(|k| {
+            let x = 1.0 + 1.0 * f64::from(k % 10) + 0.5 * f64::from(k / 10);
+            let (a, b) = if k % 2 == 0 { (1.0, 10.0) } else { (10.0, 1.0) };
+            sim::Person {
+                path: vec![(x, a), (x, b)],
+                speed: 1.3,
+                start: 0.3 * f64::from(k),
+                radius: 0.25,
+                walk: sim::Walk::BackAndForth,
+            }
+        })
+        .collect();
+    crowd.people_model = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
+    for (name, scenario) in [("nobody", &empty), ("20-people", &crowd)] {
+        let world = scenario.build_world(&file).expect("the hall builds");
+        let m = sim::run(scenario, &world, 0, GlobalPlanner::Dijkstra)
+            .trace
+            .summary;
+        eprintln!(
+            "crowd/{name}: {:.1} s simulated, reached {}, {} stops, {} at-fault contacts, {:.2} s within {} m of a person",
+            m.end_time,
+            m.reached,
+            m.stops,
+            m.contacts_at_fault,
+            m.personal_space_time,
+            sim::PERSONAL_SPACE
+        );
+        c.bench_function(
+            &format!("crowd/004-nav-3-person/{name}/{:.1}s_simulated", m.end_time),
+            |b| {
+                b.iter(|| sim::run(scenario, &world, 0, GlobalPlanner::Dijkstra));
+            },
+        );
+    }
+}
+
 fn laser_cast(c: &mut Criterion) {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/explore-22m.ron");
     let (scenario, world) = Scenario::load(&file).expect("the exploration scenario loads");
@@ -120,7 +169,7 @@ mod entry {
     criterion::criterion_group! {
         name = benches;
         config = criterion::Criterion::default().sample_size(10);
-        targets = super::scenario3, super::driven_step, super::laser_cast
+        targets = super::scenario3, super::driven_step, super::crowd, super::laser_cast
     }
 }
 criterion_main!(entry::benches);
