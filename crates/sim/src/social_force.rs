@@ -109,16 +109,7 @@ impl SocialForceParams {
             ("keep_right", self.keep_right),
         ];
         let c = self.outside_view_weight;
-        positive
-            .into_iter()
-            .find(|&(_, v)| !(v.is_finite() && v > 0.0))
-            .map(|(f, v)| (f, v, "must be finite and > 0"))
-            .or_else(|| {
-                non_negative
-                    .into_iter()
-                    .find(|&(_, v)| !(v.is_finite() && v >= 0.0))
-                    .map(|(f, v)| (f, v, "must be finite and >= 0"))
-            })
+        crate::validate::first_out_of_range(&positive, &non_negative)
             .or_else(|| {
                 (!(self.view_deg > 0.0 && self.view_deg <= 360.0)).then_some((
                     "view_deg",

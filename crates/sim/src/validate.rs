@@ -244,3 +244,22 @@ pub(crate) fn validate_values(sc: &Scenario, path: &Path) -> Checked {
             reason,
         })
 }
+
+/// The first of `positive` that is not finite and > 0, else the first of `non_negative`
+/// that is not finite and >= 0, as (field, value, what it must be): the parameter
+/// structs' common checks.
+pub(crate) fn first_out_of_range(
+    positive: &[(&'static str, f64)],
+    non_negative: &[(&'static str, f64)],
+) -> Option<(&'static str, f64, &'static str)> {
+    positive
+        .iter()
+        .find(|&&(_, v)| !(v.is_finite() && v > 0.0))
+        .map(|&(f, v)| (f, v, "must be finite and > 0"))
+        .or_else(|| {
+            non_negative
+                .iter()
+                .find(|&&(_, v)| !(v.is_finite() && v >= 0.0))
+                .map(|&(f, v)| (f, v, "must be finite and >= 0"))
+        })
+}

@@ -118,16 +118,7 @@ impl Rollout {
             ("vx_samples", self.vx_samples),
             ("vtheta_samples", self.vtheta_samples),
         ];
-        positive
-            .into_iter()
-            .find(|&(_, v)| !(v.is_finite() && v > 0.0))
-            .map(|(f, v)| (f, v, "must be finite and > 0"))
-            .or_else(|| {
-                non_negative
-                    .into_iter()
-                    .find(|&(_, v)| !(v.is_finite() && v >= 0.0))
-                    .map(|(f, v)| (f, v, "must be finite and >= 0"))
-            })
+        crate::validate::first_out_of_range(&positive, &non_negative)
             .or_else(|| {
                 samples
                     .into_iter()
