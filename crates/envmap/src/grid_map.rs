@@ -53,6 +53,12 @@ pub struct GridMap {
     /// Distance fields of the blocked cells for `blocked_from` = Risk and = Forbidden,
     /// computed on the first `clearance` query; reset when zones change.
     clearance_fields: [OnceLock<DistanceField>; 2],
+    /// The stride tables of those fields ([`DistanceField::strides`]), made on first use;
+    /// reset when zones change.
+    stride_tables: [OnceLock<Vec<u8>>; 2],
+    /// Cells swept by edge checks since the zones last changed: past a share of the map,
+    /// the checks make the stride table ([`crate::workspace`]).
+    pub(crate) edge_work: crate::workspace::EdgeWork,
     /// Components of the passable cells and the runs the "no path" proof needs, computed
     /// on the first check ([`crate::connectivity`]); reset when zones change.
     connectivity: crate::connectivity::Cache,
@@ -127,6 +133,8 @@ impl GridMap {
             zones: vec![zone; n],
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
+            stride_tables: Default::default(),
+            edge_work: Default::default(),
             connectivity: Default::default(),
         })
     }
@@ -163,6 +171,8 @@ impl GridMap {
             zones,
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
+            stride_tables: Default::default(),
+            edge_work: Default::default(),
             connectivity: Default::default(),
         }
         .with_frame(resolution, origin)
@@ -247,6 +257,8 @@ impl GridMap {
     /// Mutable access to the zones (row-major from the bottom row).
     pub fn zones_mut(&mut self) -> &mut [Zone] {
         self.clearance_fields = Default::default();
+        self.stride_tables = Default::default();
+        self.edge_work = Default::default();
         self.connectivity = Default::default();
         &mut self.zones
     }
@@ -271,6 +283,8 @@ impl GridMap {
     pub fn set_cell_zone(&mut self, i: usize, j: usize, zone: Zone) {
         if i < self.width && j < self.height {
             self.clearance_fields = Default::default();
+            self.stride_tables = Default::default();
+            self.edge_work = Default::default();
             self.connectivity = Default::default();
             self.zones[j * self.width + i] = zone;
         }
@@ -363,6 +377,50 @@ impl GridMap {
             self.clearance_fields[k]
                 .get_or_init(|| distance_transform(&Mask::from_zones_at_least(self, zone))),
         )
+    }
+
+    /// The stride table of the cells whose zone is at least `zone`
+    /// ([`DistanceField::strides`] of [`distance_from`](Self::distance_from): a byte per
+    /// cell, row-major from the bottom row, 0 on those cells, otherwise 1 + the whole
+    /// cells a segment may run from any point of the cell without touching one), made
+    /// once and cached (`None` for `Zone::Free`). Ray marches and edge checks stride
+    /// through open space with it.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::Zone;
+    /// let map = GridMap::from_ascii("#.....")?;
+    /// let strides = map.strides_from(Zone::Forbidden).unwrap();
+    /// assert_eq!(strides, &[0, 1, 1, 2, 3, 4]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn strides_from(&self, zone: Zone) -> Option<&[u8]> {
+        let k = match zone {
+            Zone::Free => return None,
+            Zone::Risk => 0,
+            Zone::Forbidden => 1,
+        };
+        let field = self.distance_from(zone)?;
+        Some(self.stride_tables[k].get_or_init(|| field.strides()))
+    }
+
+    /// The blocked cells' stride table if it is made already
+    /// ([`blocked_strides`](Self::blocked_strides) makes it).
+    pub(crate) fn made_blocked_strides(&self) -> Option<&[u8]> {
+        let k = match self.blocked_from {
+            Zone::Free => return None,
+            Zone::Risk => 0,
+            Zone::Forbidden => 1,
+        };
+        self.stride_tables[k].get().map(Vec::as_slice)
+    }
+
+    /// [`strides_from`](Self::strides_from) the cells that block motion under the current
+    /// [`blocked_from`](GridMap::blocked_from).
+    #[must_use]
+    pub fn blocked_strides(&self) -> Option<&[u8]> {
+        self.strides_from(self.blocked_from)
     }
 
     /// A lower bound on the distance, world units, from `p` to the nearest cell that

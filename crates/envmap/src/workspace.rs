@@ -1,5 +1,7 @@
 //! `Workspace` for `GridMap`: exact cell-level collision queries.
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use hyplan_core::{Bounds, PlanError, Point2, Workspace, Zone};
 
 use crate::GridMap;
@@ -34,10 +36,11 @@ impl GridMap {
         let (ua, va) = ((a.x - o.x) / r, (a.y - o.y) / r);
         let (ub, vb) = ((b.x - o.x) / r, (b.y - o.y) / r);
         let (w, h) = (self.width(), self.height());
+        let all = (f64::NEG_INFINITY, f64::INFINITY);
         if (ub - ua).abs() >= (vb - va).abs() {
-            sweep(ua, va, ub, vb, w, h, &mut visit)
+            sweep(ua, va, ub, vb, (w, h), all, &mut visit)
         } else {
-            sweep(va, ua, vb, ub, h, w, |r, c| visit(c, r))
+            sweep(va, ua, vb, ub, (h, w), all, |r, c| visit(c, r))
         }
     }
 
@@ -59,12 +62,75 @@ impl GridMap {
     /// assert!(map.segment_free_cells(Point2::new(0.5, 0.5), Point2::new(1.5, 0.5)));
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
+    ///
+    /// # Cost
+    ///
+    /// Once the map's stride table is made ([`blocked_strides`](Self::blocked_strides):
+    /// call it to prepare the map, or let the edge checks make it once they have swept as
+    /// many columns as the map has cells), the open stretches at both ends of the segment are
+    /// crossed in strides of up to 253 cells, and only the columns left between are
+    /// swept, with the same answer.
     #[must_use]
     pub fn segment_free_cells(&self, a: Point2, b: Point2) -> bool {
         let bounds = self.bounds();
-        bounds.contains(a)
-            && bounds.contains(b)
-            && self.segment_cells(a, b, |i, j| self.cell_free(i, j))
+        if !(bounds.contains(a) && bounds.contains(b)) {
+            return false;
+        }
+        let r = self.resolution();
+        let o = self.origin();
+        let (ua, va) = ((a.x - o.x) / r, (a.y - o.y) / r);
+        let (ub, vb) = ((b.x - o.x) / r, (b.y - o.y) / r);
+        let (w, h) = (self.width(), self.height());
+        let major_u = (ub - ua).abs() >= (vb - va).abs();
+        // Where along the major axis the columns that need a sweep lie.
+        let mut middle = (f64::NEG_INFINITY, f64::INFINITY);
+        let (du, dv) = (ub - ua, vb - va);
+        let len_sq = du * du + dv * dv;
+        // Segments within a few cells are swept at once: no stride would pay.
+        if len_sq > 9.0
+            && let Some(strides) = self.edge_strides(du.abs().max(dv.abs()))
+        {
+            let len = len_sq.sqrt();
+            let (eu, ev) = (du / len, dv / len);
+            let from_a = open_stretch(strides, (w, h), (ua, va), (eu, ev), len);
+            if from_a >= len {
+                return true;
+            }
+            let from_b = open_stretch(strides, (w, h), (ub, vb), (-eu, -ev), len - from_a);
+            if from_a + from_b >= len {
+                return true;
+            }
+            let (pa, dp) = if major_u { (ua, du) } else { (va, dv) };
+            let (ma, mb) = (pa + from_a * dp / len, pa + dp - from_b * dp / len);
+            middle = (ma.min(mb), ma.max(mb));
+        }
+        let free = |i, j| self.cell_free(i, j);
+        if major_u {
+            sweep(ua, va, ub, vb, (w, h), middle, free)
+        } else {
+            sweep(va, ua, vb, ub, (h, w), middle, |r, c| free(c, r))
+        }
+    }
+
+    /// The stride table edge checks may use, counting `cells` of sweep toward making it
+    /// when it is not made.
+    #[inline]
+    fn edge_strides(&self, cells: f64) -> Option<&[u8]> {
+        if let Some(t) = self.made_blocked_strides() {
+            return Some(t);
+        }
+        // A relaxed load and store, not an atomic add: a count lost to a race between
+        // threads only delays the table.
+        let work = self.edge_work.0.load(Ordering::Relaxed) + cells as u64 + 1;
+        self.edge_work.0.store(work, Ordering::Relaxed);
+        // Making the table costs about two column sweeps a cell, so it is made once the
+        // checks have swept as many columns as the map has cells: at most about twice the
+        // sweeping it saves, on a map edited between few checks.
+        if work > (self.width() * self.height()) as u64 {
+            self.blocked_strides()
+        } else {
+            None
+        }
     }
 
     /// The most dangerous zone among the cells whose closed squares contain `p`
@@ -88,16 +154,57 @@ impl GridMap {
 /// the sweep, never a gap a path could use (1e-9 cells is a nanometre on a 1 m grid).
 pub const TOUCH_TOLERANCE: f64 = 1e-9;
 
+/// Cells swept by edge checks since a map's zones last changed (see
+/// [`GridMap::segment_free_cells`]); a clone starts again from zero.
+#[derive(Debug, Default)]
+pub(crate) struct EdgeWork(AtomicU64);
+
+impl Clone for EdgeWork {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+/// How far, in cells along the unit direction `e`, the segment from `p` (cell units,
+/// inside the `w x h` map) is known to touch no blocked square, by strides of the map's
+/// stride table; stops at `len` or where the strides get short (under two cells, where
+/// the sweep is as cheap).
+#[inline]
+fn open_stretch(
+    strides: &[u8],
+    (w, h): (usize, usize),
+    (pu, pv): (f64, f64),
+    (eu, ev): (f64, f64),
+    len: f64,
+) -> f64 {
+    let mut t = 0.0;
+    loop {
+        // A point on the map's upper or right edge is in the last cell, whose stride
+        // holds for its closed square.
+        let i = ((pu + eu * t) as usize).min(w - 1);
+        let j = ((pv + ev * t) as usize).min(h - 1);
+        let stride = strides[j * w + i];
+        if stride < 3 {
+            return t;
+        }
+        t += f64::from(stride - 1);
+        if t >= len {
+            return len;
+        }
+    }
+}
+
 /// Sweeps the closed segment (p0, q0)-(p1, q1) along the major axis p, with
 /// |p1 - p0| >= |q1 - q0|, visiting (column, row) pairs of the closed unit cells it meets
-/// within `[0, np) x [0, nq)`.
+/// within `[0, np) x [0, nq)`, in the columns from the one before `middle.0`'s to the one
+/// after `middle.1`'s (the others are known free; all: infinite bounds).
 fn sweep(
     p0: f64,
     q0: f64,
     p1: f64,
     q1: f64,
-    np: usize,
-    nq: usize,
+    (np, nq): (usize, usize),
+    middle: (f64, f64),
     mut visit: impl FnMut(usize, usize) -> bool,
 ) -> bool {
     let (lo, hi) = (p0.min(p1), p0.max(p1));
@@ -120,8 +227,9 @@ fn sweep(
     };
     let tol = TOUCH_TOLERANCE;
     // Closed strip [c, c+1] meets [lo, hi] iff ceil(lo) - 1 <= c <= floor(hi).
-    let c_first = clamp_index((lo - tol).ceil() - 1.0, np);
-    let c_last = clamp_index((hi + tol).floor(), np);
+    let c_first =
+        clamp_index((lo - tol).ceil() - 1.0, np).max(clamp_index(middle.0.floor() - 1.0, np));
+    let c_last = clamp_index((hi + tol).floor(), np).min(clamp_index(middle.1.floor() + 1.0, np));
     for c in c_first..=c_last {
         let s0 = lo.max(c as f64).min(hi);
         let s1 = hi.min(c as f64 + 1.0).max(lo);

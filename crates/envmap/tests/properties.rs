@@ -292,3 +292,70 @@ fn inflate_refuses_what_costs_refuses() {
         assert!(e.contains("resolution"), "{e}");
     }
 }
+
+/// A map up to 60 x 60 with a few blocked cells in open space (where the strides run up
+/// to them) or up to 30 % blocked, some of the rest high-risk.
+fn open_map_strategy() -> impl Strategy<Value = (Mask, Vec<bool>)> {
+    let density = prop_oneof![0.0..0.006f64, 0.0..0.3f64];
+    (4usize..60, 4usize..60, density).prop_flat_map(|(w, h, density)| {
+        (
+            proptest::collection::vec(proptest::bool::weighted(density), w * h)
+                .prop_map(move |cells| Mask::from_cells(w, h, cells).unwrap()),
+            proptest::collection::vec(proptest::bool::weighted(0.01), 64),
+        )
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// With the stride table made, `segment_free` still answers exactly which closed
+    /// cells the segment touches (corners and grid lines included: end points on a 1/8
+    /// grid), against the brute-force test of every cell.
+    #[test]
+    fn strided_segment_free_matches_exact_cell_test(
+        ((mask, risk), segments, avoid) in open_map_strategy().prop_flat_map(|(m, r)| {
+            let (w, h) = (m.width(), m.height());
+            let point = ((0..=w * 8).prop_map(|k| k as f64 / 8.0), (0..=h * 8).prop_map(|k| k as f64 / 8.0));
+            (Just((m, r)), proptest::collection::vec((point.clone(), point), 1..24), any::<bool>())
+        })
+    ) {
+        let mut map = zone_map(&mask, &risk);
+        if avoid {
+            map = map.avoiding_risk();
+        }
+        prop_assert!(map.blocked_strides().is_some());
+        for (a, b) in segments {
+            let want = (0..map.height()).all(|j| {
+                (0..map.width()).all(|i| !segment_meets_cell(a, b, i, j) || map.cell_free(i, j))
+            });
+            prop_assert_eq!(
+                map.segment_free(Point2::new(a.0, a.1), Point2::new(b.0, b.1)), want,
+                "{:?} -> {:?}", a, b
+            );
+        }
+    }
+
+    /// In a world frame whose cell edges are not exact in binary (0.05 m cells, origin
+    /// (-3.3, 7.1)), the strided check equals the plain sweep on a map that has no table.
+    #[test]
+    fn strided_segment_free_equals_the_sweep_in_a_world_frame(
+        ((mask, risk), segments) in open_map_strategy().prop_flat_map(|(m, r)| {
+            let (w, h) = (m.width() as f64, m.height() as f64);
+            let point = (0.0..=w, 0.0..=h);
+            (Just((m, r)), proptest::collection::vec((point.clone(), point), 1..24))
+        })
+    ) {
+        let plain = zone_map(&mask, &risk).with_frame(0.05, Point2::new(-3.3, 7.1)).unwrap();
+        let strided = plain.clone();
+        prop_assert!(strided.blocked_strides().is_some());
+        let world = |p: (f64, f64)| Point2::new(-3.3 + p.0 * 0.05, 7.1 + p.1 * 0.05);
+        for (a, b) in segments {
+            let (a, b) = (world(a), world(b));
+            let want = plain.bounds().contains(a)
+                && plain.bounds().contains(b)
+                && plain.segment_cells(a, b, |i, j| plain.cell_free(i, j));
+            prop_assert_eq!(strided.segment_free_cells(a, b), want, "{:?} -> {:?}", a, b);
+        }
+    }
+}

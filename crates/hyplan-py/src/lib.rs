@@ -166,6 +166,7 @@ fn planner_info<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyDict>
     d.set_item("wants_default_step", caps.wants_default_step)?;
     d.set_item("goal_bias", caps.goal_bias)?;
     d.set_item("own_goal_radius", caps.own_goal_radius)?;
+    d.set_item("checks_segments", caps.checks_segments)?;
     d.set_item("deterministic", caps.deterministic)?;
     let params = PyList::empty(py);
     for p in c.parameters() {

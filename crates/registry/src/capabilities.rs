@@ -43,6 +43,9 @@ pub struct Capabilities {
     /// Runs only on an `envmap::GridMap` (the grid searches, and the hybrids whose
     /// refinement is a grid search).
     pub grid_only: bool,
+    /// Tests segments against the map (edge checks, lines of sight): on a grid map, its
+    /// one-time preparation (`GridMap::blocked_strides`) makes those tests cheaper.
+    pub checks_segments: bool,
     /// Pays for the risk band (its cost counts the length inside Risk) instead of only
     /// avoiding what the map blocks.
     pub uses_risk: bool,
@@ -82,6 +85,7 @@ impl PlannerKind {
         Capabilities {
             family,
             grid_only: search || matches!(self, K::RrtAstarRefine | K::HybridRrtAstar),
+            checks_segments: !matches!(self, K::Astar | K::Jps | K::Dijkstra),
             uses_risk: self == K::SafeRrtStar,
             has_step: !search && self != K::GaPchip,
             wants_default_step: matches!(family, Family::Sampling)

@@ -5,8 +5,8 @@
 //! keeps them as the boundary segments between forbidden and other cells (the grid's
 //! outside counts as not forbidden). A ray meets that boundary first where it first
 //! changes between a forbidden and another cell, so casting it means finding that cell:
-//! a march over a byte per cell ([`strides`], from the grid's exact distance transform,
-//! cached with the world) crosses open space in strides that cannot reach a forbidden
+//! a march over a byte per cell ([`GridMap::strides_from`], from the grid's exact distance
+//! transform, cached with the map) crosses open space in strides that cannot reach a forbidden
 //! cell from any point of the cell they start in, and a cell-by-cell traversal
 //! (Amanatides-Woo) finishes the last cells exactly. The distance returned is
 //! computed from the grid line the ray crosses, as the segment's own intersection would
@@ -19,30 +19,6 @@ use nalgebra::Vector2;
 /// The shortest stride taken, cells: shorter ones cost more than the cells they skip.
 const STRIDE_FROM: u8 = 2;
 
-/// A byte per cell of `map` (row-major from the bottom row): 0 on forbidden cells,
-/// otherwise 1 + the whole number of cells a ray may advance from any point of the cell
-/// without reaching a forbidden cell (at most 254). The nearest forbidden square is no
-/// nearer to a point of the cell than the distance between the two centres minus half a
-/// diagonal for each square; a hair less covers rounding. A byte keeps the march's
-/// table a quarter of the distance transform's size, so more of it stays in cache.
-pub(crate) fn strides(map: &GridMap) -> Vec<u8> {
-    let Some(field) = map.distance_from(Zone::Forbidden) else {
-        return Vec::new();
-    };
-    field
-        .dist_sq()
-        .iter()
-        .map(|&d2| {
-            if d2 == 0 {
-                0
-            } else {
-                let safe = f64::from(d2).sqrt() - std::f64::consts::SQRT_2 - 1e-6;
-                1 + safe.clamp(0.0, 253.0) as u8
-            }
-        })
-        .collect()
-}
-
 /// A loaded map's cells with their distances to the nearest forbidden cell.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct GridRays<'a> {
@@ -50,7 +26,7 @@ pub(crate) struct GridRays<'a> {
     /// Squared distance (cells^2) from each cell centre to the nearest forbidden centre:
     /// 0 exactly on forbidden cells.
     dist_sq: &'a [u32],
-    /// The march's table ([`strides`]).
+    /// The march's table ([`GridMap::strides_from`] the forbidden cells).
     strides: &'a [u8],
     /// `1 / resolution`.
     per_cell: f64,
@@ -58,7 +34,7 @@ pub(crate) struct GridRays<'a> {
 
 impl<'a> GridRays<'a> {
     /// The map's cells, its (cached) distance transform of the forbidden cells and its
-    /// [`strides`] table.
+    /// [`GridMap::strides_from`] table.
     pub(crate) fn new(map: &'a GridMap, strides: &'a [u8]) -> Option<Self> {
         let field = map.distance_from(Zone::Forbidden)?;
         (strides.len() == field.dist_sq().len()).then(|| Self {
@@ -74,7 +50,7 @@ impl<'a> GridRays<'a> {
         self.dist_sq[j as usize * self.frame.width + i as usize]
     }
 
-    /// The [`strides`] byte of cell `(i, j)`, which the caller keeps inside the grid.
+    /// The stride byte of cell `(i, j)`, which the caller keeps inside the grid.
     #[inline]
     fn stride(&self, i: i64, j: i64) -> u8 {
         self.strides[j as usize * self.frame.width + i as usize]

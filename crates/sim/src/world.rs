@@ -8,7 +8,7 @@ use envmap::GridMap;
 use hyplan_core::{Bounds, Point2, Zone};
 use serde::{Deserialize, Serialize};
 
-use crate::grid_cast::{GridRays, strides};
+use crate::grid_cast::GridRays;
 
 /// A static obstacle, in metres (scenario syntax): the workspace's one shape type.
 pub use envmap::Shape;
@@ -149,10 +149,9 @@ pub struct StaticWorld {
     /// Closed outlines, for inside tests.
     pub polygons: Vec<Vec<Point2>>,
     /// A loaded map's grid (its forbidden cells are obstacles). Set it with
-    /// [`add_grid`](Self::add_grid): the laser's table of it is made once, on first use.
+    /// [`add_grid`](Self::add_grid): the laser's table of it is made once, on first use,
+    /// and cached with the grid.
     pub grid: Option<GridMap>,
-    /// The laser's march table of `grid` (`grid_cast::strides`).
-    ray_strides: std::sync::OnceLock<Vec<u8>>,
 }
 
 impl StaticWorld {
@@ -228,13 +227,12 @@ impl StaticWorld {
             },
         );
         self.grid = Some(map);
-        self.ray_strides = std::sync::OnceLock::new();
     }
 
     /// The loaded map's cells as rays and nearest-point queries see them.
     pub(crate) fn grid_rays(&self) -> Option<GridRays<'_>> {
         let grid = self.grid.as_ref()?;
-        GridRays::new(grid, self.ray_strides.get_or_init(|| strides(grid)))
+        GridRays::new(grid, grid.strides_from(Zone::Forbidden)?)
     }
 
     /// Whether `p` lies inside (or on) an obstacle.

@@ -102,8 +102,8 @@ impl GridSearch {
             (Kind::Dijkstra, _) | (Kind::ThetaStar | Kind::LazyThetaStar, None) => {
                 self.grid_search(s0, t0, false)
             }
-            (Kind::ThetaStar, Some(_)) => self.theta_search(s0, t0, false),
-            (Kind::LazyThetaStar, Some(_)) => self.theta_search(s0, t0, true),
+            (Kind::ThetaStar, Some(map)) => self.theta_search(s0, t0, false, self.sight(map)),
+            (Kind::LazyThetaStar, Some(map)) => self.theta_search(s0, t0, true, self.sight(map)),
         }
     }
 }

@@ -94,13 +94,14 @@ impl GridSearch {
         s0: u32,
         t0: u32,
         lazy: bool,
+        sight: &[u8],
     ) -> Result<GridPath, GridSearchError> {
         let mut stats = SearchStats::default();
         let (gx, gy) = self.xy(t0);
         let euclid = move |x: u32, y: u32| {
             let dx = f64::from(x.abs_diff(gx));
             let dy = f64::from(y.abs_diff(gy));
-            dx.hypot(dy)
+            (dx * dx + dy * dy).sqrt()
         };
         let (sx, sy) = self.xy(s0);
         self.begin_theta(s0, &mut stats);
@@ -115,7 +116,7 @@ impl GridSearch {
             }
             self.theta_nodes[p as usize].stamp = closed;
             if lazy {
-                self.lazy_set_parent(p);
+                self.lazy_set_parent(p, sight);
             }
             let g = f64::from_bits(self.theta_nodes[p as usize].g);
             if p == t0 {
@@ -128,7 +129,7 @@ impl GridSearch {
                 check_at = limit.next_check(stats.expansions);
             }
             stats.expansions += 1;
-            self.theta_expand(p, g, &mut stats, euclid, lazy);
+            self.theta_expand(p, g, &mut stats, (euclid, sight), lazy);
         }
         Err(GridSearchError::NoPath { stats })
     }
@@ -136,9 +137,9 @@ impl GridSearch {
     /// Lazy Theta*'s check when `p` is expanded: if `p` does not see the parent it was
     /// given, its parent becomes the expanded grid neighbour through which it is cheapest
     /// (one exists: the cell whose expansion reached `p`).
-    fn lazy_set_parent(&mut self, p: u32) {
+    fn lazy_set_parent(&mut self, p: u32, sight: &[u8]) {
         let pp = self.theta_nodes[p as usize].parent;
-        if pp == NONE || self.line_of_sight(pp, p) {
+        if pp == NONE || self.line_of_sight(pp, p, sight) {
             return;
         }
         let closed = self.theta_generation | CLOSED;
@@ -204,7 +205,7 @@ impl GridSearch {
         p: u32,
         g: f64,
         stats: &mut SearchStats,
-        h: impl Fn(u32, u32) -> f64,
+        (h, sight): (impl Fn(u32, u32) -> f64, &[u8]),
         lazy: bool,
     ) {
         let (moves, k) = self.theta_moves(p);
@@ -218,9 +219,10 @@ impl GridSearch {
                 continue;
             }
             let (mut ng, mut parent) = (g + c, p);
-            if pp != NONE && (lazy || self.line_of_sight(pp, q)) {
+            if pp != NONE && (lazy || self.line_of_sight(pp, q, sight)) {
                 let (a, b) = (self.cell(pp), self.cell(q));
-                let d = (a.0 as f64 - b.0 as f64).hypot(a.1 as f64 - b.1 as f64);
+                let (dx, dy) = (a.0 as f64 - b.0 as f64, a.1 as f64 - b.1 as f64);
+                let d = (dx * dx + dy * dy).sqrt();
                 let via = f64::from_bits(self.theta_nodes[pp as usize].g) + d;
                 if via <= ng {
                     ng = via;
@@ -240,52 +242,183 @@ impl GridSearch {
         }
     }
 
+    /// The stride table Theta*'s lines of sight take from `map` (the map's own, made
+    /// once and cached with it: [`GridMap::blocked_strides`]), or none (every line swept
+    /// cell by cell) for a map of another size than this search's.
+    pub(super) fn sight<'m>(&self, map: &'m GridMap) -> &'m [u8] {
+        match map.blocked_strides() {
+            Some(t) if map.width() == self.width && map.height() == self.height => t,
+            _ => &[],
+        }
+    }
+
     /// Whether the segment between the centres of cells `a` and `b` touches only passable
-    /// cells (corner touches included): the cells [`GridMap::segment_cells`] visits,
-    /// computed in integers. Between cell centres every crossing of a grid line is a
-    /// multiple of `1 / (2 d)` (d the longer side of the segment's box), so the closed
-    /// cells touched are found exactly without floating point (the property tests check
-    /// the paths against the map's `segment_free`). The padded border is blocked, and
-    /// a segment between centres never leaves the map, so no bounds test is needed.
-    pub(super) fn line_of_sight(&self, a: u32, b: u32) -> bool {
+    /// cells (corner touches included): the cells [`GridMap::segment_cells`] visits.
+    ///
+    /// The open stretches at both ends are crossed in strides of the sight table (no
+    /// cell there can touch a blocked square, [`envmap::DistanceField::strides`]); the
+    /// columns left between are swept exactly in integers. Between cell centres every
+    /// crossing of a grid line is a multiple of `1 / (2 d)` (d the longer side of the
+    /// segment's box), so the closed cells touched are found without floating point (the
+    /// property tests check the paths against the map's `segment_free`). The padded
+    /// border is blocked, and a segment between centres never leaves the map, so no
+    /// bounds test is needed.
+    pub(super) fn line_of_sight(&self, a: u32, b: u32, sight: &[u8]) -> bool {
         let ((ax, ay), (bx, by)) = (self.xy(a), self.xy(b));
         let (dx, dy) = (i64::from(bx) - i64::from(ax), i64::from(by) - i64::from(ay));
-        let pw = self.pw as i64;
-        // Sweep along the major axis u, in increasing u; v is the minor axis. `su`, `sv`:
-        // index strides of one step along u and v.
-        let (u0, v0, du, dv, su, sv) = if dx.abs() >= dy.abs() {
-            if dx >= 0 {
-                (i64::from(ax), i64::from(ay), dx, dy, 1, pw)
-            } else {
-                (i64::from(bx), i64::from(by), -dx, -dy, 1, pw)
-            }
-        } else if dy >= 0 {
-            (i64::from(ay), i64::from(ax), dy, dx, pw, 1)
-        } else {
-            (i64::from(by), i64::from(bx), -dy, -dx, pw, 1)
-        };
-        if du == 0 {
+        if dx == 0 && dy == 0 {
             return self.passable[a as usize];
         }
-        let pass = &self.passable;
-        // In units of 1 / (2 du): the minor coordinate at doubled major coordinate t is
-        // n(t) = (2 v0 + 1) du + (t - 2 u0 - 1) dv.
+        // How far the ends' open stretches reach, in cells along the segment.
+        let len = ((dx * dx + dy * dy) as f64).sqrt();
+        let (ex, ey) = (dx as f64 / len, dy as f64 / len);
+        let from_a = self.open_stretch(sight, (ax, ay), (ex, ey), len);
+        if from_a >= len {
+            return true;
+        }
+        let from_b = self.open_stretch(sight, (bx, by), (-ex, -ey), len - from_a);
+        if from_a + from_b >= len {
+            return true;
+        }
+        let pw = self.pw as i64;
+        // Sweep along the major axis u, in increasing u, from the start cell s; v is the
+        // minor axis, mirrored about s's row when the segment goes down it, so that v
+        // grows too. `su`, `sv`: index strides of one step along u and v. `(open_lo,
+        // open_hi)`: how far the stretches reach along u from each end.
+        let (du, dv, su, sv, s, open_lo, open_hi) = if dx.abs() >= dy.abs() {
+            let f = dx.unsigned_abs() as f64 / len;
+            if dx >= 0 {
+                (dx, dy, 1, pw, a, from_a * f, from_b * f)
+            } else {
+                (-dx, -dy, 1, pw, b, from_b * f, from_a * f)
+            }
+        } else {
+            let f = dy.unsigned_abs() as f64 / len;
+            if dy >= 0 {
+                (dy, dx, pw, 1, a, from_a * f, from_b * f)
+            } else {
+                (-dy, -dx, pw, 1, b, from_b * f, from_a * f)
+            }
+        };
+        let (dv, sv) = if dv < 0 { (-dv, -sv) } else { (dv, sv) };
+        // Columns k = 0..=du from s's column. The segment runs from u = 0.5 to du + 0.5
+        // (in column units from s's column's left edge); column k is known free when its
+        // stretch [k, k + 1] lies inside an open stretch. One column of margin each side.
+        let k_first = ((0.5 + open_lo).floor() as i64 - 2).max(0);
+        let k_last = ((du as f64 + 0.5 - open_hi).floor() as i64 + 1).min(du);
+        // In units of 1 / (2 du), the minor coordinate from s's row's lower edge at the
+        // left edge of column k (k >= 1) is y = du + (2k - 1) dv; at the start, du. Each
+        // column adds 2 dv (dv at the first and the last, which are half columns), at most
+        // one row, so rows are tracked by a quotient and a remainder without dividing.
         let d = 2 * du;
-        let n = |t: i64| (2 * v0 + 1) * du + (t - 2 * u0 - 1) * dv;
-        for c in u0..=u0 + du {
-            let t0 = (2 * c).max(2 * u0 + 1);
-            let t1 = (2 * c + 2).min(2 * (u0 + du) + 1);
-            let (na, nb) = (n(t0), n(t1));
-            let (lo, hi) = (na.min(nb), na.max(nb));
-            // Rows r with r <= v <= r + 1 for some v in [lo / d, hi / d].
-            let r_first = lo.div_euclid(d) + i64::from(lo.rem_euclid(d) != 0) - 1;
-            let r_last = hi.div_euclid(d);
-            for r in r_first..=r_last {
-                if !pass[(c * su + r * sv) as usize] {
+        let y = if k_first == 0 {
+            du
+        } else {
+            du + (2 * k_first - 1) * dv
+        };
+        let (mut q, mut rem) = (y / d, y % d);
+        let pass = &self.passable;
+        let mut col = i64::from(s) + k_first * su;
+        for k in k_first..=k_last {
+            // Rows m with m <= y <= m + 1 for some y of the column's stretch.
+            let first = q + i64::from(rem != 0) - 1;
+            rem += if k == 0 || k == du { dv } else { 2 * dv };
+            if rem >= d {
+                rem -= d;
+                q += 1;
+            }
+            for m in first..=q {
+                if !pass[(col + m * sv) as usize] {
                     return false;
                 }
             }
+            col += su;
         }
         true
+    }
+
+    /// How far, in cells along the unit direction `e`, the segment from the centre of
+    /// padded cell `c` is known to touch no blocked square, by strides of the map's
+    /// `sight` table (unpadded; empty: not known at all); stops at `len` or where the
+    /// strides get short (under two cells, where the exact sweep is as cheap).
+    #[inline]
+    fn open_stretch(
+        &self,
+        sight: &[u8],
+        (cx, cy): (u32, u32),
+        (ex, ey): (f64, f64),
+        len: f64,
+    ) -> f64 {
+        if sight.is_empty() {
+            return 0.0;
+        }
+        // Unpadded coordinates: the padding is never touched by a segment between
+        // centres, and points of the segment lie at least half a cell inside the map.
+        let (ox, oy) = (f64::from(cx) - 0.5, f64::from(cy) - 0.5);
+        let mut t = 0.0;
+        loop {
+            let (x, y) = ((ox + ex * t) as usize, (oy + ey * t) as usize);
+            let stride = sight[y * self.width + x];
+            if stride < 3 {
+                return t;
+            }
+            t += f64::from(stride - 1);
+            if t >= len {
+                return len;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hyplan_core::{Point2, Zone};
+    use proptest::prelude::*;
+
+    /// A cell `(i, j)`.
+    type Cell = (usize, usize);
+
+    /// A random map, 2-80 cells a side, 0-40 % blocked or a few cells in open space
+    /// (where the strides run up to the obstacles), and pairs of cells.
+    fn maps() -> impl Strategy<Value = (GridMap, Vec<(Cell, Cell)>)> {
+        let density = prop_oneof![0.0f64..0.4, 0.0f64..0.004];
+        (2usize..80, 2usize..80, density).prop_flat_map(|(w, h, density)| {
+            (
+                proptest::collection::vec(prop::bool::weighted(density), w * h),
+                proptest::collection::vec(((0..w, 0..h), (0..w, 0..h)), 1..200),
+            )
+                .prop_map(move |(blocked, pairs)| {
+                    let zones = blocked
+                        .iter()
+                        .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
+                        .collect();
+                    let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+                    (map, pairs)
+                })
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(400))]
+
+        /// The line of sight is the map's exact edge check between the two centres,
+        /// both ways: not only never through a blocked cell, but never refused where
+        /// the segment is free.
+        #[test]
+        fn line_of_sight_is_segment_free_between_centres((map, pairs) in maps()) {
+            let search = GridSearch::new(&map, GridOptions::default()).unwrap();
+            let sight = search.sight(&map);
+            prop_assert!(!sight.is_empty());
+            for (a, b) in pairs {
+                let (pa, pb) = (search.index(a.0, a.1), search.index(b.0, b.1));
+                let expected = map.segment_free_cells(
+                    map.cell_center(a.0, a.1),
+                    map.cell_center(b.0, b.1),
+                );
+                prop_assert_eq!(search.line_of_sight(pa, pb, sight), expected, "{:?} -> {:?}", a, b);
+                prop_assert_eq!(search.line_of_sight(pb, pa, sight), expected, "{:?} -> {:?}", b, a);
+            }
+        }
     }
 }
