@@ -368,11 +368,7 @@ impl GridMap {
     /// (`None` for `Zone::Free`).
     #[must_use]
     pub fn distance_from(&self, zone: Zone) -> Option<&DistanceField> {
-        let k = match zone {
-            Zone::Free => return None,
-            Zone::Risk => 0,
-            Zone::Forbidden => 1,
-        };
+        let k = cache_slot(zone)?;
         Some(
             self.clearance_fields[k]
                 .get_or_init(|| distance_transform(&Mask::from_zones_at_least(self, zone))),
@@ -396,11 +392,7 @@ impl GridMap {
     /// ```
     #[must_use]
     pub fn strides_from(&self, zone: Zone) -> Option<&[u8]> {
-        let k = match zone {
-            Zone::Free => return None,
-            Zone::Risk => 0,
-            Zone::Forbidden => 1,
-        };
+        let k = cache_slot(zone)?;
         let field = self.distance_from(zone)?;
         Some(self.stride_tables[k].get_or_init(|| field.strides()))
     }
@@ -408,12 +400,9 @@ impl GridMap {
     /// The blocked cells' stride table if it is made already
     /// ([`blocked_strides`](Self::blocked_strides) makes it).
     pub(crate) fn made_blocked_strides(&self) -> Option<&[u8]> {
-        let k = match self.blocked_from {
-            Zone::Free => return None,
-            Zone::Risk => 0,
-            Zone::Forbidden => 1,
-        };
-        self.stride_tables[k].get().map(Vec::as_slice)
+        self.stride_tables[cache_slot(self.blocked_from)?]
+            .get()
+            .map(Vec::as_slice)
     }
 
     /// [`strides_from`](Self::strides_from) the cells that block motion under the current
@@ -506,5 +495,14 @@ impl fmt::Debug for GridMap {
             writeln!(f)?;
         }
         Ok(())
+    }
+}
+
+/// Where the caches of the cells at least `zone` sit (`None` for `Zone::Free`: every cell).
+const fn cache_slot(zone: Zone) -> Option<usize> {
+    match zone {
+        Zone::Free => None,
+        Zone::Risk => Some(0),
+        Zone::Forbidden => Some(1),
     }
 }

@@ -145,7 +145,7 @@ pub use pipeline::{Pipeline, PipelineOutput};
 pub use rectangles::{CellRect, bounding_rectangles, fill_rectangles};
 #[cfg(feature = "shapes")]
 pub use shapes::{Shape, dilate_square, overlaps, rasterize_shapes};
-pub use workspace::TOUCH_TOLERANCE;
+pub use workspace::{TOUCH_TOLERANCE, open_stretch};
 pub use zones::zones;
 
 /// The README's examples, compiled and run as doctests.

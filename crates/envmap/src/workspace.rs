@@ -165,12 +165,23 @@ impl Clone for EdgeWork {
     }
 }
 
-/// How far, in cells along the unit direction `e`, the segment from `p` (cell units,
-/// inside the `w x h` map) is known to touch no blocked square, by strides of the map's
-/// stride table; stops at `len` or where the strides get short (under two cells, where
-/// the sweep is as cheap).
+/// How far, in cells along the unit direction `e`, the segment from `p` (cell units from
+/// the map's origin, inside the `w x h` map) is known to touch no blocked square, by
+/// strides of the map's stride table ([`GridMap::blocked_strides`]); stops at `len` or
+/// where the strides get short (under two cells, where a cell sweep is as cheap). Edge
+/// checks and lines of sight cross the open ends of their segments with it.
+///
+/// ```
+/// use envmap::{GridMap, open_stretch};
+/// let map = GridMap::from_ascii("..........#")?;
+/// let strides = map.blocked_strides().unwrap();
+/// // From the first cell's centre toward the blocked cell 10 cells away: 8 cells known free.
+/// assert_eq!(open_stretch(strides, (11, 1), (0.5, 0.5), (1.0, 0.0), 20.0), 8.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[inline]
-fn open_stretch(
+#[must_use]
+pub fn open_stretch(
     strides: &[u8],
     (w, h): (usize, usize),
     (pu, pv): (f64, f64),

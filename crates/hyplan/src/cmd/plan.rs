@@ -293,6 +293,13 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
     }
     let config = planners::configure(&args.planner, &flags)?;
     let planner = config.build();
+    if !config.uses_goal_bias() && args.goal_bias != 0.05 && !args.csv && !args.json {
+        eprintln!(
+            "note: {} has no goal bias; --goal-bias is ignored",
+            config.name()
+        );
+    }
+
     let start = frame.to_world(args.start.0, args.start.1);
     let goal_center = frame.to_world(args.goal.0, args.goal.1);
     let goal = if args.goal_radius == 0.0 {
@@ -320,13 +327,6 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
         .checks_segments
         .then(|| map.blocked_strides().map(|_| prepared.elapsed()))
         .flatten();
-    if !config.uses_goal_bias() && args.goal_bias != 0.05 && !args.csv && !args.json {
-        eprintln!(
-            "note: {} has no goal bias; --goal-bias is ignored",
-            config.name()
-        );
-    }
-
     Ok(Setup {
         map,
         preparation,

@@ -338,35 +338,17 @@ impl GridSearch {
     }
 
     /// How far, in cells along the unit direction `e`, the segment from the centre of
-    /// padded cell `c` is known to touch no blocked square, by strides of the map's
-    /// `sight` table (unpadded; empty: not known at all); stops at `len` or where the
-    /// strides get short (under two cells, where the exact sweep is as cheap).
+    /// padded cell `c` is known to touch no blocked square ([`envmap::open_stretch`] on
+    /// the map's `sight` table; empty: not known at all).
     #[inline]
-    fn open_stretch(
-        &self,
-        sight: &[u8],
-        (cx, cy): (u32, u32),
-        (ex, ey): (f64, f64),
-        len: f64,
-    ) -> f64 {
+    fn open_stretch(&self, sight: &[u8], (cx, cy): (u32, u32), e: (f64, f64), len: f64) -> f64 {
         if sight.is_empty() {
             return 0.0;
         }
         // Unpadded coordinates: the padding is never touched by a segment between
         // centres, and points of the segment lie at least half a cell inside the map.
-        let (ox, oy) = (f64::from(cx) - 0.5, f64::from(cy) - 0.5);
-        let mut t = 0.0;
-        loop {
-            let (x, y) = ((ox + ex * t) as usize, (oy + ey * t) as usize);
-            let stride = sight[y * self.width + x];
-            if stride < 3 {
-                return t;
-            }
-            t += f64::from(stride - 1);
-            if t >= len {
-                return len;
-            }
-        }
+        let centre = (f64::from(cx) - 0.5, f64::from(cy) - 0.5);
+        envmap::open_stretch(sight, (self.width, self.height), centre, e, len)
     }
 }
 
