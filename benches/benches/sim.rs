@@ -107,6 +107,7 @@ fn crowd(c: &mut Criterion) {
                 start: 0.3 * f64::from(k),
                 radius: 0.25,
                 walk: sim::Walk::BackAndForth,
+                group: None,
             }
         })
         .collect();

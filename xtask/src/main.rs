@@ -13,12 +13,17 @@
 //! - `cargo xtask explore-maps [--maps LIST] [--detectors LIST] [--seeds LIST] [--out DIR]`:
 //!   exploration of every building map (issue 27), each detector and seed; a Markdown
 //!   table and JSON of coverage, how each run ended and simulated / wall time.
+//! - `cargo xtask crowd [--runs N] [--densities LIST] [--flows LIST] [--controllers LIST]
+//!   [--models LIST] [--out DIR]`: the robot among generated crowds (issue 29); a Markdown
+//!   table of success, contacts, time against the empty room, personal space, the people's
+//!   delay and the tracker against the truth.
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
 mod bench_peers;
+mod crowd;
 mod explore004;
 mod explore_maps;
 mod report;
@@ -52,6 +57,8 @@ enum Task {
     ProptestSoak(soak::PropArgs),
     /// Explore every building map with every detector and seed: coverage table and JSON.
     ExploreMaps(explore_maps::Args),
+    /// The robot among generated crowds: densities x controllers x people models.
+    Crowd(crowd::Args),
 }
 
 fn main() -> ExitCode {
@@ -63,6 +70,7 @@ fn main() -> ExitCode {
         Task::SoakMerge(args) => soak::merge(&args),
         Task::ProptestSoak(args) => soak::run_proptests(&args),
         Task::ExploreMaps(args) => explore_maps::run(&args),
+        Task::Crowd(args) => crowd::run(&args),
         Task::Table4 => rooms::write_table4(std::path::Path::new("scenarios")).map(|files| {
             for f in files {
                 println!("wrote {}", f.display());

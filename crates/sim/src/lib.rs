@@ -79,6 +79,7 @@ mod bag_observer;
 mod building;
 mod control;
 mod costmap;
+mod crowd;
 mod engine;
 mod explore;
 mod grid_cast;
@@ -107,6 +108,10 @@ pub use control::{Command, Controller, FollowInput, LocalController};
 pub use costmap::{
     Costmap, CostmapBuilder, CostmapCache, CostmapParams, MEMORY_RESOLUTION, ObstacleMemory,
     rasterize,
+};
+pub use crowd::{
+    CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, SPEED_LIMITS, TRACK_GATE, WALKING_SPEED,
+    arrivals_alone, crowd, measure,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, Observer, PLANNER_STREAM, Sim, TICKS_PER_SECOND,
@@ -139,10 +144,10 @@ pub use record::{
 pub use rollout::{LocalPlanner, Rollout, RolloutController};
 pub use run::{Outcome, Recorder, run, run_with};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
-pub use soak::{SoakSummary, room, soak, soak_each, soak_with};
+pub use soak::{SoakSummary, room, room_at, soak, soak_each, soak_rooms, soak_with};
 pub use social_force::{KEEP_RIGHT, MAX_STEP, PeopleModelKind, SocialForce, SocialForceParams};
 pub use tracking::{Mover, Tracker};
-pub use world::{Disc, Person, Segment, Shape, StaticWorld, Walk, World};
+pub use world::{Disc, OFFSTAGE, Person, Segment, Shape, StaticWorld, Walk, World};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -20,7 +20,7 @@ pub trait PeopleModel: Send {
 /// ```
 /// use sim::{PeopleModel, Person, Pose, Scripted, Walk};
 /// let walker = Person { path: vec![(0.0, 0.0), (2.0, 0.0)], speed: 1.0, start: 0.0,
-///     radius: 0.25, walk: Walk::Once };
+///     radius: 0.25, walk: Walk::Once, group: None };
 /// let people = [walker];
 /// let mut model = Scripted::new(&people);
 /// let now = model.people(1.0, Pose::default());

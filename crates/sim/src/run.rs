@@ -227,6 +227,10 @@ impl Observer for Recorder {
         self.in_contact_static = touching;
         let mut d_person = f64::INFINITY;
         for (k, p) in sim.people().iter().enumerate() {
+            if !p.on_stage() {
+                self.in_contact_person[k] = false;
+                continue;
+            }
             let d = (p.center - here).norm() - p.radius - robot.body_radius;
             d_person = d_person.min(d);
             let touching = d < 0.0;

@@ -22,9 +22,25 @@ use crate::rollout::LocalPlanner;
 use crate::scenario::{Scenario, WorldSpec};
 use crate::world::{Person, Shape, Walk};
 
-/// The generated room `index` of a soak seeded `seed`.
+/// The generated room `index` of a soak seeded `seed`, its people walking at 0.1 m/s up
+/// to the robot's top speed: [`room_at`].
 #[must_use]
 pub fn room(seed: u64, index: u64) -> Scenario {
+    room_at(seed, index, (0.1, Robot::default().v_max))
+}
+
+/// The generated room `index` of a soak seeded `seed`, each person's walking speed drawn
+/// uniformly from `speeds` (low, high), m/s: [`room`]'s rooms, but for the people's
+/// speeds (the same draws, so the same geometry and routes).
+///
+/// ```
+/// let walking = sim::room_at(7, 3, (0.8, 1.6));
+/// let slow = sim::room(7, 3);
+/// assert_eq!(walking.world.shapes, slow.world.shapes);
+/// assert!(walking.people.iter().all(|p| (0.8..=1.6).contains(&p.speed)));
+/// ```
+#[must_use]
+pub fn room_at(seed: u64, index: u64, speeds: (f64, f64)) -> Scenario {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     rng.set_stream(index);
     let w: f64 = rng.random_range(8.0..14.0);
@@ -85,7 +101,6 @@ pub fn room(seed: u64, index: u64) -> Scenario {
         });
         placed += 1;
     }
-    let v_max = Robot::default().v_max;
     let people = (0..rng.random_range(1..=3))
         .map(|_| {
             let x = rng.random_range(2.5..w - 2.5);
@@ -97,7 +112,7 @@ pub fn room(seed: u64, index: u64) -> Scenario {
             };
             Person {
                 path,
-                speed: rng.random_range(0.1..=v_max),
+                speed: rng.random_range(speeds.0..=speeds.1),
                 start: rng.random_range(0.0..20.0),
                 radius: 0.25,
                 walk: if rng.random_bool(0.5) {
@@ -105,6 +120,7 @@ pub fn room(seed: u64, index: u64) -> Scenario {
                 } else {
                     Walk::BackAndForth
                 },
+                group: None,
             }
         })
         .collect();
@@ -186,9 +202,32 @@ pub fn soak_with(seed: u64, n: u64, local: LocalPlanner) -> SoakSummary {
 /// ```
 #[must_use]
 pub fn soak_each(seed: u64, n: u64, set: impl Fn(&mut Scenario)) -> SoakSummary {
+    soak_rooms(seed, n, room, set)
+}
+
+/// Runs rooms `0..n` of a soak seeded `seed`, each made by `make(seed, index)` ([`room`],
+/// or [`room_at`] with other walking speeds) and changed by `set`.
+///
+/// ```no_run
+/// // The soak at walking speed, people under social forces who do not see the robot.
+/// let s = sim::soak_rooms(2026, 12, |s, k| sim::room_at(s, k, (0.8, 1.6)), |sc| {
+///     sc.people_model = sim::PeopleModelKind::SocialForce(sim::SocialForceParams {
+///         sees_robot: false,
+///         ..Default::default()
+///     });
+/// });
+/// println!("{} of {} reached", s.reached, s.rooms);
+/// ```
+#[must_use]
+pub fn soak_rooms(
+    seed: u64,
+    n: u64,
+    make: impl Fn(u64, u64) -> Scenario,
+    set: impl Fn(&mut Scenario),
+) -> SoakSummary {
     let mut s = SoakSummary::default();
     for k in 0..n {
-        let mut sc = room(seed, k);
+        let mut sc = make(seed, k);
         set(&mut sc);
         let Ok(world) = sc.build_world(std::path::Path::new(&sc.name)) else {
             s.invalid += 1;

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::kinematics::Pose;
 use crate::people::{PeopleModel, Scripted};
-use crate::world::{Disc, Person, StaticWorld, Walk, World, pt};
+use crate::world::{Disc, OFFSTAGE, Person, StaticWorld, Walk, World, pt};
 
 /// How much further to their left each person sees the others by default, m
 /// ([`SocialForceParams::keep_right`]): the deterministic tie-break of exactly symmetric
@@ -64,6 +64,12 @@ pub struct SocialForceParams {
     /// the paper's fluctuations; 0 for none): the side preference that breaks exactly
     /// symmetric encounters toward passing on the right (see [`SocialForce`]).
     pub keep_right: f64,
+    /// Pull of a group member toward the group's centre of mass when farther from it than
+    /// `(n - 1) / 2` m (`n` members on stage), m/s^2 (1; the coherence term of Moussaïd
+    /// et al. 2010, "The walking behaviour of pedestrian social groups", PLoS ONE 5(4)
+    /// e10047, with its threshold; the strength is ours). Members share a
+    /// [`Person::group`].
+    pub group_strength: f64,
 }
 
 impl Default for SocialForceParams {
@@ -81,6 +87,7 @@ impl Default for SocialForceParams {
             max_speed_ratio: 1.3,
             switch_distance: 0.5,
             keep_right: KEEP_RIGHT,
+            group_strength: 1.0,
         }
     }
 }
@@ -107,6 +114,7 @@ impl SocialForceParams {
             ("wall_strength", self.wall_strength),
             ("switch_distance", self.switch_distance),
             ("keep_right", self.keep_right),
+            ("group_strength", self.group_strength),
         ];
         let c = self.outside_view_weight;
         crate::validate::first_out_of_range(&positive, &non_negative)
@@ -164,6 +172,35 @@ impl PeopleModelKind {
         }
     }
 
+    /// The model called `name`, with default parameters: `scripted`, `social-force`
+    /// (people who see the robot), `social-force-blind` (people who do not); `None` for
+    /// another name.
+    ///
+    /// ```
+    /// use sim::PeopleModelKind;
+    /// let blind = PeopleModelKind::from_name("social-force-blind").unwrap();
+    /// assert!(matches!(blind, PeopleModelKind::SocialForce(p) if !p.sees_robot));
+    /// assert_eq!(PeopleModelKind::from_name("crowd"), None);
+    /// ```
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Self> {
+        let sf = |sees_robot| {
+            Self::SocialForce(SocialForceParams {
+                sees_robot,
+                ..SocialForceParams::default()
+            })
+        };
+        match name {
+            "scripted" => Some(Self::Scripted),
+            "social-force" => Some(sf(true)),
+            "social-force-blind" => Some(sf(false)),
+            _ => None,
+        }
+    }
+
+    /// The names [`PeopleModelKind::from_name`] takes.
+    pub const NAMES: &'static [&'static str] = &["scripted", "social-force", "social-force-blind"];
+
     /// The first parameter out of range, as (field, value, what it must be).
     #[must_use]
     pub fn problem(&self) -> Option<(&'static str, f64, &'static str)> {
@@ -183,6 +220,9 @@ struct Walker {
     leg: usize,
     /// The last desired direction (the field of view's axis while standing).
     facing: Vector2<f64>,
+    /// In the world: false for a [`Walk::Through`] person before setting off and after
+    /// arriving (at [`OFFSTAGE`], out of every force).
+    on_stage: bool,
 }
 
 /// People pushed by social forces (D. Helbing, P. Molnár, "Social force model for
@@ -252,7 +292,7 @@ struct Walker {
 /// ```
 /// use sim::{PeopleModel, Person, Pose, SocialForce, SocialForceParams, StaticWorld, Walk};
 /// let walker = Person { path: vec![(0.0, 0.0), (10.0, 0.0)], speed: 1.0, start: 0.0,
-///     radius: 0.25, walk: Walk::Once };
+///     radius: 0.25, walk: Walk::Once, group: None };
 /// let people = [walker];
 /// let world = StaticWorld::default();
 /// let mut model = SocialForce::new(&people, &world, 0.2, SocialForceParams::default());
@@ -273,6 +313,10 @@ pub struct SocialForce<'w> {
     cos_half_view: f64,
     walkers: Vec<Walker>,
     accel: Vec<Vector2<f64>>,
+    /// Each person's group, numbered from 0 in order of first appearance.
+    group_of: Vec<Option<usize>>,
+    /// Per group, the sum of its members' positions on stage and their number (scratch).
+    centres: Vec<(Vector2<f64>, f64)>,
     /// Time of the last call and the robot's position then.
     last: Option<(f64, Point2)>,
 }
@@ -287,6 +331,18 @@ impl<'w> SocialForce<'w> {
         robot_radius: f64,
         params: SocialForceParams,
     ) -> Self {
+        let mut ids: Vec<u32> = Vec::new();
+        let group_of: Vec<Option<usize>> = people
+            .iter()
+            .map(|p| {
+                p.group.map(|g| {
+                    ids.iter().position(|&h| h == g).unwrap_or_else(|| {
+                        ids.push(g);
+                        ids.len() - 1
+                    })
+                })
+            })
+            .collect();
         let mut model = Self {
             params,
             people,
@@ -295,6 +351,8 @@ impl<'w> SocialForce<'w> {
             cos_half_view: (0.5 * params.view_deg).to_radians().cos(),
             walkers: Vec::with_capacity(people.len()),
             accel: vec![Vector2::zeros(); people.len()],
+            group_of,
+            centres: vec![(Vector2::zeros(), 0.0); ids.len()],
             last: None,
         };
         model.reset();
@@ -312,11 +370,13 @@ impl<'w> SocialForce<'w> {
                 .map(|&q| pt(q) - first)
                 .and_then(|d| d.try_normalize(0.0))
                 .unwrap_or_else(|| Vector2::new(1.0, 0.0));
+            let on_stage = p.walk != Walk::Through;
             Walker {
-                pos: first,
+                pos: if on_stage { first } else { pt(OFFSTAGE) },
                 vel: Vector2::zeros(),
                 leg: 0,
                 facing,
+                on_stage,
             }
         }));
         self.last = None;
@@ -345,7 +405,8 @@ impl<'w> SocialForce<'w> {
         let Some(mut goal) = goal_of(p, w.leg) else {
             return Vector2::zeros();
         };
-        let last = |leg| p.walk == Walk::Once && goal_of(p, leg + 1).is_none();
+        let last =
+            |leg| matches!(p.walk, Walk::Once | Walk::Through) && goal_of(p, leg + 1).is_none();
         if !last(w.leg) && (pt(p.path[goal]) - w.pos).norm() < self.params.switch_distance {
             w.leg = next_leg(p, w.leg);
             goal = goal_of(p, w.leg).unwrap_or(goal);
@@ -432,14 +493,20 @@ impl<'w> SocialForce<'w> {
     /// `robot_velocity`: every acceleration from the current state, then velocities
     /// (capped) and positions (semi-implicit Euler).
     fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+        self.enter_and_leave(t);
+        self.group_centres();
         let n = self.walkers.len();
         for k in 0..n {
+            if !self.walkers[k].on_stage {
+                self.accel[k] = Vector2::zeros();
+                continue;
+            }
             let desired = self.desired(k, t);
             let w = self.walkers[k];
             let me = (w.pos, self.people[k].radius, w.facing);
             let mut a = (desired - w.vel) / self.params.relaxation_time;
             for (j, o) in self.walkers.iter().enumerate() {
-                if j != k {
+                if j != k && o.on_stage {
                     a += self.person_force(me, (o.pos, self.people[j].radius, o.vel));
                 }
             }
@@ -447,9 +514,13 @@ impl<'w> SocialForce<'w> {
                 a += self.person_force(me, (robot, self.robot_radius, robot_velocity));
             }
             a += self.wall_force(w.pos, self.people[k].radius);
+            a += self.group_force(k);
             self.accel[k] = a;
         }
         for ((w, p), a) in self.walkers.iter_mut().zip(self.people).zip(&self.accel) {
+            if !w.on_stage {
+                continue;
+            }
             w.vel += a * h;
             let cap = self.params.max_speed_ratio * p.speed.max(0.0);
             let speed = w.vel.norm();
@@ -457,6 +528,64 @@ impl<'w> SocialForce<'w> {
                 w.vel *= if speed > 0.0 { cap / speed } else { 0.0 };
             }
             w.pos += w.vel * h;
+        }
+    }
+
+    /// [`Walk::Through`] people set off (appearing at their first way-point) once their
+    /// start has come, and leave the world within `switch_distance` of their last.
+    fn enter_and_leave(&mut self, t: f64) {
+        let near = self.params.switch_distance;
+        for (w, p) in self.walkers.iter_mut().zip(self.people) {
+            if p.walk != Walk::Through || p.path.len() < 2 {
+                continue;
+            }
+            let end = pt(p.path[p.path.len() - 1]);
+            if !w.on_stage && w.leg == 0 && t >= p.start {
+                w.on_stage = true;
+                w.pos = pt(p.path[0]);
+            } else if w.on_stage
+                && goal_of(p, w.leg + 1).is_none()
+                && (end - w.pos).norm() < near.max(0.05)
+            {
+                // Arrived: off stage for good (a leg past the last marks it).
+                w.on_stage = false;
+                w.leg += 1;
+                w.pos = pt(OFFSTAGE);
+                w.vel = Vector2::zeros();
+            }
+        }
+    }
+
+    /// Each group's centre of mass over its members on stage (sums and counts).
+    fn group_centres(&mut self) {
+        if self.centres.is_empty() {
+            return;
+        }
+        self.centres.fill((Vector2::zeros(), 0.0));
+        for (w, g) in self.walkers.iter().zip(&self.group_of) {
+            if let (Some(g), true) = (*g, w.on_stage) {
+                self.centres[g].0 += w.pos.coords;
+                self.centres[g].1 += 1.0;
+            }
+        }
+    }
+
+    /// The pull of person `k`'s group: toward its centre of mass, at `group_strength`,
+    /// when farther than `(n - 1) / 2` m from it.
+    fn group_force(&self, k: usize) -> Vector2<f64> {
+        let Some(g) = self.group_of[k] else {
+            return Vector2::zeros();
+        };
+        let (sum, n) = self.centres[g];
+        if n < 2.0 {
+            return Vector2::zeros();
+        }
+        let to_centre = sum / n - self.walkers[k].pos.coords;
+        let d = to_centre.norm();
+        if d > 0.5 * (n - 1.0) {
+            to_centre * (self.params.group_strength / d)
+        } else {
+            Vector2::zeros()
         }
     }
 }
@@ -492,7 +621,7 @@ fn goal_of(p: &Person, leg: usize) -> Option<usize> {
         return None;
     }
     match p.walk {
-        Walk::Once => (leg + 1 < n).then_some(leg + 1),
+        Walk::Once | Walk::Through => (leg + 1 < n).then_some(leg + 1),
         Walk::Loop => Some((leg + 1) % n),
         Walk::BackAndForth => {
             let round = 2 * (n - 1);
@@ -506,7 +635,7 @@ fn goal_of(p: &Person, leg: usize) -> Option<usize> {
 fn next_leg(p: &Person, leg: usize) -> usize {
     let n = p.path.len().max(2);
     match p.walk {
-        Walk::Once => leg + 1,
+        Walk::Once | Walk::Through => leg + 1,
         Walk::Loop => (leg + 1) % n,
         Walk::BackAndForth => (leg + 1) % (2 * (n - 1)),
     }
@@ -523,6 +652,7 @@ mod tests {
             start: 0.0,
             radius: 0.25,
             walk,
+            group: None,
         }
     }
 

@@ -29,7 +29,15 @@ pub enum Walk {
     Loop,
     /// First to last, then back to the first, and again.
     BackAndForth,
+    /// Appears at the first way-point at `start`, walks to the last and leaves the world
+    /// there (a person coming in at a door and going out at another): before and after,
+    /// the person is off stage, at [`OFFSTAGE`], where nothing meets them.
+    Through,
 }
+
+/// Where a person not in the world stands ([`Walk::Through`] before setting off and after
+/// arriving): a point a thousand kilometres from any world, m.
+pub const OFFSTAGE: (f64, f64) = (-1.0e6, -1.0e6);
 
 /// A person: a disc with a route of way-points and a walking speed. The scenario's
 /// `people_model` says how they move: along the route blind to everything ([`crate::Scripted`],
@@ -48,9 +56,13 @@ pub struct Person {
     /// Body radius, m (default 0.25).
     #[serde(default = "default_person_radius")]
     pub radius: f64,
-    /// Once, loop or back-and-forth (default once).
+    /// Once, loop, back-and-forth or through (default once).
     #[serde(default)]
     pub walk: Walk,
+    /// The group the person walks with (default none): under social forces, members of
+    /// one group keep together ([`crate::SocialForceParams::group_strength`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub group: Option<u32>,
 }
 
 fn default_person_radius() -> f64 {
@@ -58,18 +70,22 @@ fn default_person_radius() -> f64 {
 }
 
 impl Person {
-    /// Where the person is at time `t` seconds: a pure function of `t`.
+    /// Where the person is at time `t` seconds: a pure function of `t` ([`OFFSTAGE`]
+    /// when a [`Walk::Through`] person is not in the world).
     #[must_use]
     pub fn position(&self, t: f64) -> Point2 {
         let n = self.path.len();
         if n == 0 {
             return Point2::origin();
         }
+        if self.walk == Walk::Through && t < self.start {
+            return pt(OFFSTAGE);
+        }
         let p = |k: usize| pt(self.path[k]);
         // Legs in walking order: 0..n-1 forward, then (loop) the closing leg, or
         // (back-and-forth) the forward legs reversed.
         let legs = match self.walk {
-            Walk::Once => n - 1,
+            Walk::Once | Walk::Through => n - 1,
             Walk::Loop => n,
             Walk::BackAndForth => 2 * (n - 1),
         };
@@ -93,9 +109,13 @@ impl Person {
         if total <= 0.0 {
             return p(0);
         }
-        if self.walk == Walk::Once {
+        if matches!(self.walk, Walk::Once | Walk::Through) {
             if s >= total {
-                return p(n - 1);
+                return if self.walk == Walk::Through {
+                    pt(OFFSTAGE)
+                } else {
+                    p(n - 1)
+                };
             }
         } else {
             s = s.rem_euclid(total);
@@ -135,6 +155,20 @@ pub struct Disc {
     pub center: Point2,
     /// Radius, m.
     pub radius: f64,
+}
+
+impl Disc {
+    /// Whether the disc is in the world: false for a person at [`OFFSTAGE`].
+    ///
+    /// ```
+    /// let (x, y) = sim::OFFSTAGE;
+    /// let away = sim::Disc { center: hyplan_core::Point2::new(x, y), radius: 0.25 };
+    /// assert!(!away.on_stage());
+    /// ```
+    #[must_use]
+    pub fn on_stage(&self) -> bool {
+        self.center.x > 0.5 * OFFSTAGE.0
+    }
 }
 
 /// The static world as the laser and the contact test see it.
@@ -390,6 +424,7 @@ mod tests {
             start: 1.0,
             radius: 0.25,
             walk: Walk::Once,
+            group: None,
         };
         assert_eq!(p.position(0.5), Point2::new(0.0, 0.0));
         assert_eq!(p.position(2.0), Point2::new(1.0, 0.0));

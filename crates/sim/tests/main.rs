@@ -1,6 +1,7 @@
 //! Public-API tests of `sim`, one module per area.
 
 mod building;
+mod crowd;
 mod explore;
 mod kinematics;
 mod laser;

@@ -239,6 +239,7 @@ fn alone_at_the_desired_speed() {
         start: 1.0,
         radius: 0.25,
         walk: sim::Walk::Once,
+        group: None,
     }];
     let statics = sim::StaticWorld::default();
     let mut model = SocialForce::new(&people, &statics, 0.2, params(true));
@@ -263,6 +264,7 @@ fn time_going_back_starts_over() {
         start: 0.0,
         radius: 0.25,
         walk: sim::Walk::Once,
+        group: None,
     }];
     let statics = sim::StaticWorld::default();
     let mut model = SocialForce::new(&people, &statics, 0.2, params(true));

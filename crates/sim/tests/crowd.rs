@@ -1,0 +1,117 @@
+//! Crowd scenarios and their figures.
+
+use std::path::Path;
+
+use sim::{CrowdFlow, GlobalPlanner, PeopleModelKind, Pose, SocialForceParams, Walk};
+
+/// Every flow fills its room to about the density asked for: the time-averaged count of
+/// people on stage inside the room, over the run, is within 35 % of density x area / 100
+/// (a Poisson stream over ten seeds).
+#[test]
+fn rooms_hold_the_density_asked_for() {
+    for flow in CrowdFlow::ALL {
+        let density = 2.0;
+        let (mut sum, mut samples) = (0.0, 0.0);
+        for seed in 0..10 {
+            let sc = sim::crowd(flow, density, seed, 0);
+            let world = sc.build_world(Path::new(&sc.name)).unwrap();
+            assert!(sc.people.iter().all(|p| p.walk == Walk::Through));
+            let mut model = PeopleModelKind::Scripted.build(&world, 0.2);
+            let (w, h) = sc.world.size.unwrap();
+            let lobby = if flow == CrowdFlow::Corridor {
+                0.0
+            } else {
+                2.0
+            };
+            for k in 0..(sc.time_limit as usize) {
+                let people = model.people(k as f64, Pose::default());
+                sum += people
+                    .iter()
+                    .filter(|d| {
+                        let c = d.center;
+                        c.x > 0.0 && c.x < w && c.y > lobby && c.y < h - lobby
+                    })
+                    .count() as f64;
+                samples += 1.0;
+            }
+        }
+        let mean = sum / samples;
+        let want = density * flow.area() / 100.0;
+        assert!(
+            (mean - want).abs() < 0.35 * want,
+            "{flow}: {mean:.2} people on average, want {want:.2}"
+        );
+    }
+}
+
+/// A person who walks through leaves the world at the end of the route, and the meter
+/// counts the arrival; the people model alone (no robot) arrives too.
+#[test]
+fn through_walkers_arrive_and_are_counted() {
+    let sc = sim::crowd(CrowdFlow::Crossing, 1.0, 3, 0);
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let alone = sim::arrivals_alone(&sc, &world, 40.0);
+    let arrived = alone.iter().flatten().count();
+    assert!(arrived >= 3, "{alone:?}");
+    // Everyone who set off before 20 s with a clear crossing (about 14 m at >= 0.8 m/s)
+    // is gone by 40 s.
+    for (p, a) in sc.people.iter().zip(&alone) {
+        let len: f64 = p
+            .path
+            .windows(2)
+            .map(|s| ((s[1].0 - s[0].0).powi(2) + (s[1].1 - s[0].1).powi(2)).sqrt())
+            .sum();
+        if p.start + 1.5 * len / p.speed + 3.0 < 40.0 {
+            assert!(a.is_some(), "{p:?}");
+        }
+    }
+}
+
+/// A run among people who see the robot: reached, no at-fault contact, the figures
+/// filled in and consistent (the time alone is the time of the empty room).
+#[test]
+fn a_run_among_people_is_measured() {
+    let sc = sim::crowd(CrowdFlow::Doors, 1.0, 1, 0);
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let m = sim::measure(&sc, &world, 0, || GlobalPlanner::Dijkstra);
+    assert!(m.reached, "{m:?}");
+    assert_eq!(m.contacts_at_fault, 0, "{m:?}");
+    let empty = sim::crowd(CrowdFlow::Doors, 0.0, 1, 0);
+    let world0 = empty.build_world(Path::new(&empty.name)).unwrap();
+    let alone = sim::run(&empty, &world0, 0, GlobalPlanner::Dijkstra);
+    assert_eq!(m.travel_time_alone, alone.trace.summary.travel_time);
+    assert!(m.time_ratio().unwrap() >= 0.99, "{m:?}");
+    assert!(m.path_length > 13.0, "{m:?}");
+    assert!(m.sightings > 0 && m.missed <= m.sightings, "{m:?}");
+}
+
+/// Members of a group under social forces stay within a couple of metres of each other
+/// while they walk.
+#[test]
+fn groups_keep_together() {
+    let mut sc = sim::crowd(CrowdFlow::Corridor, 2.0, 5, 0);
+    sc.people_model = PeopleModelKind::SocialForce(SocialForceParams::default());
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let pairs: Vec<(usize, usize)> = (0..sc.people.len())
+        .flat_map(|i| (i + 1..sc.people.len()).map(move |j| (i, j)))
+        .filter(|&(i, j)| sc.people[i].group.is_some() && sc.people[i].group == sc.people[j].group)
+        .collect();
+    assert!(!pairs.is_empty());
+    let mut model = sc.people_model.build(&world, 0.2);
+    let far = Pose {
+        x: 1e6,
+        y: 1e6,
+        phi: 0.0,
+    };
+    let mut worst: f64 = 0.0;
+    for tick in 0..(40 * 200) {
+        let people = model.people(tick as f64 * 0.005, far);
+        for &(i, j) in &pairs {
+            let (a, b) = (people[i].center, people[j].center);
+            if a.x > -1e5 && b.x > -1e5 {
+                worst = worst.max((a - b).norm());
+            }
+        }
+    }
+    assert!(worst < 2.5, "group members {worst:.2} m apart");
+}

@@ -1,0 +1,227 @@
+//! `cargo xtask crowd`: the robot among generated crowds (issue 29), over densities,
+//! controllers and people models; a Markdown table of the figures crowd-navigation work
+//! reports, and every run as JSON lines.
+//!
+//! Run `k` of a cell is `sim::crowd(flow, density, seed, k)` driven with seed `k`: the
+//! same rooms and people for every controller and people model, so cells compare paired.
+
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::sync::Mutex;
+use std::time::Instant;
+
+use anyhow::{Context as _, bail};
+use harness::stats::median;
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use serde::Serialize;
+use sim::{CrowdCell, CrowdFlow, CrowdMetrics, GlobalPlanner, LocalPlanner, PeopleModelKind};
+use viz::{Align, Table};
+
+/// Options of `cargo xtask crowd`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Args {
+    /// Runs per cell.
+    #[arg(long, default_value_t = 20)]
+    pub runs: u64,
+    /// Densities, people per 100 m^2, comma-separated.
+    #[arg(long, value_delimiter = ',', default_values_t = [0.0, 0.5, 1.0, 2.0])]
+    pub densities: Vec<f64>,
+    /// Flows, comma-separated: doors, corridor, crossing.
+    #[arg(long, value_delimiter = ',', default_values_t = [CrowdFlow::Doors, CrowdFlow::Corridor, CrowdFlow::Crossing])]
+    pub flows: Vec<CrowdFlow>,
+    /// Local planners, comma-separated: rpp, trajectory, dwa.
+    #[arg(long, value_delimiter = ',', default_values_t = ["rpp".to_string(), "trajectory".to_string()])]
+    pub controllers: Vec<String>,
+    /// People models, comma-separated (see `sim::PeopleModelKind::NAMES`).
+    #[arg(long, value_delimiter = ',', default_values_t = ["social-force".to_string(), "social-force-blind".to_string()])]
+    pub models: Vec<String>,
+    /// Seed of the generated scenarios.
+    #[arg(long, default_value_t = 2026)]
+    pub seed: u64,
+    /// Runs at a time (default: one per core).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Output folder (default `target/crowd` in the workspace).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+/// One run, as written to `runs.jsonl`.
+#[derive(Debug, Clone, Serialize)]
+struct RunRecord<'a> {
+    flow: CrowdFlow,
+    density: f64,
+    controller: &'a str,
+    model: &'a str,
+    index: u64,
+    people: usize,
+    #[serde(flatten)]
+    metrics: CrowdMetrics,
+}
+
+/// Runs the crowd table.
+///
+/// # Errors
+///
+/// An unknown controller or people model; outputs that cannot be written.
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let mut controllers = Vec::new();
+    for c in &args.controllers {
+        let Some(local) = LocalPlanner::from_name(c, None) else {
+            bail!("unknown controller `{c}` (rpp, trajectory, dwa)");
+        };
+        controllers.push((c.as_str(), local));
+    }
+    let mut models = Vec::new();
+    for m in &args.models {
+        let Some(kind) = PeopleModelKind::from_name(m) else {
+            bail!(
+                "unknown people model `{m}` ({})",
+                PeopleModelKind::NAMES.join(", ")
+            );
+        };
+        models.push((m.as_str(), kind));
+    }
+    let out = args.out.clone().unwrap_or_else(|| {
+        PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("..")
+            .join("target")
+            .join("crowd")
+    });
+    std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let mut cells = Vec::new();
+    for &flow in &args.flows {
+        for &density in &args.densities {
+            for (c, local) in &controllers {
+                // Without people every model is the same run: one row.
+                let ms: &[(&str, PeopleModelKind)] =
+                    if density > 0.0 { &models } else { &models[..1] };
+                for (m, kind) in ms {
+                    cells.push((flow, density, *c, *local, *m, *kind));
+                }
+            }
+        }
+    }
+    let specs: Vec<(usize, u64)> = (0..cells.len())
+        .flat_map(|c| (0..args.runs).map(move |k| (c, k)))
+        .collect();
+    let jobs = args.jobs.unwrap_or_else(rayon::current_num_threads).max(1);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs)
+        .build()
+        .context("starting the worker threads")?;
+    let bar = ProgressBar::new(specs.len() as u64).with_style(
+        ProgressStyle::with_template("crowd {bar:40} {pos}/{len} runs, {elapsed} ({eta} left)")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    let jsonl =
+        Mutex::new(std::fs::File::create(out.join("runs.jsonl")).context("creating runs.jsonl")?);
+    let started = Instant::now();
+    let results: Vec<(usize, CrowdMetrics, f64)> = pool.install(|| {
+        specs
+            .par_iter()
+            .map(|&(c, k)| {
+                let (flow, density, controller, local, model, kind) = cells[c];
+                let mut sc = sim::crowd(flow, density, args.seed, k);
+                sc.local_planner = local;
+                sc.people_model = kind;
+                let world = sc
+                    .build_world(std::path::Path::new(&sc.name))
+                    .with_context(|| format!("building {}", sc.name))?;
+                let t0 = Instant::now();
+                let m = sim::measure(&sc, &world, k, || GlobalPlanner::Dijkstra);
+                let wall = t0.elapsed().as_secs_f64();
+                let record = RunRecord {
+                    flow,
+                    density,
+                    controller,
+                    model,
+                    index: k,
+                    people: sc.people.len(),
+                    metrics: m.clone(),
+                };
+                let line = serde_json::to_string(&record)?;
+                let mut f = jsonl
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner);
+                writeln!(f, "{line}").context("writing runs.jsonl")?;
+                bar.inc(1);
+                Ok((c, m, wall))
+            })
+            .collect::<anyhow::Result<_>>()
+    })?;
+    bar.finish_and_clear();
+    let mut sums = vec![CrowdCell::default(); cells.len()];
+    let mut walls = vec![0.0; cells.len()];
+    for (c, m, wall) in &results {
+        sums[*c].add(m);
+        walls[*c] += wall;
+    }
+    let mut table = Table::new([
+        "flow",
+        "density /100 m^2",
+        "controller",
+        "people",
+        "runs",
+        "success %",
+        "contact %",
+        "at-fault %",
+        "timeout %",
+        "time / alone (median)",
+        "path m",
+        "min gap m (median)",
+        "personal space s/run",
+        "people delay s/person",
+        "track error m",
+        "missed %",
+        "false tracks /scan",
+    ])
+    .align(std::iter::repeat_n(Align::Left, 4).chain(std::iter::repeat_n(Align::Right, 13)));
+    let pct = |a: usize, n: usize| format!("{:.1}", 100.0 * a as f64 / n.max(1) as f64);
+    let opt = |v: Option<f64>, d: usize| v.map_or("-".into(), |x| format!("{x:.d$}"));
+    for ((flow, density, controller, _, model, _), s) in cells.iter().zip(&sums) {
+        let people = if *density > 0.0 { *model } else { "none" };
+        table.row([
+            flow.to_string(),
+            format!("{density}"),
+            (*controller).to_string(),
+            people.to_string(),
+            s.runs.to_string(),
+            pct(s.reached, s.runs),
+            pct(s.with_contact, s.runs),
+            pct(s.with_at_fault, s.runs),
+            pct(s.timed_out, s.runs),
+            opt(median(s.time_ratios.iter().copied()), 2),
+            opt(s.mean_path_length(), 1),
+            opt(median(s.min_person_distance.iter().copied()), 2),
+            format!("{:.1}", s.personal_space_time / s.runs.max(1) as f64),
+            opt(s.mean_people_delay(), 2),
+            opt(s.mean_track_error(), 2),
+            opt(s.missed_rate().map(|r| 100.0 * r), 1),
+            opt(
+                (s.scans_with_people > 0)
+                    .then(|| s.false_tracks as f64 / s.scans_with_people as f64),
+                2,
+            ),
+        ]);
+    }
+    let wall = started.elapsed().as_secs_f64();
+    let md = format!(
+        "# Crowd table\n\n`cargo xtask crowd --runs {} --seed {}` ({} runs on {jobs} threads, \
+         {wall:.0} s of wall time). Each run is measured against the same room without \
+         people (time / alone) and against the people walking without the robot (their \
+         delay). Success: the goal reached; contact: any contact with a person or a wall; \
+         at-fault: a contact while the robot moved toward what it touched; timeout: the \
+         time limit (three times the route at top speed) reached.\n\n{}",
+        args.runs,
+        args.seed,
+        specs.len(),
+        table.to_markdown()
+    );
+    std::fs::write(out.join("crowd.md"), &md).context("writing crowd.md")?;
+    std::fs::write(out.join("crowd.csv"), table.to_csv()).context("writing crowd.csv")?;
+    println!("{md}");
+    eprintln!("crowd: wrote {}", out.join("crowd.md").display());
+    Ok(())
+}
