@@ -145,7 +145,9 @@ pub use rollout::{LocalPlanner, Rollout, RolloutController};
 pub use run::{Outcome, Recorder, run, run_with};
 pub use scenario::{MapSpec, Scenario, ScenarioError, WorldSpec};
 pub use soak::{SoakSummary, room, room_at, soak, soak_each, soak_rooms, soak_with};
-pub use social_force::{KEEP_RIGHT, MAX_STEP, PeopleModelKind, SocialForce, SocialForceParams};
+pub use social_force::{
+    CUTOFF_RANGES, KEEP_RIGHT, PeopleModelKind, STEP, SocialForce, SocialForceParams,
+};
 pub use tracking::{Mover, Tracker};
 pub use world::{Disc, OFFSTAGE, Person, Segment, Shape, StaticWorld, Walk, World};
 

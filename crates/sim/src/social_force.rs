@@ -7,16 +7,21 @@ use serde::{Deserialize, Serialize};
 
 use crate::kinematics::Pose;
 use crate::people::{PeopleModel, Scripted};
-use crate::world::{Disc, OFFSTAGE, Person, StaticWorld, Walk, World, pt};
+use crate::world::{Disc, NearIndex, OFFSTAGE, Person, StaticWorld, Walk, World, pt};
 
 /// How much further to their left each person sees the others by default, m
 /// ([`SocialForceParams::keep_right`]): the deterministic tie-break of exactly symmetric
 /// encounters (see [`SocialForce`]).
 pub const KEEP_RIGHT: f64 = 1e-3;
 
-/// The longest integration step, s: a call whose time advanced more is split into equal
-/// sub-steps (the engine's 5 ms tick is one step).
-pub const MAX_STEP: f64 = 0.01;
+/// Repulsions are dropped beyond this many ranges (`sigma`, `R`): `exp(-14)` is below
+/// 1e-6, so what is dropped is under 1e-4 m/s^2 with the paper's parameters.
+pub const CUTOFF_RANGES: f64 = 14.0;
+
+/// The integration step, s: people move in fixed steps of this length on their own clock
+/// (50 Hz, every fourth 5 ms tick of the engine), and a call between steps extrapolates
+/// their positions at their velocities.
+pub const STEP: f64 = 0.02;
 
 /// The social force model's parameters (scenario syntax), each defaulting to the paper's
 /// value (Helbing and Molnár 1995, the parameters of its simulations).
@@ -248,9 +253,9 @@ struct Walker {
 /// - `f_aB = -grad U`, `U(d) = U0 exp(-d / R)`, `d` the distance to the nearest wall point;
 ///
 /// and the speed is capped at `v_max = 1.3 v0`. Parameters are the paper's
-/// ([`SocialForceParams`]). The paper's fluctuations and attractions (groups, shop
-/// windows) are left out: positions are a deterministic function of the scenario and of
-/// the robot's poses.
+/// ([`SocialForceParams`]). The paper's fluctuations and its attractions to places (shop
+/// windows) are left out, its attraction to friends is a group term (below): positions
+/// are a deterministic function of the scenario and of the robot's poses.
 ///
 /// Where this model departs from the paper, and why (people walking at 1.3 m/s in the
 /// figures):
@@ -267,17 +272,22 @@ struct Walker {
 ///   face to face. Instead each person sees the others `keep_right` ([`KEEP_RIGHT`],
 ///   1 mm) further to their left than they are, so that an exact tie is broken toward
 ///   passing on the right (a side preference); set it to 0 for the paper's forces alone.
+/// - **Cut-off and step.** Repulsions from farther than [`CUTOFF_RANGES`] ranges are
+///   dropped (below 1e-4 m/s^2), and people move in fixed steps of [`STEP`] (50 Hz).
+/// - **Groups.** Members of a [`Person::group`] are pulled toward the group's centre of
+///   mass ([`SocialForceParams::group_strength`]), the paper's attraction to friends in
+///   the form Moussaïd et al. 2010 give it.
 /// - **Arrival.** On a `Walk::Once` route the desired speed toward the last way-point is
 ///   `min(v0, distance / tau)`, so that people stop at the end instead of circling it.
 ///
 /// # Cost
 ///
-/// One [`PeopleModel::people`] call with `n` people costs `n (n - 1)` pair forces (a
+/// One step with `n` people costs up to `n (n - 1)` pair forces (a
 /// square root, an exponential and a few products each), `n` robot forces and `n` calls
 /// of [`StaticWorld::nearest`] (a sweep of the static segments, or a ring of the loaded
 /// map's distance transform): O(n^2) + n nearest-wall queries, with no allocation beyond
-/// the returned discs. A call spanning more than [`MAX_STEP`] is integrated in equal
-/// sub-steps, each costing as much.
+/// the returned discs, once per [`STEP`] of simulated time (a call between steps costs
+/// `n` extrapolations).
 ///
 /// # Use
 ///
@@ -313,12 +323,16 @@ pub struct SocialForce<'w> {
     cos_half_view: f64,
     walkers: Vec<Walker>,
     accel: Vec<Vector2<f64>>,
+    /// The walls within the cut-off of any point.
+    walls: NearIndex,
     /// Each person's group, numbered from 0 in order of first appearance.
     group_of: Vec<Option<usize>>,
     /// Per group, the sum of its members' positions on stage and their number (scratch).
     centres: Vec<(Vector2<f64>, f64)>,
     /// Time of the last call and the robot's position then.
     last: Option<(f64, Point2)>,
+    /// The people's clock: the time of the first call and the steps taken since.
+    clock: (f64, u64),
 }
 
 impl<'w> SocialForce<'w> {
@@ -351,9 +365,11 @@ impl<'w> SocialForce<'w> {
             cos_half_view: (0.5 * params.view_deg).to_radians().cos(),
             walkers: Vec::with_capacity(people.len()),
             accel: vec![Vector2::zeros(); people.len()],
+            walls: NearIndex::new(statics, CUTOFF_RANGES * params.wall_range),
             group_of,
             centres: vec![(Vector2::zeros(), 0.0); ids.len()],
             last: None,
+            clock: (0.0, 0),
         };
         model.reset();
         model
@@ -463,6 +479,24 @@ impl<'w> SocialForce<'w> {
         force * self.view_weight(facing, force)
     }
 
+    /// Whether a body `other` may push one at `me` by more than the cut-off: the
+    /// potential's `b` is at least the gap between the bodies less the other's step
+    /// `|v_b| dt` (and the side preference), so beyond [`CUTOFF_RANGES`] ranges of that
+    /// the force is negligible.
+    fn within_reach(
+        &self,
+        (at, radius, _): (Point2, f64, Vector2<f64>),
+        (other, other_radius, velocity): (Point2, f64, Vector2<f64>),
+    ) -> bool {
+        let p = &self.params;
+        let reach = radius
+            + other_radius
+            + p.keep_right
+            + velocity.norm() * p.step_time
+            + CUTOFF_RANGES * p.person_range;
+        (at - other).norm_squared() <= reach * reach
+    }
+
     /// `w(e, -f)`: 1 when the source of `force` (opposite to it) lies within the field of
     /// view around `facing`, else `c`.
     fn view_weight(&self, facing: Vector2<f64>, force: Vector2<f64>) -> f64 {
@@ -475,8 +509,10 @@ impl<'w> SocialForce<'w> {
 
     /// The repulsion of the nearest wall point on a body at `at` of radius `radius`
     /// (from the centre).
-    fn wall_force(&self, at: Point2, radius: f64) -> Vector2<f64> {
-        let (d, q) = self.statics.nearest(at);
+    fn wall_force(&self, k: usize) -> Vector2<f64> {
+        let (at, radius) = (self.walkers[k].pos, self.people[k].radius);
+        // Infinite beyond the cut-off.
+        let (d, q) = self.walls.nearest(self.statics, at);
         if !(d.is_finite() && d > 0.0) {
             return Vector2::zeros();
         }
@@ -506,14 +542,18 @@ impl<'w> SocialForce<'w> {
             let me = (w.pos, self.people[k].radius, w.facing);
             let mut a = (desired - w.vel) / self.params.relaxation_time;
             for (j, o) in self.walkers.iter().enumerate() {
-                if j != k && o.on_stage {
+                if j != k
+                    && o.on_stage
+                    && self.within_reach(me, (o.pos, self.people[j].radius, o.vel))
+                {
                     a += self.person_force(me, (o.pos, self.people[j].radius, o.vel));
                 }
             }
-            if self.params.sees_robot {
-                a += self.person_force(me, (robot, self.robot_radius, robot_velocity));
+            let robot_body = (robot, self.robot_radius, robot_velocity);
+            if self.params.sees_robot && self.within_reach(me, robot_body) {
+                a += self.person_force(me, robot_body);
             }
-            a += self.wall_force(w.pos, self.people[k].radius);
+            a += self.wall_force(k);
             a += self.group_force(k);
             self.accel[k] = a;
         }
@@ -597,19 +637,32 @@ impl PeopleModel for SocialForce<'_> {
             // The first call, or time went back (a restarted episode): start over.
             self.reset();
             self.last = Some((t, here));
+            self.clock = (t, 0);
             return self.discs();
         };
         let dt = t - before;
-        if dt > 0.0 {
-            let robot_velocity = (here - robot_before) / dt;
-            let steps = (dt / MAX_STEP).ceil().max(1.0);
-            let h = dt / steps;
-            for i in 0..steps as u64 {
-                self.step(before + i as f64 * h, h, here, robot_velocity);
+        let robot_velocity = if dt > 0.0 {
+            (here - robot_before) / dt
+        } else {
+            Vector2::zeros()
+        };
+        let (t0, steps) = self.clock;
+        // Steps of the clock up to `t` (a step ending within a nanosecond of `t` counts:
+        // the engine's ticks are sums of 5 ms).
+        let due = ((t - t0) / STEP + 1e-7).floor().max(0.0) as u64;
+        for k in steps..due {
+            self.step(t0 + k as f64 * STEP, STEP, here, robot_velocity);
+        }
+        self.clock.1 = due.max(steps);
+        self.last = Some((t, here));
+        let ahead = t - (t0 + self.clock.1 as f64 * STEP);
+        let mut discs = self.discs();
+        for (d, w) in discs.iter_mut().zip(&self.walkers) {
+            if w.on_stage {
+                d.center += w.vel * ahead;
             }
         }
-        self.last = Some((t, here));
-        self.discs()
+        discs
     }
 }
 

@@ -295,14 +295,25 @@ impl StaticWorld {
     /// cell or off the map.
     #[must_use]
     pub fn nearest(&self, p: Point2) -> (f64, Point2) {
-        let mut best = nearest_on_segments(p, &self.segments);
+        let best = nearest_on_segments(p, &self.segments);
+        self.nearer_disc(p, self.nearer_on_grid(p, best))
+    }
+
+    /// `best`, or the nearest point of the loaded map's part if nearer.
+    fn nearer_on_grid(&self, p: Point2, best: (f64, Point2)) -> (f64, Point2) {
         let from_grid = self
             .grid_rays()
             .and_then(|g| g.nearest(p))
             .unwrap_or_else(|| nearest_on_segments(p, &self.grid_segments));
         if from_grid.0 < best.0 {
-            best = from_grid;
+            from_grid
+        } else {
+            best
         }
+    }
+
+    /// `best`, or the nearest point of a round obstacle if nearer.
+    fn nearer_disc(&self, p: Point2, mut best: (f64, Point2)) -> (f64, Point2) {
         for d in &self.discs {
             let v = p - d.center;
             let n = v.norm();
@@ -317,6 +328,124 @@ impl StaticWorld {
             }
         }
         best
+    }
+}
+
+/// The static world's boundary within a fixed reach of any point: the segments sorted into
+/// square cells, each cell listing the segments within `reach` of any point of it, so that
+/// a query sweeps the few segments near it instead of all (a loaded map's cells, when it
+/// has them, and the round obstacles are looked up as [`StaticWorld::nearest`] does).
+#[derive(Debug, Clone)]
+pub(crate) struct NearIndex {
+    origin: Point2,
+    cell: f64,
+    cols: usize,
+    rows: usize,
+    /// Per cell, the indices of its segments into `segments`.
+    lists: Vec<Vec<u32>>,
+    segments: Vec<Segment>,
+    reach: f64,
+}
+
+impl NearIndex {
+    /// The segments of `world` within `reach` of any point (its loaded map's edges too,
+    /// unless the map's cells answer for them).
+    pub(crate) fn new(world: &StaticWorld, reach: f64) -> Self {
+        let mut segments = world.segments.clone();
+        if world.grid.is_none() {
+            segments.extend_from_slice(&world.grid_segments);
+        }
+        let reach = if reach.is_finite() {
+            reach.max(0.0)
+        } else {
+            0.0
+        };
+        let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
+        let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+        for s in &segments {
+            for q in [s.a, s.b] {
+                lo = lo.inf(&q);
+                hi = hi.sup(&q);
+            }
+        }
+        let cell = reach.max(0.25);
+        // Cells cover the segments' box grown by the reach; at most 1024 a side (a
+        // larger world gets larger cells).
+        let span = (hi - lo).map(|v| v.max(0.0)) + nalgebra::Vector2::repeat(2.0 * reach);
+        let cell = cell.max(span.x.max(span.y) / 1024.0);
+        let origin = lo - nalgebra::Vector2::repeat(reach);
+        let (cols, rows) = if segments.is_empty() {
+            (0, 0)
+        } else {
+            (
+                (span.x / cell).ceil().max(1.0) as usize,
+                (span.y / cell).ceil().max(1.0) as usize,
+            )
+        };
+        let mut lists = vec![Vec::new(); cols * rows];
+        let half_diagonal = cell * std::f64::consts::FRAC_1_SQRT_2;
+        for (k, s) in segments.iter().enumerate() {
+            let grow = reach + cell;
+            let c0 = (((s.a.x.min(s.b.x) - grow - origin.x) / cell)
+                .floor()
+                .max(0.0)) as usize;
+            let c1 = (((s.a.x.max(s.b.x) + grow - origin.x) / cell).ceil() as usize).min(cols);
+            let r0 = (((s.a.y.min(s.b.y) - grow - origin.y) / cell)
+                .floor()
+                .max(0.0)) as usize;
+            let r1 = (((s.a.y.max(s.b.y) + grow - origin.y) / cell).ceil() as usize).min(rows);
+            for r in r0..r1 {
+                for c in c0..c1 {
+                    let centre =
+                        origin + nalgebra::Vector2::new(c as f64 + 0.5, r as f64 + 0.5) * cell;
+                    let q = closest_on_segment(centre, s.a, s.b);
+                    if (centre - q).norm() <= reach + half_diagonal {
+                        lists[r * cols + c].push(k as u32);
+                    }
+                }
+            }
+        }
+        Self {
+            origin,
+            cell,
+            cols,
+            rows,
+            lists,
+            segments,
+            reach,
+        }
+    }
+
+    /// [`StaticWorld::nearest`] for a `p` whose nearest boundary point is within the
+    /// reach: the same distance; `(inf, p)` when nothing is within reach. `world` is the
+    /// world the index was made of.
+    pub(crate) fn nearest(&self, world: &StaticWorld, p: Point2) -> (f64, Point2) {
+        let rel = (p - self.origin) / self.cell;
+        let inside_grid = rel.x >= 0.0
+            && rel.y >= 0.0
+            && (rel.x as usize) < self.cols
+            && (rel.y as usize) < self.rows;
+        // Off the index every segment is farther than the reach.
+        let mut best = (f64::INFINITY, p);
+        if inside_grid {
+            for &k in &self.lists[rel.y as usize * self.cols + rel.x as usize] {
+                let s = &self.segments[k as usize];
+                let q = closest_on_segment(p, s.a, s.b);
+                let d = (p - q).norm();
+                if d < best.0 {
+                    best = (d, q);
+                }
+            }
+        }
+        if world.grid.is_some() {
+            best = world.nearer_on_grid(p, best);
+        }
+        best = world.nearer_disc(p, best);
+        if best.0 > self.reach {
+            (f64::INFINITY, p)
+        } else {
+            best
+        }
     }
 }
 
@@ -415,6 +544,38 @@ impl World {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The index finds the same nearest distance as the sweep of every segment
+        /// whenever that distance is within its reach, and nothing otherwise.
+        #[test]
+        fn near_index_matches_the_sweep(
+            walls in prop::collection::vec(((0.0..20.0f64, 0.0..12.0f64), (0.0..20.0f64, 0.0..12.0f64)), 1..12),
+            discs in prop::collection::vec((0.0..20.0f64, 0.0..12.0f64, 0.1..1.0f64), 0..3),
+            points in prop::collection::vec((-3.0..23.0f64, -3.0..15.0f64), 1..40),
+            reach in 0.3..4.0f64,
+        ) {
+            let mut world = StaticWorld::default();
+            for (a, b) in walls {
+                world.add_shape(&Shape::Wall { from: a, to: b, thickness: 0.1 });
+            }
+            for (x, y, r) in discs {
+                world.add_shape(&Shape::Disc { center: (x, y), radius: r });
+            }
+            let index = NearIndex::new(&world, reach);
+            for (x, y) in points {
+                let p = Point2::new(x, y);
+                let (full, _) = world.nearest(p);
+                let (near, _) = index.nearest(&world, p);
+                if full <= reach {
+                    prop_assert_eq!(near, full, "at {:?}", p);
+                } else {
+                    prop_assert!(near.is_infinite(), "at {:?}: {} beyond {}", p, near, reach);
+                }
+            }
+        }
+    }
 
     #[test]
     fn person_modes() {
