@@ -45,7 +45,18 @@ pub struct Args {
     /// Output folder (default `target/crowd` in the workspace).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Also the safety soak at walking speed: this many of its generated rooms (seed
+    /// 2026), people at 0.8-1.6 m/s, for every controller and every people model of
+    /// `--soak-models` (0: none).
+    #[arg(long, default_value_t = 0)]
+    pub soak: u64,
+    /// People models of the soak, comma-separated.
+    #[arg(long, value_delimiter = ',', default_values_t = ["scripted".to_string(), "social-force".to_string(), "social-force-blind".to_string()])]
+    pub soak_models: Vec<String>,
 }
+
+/// Walking speeds of the soak at walking speed, m/s (issue 29).
+const SOAK_SPEEDS: (f64, f64) = (0.8, 1.6);
 
 /// One run, as written to `runs.jsonl`.
 #[derive(Debug, Clone, Serialize)]
@@ -73,16 +84,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         };
         controllers.push((c.as_str(), local));
     }
-    let mut models = Vec::new();
-    for m in &args.models {
-        let Some(kind) = PeopleModelKind::from_name(m) else {
-            bail!(
-                "unknown people model `{m}` ({})",
-                PeopleModelKind::NAMES.join(", ")
-            );
-        };
-        models.push((m.as_str(), kind));
-    }
+    let models = people_models(&args.models)?;
+    let soak_models = people_models(&args.soak_models)?;
     let out = args.out.clone().unwrap_or_else(|| {
         PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("..")
@@ -90,6 +93,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .join("crowd")
     });
     std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let jobs = args.jobs.unwrap_or_else(rayon::current_num_threads).max(1);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs)
+        .build()
+        .context("starting the worker threads")?;
+    if args.soak > 0 {
+        soak(args, &controllers, &soak_models, &pool, &out)?;
+    }
+    if args.runs == 0 {
+        return Ok(());
+    }
     let mut cells = Vec::new();
     for &flow in &args.flows {
         for &density in &args.densities {
@@ -106,11 +120,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let specs: Vec<(usize, u64)> = (0..cells.len())
         .flat_map(|c| (0..args.runs).map(move |k| (c, k)))
         .collect();
-    let jobs = args.jobs.unwrap_or_else(rayon::current_num_threads).max(1);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(jobs)
-        .build()
-        .context("starting the worker threads")?;
     let bar = ProgressBar::new(specs.len() as u64).with_style(
         ProgressStyle::with_template("crowd {bar:40} {pos}/{len} runs, {elapsed} ({eta} left)")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -223,5 +232,111 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     std::fs::write(out.join("crowd.csv"), table.to_csv()).context("writing crowd.csv")?;
     println!("{md}");
     eprintln!("crowd: wrote {}", out.join("crowd.md").display());
+    Ok(())
+}
+
+/// The people models named in `names`.
+fn people_models(names: &[String]) -> anyhow::Result<Vec<(&str, PeopleModelKind)>> {
+    names
+        .iter()
+        .map(|m| match PeopleModelKind::from_name(m) {
+            Some(kind) => Ok((m.as_str(), kind)),
+            None => bail!(
+                "unknown people model `{m}` ({})",
+                PeopleModelKind::NAMES.join(", ")
+            ),
+        })
+        .collect()
+}
+
+/// The safety soak at walking speed: `args.soak` rooms for each controller and people
+/// model, one soak per thread; writes `soak.md`.
+fn soak(
+    args: &Args,
+    controllers: &[(&str, LocalPlanner)],
+    models: &[(&str, PeopleModelKind)],
+    pool: &rayon::ThreadPool,
+    out: &std::path::Path,
+) -> anyhow::Result<()> {
+    let combos: Vec<(&str, LocalPlanner, &str, PeopleModelKind)> = controllers
+        .iter()
+        .flat_map(|&(c, local)| models.iter().map(move |&(m, kind)| (c, local, m, kind)))
+        .collect();
+    eprintln!(
+        "crowd: the soak at walking speed, {} rooms x {} controllers x {} people models",
+        args.soak,
+        controllers.len(),
+        models.len()
+    );
+    let started = Instant::now();
+    let results: Vec<(sim::SoakSummary, f64)> = pool.install(|| {
+        combos
+            .par_iter()
+            .map(|&(c, local, m, kind)| {
+                let t0 = Instant::now();
+                let s = sim::soak_rooms(
+                    2026,
+                    args.soak,
+                    |seed, k| sim::room_at(seed, k, SOAK_SPEEDS),
+                    |sc| {
+                        sc.local_planner = local;
+                        sc.people_model = kind;
+                    },
+                );
+                let wall = t0.elapsed().as_secs_f64();
+                eprintln!(
+                    "crowd: soak {c} / {m}: {} of {} reached, {} at-fault contacts, {wall:.0} s",
+                    s.reached, s.rooms, s.contacts_at_fault
+                );
+                (s, wall)
+            })
+            .collect()
+    });
+    let mut table = Table::new([
+        "controller",
+        "people",
+        "rooms",
+        "reached %",
+        "at-fault contacts",
+        "contacts, robot stopped",
+        "contacts, not approaching",
+        "rooms with an at-fault contact",
+        "simulated s",
+    ])
+    .align(std::iter::repeat_n(Align::Left, 2).chain(std::iter::repeat_n(Align::Right, 7)));
+    for ((c, _, m, _), (s, _)) in combos.iter().zip(&results) {
+        let rooms: Vec<String> = s
+            .at_fault_rooms
+            .iter()
+            .take(8)
+            .map(u64::to_string)
+            .collect();
+        table.row([
+            (*c).to_string(),
+            (*m).to_string(),
+            s.rooms.to_string(),
+            format!("{:.1}", 100.0 * s.reached as f64 / s.rooms.max(1) as f64),
+            s.contacts_at_fault.to_string(),
+            s.contacts_robot_stopped.to_string(),
+            s.contacts_not_approaching.to_string(),
+            if rooms.is_empty() {
+                "-".into()
+            } else {
+                rooms.join(" ")
+            },
+            format!("{:.0}", s.simulated_s),
+        ]);
+    }
+    let md = format!(
+        "# The safety soak at walking speed\n\n`cargo xtask crowd --runs 0 --soak {}` \
+         ({:.0} s of wall time): `sim::room_at(2026, k, (0.8, 1.6))` for k < {}, people \
+         at 0.8-1.6 m/s, each run seeded with its room index.\n\n{}",
+        args.soak,
+        started.elapsed().as_secs_f64(),
+        args.soak,
+        table.to_markdown()
+    );
+    std::fs::write(out.join("soak.md"), &md).context("writing soak.md")?;
+    println!("{md}");
     Ok(())
 }

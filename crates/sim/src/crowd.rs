@@ -562,7 +562,8 @@ pub fn arrivals_alone(scenario: &Scenario, world: &World, until: f64) -> Vec<Opt
 }
 
 /// Runs `scenario` with its people, without them, and the people alone, with `seed` and
-/// the planner `planner` makes (called twice), and measures the run among people.
+/// the planner `planner` makes (called twice), and measures the run among people:
+/// [`run_with`](crate::run_with) with a [`CrowdMeter`], then [`CrowdMeter::finish`].
 ///
 /// ```no_run
 /// let sc = sim::crowd(sim::CrowdFlow::Crossing, 1.0, 1, 0);
@@ -579,33 +580,49 @@ pub fn measure(
 ) -> CrowdMetrics {
     let mut meter = CrowdMeter::new(world.people.len());
     let out = crate::run_with(scenario, world, seed, planner(), &mut [&mut meter]);
-    let s = &out.trace.summary;
-    let mut alone_world = world.clone();
-    alone_world.people.clear();
-    let mut alone_sc = scenario.clone();
-    alone_sc.people.clear();
-    let alone = crate::run(&alone_sc, &alone_world, seed, planner());
-    let reference = arrivals_alone(scenario, world, s.end_time);
-    let (mut arrived, mut delay) = (0, 0.0);
-    for (with, without) in meter.arrivals.iter().zip(&reference) {
-        if let (Some(a), Some(b)) = (with, without) {
-            arrived += 1;
-            delay += a - b;
+    meter.finish(scenario, world, seed, &out, planner())
+}
+
+impl CrowdMeter {
+    /// The figures of the run `out` this meter watched (`scenario` in `world`, `seed`):
+    /// runs the scenario again without people (with `planner`) and the people alone.
+    #[must_use]
+    pub fn finish(
+        self,
+        scenario: &Scenario,
+        world: &World,
+        seed: u64,
+        out: &crate::Outcome,
+        planner: GlobalPlanner,
+    ) -> CrowdMetrics {
+        let s = &out.trace.summary;
+        let mut alone_world = world.clone();
+        alone_world.people.clear();
+        let mut alone_sc = scenario.clone();
+        alone_sc.people.clear();
+        let alone = crate::run(&alone_sc, &alone_world, seed, planner);
+        let reference = arrivals_alone(scenario, world, s.end_time);
+        let (mut arrived, mut delay) = (0, 0.0);
+        for (with, without) in self.arrivals.iter().zip(&reference) {
+            if let (Some(a), Some(b)) = (with, without) {
+                arrived += 1;
+                delay += a - b;
+            }
         }
-    }
-    CrowdMetrics {
-        reached: s.reached,
-        timed_out: !s.reached && s.end_time + 1e-9 >= scenario.time_limit,
-        contacts: out.trace.contacts.len(),
-        contacts_at_fault: s.contacts_at_fault,
-        travel_time: s.travel_time,
-        travel_time_alone: alone.trace.summary.travel_time,
-        path_length: s.distance,
-        min_person_distance: s.min_person_distance,
-        personal_space_time: s.personal_space_time,
-        people_arrived: arrived,
-        people_delay: delay,
-        ..meter.metrics
+        CrowdMetrics {
+            reached: s.reached,
+            timed_out: !s.reached && s.end_time + 1e-9 >= scenario.time_limit,
+            contacts: out.trace.contacts.len(),
+            contacts_at_fault: s.contacts_at_fault,
+            travel_time: s.travel_time,
+            travel_time_alone: alone.trace.summary.travel_time,
+            path_length: s.distance,
+            min_person_distance: s.min_person_distance,
+            personal_space_time: s.personal_space_time,
+            people_arrived: arrived,
+            people_delay: delay,
+            ..self.metrics
+        }
     }
 }
 

@@ -33,6 +33,11 @@ pub struct Args {
     /// `--controller` then still chooses the local planner. Default: the scenario as written.
     #[arg(long, value_parser = PROFILES)]
     pub profile: Option<String>,
+    /// How the people move: `scripted` (their routes, blind), `social-force` (Helbing and
+    /// Molnár's social forces, seeing the robot) or `social-force-blind` (not seeing it).
+    /// Default: the scenario's `people_model`.
+    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(sim::PeopleModelKind::NAMES))]
+    pub people_model: Option<String>,
     /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver
     /// writes it: free 254, occupied 0, unknown 205, `mode: trinary`) and the figures
     /// (trajectory, v and omega, animation; SVG).
@@ -124,12 +129,23 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     if let Some(name) = &args.controller {
         set_local_planner(&mut scenario, name)?;
     }
+    if let Some(name) = &args.people_model {
+        scenario.people_model =
+            sim::PeopleModelKind::from_name(name).context("--people-model: a known name")?;
+    }
     let planner = global_planner(&args.planner)?;
+    let mut meter = sim::CrowdMeter::new(world.people.len());
     let outcome = match &args.mcap {
-        None => sim::run(&scenario, &world, args.seed, planner),
+        None => sim::run_with(&scenario, &world, args.seed, planner, &mut [&mut meter]),
         Some(path) => {
             let mut bag = sim::BagRecorder::create(path)?;
-            let outcome = sim::run_with(&scenario, &world, args.seed, planner, &mut [&mut bag]);
+            let outcome = sim::run_with(
+                &scenario,
+                &world,
+                args.seed,
+                planner,
+                &mut [&mut bag, &mut meter],
+            );
             bag.finish()?;
             outcome
         }
@@ -164,9 +180,46 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         m.contacts_robot_stopped,
         m.contacts_not_approaching
     )?;
+    // Among people, the crowd figures: the same run without them, and them without the
+    // robot (two more runs, the second of the people model alone).
+    let crowd = if world.people.is_empty() {
+        None
+    } else {
+        let planner = global_planner(&args.planner)?;
+        Some(meter.finish(&scenario, &world, args.seed, &outcome, planner))
+    };
+    if let Some(c) = &crowd {
+        outln!(
+            "among people: {}; people's delay {:.2} s over {} who left; tracker: {} error, {} of {} sightings missed, {} false tracks",
+            match (c.travel_time_alone, c.time_ratio()) {
+                (Some(t), Some(r)) => format!("{t:.2} s to the goal without them ({r:.2}x)"),
+                (Some(t), None) => format!("{t:.2} s to the goal without them"),
+                (None, _) => "goal not reached without them either".to_string(),
+            },
+            c.people_delay,
+            c.people_arrived,
+            if c.sightings > c.missed {
+                format!(
+                    "{:.3} m",
+                    c.track_error_sum / (c.sightings - c.missed) as f64
+                )
+            } else {
+                "-".to_string()
+            },
+            c.missed,
+            c.sightings,
+            c.false_tracks
+        )?;
+    }
     if let Some(dir) = &args.out {
-        let files = sim::write_all(&outcome, &world, dir)
+        let mut files = sim::write_all(&outcome, &world, dir)
             .with_context(|| format!("writing the outputs into {}", dir.display()))?;
+        if let Some(c) = &crowd {
+            let path = dir.join("crowd.json");
+            std::fs::write(&path, serde_json::to_string_pretty(c)?)
+                .with_context(|| format!("writing {}", path.display()))?;
+            files.push(path);
+        }
         for f in files {
             outln!("wrote {}", f.display())?;
         }
