@@ -1,11 +1,13 @@
 //! People who react: Helbing and Molnár's social force model ([`SocialForce`]), and the
-//! scenario's choice of people model ([`PeopleModelKind`]).
+//! scenario's choice of people model ([`PeopleModelKind`]: scripted, social forces or
+//! ORCA).
 
 use hyplan_core::Point2;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use crate::kinematics::Pose;
+use crate::orca::{Orca, OrcaParams};
 use crate::people::{PeopleModel, Scripted};
 use crate::world::{Disc, Person, StaticWorld, Walk, World, pt};
 
@@ -131,13 +133,17 @@ impl SocialForceParams {
 ///
 /// ```ron
 /// people_model: SocialForce((sees_robot: true)),
+/// // or
+/// people_model: Orca((sees_robot: false)),
 /// ```
 ///
 /// ```
-/// use sim::{PeopleModelKind, SocialForceParams};
+/// use sim::{OrcaParams, PeopleModelKind, SocialForceParams};
 /// assert_eq!(PeopleModelKind::default(), PeopleModelKind::Scripted);
 /// let kind = PeopleModelKind::SocialForce(SocialForceParams::default());
 /// assert!(kind.problem().is_none());
+/// let kind = PeopleModelKind::Orca(OrcaParams { time_horizon: -1.0, ..Default::default() });
+/// assert_eq!(kind.problem().map(|(field, _, _)| field), Some("time_horizon"));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub enum PeopleModelKind {
@@ -146,6 +152,8 @@ pub enum PeopleModelKind {
     Scripted,
     /// Helbing and Molnár's social forces ([`SocialForce`]).
     SocialForce(SocialForceParams),
+    /// Optimal reciprocal collision avoidance ([`Orca`]).
+    Orca(OrcaParams),
 }
 
 impl PeopleModelKind {
@@ -161,6 +169,12 @@ impl PeopleModelKind {
                 robot_radius,
                 params,
             )),
+            Self::Orca(params) => Box::new(Orca::new(
+                &world.people,
+                &world.statics,
+                robot_radius,
+                params,
+            )),
         }
     }
 
@@ -170,6 +184,7 @@ impl PeopleModelKind {
         match self {
             Self::Scripted => None,
             Self::SocialForce(p) => p.problem(),
+            Self::Orca(p) => p.problem(),
         }
     }
 }
@@ -336,33 +351,13 @@ impl<'w> SocialForce<'w> {
     /// The desired velocity of person `k` at time `t`, after moving on to the next leg
     /// when near the current goal.
     fn desired(&mut self, k: usize, t: f64) -> Vector2<f64> {
-        let people = self.people;
-        let p = &people[k];
+        let p = &self.people[k];
         let w = &mut self.walkers[k];
-        if t < p.start || p.speed <= 0.0 {
-            return Vector2::zeros();
-        }
-        let Some(mut goal) = goal_of(p, w.leg) else {
+        let Some(h) = heading(p, &mut w.leg, w.pos, t, self.params.switch_distance) else {
             return Vector2::zeros();
         };
-        let last = |leg| p.walk == Walk::Once && goal_of(p, leg + 1).is_none();
-        if !last(w.leg) && (pt(p.path[goal]) - w.pos).norm() < self.params.switch_distance {
-            w.leg = next_leg(p, w.leg);
-            goal = goal_of(p, w.leg).unwrap_or(goal);
-        }
-        let to_goal = pt(p.path[goal]) - w.pos;
-        let distance = to_goal.norm();
-        if distance <= 0.0 {
-            return Vector2::zeros();
-        }
-        let e = to_goal / distance;
-        w.facing = e;
-        let speed = if last(w.leg) {
-            p.speed.min(distance / self.params.relaxation_time)
-        } else {
-            p.speed
-        };
-        e * speed
+        w.facing = h.direction;
+        h.direction * h.speed(p.speed, self.params.relaxation_time)
     }
 
     /// The repulsion on a body at `at` of radius `radius` facing `facing`, of a body at
@@ -484,9 +479,61 @@ impl PeopleModel for SocialForce<'_> {
     }
 }
 
+/// Where a person on their route heads ([`heading`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Heading {
+    /// Unit vector toward the goal.
+    pub direction: Vector2<f64>,
+    /// Distance to the goal, m (> 0).
+    pub distance: f64,
+    /// Whether the goal is the last way-point of a `Once` route.
+    pub last: bool,
+}
+
+impl Heading {
+    /// The desired speed of a person of speed `v0`: `v0`, or toward the last way-point of
+    /// a `Once` route `min(v0, distance / arrival_time)`, so that they stop there.
+    pub fn speed(&self, v0: f64, arrival_time: f64) -> f64 {
+        if self.last {
+            v0.min(self.distance / arrival_time)
+        } else {
+            v0
+        }
+    }
+}
+
+/// Where person `p` at `pos` on leg `leg` heads at time `t`, after moving `leg` on to the
+/// next leg when within `switch_distance` of the current goal (unless it is the last
+/// way-point of a `Once` route). `None` while they wait for their `start`, when their
+/// speed is not positive, when they have no goal, or when they stand on it.
+pub(crate) fn heading(
+    p: &Person,
+    leg: &mut usize,
+    pos: Point2,
+    t: f64,
+    switch_distance: f64,
+) -> Option<Heading> {
+    if t < p.start || p.speed <= 0.0 {
+        return None;
+    }
+    let mut goal = goal_of(p, *leg)?;
+    let last = |leg| p.walk == Walk::Once && goal_of(p, leg + 1).is_none();
+    if !last(*leg) && (pt(p.path[goal]) - pos).norm() < switch_distance {
+        *leg = next_leg(p, *leg);
+        goal = goal_of(p, *leg).unwrap_or(goal);
+    }
+    let to_goal = pt(p.path[goal]) - pos;
+    let distance = to_goal.norm();
+    (distance > 0.0).then(|| Heading {
+        direction: to_goal / distance,
+        distance,
+        last: last(*leg),
+    })
+}
+
 /// The way-point person `p` heads for on leg `leg`, in walking order (`None` past the end
 /// of a `Once` route, or for a route of fewer than two points).
-fn goal_of(p: &Person, leg: usize) -> Option<usize> {
+pub(crate) fn goal_of(p: &Person, leg: usize) -> Option<usize> {
     let n = p.path.len();
     if n < 2 {
         return None;
@@ -503,7 +550,7 @@ fn goal_of(p: &Person, leg: usize) -> Option<usize> {
 }
 
 /// The leg after `leg` (kept within one round of a cyclic walk, so it never overflows).
-fn next_leg(p: &Person, leg: usize) -> usize {
+pub(crate) fn next_leg(p: &Person, leg: usize) -> usize {
     let n = p.path.len().max(2);
     match p.walk {
         Walk::Once => leg + 1,

@@ -5,6 +5,7 @@ mod explore;
 mod kinematics;
 mod laser;
 mod navigation;
+mod orca;
 mod profile;
 mod rollout;
 mod social_force;
