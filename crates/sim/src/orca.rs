@@ -647,7 +647,7 @@ mod tests {
     fn walls_become_obstacles() {
         let mut statics = StaticWorld::default();
         statics.add_shape(&crate::Shape::Box {
-            center: (2.0, 2.0),
+            center: (6.0, 6.0),
             size: (1.0, 1.0),
             angle_deg: 0.0,
         });
@@ -659,7 +659,7 @@ mod tests {
             outward: None,
         });
         let walls = Walls::new(&statics, 1.0);
-        // 4 box edges, 4 cell edges, 2 sides of the loose edge.
+        // 4 box edges, 2 sides of the loose edge, 4 cell edges.
         assert_eq!(walls.obstacles.len(), 10);
         let solid_left_at = |k: usize, inside: Point2| {
             let Obstacle::Open { vertices } = &walls.obstacles[k] else {
@@ -670,20 +670,22 @@ mod tests {
             (b - a).perp_dot(c - a) > 0.0
         };
         for k in 0..4 {
-            assert!(solid_left_at(k, Point2::new(2.0, 2.0)), "box edge {k}");
+            assert!(solid_left_at(k, Point2::new(6.0, 6.0)), "box edge {k}");
         }
-        for k in 4..8 {
+        for k in 6..10 {
             assert!(solid_left_at(k, Point2::new(1.5, 1.5)), "cell edge {k}");
         }
         assert_ne!(
-            solid_left_at(8, Point2::new(21.0, 0.5)),
-            solid_left_at(9, Point2::new(21.0, 0.5))
+            solid_left_at(4, Point2::new(21.0, 0.5)),
+            solid_left_at(5, Point2::new(21.0, 0.5))
         );
         let mut near = Vec::new();
-        walls.near(Point2::new(2.0, 2.0), 0.6, &mut near);
+        walls.near(Point2::new(6.0, 6.0), 0.6, &mut near);
         assert_eq!(near, [0, 1, 2, 3]);
         walls.near(Point2::new(20.5, 0.5), 0.6, &mut near);
-        assert_eq!(near, [8, 9]);
+        assert_eq!(near, [4, 5]);
+        walls.near(Point2::new(1.5, 1.5), 0.6, &mut near);
+        assert_eq!(near, [6, 7, 8, 9]);
         walls.near(Point2::new(10.0, 10.0), 1.0, &mut near);
         assert!(near.is_empty());
     }
