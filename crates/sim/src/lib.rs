@@ -23,7 +23,8 @@
 //!   saturation ([`saturate`]) and exact arc integration ([`integrate`]).
 //! - The world: [`Shape`], [`StaticWorld`], [`World`], [`Disc`]; people: [`Person`],
 //!   [`Walk`] and the [`PeopleModel`] trait ([`Scripted`] walkers; [`SocialForce`],
-//!   Helbing and Molnár's social forces, [`SocialForceParams`]), chosen by
+//!   Helbing and Molnár's social forces, [`SocialForceParams`]; [`Orca`], van den Berg
+//!   et al.'s reciprocal velocity obstacles, [`OrcaParams`]), chosen by
 //!   [`PeopleModelKind`].
 //! - Sensing and mapping: [`Laser`], [`LaserModel`], [`Scan`] (exact ray casts, seeded
 //!   noise); [`Mapping`], [`OccupancyGrid`] (clamped log-odds, ROS values [`FREE`],
@@ -87,6 +88,7 @@ mod kinematics;
 mod laser;
 mod mapping;
 mod navigator;
+mod orca;
 mod people;
 mod planner;
 mod profile;
@@ -134,6 +136,7 @@ pub use kinematics::{
 pub use laser::{Laser, LaserModel, Scan};
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
+pub use orca::{Orca, OrcaParams};
 pub use people::{PeopleModel, Scripted};
 pub use planner::{GlobalPlanner, PlanScratch};
 pub use profile::Profile;

@@ -4,8 +4,11 @@
 //! whatever the robot does. Models that react to the robot (social forces, velocity
 //! obstacles) implement [`PeopleModel`] too and plug into [`crate::Sim::with_people`].
 
+use hyplan_core::Point2;
+use nalgebra::Vector2;
+
 use crate::kinematics::Pose;
-use crate::world::{Disc, Person};
+use crate::world::{Disc, OFFSTAGE, Person, Walk};
 
 /// People's positions over time. `Send`, so that a simulation can move to a worker
 /// thread (the Python bindings step it with the GIL released).
@@ -49,4 +52,85 @@ impl PeopleModel for Scripted<'_> {
             })
             .collect()
     }
+}
+
+/// A people model that moves its people in fixed steps of [`crate::STEP`] on its own
+/// clock ([`Stepper`] drives it).
+pub(crate) trait Stepped {
+    /// Everyone back at their first way-point (or off stage), standing.
+    fn reset(&mut self);
+    /// One step of `h` seconds from time `t`, the robot at `robot` moving at
+    /// `robot_velocity`.
+    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>);
+    /// Everyone's body `ahead` seconds after the last step, at their velocities.
+    fn discs(&self, ahead: f64) -> Vec<Disc>;
+}
+
+/// The clock of a [`Stepped`] model: steps of [`crate::STEP`] from its first call, the
+/// robot's velocity from its displacement between calls, a restart when time goes back.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Stepper {
+    /// Time of the last call and the robot's position then.
+    last: Option<(f64, Point2)>,
+    /// Time of the first call and the steps taken since.
+    clock: (f64, u64),
+}
+
+impl Stepper {
+    /// `model`'s people at `t` with the robot at `robot` ([`PeopleModel::people`]).
+    pub(crate) fn people(&mut self, model: &mut impl Stepped, t: f64, robot: Pose) -> Vec<Disc> {
+        let here = Point2::new(robot.x, robot.y);
+        let Some((before, robot_before)) = self.last.filter(|&(before, _)| t >= before) else {
+            // The first call, or time went back (a restarted episode): start over.
+            model.reset();
+            self.last = Some((t, here));
+            self.clock = (t, 0);
+            return model.discs(0.0);
+        };
+        let dt = t - before;
+        let robot_velocity = if dt > 0.0 {
+            (here - robot_before) / dt
+        } else {
+            Vector2::zeros()
+        };
+        let (t0, steps) = self.clock;
+        // Steps up to `t` (one ending within a fraction of a microsecond of `t` counts:
+        // the engine's times are sums of 5 ms ticks).
+        let h = crate::social_force::STEP;
+        let due = ((t - t0) / h + 1e-7).floor().max(0.0) as u64;
+        for k in steps..due {
+            model.step(t0 + k as f64 * h, h, here, robot_velocity);
+        }
+        self.clock.1 = due.max(steps);
+        self.last = Some((t, here));
+        model.discs(t - (t0 + self.clock.1 as f64 * h))
+    }
+}
+
+/// Where a [`Walk::Through`] person is in their walk: set off (at their first way-point)
+/// once `t` reaches their start, left the world (off stage, `leg` past the last) within
+/// `near` of their last way-point. Returns whether they are on stage; others are always.
+pub(crate) fn on_stage(
+    p: &Person,
+    t: f64,
+    near: f64,
+    (pos, vel, leg, on): (&mut Point2, &mut Vector2<f64>, &mut usize, &mut bool),
+) -> bool {
+    if p.walk != Walk::Through || p.path.len() < 2 {
+        return *on;
+    }
+    let end = crate::world::pt(p.path[p.path.len() - 1]);
+    if !*on && *leg == 0 && t >= p.start {
+        *on = true;
+        *pos = crate::world::pt(p.path[0]);
+    } else if *on
+        && crate::social_force::goal_of(p, *leg + 1).is_none()
+        && (end - *pos).norm() < near.max(0.05)
+    {
+        *on = false;
+        *leg += 1;
+        *pos = crate::world::pt(OFFSTAGE);
+        *vel = Vector2::zeros();
+    }
+    *on
 }

@@ -1,12 +1,14 @@
 //! People who react: Helbing and Molnár's social force model ([`SocialForce`]), and the
-//! scenario's choice of people model ([`PeopleModelKind`]).
+//! scenario's choice of people model ([`PeopleModelKind`]: scripted, social forces or
+//! ORCA).
 
 use hyplan_core::Point2;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use crate::kinematics::Pose;
-use crate::people::{PeopleModel, Scripted};
+use crate::orca::{Orca, OrcaParams};
+use crate::people::{PeopleModel, Scripted, Stepped, Stepper, on_stage};
 use crate::world::{Disc, NearIndex, OFFSTAGE, Person, StaticWorld, Walk, World, pt};
 
 /// How much further to their left each person sees the others by default, m
@@ -144,13 +146,17 @@ impl SocialForceParams {
 ///
 /// ```ron
 /// people_model: SocialForce((sees_robot: true)),
+/// // or
+/// people_model: Orca((sees_robot: false)),
 /// ```
 ///
 /// ```
-/// use sim::{PeopleModelKind, SocialForceParams};
+/// use sim::{OrcaParams, PeopleModelKind, SocialForceParams};
 /// assert_eq!(PeopleModelKind::default(), PeopleModelKind::Scripted);
 /// let kind = PeopleModelKind::SocialForce(SocialForceParams::default());
 /// assert!(kind.problem().is_none());
+/// let kind = PeopleModelKind::Orca(OrcaParams { time_horizon: -1.0, ..Default::default() });
+/// assert_eq!(kind.problem().map(|(field, _, _)| field), Some("time_horizon"));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub enum PeopleModelKind {
@@ -159,6 +165,8 @@ pub enum PeopleModelKind {
     Scripted,
     /// Helbing and Molnár's social forces ([`SocialForce`]).
     SocialForce(SocialForceParams),
+    /// Optimal reciprocal collision avoidance ([`Orca`]).
+    Orca(OrcaParams),
 }
 
 impl PeopleModelKind {
@@ -174,12 +182,18 @@ impl PeopleModelKind {
                 robot_radius,
                 params,
             )),
+            Self::Orca(params) => Box::new(Orca::new(
+                &world.people,
+                &world.statics,
+                robot_radius,
+                params,
+            )),
         }
     }
 
     /// The model called `name`, with default parameters: `scripted`, `social-force`
-    /// (people who see the robot), `social-force-blind` (people who do not); `None` for
-    /// another name.
+    /// (people who see the robot), `social-force-blind` (people who do not), `orca`,
+    /// `orca-blind`; `None` for another name.
     ///
     /// ```
     /// use sim::PeopleModelKind;
@@ -195,16 +209,30 @@ impl PeopleModelKind {
                 ..SocialForceParams::default()
             })
         };
+        let orca = |sees_robot| {
+            Self::Orca(crate::OrcaParams {
+                sees_robot,
+                ..crate::OrcaParams::default()
+            })
+        };
         match name {
             "scripted" => Some(Self::Scripted),
             "social-force" => Some(sf(true)),
             "social-force-blind" => Some(sf(false)),
+            "orca" => Some(orca(true)),
+            "orca-blind" => Some(orca(false)),
             _ => None,
         }
     }
 
     /// The names [`PeopleModelKind::from_name`] takes.
-    pub const NAMES: &'static [&'static str] = &["scripted", "social-force", "social-force-blind"];
+    pub const NAMES: &'static [&'static str] = &[
+        "scripted",
+        "social-force",
+        "social-force-blind",
+        "orca",
+        "orca-blind",
+    ];
 
     /// The first parameter out of range, as (field, value, what it must be).
     #[must_use]
@@ -212,6 +240,7 @@ impl PeopleModelKind {
         match self {
             Self::Scripted => None,
             Self::SocialForce(p) => p.problem(),
+            Self::Orca(p) => p.problem(),
         }
     }
 }
@@ -329,10 +358,7 @@ pub struct SocialForce<'w> {
     group_of: Vec<Option<usize>>,
     /// Per group, the sum of its members' positions on stage and their number (scratch).
     centres: Vec<(Vector2<f64>, f64)>,
-    /// Time of the last call and the robot's position then.
-    last: Option<(f64, Point2)>,
-    /// The people's clock: the time of the first call and the steps taken since.
-    clock: (f64, u64),
+    clock: Stepper,
 }
 
 impl<'w> SocialForce<'w> {
@@ -368,15 +394,14 @@ impl<'w> SocialForce<'w> {
             walls: NearIndex::new(statics, CUTOFF_RANGES * params.wall_range),
             group_of,
             centres: vec![(Vector2::zeros(), 0.0); ids.len()],
-            last: None,
-            clock: (0.0, 0),
+            clock: Stepper::default(),
         };
-        model.reset();
+        model.restart();
         model
     }
 
     /// Everyone back at their first way-point, standing, facing their first leg.
-    fn reset(&mut self) {
+    fn restart(&mut self) {
         self.walkers.clear();
         self.walkers.extend(self.people.iter().map(|p| {
             let first = p.path.first().map_or(Point2::origin(), |&q| pt(q));
@@ -395,51 +420,18 @@ impl<'w> SocialForce<'w> {
                 on_stage,
             }
         }));
-        self.last = None;
-    }
-
-    fn discs(&self) -> Vec<Disc> {
-        self.walkers
-            .iter()
-            .zip(self.people)
-            .map(|(w, p)| Disc {
-                center: w.pos,
-                radius: p.radius,
-            })
-            .collect()
     }
 
     /// The desired velocity of person `k` at time `t`, after moving on to the next leg
     /// when near the current goal.
     fn desired(&mut self, k: usize, t: f64) -> Vector2<f64> {
-        let people = self.people;
-        let p = &people[k];
+        let p = &self.people[k];
         let w = &mut self.walkers[k];
-        if t < p.start || p.speed <= 0.0 {
-            return Vector2::zeros();
-        }
-        let Some(mut goal) = goal_of(p, w.leg) else {
+        let Some(h) = heading(p, &mut w.leg, w.pos, t, self.params.switch_distance) else {
             return Vector2::zeros();
         };
-        let last =
-            |leg| matches!(p.walk, Walk::Once | Walk::Through) && goal_of(p, leg + 1).is_none();
-        if !last(w.leg) && (pt(p.path[goal]) - w.pos).norm() < self.params.switch_distance {
-            w.leg = next_leg(p, w.leg);
-            goal = goal_of(p, w.leg).unwrap_or(goal);
-        }
-        let to_goal = pt(p.path[goal]) - w.pos;
-        let distance = to_goal.norm();
-        if distance <= 0.0 {
-            return Vector2::zeros();
-        }
-        let e = to_goal / distance;
-        w.facing = e;
-        let speed = if last(w.leg) {
-            p.speed.min(distance / self.params.relaxation_time)
-        } else {
-            p.speed
-        };
-        e * speed
+        w.facing = h.direction;
+        h.direction * h.speed(p.speed, self.params.relaxation_time)
     }
 
     /// The repulsion on a body at `at` of radius `radius` facing `facing`, of a body at
@@ -528,7 +520,7 @@ impl<'w> SocialForce<'w> {
     /// One step of `h` seconds from time `t`, the robot at `robot` moving at
     /// `robot_velocity`: every acceleration from the current state, then velocities
     /// (capped) and positions (semi-implicit Euler).
-    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+    fn advance(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
         self.enter_and_leave(t);
         self.group_centres();
         let n = self.walkers.len();
@@ -571,28 +563,16 @@ impl<'w> SocialForce<'w> {
         }
     }
 
-    /// [`Walk::Through`] people set off (appearing at their first way-point) once their
-    /// start has come, and leave the world within `switch_distance` of their last.
+    /// [`Walk::Through`] people set off and leave ([`on_stage`]).
     fn enter_and_leave(&mut self, t: f64) {
         let near = self.params.switch_distance;
         for (w, p) in self.walkers.iter_mut().zip(self.people) {
-            if p.walk != Walk::Through || p.path.len() < 2 {
-                continue;
-            }
-            let end = pt(p.path[p.path.len() - 1]);
-            if !w.on_stage && w.leg == 0 && t >= p.start {
-                w.on_stage = true;
-                w.pos = pt(p.path[0]);
-            } else if w.on_stage
-                && goal_of(p, w.leg + 1).is_none()
-                && (end - w.pos).norm() < near.max(0.05)
-            {
-                // Arrived: off stage for good (a leg past the last marks it).
-                w.on_stage = false;
-                w.leg += 1;
-                w.pos = pt(OFFSTAGE);
-                w.vel = Vector2::zeros();
-            }
+            on_stage(
+                p,
+                t,
+                near,
+                (&mut w.pos, &mut w.vel, &mut w.leg, &mut w.on_stage),
+            );
         }
     }
 
@@ -630,45 +610,95 @@ impl<'w> SocialForce<'w> {
     }
 }
 
+impl Stepped for SocialForce<'_> {
+    fn reset(&mut self) {
+        self.restart();
+    }
+
+    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+        self.advance(t, h, robot, robot_velocity);
+    }
+
+    fn discs(&self, ahead: f64) -> Vec<Disc> {
+        self.walkers
+            .iter()
+            .zip(self.people)
+            .map(|(w, p)| Disc {
+                center: if w.on_stage {
+                    w.pos + w.vel * ahead
+                } else {
+                    w.pos
+                },
+                radius: p.radius,
+            })
+            .collect()
+    }
+}
+
 impl PeopleModel for SocialForce<'_> {
     fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc> {
-        let here = Point2::new(robot.x, robot.y);
-        let Some((before, robot_before)) = self.last.filter(|&(before, _)| t >= before) else {
-            // The first call, or time went back (a restarted episode): start over.
-            self.reset();
-            self.last = Some((t, here));
-            self.clock = (t, 0);
-            return self.discs();
-        };
-        let dt = t - before;
-        let robot_velocity = if dt > 0.0 {
-            (here - robot_before) / dt
-        } else {
-            Vector2::zeros()
-        };
-        let (t0, steps) = self.clock;
-        // Steps of the clock up to `t` (a step ending within a nanosecond of `t` counts:
-        // the engine's ticks are sums of 5 ms).
-        let due = ((t - t0) / STEP + 1e-7).floor().max(0.0) as u64;
-        for k in steps..due {
-            self.step(t0 + k as f64 * STEP, STEP, here, robot_velocity);
-        }
-        self.clock.1 = due.max(steps);
-        self.last = Some((t, here));
-        let ahead = t - (t0 + self.clock.1 as f64 * STEP);
-        let mut discs = self.discs();
-        for (d, w) in discs.iter_mut().zip(&self.walkers) {
-            if w.on_stage {
-                d.center += w.vel * ahead;
-            }
-        }
+        let mut clock = self.clock;
+        let discs = clock.people(self, t, robot);
+        self.clock = clock;
         discs
     }
 }
 
+/// Where a person on their route heads ([`heading`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Heading {
+    /// Unit vector toward the goal.
+    pub direction: Vector2<f64>,
+    /// Distance to the goal, m (> 0).
+    pub distance: f64,
+    /// Whether the goal is the last way-point of a `Once` route.
+    pub last: bool,
+}
+
+impl Heading {
+    /// The desired speed of a person of speed `v0`: `v0`, or toward the last way-point of
+    /// a `Once` route `min(v0, distance / arrival_time)`, so that they stop there.
+    pub fn speed(&self, v0: f64, arrival_time: f64) -> f64 {
+        if self.last {
+            v0.min(self.distance / arrival_time)
+        } else {
+            v0
+        }
+    }
+}
+
+/// Where person `p` at `pos` on leg `leg` heads at time `t`, after moving `leg` on to the
+/// next leg when within `switch_distance` of the current goal (unless it is the last
+/// way-point of a `Once` route). `None` while they wait for their `start`, when their
+/// speed is not positive, when they have no goal, or when they stand on it.
+pub(crate) fn heading(
+    p: &Person,
+    leg: &mut usize,
+    pos: Point2,
+    t: f64,
+    switch_distance: f64,
+) -> Option<Heading> {
+    if t < p.start || p.speed <= 0.0 {
+        return None;
+    }
+    let mut goal = goal_of(p, *leg)?;
+    let last = |leg| matches!(p.walk, Walk::Once | Walk::Through) && goal_of(p, leg + 1).is_none();
+    if !last(*leg) && (pt(p.path[goal]) - pos).norm() < switch_distance {
+        *leg = next_leg(p, *leg);
+        goal = goal_of(p, *leg).unwrap_or(goal);
+    }
+    let to_goal = pt(p.path[goal]) - pos;
+    let distance = to_goal.norm();
+    (distance > 0.0).then(|| Heading {
+        direction: to_goal / distance,
+        distance,
+        last: last(*leg),
+    })
+}
+
 /// The way-point person `p` heads for on leg `leg`, in walking order (`None` past the end
 /// of a `Once` route, or for a route of fewer than two points).
-fn goal_of(p: &Person, leg: usize) -> Option<usize> {
+pub(crate) fn goal_of(p: &Person, leg: usize) -> Option<usize> {
     let n = p.path.len();
     if n < 2 {
         return None;
@@ -685,7 +715,7 @@ fn goal_of(p: &Person, leg: usize) -> Option<usize> {
 }
 
 /// The leg after `leg` (kept within one round of a cyclic walk, so it never overflows).
-fn next_leg(p: &Person, leg: usize) -> usize {
+pub(crate) fn next_leg(p: &Person, leg: usize) -> usize {
     let n = p.path.len().max(2);
     match p.walk {
         Walk::Once | Walk::Through => leg + 1,

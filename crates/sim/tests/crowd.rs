@@ -115,3 +115,16 @@ fn groups_keep_together() {
     }
     assert!(worst < 2.5, "group members {worst:.2} m apart");
 }
+
+/// ORCA people come in, cross and leave too, and a run among them is measured: reached,
+/// no at-fault contact, people who left in both runs.
+#[test]
+fn orca_crowds_walk_through() {
+    let mut sc = sim::crowd(CrowdFlow::Crossing, 1.0, 2, 0);
+    sc.people_model = PeopleModelKind::from_name("orca").unwrap();
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let m = sim::measure(&sc, &world, 0, || GlobalPlanner::Dijkstra);
+    assert!(m.reached, "{m:?}");
+    assert_eq!(m.contacts_at_fault, 0, "{m:?}");
+    assert!(m.people_arrived >= 2, "{m:?}");
+}

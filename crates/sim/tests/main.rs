@@ -6,6 +6,7 @@ mod explore;
 mod kinematics;
 mod laser;
 mod navigation;
+mod orca;
 mod profile;
 mod rollout;
 mod social_force;

@@ -34,8 +34,9 @@ pub struct Args {
     #[arg(long, value_parser = PROFILES)]
     pub profile: Option<String>,
     /// How the people move: `scripted` (their routes, blind), `social-force` (Helbing and
-    /// Molnár's social forces, seeing the robot) or `social-force-blind` (not seeing it).
-    /// Default: the scenario's `people_model`.
+    /// Molnár's social forces, seeing the robot), `orca` (reciprocal velocity obstacles,
+    /// seeing it), or `social-force-blind` / `orca-blind` (not seeing it). Default: the
+    /// scenario's `people_model`.
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(sim::PeopleModelKind::NAMES))]
     pub people_model: Option<String>,
     /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver

@@ -1,0 +1,750 @@
+//! People who avoid each other by optimal reciprocal collision avoidance ([`Orca`]), the
+//! velocity-obstacle model of RVO2, solved by the `dodgy_2d` crate.
+
+use std::borrow::Cow;
+
+use dodgy_2d::{Agent, AvoidanceOptions, Obstacle, Vec2};
+use hyplan_core::{Point2, Zone};
+use nalgebra::Vector2;
+use serde::{Deserialize, Serialize};
+
+use crate::kinematics::Pose;
+use crate::people::PeopleModel;
+use crate::people::{Stepped, Stepper, on_stage};
+use crate::social_force::{KEEP_RIGHT, heading};
+use crate::world::{Disc, Person, Segment, StaticWorld, pt};
+
+/// ORCA's parameters (scenario syntax). The defaults are CrowdNav's ORCA people
+/// (`crowd_sim/envs/policy/orca.py`: neighbour distance 10 m, 10 neighbours, time
+/// horizons 5 s for people and walls, no safety space, people walking at most their
+/// preferred speed), the parameters of the people most robot crowd-navigation papers
+/// are measured among; RVO2's own examples use the same structure with other numbers
+/// (its `Circle`: 15 m, 10 neighbours, 10 s horizons).
+///
+/// ```ron
+/// people_model: Orca((sees_robot: false)),
+/// ```
+///
+/// ```
+/// let p = sim::OrcaParams::default();
+/// assert_eq!((p.time_horizon, p.neighbour_distance, p.max_neighbours), (5.0, 10.0, 10));
+/// assert!(p.problem().is_none());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct OrcaParams {
+    /// Whether people see the robot (default true): it is then one of their neighbours,
+    /// a disc of the robot's body radius moving at its velocity, of which they take the
+    /// whole avoidance (the robot does not reciprocate ORCA); when false they walk into
+    /// it (the hard case for the robot).
+    pub sees_robot: bool,
+    /// How far ahead collisions with other people (and the robot) are avoided, s (5,
+    /// CrowdNav's `time_horizon`; ORCA's `tau`).
+    pub time_horizon: f64,
+    /// How far ahead collisions with walls are avoided, s (5, CrowdNav's
+    /// `time_horizon_obst`). Walls within `obstacle_time_horizon` times the person's
+    /// largest speed, plus their radius, are considered (RVO2's obstacle range).
+    pub obstacle_time_horizon: f64,
+    /// Centre distance within which another person (or the robot) is a neighbour, m (10,
+    /// CrowdNav's `neighbor_dist`).
+    pub neighbour_distance: f64,
+    /// How many of the nearest neighbours each person avoids (10, CrowdNav's
+    /// `max_neighbors`).
+    pub max_neighbours: usize,
+    /// Speed cap as a multiple of the person's speed (1: CrowdNav's people walk at most
+    /// their preferred speed; RVO2's `maxSpeed` over the preferred speed).
+    pub max_speed_ratio: f64,
+    /// Distance from a way-point at which a person heads for the next one, m (0.5, as
+    /// [`crate::SocialForceParams::switch_distance`]).
+    pub switch_distance: f64,
+    /// Toward the last way-point of a `Once` route the preferred speed is
+    /// `min(speed, distance / arrival_time)`, s (1: RVO2's examples, whose preferred
+    /// velocity is the vector to the goal, normalised only beyond 1 m).
+    pub arrival_time: f64,
+    /// Padding added to every body radius (people's and the robot's, and people's margin
+    /// from walls), m (0.01: CrowdNav gives RVO2 each radius plus 0.01 m plus its
+    /// `safety_space`, 0), so that bodies on the edge of a velocity obstacle stay apart
+    /// rather than graze.
+    pub safety_space: f64,
+    /// How much further to their left each person sees the others (and the robot), m
+    /// (ours, [`crate::KEEP_RIGHT`], 1 mm; 0 for none): the side preference that breaks
+    /// exactly symmetric encounters toward passing on the right, where ORCA alone only
+    /// slows down (see [`Orca`]).
+    pub keep_right: f64,
+}
+
+impl Default for OrcaParams {
+    fn default() -> Self {
+        Self {
+            sees_robot: true,
+            time_horizon: 5.0,
+            obstacle_time_horizon: 5.0,
+            neighbour_distance: 10.0,
+            max_neighbours: 10,
+            max_speed_ratio: 1.0,
+            switch_distance: 0.5,
+            arrival_time: 1.0,
+            safety_space: 0.01,
+            keep_right: KEEP_RIGHT,
+        }
+    }
+}
+
+impl OrcaParams {
+    /// The first value out of range, as (field, value, what it must be); `None` when all
+    /// are valid.
+    ///
+    /// ```
+    /// let p = sim::OrcaParams { time_horizon: 0.0, ..Default::default() };
+    /// assert_eq!(p.problem(), Some(("time_horizon", 0.0, "must be finite and > 0")));
+    /// ```
+    #[must_use]
+    pub fn problem(&self) -> Option<(&'static str, f64, &'static str)> {
+        let positive = [
+            ("time_horizon", self.time_horizon),
+            ("obstacle_time_horizon", self.obstacle_time_horizon),
+            ("max_speed_ratio", self.max_speed_ratio),
+            ("arrival_time", self.arrival_time),
+        ];
+        let non_negative = [
+            ("neighbour_distance", self.neighbour_distance),
+            ("switch_distance", self.switch_distance),
+            ("safety_space", self.safety_space),
+            ("keep_right", self.keep_right),
+        ];
+        crate::validate::first_out_of_range(&positive, &non_negative)
+    }
+}
+
+/// One person's state.
+#[derive(Debug, Clone, Copy)]
+struct Walker {
+    pos: Point2,
+    vel: Vector2<f64>,
+    /// The leg walked, in walking order (its end is the goal).
+    leg: usize,
+    /// In the world (false for a [`crate::Walk::Through`] person before setting off and
+    /// after arriving: nobody's neighbour).
+    on_stage: bool,
+}
+
+/// The walls as ORCA obstacles, and a coarse grid of buckets to find those near a person
+/// without sweeping them all.
+#[derive(Debug, Clone, Default)]
+struct Walls {
+    obstacles: Vec<Obstacle>,
+    /// Each obstacle's bounding box, (min, max).
+    boxes: Vec<(Point2, Point2)>,
+    /// Lower-left corner of the bucket grid, m.
+    origin: Point2,
+    /// Side of a bucket, m.
+    cell: f64,
+    /// Buckets per row and per column.
+    size: (usize, usize),
+    /// Obstacle indices of each bucket, row by row.
+    buckets: Vec<Vec<u32>>,
+}
+
+/// The most buckets along a side: the grid coarsens on very large maps.
+const MAX_BUCKETS_PER_SIDE: usize = 256;
+
+/// Vertices of the polygon standing in for a round obstacle.
+const DISC_SIDES: usize = 12;
+
+fn vec2(p: Point2) -> Vec2 {
+    Vec2::new(p.x as f32, p.y as f32)
+}
+
+impl Walls {
+    /// `statics` as ORCA obstacles: each outline edge one-sided (solid on its inward
+    /// side), each loose edge two-sided, each edge of a loaded map's cells one-sided
+    /// (solid on its occupied cell's side), each disc a circumscribed polygon; bucketed in
+    /// cells of about `cell` m.
+    fn new(statics: &StaticWorld, cell: f64) -> Self {
+        let mut obstacles = Vec::new();
+        // dodgy_2d's open polyline is solid on the left of its direction.
+        let open = |a: Point2, b: Point2| Obstacle::Open {
+            vertices: vec![vec2(a), vec2(b)],
+        };
+        let mut push_edge = |s: &Segment, solid_left: Option<bool>| {
+            if s.a == s.b {
+                return;
+            }
+            match solid_left {
+                Some(true) => obstacles.push(open(s.a, s.b)),
+                Some(false) => obstacles.push(open(s.b, s.a)),
+                None => {
+                    obstacles.push(open(s.a, s.b));
+                    obstacles.push(open(s.b, s.a));
+                }
+            }
+        };
+        for s in &statics.segments {
+            let e = s.b - s.a;
+            let left = Vector2::new(-e.y, e.x);
+            push_edge(s, s.outward.map(|n| left.dot(&n) < 0.0));
+        }
+        for s in &statics.grid_segments {
+            let solid_left = statics.grid.as_ref().map(|g| {
+                let e = s.b - s.a;
+                let left = Vector2::new(-e.y, e.x) / e.norm().max(f64::MIN_POSITIVE);
+                let probe = nalgebra::center(&s.a, &s.b) + left * (0.5 * g.resolution());
+                g.world_to_cell(probe)
+                    .is_some_and(|(i, j)| g.cell_zone(i, j) == Zone::Forbidden)
+            });
+            push_edge(s, solid_left);
+        }
+        for d in &statics.discs {
+            // Counter-clockwise (solid inside), around the disc.
+            let out = d.radius / (std::f64::consts::PI / DISC_SIDES as f64).cos();
+            let vertices = (0..DISC_SIDES)
+                .map(|k| {
+                    let a = std::f64::consts::TAU * k as f64 / DISC_SIDES as f64;
+                    vec2(d.center + Vector2::new(a.cos(), a.sin()) * out)
+                })
+                .collect();
+            obstacles.push(Obstacle::Closed { vertices });
+        }
+        let boxes: Vec<(Point2, Point2)> = obstacles
+            .iter()
+            .map(|o| {
+                let (Obstacle::Open { vertices } | Obstacle::Closed { vertices }) = o;
+                let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
+                let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+                for v in vertices {
+                    let (x, y) = (f64::from(v.x), f64::from(v.y));
+                    lo = Point2::new(lo.x.min(x), lo.y.min(y));
+                    hi = Point2::new(hi.x.max(x), hi.y.max(y));
+                }
+                (lo, hi)
+            })
+            .collect();
+        let mut walls = Self {
+            obstacles,
+            boxes,
+            ..Self::default()
+        };
+        walls.bucket(cell);
+        walls
+    }
+
+    /// Fills the bucket grid.
+    fn bucket(&mut self, cell: f64) {
+        let Some(&(first_lo, first_hi)) = self.boxes.first() else {
+            return;
+        };
+        let (lo, hi) = self.boxes.iter().fold((first_lo, first_hi), |(lo, hi), b| {
+            (
+                Point2::new(lo.x.min(b.0.x), lo.y.min(b.0.y)),
+                Point2::new(hi.x.max(b.1.x), hi.y.max(b.1.y)),
+            )
+        });
+        let longest = (hi.x - lo.x).max(hi.y - lo.y);
+        self.cell = cell.max(longest / MAX_BUCKETS_PER_SIDE as f64).max(1e-3);
+        self.origin = lo;
+        let side = |len: f64| (len / self.cell).floor() as usize + 1;
+        self.size = (side(hi.x - lo.x), side(hi.y - lo.y));
+        self.buckets = vec![Vec::new(); self.size.0 * self.size.1];
+        for (k, &(a, b)) in self.boxes.iter().enumerate() {
+            let ((i0, j0), (i1, j1)) = (self.cell_of(a), self.cell_of(b));
+            for j in j0..=j1 {
+                for i in i0..=i1 {
+                    self.buckets[j * self.size.0 + i].push(k as u32);
+                }
+            }
+        }
+    }
+
+    /// The bucket holding `p`, clamped to the grid.
+    fn cell_of(&self, p: Point2) -> (usize, usize) {
+        let index = |v: f64, n: usize| ((v / self.cell).floor().max(0.0) as usize).min(n - 1);
+        (
+            index(p.x - self.origin.x, self.size.0),
+            index(p.y - self.origin.y, self.size.1),
+        )
+    }
+
+    /// The indices of the obstacles whose bounding box comes within `reach` of `p`, in
+    /// increasing order, into `out`.
+    fn near(&self, p: Point2, reach: f64, out: &mut Vec<u32>) {
+        out.clear();
+        if self.buckets.is_empty() {
+            return;
+        }
+        let r = Vector2::new(reach, reach);
+        let ((i0, j0), (i1, j1)) = (self.cell_of(p - r), self.cell_of(p + r));
+        for j in j0..=j1 {
+            for i in i0..=i1 {
+                out.extend_from_slice(&self.buckets[j * self.size.0 + i]);
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out.retain(|&k| {
+            let (lo, hi) = self.boxes[k as usize];
+            let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
+            let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
+            dx * dx + dy * dy <= reach * reach
+        });
+        // Nearest first, as RVO2 orders obstacle neighbours: an edge hidden behind a
+        // nearer one's half-plane is then skipped.
+        let at = vec2(p);
+        out.sort_by_cached_key(|&k| (distance_sq(&self.obstacles[k as usize], at).to_bits(), k));
+    }
+}
+
+/// The squared distance from `p` to `obstacle`'s edges (non-negative, so its bits sort
+/// as the value).
+fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
+    let (vertices, closed) = match obstacle {
+        Obstacle::Open { vertices } => (vertices, false),
+        Obstacle::Closed { vertices } => (vertices, true),
+    };
+    let n = vertices.len();
+    let edges = if closed { n } else { n.saturating_sub(1) };
+    (0..edges)
+        .map(|k| {
+            let (a, b) = (vertices[k], vertices[(k + 1) % n]);
+            let ab = b - a;
+            let t = if ab.length_squared() > 0.0 {
+                ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (a + ab * t).distance_squared(p)
+        })
+        .fold(f32::INFINITY, f32::min)
+}
+
+/// People who avoid each other by optimal reciprocal collision avoidance, ORCA (J. van
+/// den Berg, S. J. Guy, M. Lin, D. Manocha, "Reciprocal n-body collision avoidance",
+/// ISRR 2009; RVO2): each walks their route at their speed, and at every step takes the
+/// velocity nearest their preferred one that collides with none of their neighbours
+/// within [`OrcaParams::time_horizon`], nor with a wall within
+/// [`OrcaParams::obstacle_time_horizon`], if [`OrcaParams::sees_robot`] the robot among
+/// the neighbours.
+///
+/// For two people A and B, the velocity obstacle `VO(A|B)` is the set of A's velocities
+/// relative to B that bring their bodies into contact within the time horizon `T` (a
+/// cone cut off by a disc of radius `(r_A + r_B) / T`). With `u` the smallest change of
+/// the relative velocity that leaves it, and `n` the outward normal there, A keeps to the
+/// half-plane `ORCA(A|B) = { v : (v - (v_A + u / 2)) . n >= 0 }`: each of the two takes
+/// half of the avoidance, and their choices together avoid the contact. Walls give
+/// half-planes of their own, taken whole. The new velocity is the point of the
+/// intersection of the half-planes, within the speed cap, nearest to the preferred
+/// velocity (a 2-D linear program; when it is empty, the velocity that violates the
+/// people's half-planes least). The velocity obstacles, the half-planes and the linear
+/// program are `dodgy_2d`'s (`Agent::compute_avoiding_velocity`), a port of RVO2.
+///
+/// Each person walks their [`Person`] route: the way-points are successive goals, the
+/// preferred velocity is `speed` toward the next one (on a `Walk::Once` route,
+/// `min(speed, distance / arrival_time)` toward the last way-point, so that they stop
+/// there).
+///
+/// Where this model departs from RVO2, and why:
+///
+/// - **Symmetry.** A person walking straight at another (or at the robot) along the line
+///   of their centres gets half-planes square to that line: ORCA slows them down and
+///   never turns them, and two people head-on stop face to face (RVO2's examples perturb
+///   the preferred velocities at random). Instead each person sees the others
+///   `keep_right` ([`crate::KEEP_RIGHT`], 1 mm) further to their left than they are, so
+///   that an exact tie is broken toward passing on the right, as
+///   [`crate::SocialForce`] does.
+/// - **Bodies.** Every radius is padded by `safety_space` (1 cm), as CrowdNav does: on
+///   the edge of a velocity obstacle, unpadded bodies graze, a fraction of a millimetre
+///   inside each other after the `f32` arithmetic.
+/// - **The robot.** When people see it, the robot is a neighbour of avoidance
+///   responsibility 0: people take the whole avoidance (`u`, not `u / 2`), since the
+///   robot does not run ORCA. When they do not see it, it is nobody's neighbour.
+/// - **Walls.** The static world's edges are one-sided open obstacles (solid on the side
+///   of their outline's inside, or of a loaded map's occupied cell); loose edges are
+///   obstacles on both sides; discs are circumscribed 12-gons. Each person is given only
+///   the obstacles whose bounding box lies within RVO2's obstacle range
+///   (`obstacle_time_horizon x max speed + radius`), found in a coarse grid built once,
+///   nearest first as in RVO2.
+/// - **Numbers.** dodgy_2d computes in `f32`: positions are kept in `f64` and sent as
+///   `f32` (a few micrometres at 100 m from the origin). Two people whose centres
+///   coincide exactly (where dodgy_2d would draw a random direction) are seen 1 mm apart
+///   along x, the lower index on the left, so that positions stay a deterministic
+///   function of the scenario and of the robot's poses.
+/// - **Local only.** Like RVO2, ORCA looks one time horizon ahead and knows no route. A
+///   wall at a slant across a leg is slid along and walked around; a wall square across
+///   it, wherever its ends, holds the person in front of it (its half-plane is square to
+///   their way, and the side preference is for people only). Routes should go around
+///   walls with way-points.
+///
+/// # Cost
+///
+/// One step with `n` people sorts each person's `n` candidate neighbours (O(n^2 log n))
+/// and solves `n` linear programs of `max_neighbours` + (nearby obstacle edges)
+/// half-planes (incremental, at most quadratic in the half-planes), with a few small
+/// allocations per person (dodgy_2d's half-plane lists), after sorting the obstacles in
+/// reach by distance. Walls dominate where they are dense: measured with 20 people
+/// (`cost_of_twenty_people`, release), one call takes about 40 us in an open room (1.5x
+/// [`crate::SocialForce`]) but about 3 ms among a loaded map's 3600 cell edges of
+/// pillars (about 25x, each person handed hundreds of edges). That is once per
+/// [`crate::STEP`] of simulated time (50 Hz, as [`crate::SocialForce`]); a call between
+/// steps extrapolates the positions.
+///
+/// # Use
+///
+/// The state (positions, velocities, legs) advances by the time between successive
+/// calls: every new velocity from the current state, then the positions. A call at an
+/// earlier time than the last one starts over from the people's first way-points (a
+/// restarted episode). The robot's velocity is its displacement between calls over their
+/// interval. People wait at their first way-point until their `start` (they still step
+/// aside) and never go faster than `max_speed_ratio` times their `speed` (so a person of
+/// speed 0 stands like a post).
+///
+/// ```
+/// use sim::{Orca, OrcaParams, PeopleModel, Person, Pose, StaticWorld, Walk};
+/// let walker = Person { path: vec![(0.0, 0.0), (10.0, 0.0)], speed: 1.0, start: 0.0,
+///     radius: 0.25, walk: Walk::Once, group: None };
+/// let people = [walker];
+/// let world = StaticWorld::default();
+/// let mut model = Orca::new(&people, &world, 0.2, OrcaParams::default());
+/// let mut now = Vec::new();
+/// for tick in 0..=800 {
+///     now = model.people(tick as f64 * 0.005, Pose { x: 5.0, y: 5.0, phi: 0.0 });
+/// }
+/// // 4 s at 1 m/s: ORCA changes velocity at once.
+/// assert!((now[0].center.x - 4.0).abs() < 0.02, "{}", now[0].center.x);
+/// ```
+#[derive(Debug, Clone)]
+pub struct Orca<'w> {
+    params: OrcaParams,
+    people: &'w [Person],
+    walls: Walls,
+    robot_radius: f64,
+    walkers: Vec<Walker>,
+    /// The velocities of the step being taken.
+    next: Vec<Vector2<f64>>,
+    clock: Stepper,
+}
+
+impl<'w> Orca<'w> {
+    /// `people` at their first way-points, standing, among `statics`, with a robot of body
+    /// radius `robot_radius`, m. The walls become ORCA obstacles here, once.
+    #[must_use]
+    pub fn new(
+        people: &'w [Person],
+        statics: &'w StaticWorld,
+        robot_radius: f64,
+        params: OrcaParams,
+    ) -> Self {
+        let mut model = Self {
+            params,
+            people,
+            walls: Walls::default(),
+            robot_radius,
+            walkers: Vec::with_capacity(people.len()),
+            next: vec![Vector2::zeros(); people.len()],
+            clock: Stepper::default(),
+        };
+        let widest = (0..people.len())
+            .map(|k| model.reach(k))
+            .fold(1.0, f64::max);
+        model.walls = Walls::new(statics, widest);
+        model.restart();
+        model
+    }
+
+    /// Person `k`'s speed cap, m/s.
+    fn max_speed(&self, k: usize) -> f64 {
+        self.params.max_speed_ratio * self.people[k].speed.max(0.0)
+    }
+
+    /// How far from person `k` walls are considered, m (RVO2's obstacle range).
+    fn reach(&self, k: usize) -> f64 {
+        let r = self.params.obstacle_time_horizon * self.max_speed(k) + self.people[k].radius;
+        if r.is_finite() { r } else { 0.0 }
+    }
+
+    /// Everyone back at their first way-point, standing.
+    fn restart(&mut self) {
+        self.walkers.clear();
+        self.walkers.extend(self.people.iter().map(|p| {
+            let on_stage = p.walk != crate::Walk::Through;
+            Walker {
+                pos: if on_stage {
+                    p.path.first().map_or(Point2::origin(), |&q| pt(q))
+                } else {
+                    pt(crate::world::OFFSTAGE)
+                },
+                vel: Vector2::zeros(),
+                leg: 0,
+                on_stage,
+            }
+        }));
+    }
+
+    /// One step of `h` seconds from time `t`, the robot at `robot` moving at
+    /// `robot_velocity`: every new velocity from the current state, then the positions.
+    fn advance(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+        let near = self.params.switch_distance;
+        for (w, p) in self.walkers.iter_mut().zip(self.people) {
+            on_stage(
+                p,
+                t,
+                near,
+                (&mut w.pos, &mut w.vel, &mut w.leg, &mut w.on_stage),
+            );
+        }
+        let n = self.walkers.len();
+        let mut agents: Vec<Agent> = self
+            .walkers
+            .iter()
+            .zip(self.people)
+            .map(|(w, p)| Agent {
+                position: vec2(w.pos),
+                velocity: Vec2::new(w.vel.x as f32, w.vel.y as f32),
+                radius: (p.radius + self.params.safety_space) as f32,
+                avoidance_responsibility: 1.0,
+            })
+            .collect();
+        if self.params.sees_robot {
+            agents.push(Agent {
+                position: vec2(robot),
+                velocity: Vec2::new(robot_velocity.x as f32, robot_velocity.y as f32),
+                radius: (self.robot_radius + self.params.safety_space) as f32,
+                avoidance_responsibility: 0.0,
+            });
+        }
+        let mut candidates: Vec<(f64, usize)> = Vec::with_capacity(agents.len());
+        let mut near = Vec::new();
+        let reach_sq = self.params.neighbour_distance * self.params.neighbour_distance;
+        for k in 0..n {
+            if !self.walkers[k].on_stage {
+                self.next[k] = Vector2::zeros();
+                continue;
+            }
+            let p = &self.people[k];
+            let max_speed = self.max_speed(k);
+            let (preferred, facing) = {
+                let w = &mut self.walkers[k];
+                match heading(p, &mut w.leg, w.pos, t, self.params.switch_distance) {
+                    Some(g) => (
+                        g.direction * g.speed(p.speed, self.params.arrival_time),
+                        g.direction,
+                    ),
+                    None => (
+                        Vector2::zeros(),
+                        w.vel.try_normalize(0.0).unwrap_or_default(),
+                    ),
+                }
+            };
+            if !(max_speed > 0.0 && max_speed.is_finite()) {
+                self.next[k] = Vector2::zeros();
+                continue;
+            }
+            let me = &agents[k];
+            let at = self.walkers[k].pos;
+            let left = Vec2::new(-facing.y as f32, facing.x as f32);
+            let keep_right = self.params.keep_right as f32;
+            // The nearest neighbours, ties to the lower index (the robot last).
+            candidates.clear();
+            candidates.extend(
+                agents
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, _)| j != k && self.walkers.get(j).is_none_or(|w| w.on_stage))
+                    .map(|(j, a)| {
+                        let d = Vector2::new(
+                            f64::from(a.position.x) - at.x,
+                            f64::from(a.position.y) - at.y,
+                        );
+                        (d.norm_squared(), j)
+                    })
+                    .filter(|&(d_sq, _)| d_sq <= reach_sq),
+            );
+            candidates.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            candidates.truncate(self.params.max_neighbours);
+            let neighbours: Vec<Cow<'_, Agent>> = candidates
+                .iter()
+                .map(|&(_, j)| seen(me, &agents[j], left * keep_right, j > k, h as f32))
+                .collect();
+            self.walls.near(at, self.reach(k), &mut near);
+            let obstacles: Vec<Cow<'_, Obstacle>> = near
+                .iter()
+                .map(|&i| Cow::Borrowed(&self.walls.obstacles[i as usize]))
+                .collect();
+            let options = AvoidanceOptions {
+                obstacle_margin: (p.radius + self.params.safety_space) as f32,
+                time_horizon: self.params.time_horizon as f32,
+                obstacle_time_horizon: self.params.obstacle_time_horizon as f32,
+            };
+            let v = me.compute_avoiding_velocity(
+                &neighbours,
+                &obstacles,
+                Vec2::new(preferred.x as f32, preferred.y as f32),
+                max_speed as f32,
+                h as f32,
+                &options,
+            );
+            self.next[k] = if v.is_finite() {
+                Vector2::new(f64::from(v.x), f64::from(v.y))
+            } else {
+                Vector2::zeros()
+            };
+        }
+        for (w, v) in self.walkers.iter_mut().zip(&self.next) {
+            if w.on_stage {
+                w.vel = *v;
+                w.pos += w.vel * h;
+            }
+        }
+    }
+}
+
+/// Neighbour `other` as agent `me` is to see it: moved by `shift` (the side preference),
+/// and, when their centres then coincide and they do not move apart (where dodgy_2d would
+/// draw a random direction), 1 mm further along x (`other_after`: the other has the
+/// higher index, so it is seen to the right; else to the left).
+fn seen<'a>(
+    me: &Agent,
+    other: &'a Agent,
+    shift: Vec2,
+    other_after: bool,
+    time_step: f32,
+) -> Cow<'a, Agent> {
+    let mut moved = other.clone();
+    moved.position += shift;
+    let to_other = moved.position - me.position;
+    let drift = (me.velocity - other.velocity) - to_other / time_step;
+    if to_other.length_squared() <= 1e-12 && drift.length_squared() <= 1e-12 {
+        moved.position.x += if other_after { 1e-3 } else { -1e-3 };
+    }
+    if moved == *other {
+        Cow::Borrowed(other)
+    } else {
+        Cow::Owned(moved)
+    }
+}
+
+impl Stepped for Orca<'_> {
+    fn reset(&mut self) {
+        self.restart();
+    }
+
+    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+        self.advance(t, h, robot, robot_velocity);
+    }
+
+    fn discs(&self, ahead: f64) -> Vec<Disc> {
+        self.walkers
+            .iter()
+            .zip(self.people)
+            .map(|(w, p)| Disc {
+                center: if w.on_stage {
+                    w.pos + w.vel * ahead
+                } else {
+                    w.pos
+                },
+                radius: p.radius,
+            })
+            .collect()
+    }
+}
+
+impl PeopleModel for Orca<'_> {
+    fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc> {
+        let mut clock = self.clock;
+        let discs = clock.people(self, t, robot);
+        self.clock = clock;
+        discs
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parameters_are_checked() {
+        let bad = |p: OrcaParams| p.problem().map(|(f, _, _)| f);
+        let d = OrcaParams::default();
+        assert_eq!(bad(d), None);
+        let p = OrcaParams {
+            time_horizon: f64::NAN,
+            ..d
+        };
+        assert_eq!(bad(p), Some("time_horizon"));
+        let p = OrcaParams {
+            obstacle_time_horizon: 0.0,
+            ..d
+        };
+        assert_eq!(bad(p), Some("obstacle_time_horizon"));
+        let p = OrcaParams {
+            neighbour_distance: -1.0,
+            ..d
+        };
+        assert_eq!(bad(p), Some("neighbour_distance"));
+        let p = OrcaParams {
+            max_speed_ratio: f64::INFINITY,
+            ..d
+        };
+        assert_eq!(bad(p), Some("max_speed_ratio"));
+        let p = OrcaParams {
+            arrival_time: -0.5,
+            ..d
+        };
+        assert_eq!(bad(p), Some("arrival_time"));
+        // 0 is allowed where it means "none".
+        let p = OrcaParams {
+            neighbour_distance: 0.0,
+            switch_distance: 0.0,
+            max_neighbours: 0,
+            ..d
+        };
+        assert_eq!(bad(p), None);
+    }
+
+    /// Outline edges are solid on their inside, a loaded map's edges on their occupied
+    /// cell's side, loose edges on both; the buckets find what is near and only that.
+    #[test]
+    fn walls_become_obstacles() {
+        let mut statics = StaticWorld::default();
+        statics.add_shape(&crate::Shape::Box {
+            center: (6.0, 6.0),
+            size: (1.0, 1.0),
+            angle_deg: 0.0,
+        });
+        let map = envmap::GridMap::from_ascii("....\n.#..\n....").unwrap();
+        statics.add_grid(map);
+        statics.segments.push(Segment {
+            a: Point2::new(20.0, 0.0),
+            b: Point2::new(20.0, 1.0),
+            outward: None,
+        });
+        let walls = Walls::new(&statics, 1.0);
+        // 4 box edges, 2 sides of the loose edge, 4 cell edges.
+        assert_eq!(walls.obstacles.len(), 10);
+        let solid_left_at = |k: usize, inside: Point2| {
+            let Obstacle::Open { vertices } = &walls.obstacles[k] else {
+                panic!("{:?}", walls.obstacles[k])
+            };
+            let (a, b) = (vertices[0], vertices[1]);
+            let c = Vec2::new(inside.x as f32, inside.y as f32);
+            (b - a).perp_dot(c - a) > 0.0
+        };
+        for k in 0..4 {
+            assert!(solid_left_at(k, Point2::new(6.0, 6.0)), "box edge {k}");
+        }
+        for k in 6..10 {
+            assert!(solid_left_at(k, Point2::new(1.5, 1.5)), "cell edge {k}");
+        }
+        assert_ne!(
+            solid_left_at(4, Point2::new(21.0, 0.5)),
+            solid_left_at(5, Point2::new(21.0, 0.5))
+        );
+        let mut near = Vec::new();
+        walls.near(Point2::new(6.0, 6.0), 0.6, &mut near);
+        assert_eq!(near, [0, 1, 2, 3]);
+        walls.near(Point2::new(20.5, 0.5), 0.6, &mut near);
+        assert_eq!(near, [4, 5]);
+        walls.near(Point2::new(1.5, 1.5), 0.6, &mut near);
+        assert_eq!(near, [6, 7, 8, 9]);
+        walls.near(Point2::new(10.0, 10.0), 1.0, &mut near);
+        assert!(near.is_empty());
+    }
+}
