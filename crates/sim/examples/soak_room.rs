@@ -1,14 +1,45 @@
 //! Replays one soak room and prints its contacts with the geometry at each (bearing of
 //! the contact from the robot's heading, the person's velocity in the robot's frame):
-//! `cargo run --release -p sim --example soak_room -- SEED INDEX [OUT]`.
+//! `cargo run --release -p sim --example soak_room -- SEED INDEX [OUT [MODEL [CONTROLLER]]]`.
+//! With a people MODEL (`social-force`, `orca-blind`, ...; `-` for none) the room is the
+//! soak at walking speed's (people at 0.8-1.6 m/s) and its people move by that model.
+/// Everyone's centre at every tick.
+#[derive(Default)]
+struct Seen(Vec<(f64, Vec<hyplan_core::Point2>)>);
+
+impl sim::Observer for Seen {
+    fn ticked(&mut self, sim: &sim::Sim<'_>, info: &sim::TickInfo<'_>) {
+        self.0
+            .push((info.t, sim.people().iter().map(|d| d.center).collect()));
+    }
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
     let usage = "usage: soak_room SEED INDEX [OUT]";
     let seed: u64 = args.get(1).ok_or(usage)?.parse()?;
     let k: u64 = args.get(2).ok_or(usage)?.parse()?;
-    let sc = sim::room(seed, k);
+    let model = args.get(4).filter(|m| *m != "-");
+    let mut sc = match model {
+        None => sim::room(seed, k),
+        Some(name) => {
+            let mut sc = sim::room_at(seed, k, (0.8, 1.6));
+            sc.people_model = sim::PeopleModelKind::from_name(name).ok_or("unknown MODEL")?;
+            sc
+        }
+    };
+    if let Some(c) = args.get(5) {
+        sc.local_planner = sim::LocalPlanner::from_name(c, None).ok_or("unknown CONTROLLER")?;
+    }
     let world = sc.build_world(std::path::Path::new(&sc.name))?;
-    let out = sim::run(&sc, &world, k, sim::GlobalPlanner::Dijkstra);
+    let mut seen = Seen::default();
+    let out = sim::run_with(
+        &sc,
+        &world,
+        k,
+        sim::GlobalPlanner::Dijkstra,
+        &mut [&mut seen],
+    );
     for c in &out.trace.contacts {
         let Some(row) = out.trace.rows.iter().rev().find(|r| r.t <= c.t) else {
             continue;
@@ -22,10 +53,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row.v,
             row.omega
         );
+        // The person's route position is where they are only for scripted people.
         if let Some(n) = c.with.strip_prefix("person ") {
-            let p = &world.people[n.parse::<usize>()?];
-            let (a, b) = (p.position(c.t), p.position(c.t + 0.01));
+            let n: usize = n.parse()?;
+            // Where the person was at the contact and 10 ms before, as the run moved them.
+            let at = |t: f64| {
+                seen.0
+                    .iter()
+                    .rev()
+                    .find(|(s, _)| *s <= t + 1e-9)
+                    .map(|(_, people)| people[n])
+            };
+            let (Some(a), Some(b)) = (at(c.t - 0.01), at(c.t)) else {
+                continue;
+            };
             let (vx, vy) = ((b.x - a.x) / 0.01, (b.y - a.y) / 0.01);
+            let a = b;
             let (s, co) = row.phi.sin_cos();
             let (dx, dy) = (a.x - row.x, a.y - row.y);
             println!(
@@ -40,7 +83,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for e in &out.trace.events {
         println!("{:.2} {:?}", e.t, e.kind);
     }
-    if let Some(dir) = args.get(3) {
+    if let Some(dir) = args.get(3).filter(|d| *d != "-") {
         sim::write_all(&out, &world, std::path::Path::new(dir))?;
     }
     Ok(())
