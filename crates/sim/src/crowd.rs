@@ -395,7 +395,8 @@ pub struct CrowdMetrics {
     /// Their delay caused by the robot: the sum over them of their arrival time with the
     /// robot less without it, s.
     pub people_delay: f64,
-    /// Laser scans with people moving in view (at least [`MIN_POINTS`] hits on them).
+    /// Laser scans with people moving in view (at least four hits on them, the tracker's
+    /// smallest cluster).
     pub scans_with_people: usize,
     /// Person sightings (a moving person seen in a scan).
     pub sightings: usize,
