@@ -8,9 +8,7 @@ use hyplan_core::{Point2, Zone};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use crate::kinematics::Pose;
-use crate::people::PeopleModel;
-use crate::people::{Stepped, Stepper, on_stage};
+use crate::people::{Stepped, Stepper, discs_ahead, on_stage};
 use crate::social_force::{KEEP_RIGHT, heading};
 use crate::world::{Disc, Person, Segment, StaticWorld, pt};
 
@@ -445,7 +443,7 @@ impl<'w> Orca<'w> {
             .map(|k| model.reach(k))
             .fold(1.0, f64::max);
         model.walls = Walls::new(statics, widest);
-        model.restart();
+        model.reset();
         model
     }
 
@@ -459,9 +457,36 @@ impl<'w> Orca<'w> {
         let r = self.params.obstacle_time_horizon * self.max_speed(k) + self.people[k].radius;
         if r.is_finite() { r } else { 0.0 }
     }
+}
 
+/// Neighbour `other` as agent `me` is to see it: moved by `shift` (the side preference),
+/// and, when their centres then coincide and they do not move apart (where dodgy_2d would
+/// draw a random direction), 1 mm further along x (`other_after`: the other has the
+/// higher index, so it is seen to the right; else to the left).
+fn seen<'a>(
+    me: &Agent,
+    other: &'a Agent,
+    shift: Vec2,
+    other_after: bool,
+    time_step: f32,
+) -> Cow<'a, Agent> {
+    let mut moved = other.clone();
+    moved.position += shift;
+    let to_other = moved.position - me.position;
+    let drift = (me.velocity - other.velocity) - to_other / time_step;
+    if to_other.length_squared() <= 1e-12 && drift.length_squared() <= 1e-12 {
+        moved.position.x += if other_after { 1e-3 } else { -1e-3 };
+    }
+    if moved == *other {
+        Cow::Borrowed(other)
+    } else {
+        Cow::Owned(moved)
+    }
+}
+
+impl Stepped for Orca<'_> {
     /// Everyone back at their first way-point, standing.
-    fn restart(&mut self) {
+    fn reset(&mut self) {
         self.walkers.clear();
         self.walkers.extend(self.people.iter().map(|p| {
             let on_stage = p.walk != crate::Walk::Through;
@@ -480,7 +505,7 @@ impl<'w> Orca<'w> {
 
     /// One step of `h` seconds from time `t`, the robot at `robot` moving at
     /// `robot_velocity`: every new velocity from the current state, then the positions.
-    fn advance(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
+    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
         let near = self.params.switch_distance;
         for (w, p) in self.walkers.iter_mut().zip(self.people) {
             on_stage(
@@ -594,64 +619,17 @@ impl<'w> Orca<'w> {
             }
         }
     }
-}
 
-/// Neighbour `other` as agent `me` is to see it: moved by `shift` (the side preference),
-/// and, when their centres then coincide and they do not move apart (where dodgy_2d would
-/// draw a random direction), 1 mm further along x (`other_after`: the other has the
-/// higher index, so it is seen to the right; else to the left).
-fn seen<'a>(
-    me: &Agent,
-    other: &'a Agent,
-    shift: Vec2,
-    other_after: bool,
-    time_step: f32,
-) -> Cow<'a, Agent> {
-    let mut moved = other.clone();
-    moved.position += shift;
-    let to_other = moved.position - me.position;
-    let drift = (me.velocity - other.velocity) - to_other / time_step;
-    if to_other.length_squared() <= 1e-12 && drift.length_squared() <= 1e-12 {
-        moved.position.x += if other_after { 1e-3 } else { -1e-3 };
-    }
-    if moved == *other {
-        Cow::Borrowed(other)
-    } else {
-        Cow::Owned(moved)
-    }
-}
-
-impl Stepped for Orca<'_> {
-    fn reset(&mut self) {
-        self.restart();
-    }
-
-    fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
-        self.advance(t, h, robot, robot_velocity);
+    fn clock(&mut self) -> &mut Stepper {
+        &mut self.clock
     }
 
     fn discs(&self, ahead: f64) -> Vec<Disc> {
-        self.walkers
-            .iter()
-            .zip(self.people)
-            .map(|(w, p)| Disc {
-                center: if w.on_stage {
-                    w.pos + w.vel * ahead
-                } else {
-                    w.pos
-                },
-                radius: p.radius,
-            })
-            .collect()
-    }
-}
-
-impl PeopleModel for Orca<'_> {
-    fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc> {
-        let mut clock = self.clock;
-        let discs = clock.people(self, t, robot);
-        self.clock = clock;
-        discs
+        discs_ahead(
+            self.people,
+            self.walkers.iter().map(|w| (w.pos, w.vel, w.on_stage)),
+            ahead,
+        )
     }
 }
 

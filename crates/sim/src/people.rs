@@ -57,6 +57,8 @@ impl PeopleModel for Scripted<'_> {
 /// A people model that moves its people in fixed steps of [`crate::STEP`] on its own
 /// clock ([`Stepper`] drives it).
 pub(crate) trait Stepped {
+    /// The model's clock.
+    fn clock(&mut self) -> &mut Stepper;
     /// Everyone back at their first way-point (or off stage), standing.
     fn reset(&mut self);
     /// One step of `h` seconds from time `t`, the robot at `robot` moving at
@@ -64,6 +66,31 @@ pub(crate) trait Stepped {
     fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>);
     /// Everyone's body `ahead` seconds after the last step, at their velocities.
     fn discs(&self, ahead: f64) -> Vec<Disc>;
+}
+
+impl<T: Stepped + Send> PeopleModel for T {
+    fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc> {
+        let mut clock = *self.clock();
+        let discs = clock.people(self, t, robot);
+        *self.clock() = clock;
+        discs
+    }
+}
+
+/// Everyone's body `ahead` seconds after the last step: `bodies` are each person's
+/// (position, velocity, on stage), in the order of `people`; off stage stays put.
+pub(crate) fn discs_ahead(
+    people: &[Person],
+    bodies: impl Iterator<Item = (Point2, Vector2<f64>, bool)>,
+    ahead: f64,
+) -> Vec<Disc> {
+    bodies
+        .zip(people)
+        .map(|((pos, vel, on_stage), p)| Disc {
+            center: if on_stage { pos + vel * ahead } else { pos },
+            radius: p.radius,
+        })
+        .collect()
 }
 
 /// The clock of a [`Stepped`] model: steps of [`crate::STEP`] from its first call, the

@@ -6,9 +6,8 @@ use hyplan_core::Point2;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use crate::kinematics::Pose;
 use crate::orca::{Orca, OrcaParams};
-use crate::people::{PeopleModel, Scripted, Stepped, Stepper, on_stage};
+use crate::people::{PeopleModel, Scripted, Stepped, Stepper, discs_ahead, on_stage};
 use crate::world::{Disc, NearIndex, OFFSTAGE, Person, StaticWorld, Walk, World, pt};
 
 /// How much further to their left each person sees the others by default, m
@@ -396,30 +395,8 @@ impl<'w> SocialForce<'w> {
             centres: vec![(Vector2::zeros(), 0.0); ids.len()],
             clock: Stepper::default(),
         };
-        model.restart();
+        model.reset();
         model
-    }
-
-    /// Everyone back at their first way-point, standing, facing their first leg.
-    fn restart(&mut self) {
-        self.walkers.clear();
-        self.walkers.extend(self.people.iter().map(|p| {
-            let first = p.path.first().map_or(Point2::origin(), |&q| pt(q));
-            let facing = p
-                .path
-                .get(1)
-                .map(|&q| pt(q) - first)
-                .and_then(|d| d.try_normalize(0.0))
-                .unwrap_or_else(|| Vector2::new(1.0, 0.0));
-            let on_stage = p.walk != Walk::Through;
-            Walker {
-                pos: if on_stage { first } else { pt(OFFSTAGE) },
-                vel: Vector2::zeros(),
-                leg: 0,
-                facing,
-                on_stage,
-            }
-        }));
     }
 
     /// The desired velocity of person `k` at time `t`, after moving on to the next leg
@@ -517,52 +494,6 @@ impl<'w> SocialForce<'w> {
         away * (p.wall_strength / p.wall_range * (-d / p.wall_range).exp())
     }
 
-    /// One step of `h` seconds from time `t`, the robot at `robot` moving at
-    /// `robot_velocity`: every acceleration from the current state, then velocities
-    /// (capped) and positions (semi-implicit Euler).
-    fn advance(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
-        self.enter_and_leave(t);
-        self.group_centres();
-        let n = self.walkers.len();
-        for k in 0..n {
-            if !self.walkers[k].on_stage {
-                self.accel[k] = Vector2::zeros();
-                continue;
-            }
-            let desired = self.desired(k, t);
-            let w = self.walkers[k];
-            let me = (w.pos, self.people[k].radius, w.facing);
-            let mut a = (desired - w.vel) / self.params.relaxation_time;
-            for (j, o) in self.walkers.iter().enumerate() {
-                if j != k
-                    && o.on_stage
-                    && self.within_reach(me, (o.pos, self.people[j].radius, o.vel))
-                {
-                    a += self.person_force(me, (o.pos, self.people[j].radius, o.vel));
-                }
-            }
-            let robot_body = (robot, self.robot_radius, robot_velocity);
-            if self.params.sees_robot && self.within_reach(me, robot_body) {
-                a += self.person_force(me, robot_body);
-            }
-            a += self.wall_force(k);
-            a += self.group_force(k);
-            self.accel[k] = a;
-        }
-        for ((w, p), a) in self.walkers.iter_mut().zip(self.people).zip(&self.accel) {
-            if !w.on_stage {
-                continue;
-            }
-            w.vel += a * h;
-            let cap = self.params.max_speed_ratio * p.speed.max(0.0);
-            let speed = w.vel.norm();
-            if speed > cap {
-                w.vel *= if speed > 0.0 { cap / speed } else { 0.0 };
-            }
-            w.pos += w.vel * h;
-        }
-    }
-
     /// [`Walk::Through`] people set off and leave ([`on_stage`]).
     fn enter_and_leave(&mut self, t: f64) {
         let near = self.params.switch_distance;
@@ -611,36 +542,84 @@ impl<'w> SocialForce<'w> {
 }
 
 impl Stepped for SocialForce<'_> {
+    /// Everyone back at their first way-point, standing, facing their first leg.
     fn reset(&mut self) {
-        self.restart();
+        self.walkers.clear();
+        self.walkers.extend(self.people.iter().map(|p| {
+            let first = p.path.first().map_or(Point2::origin(), |&q| pt(q));
+            let facing = p
+                .path
+                .get(1)
+                .map(|&q| pt(q) - first)
+                .and_then(|d| d.try_normalize(0.0))
+                .unwrap_or_else(|| Vector2::new(1.0, 0.0));
+            let on_stage = p.walk != Walk::Through;
+            Walker {
+                pos: if on_stage { first } else { pt(OFFSTAGE) },
+                vel: Vector2::zeros(),
+                leg: 0,
+                facing,
+                on_stage,
+            }
+        }));
     }
 
+    /// One step of `h` seconds from time `t`, the robot at `robot` moving at
+    /// `robot_velocity`: every acceleration from the current state, then velocities
+    /// (capped) and positions (semi-implicit Euler).
     fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
-        self.advance(t, h, robot, robot_velocity);
+        self.enter_and_leave(t);
+        self.group_centres();
+        let n = self.walkers.len();
+        for k in 0..n {
+            if !self.walkers[k].on_stage {
+                self.accel[k] = Vector2::zeros();
+                continue;
+            }
+            let desired = self.desired(k, t);
+            let w = self.walkers[k];
+            let me = (w.pos, self.people[k].radius, w.facing);
+            let mut a = (desired - w.vel) / self.params.relaxation_time;
+            for (j, o) in self.walkers.iter().enumerate() {
+                if j != k
+                    && o.on_stage
+                    && self.within_reach(me, (o.pos, self.people[j].radius, o.vel))
+                {
+                    a += self.person_force(me, (o.pos, self.people[j].radius, o.vel));
+                }
+            }
+            let robot_body = (robot, self.robot_radius, robot_velocity);
+            if self.params.sees_robot && self.within_reach(me, robot_body) {
+                a += self.person_force(me, robot_body);
+            }
+            a += self.wall_force(k);
+            a += self.group_force(k);
+            self.accel[k] = a;
+        }
+        for ((w, p), a) in self.walkers.iter_mut().zip(self.people).zip(&self.accel) {
+            if !w.on_stage {
+                continue;
+            }
+            w.vel += a * h;
+            let cap = self.params.max_speed_ratio * p.speed.max(0.0);
+            let speed = w.vel.norm();
+            if speed > cap {
+                w.vel *= if speed > 0.0 { cap / speed } else { 0.0 };
+            }
+            w.pos += w.vel * h;
+        }
+    }
+
+    fn clock(&mut self) -> &mut Stepper {
+        &mut self.clock
     }
 
     fn discs(&self, ahead: f64) -> Vec<Disc> {
-        self.walkers
-            .iter()
-            .zip(self.people)
-            .map(|(w, p)| Disc {
-                center: if w.on_stage {
-                    w.pos + w.vel * ahead
-                } else {
-                    w.pos
-                },
-                radius: p.radius,
-            })
-            .collect()
-    }
-}
-
-impl PeopleModel for SocialForce<'_> {
-    fn people(&mut self, t: f64, robot: Pose) -> Vec<Disc> {
-        let mut clock = self.clock;
-        let discs = clock.people(self, t, robot);
-        self.clock = clock;
-        discs
+        discs_ahead(
+            self.people,
+            self.walkers.iter().map(|w| (w.pos, w.vel, w.on_stage)),
+            ahead,
+        )
     }
 }
 

@@ -8,6 +8,7 @@ mod laser;
 mod navigation;
 mod orca;
 mod profile;
+mod reacting;
 mod rollout;
 mod social_force;
 mod tracking;

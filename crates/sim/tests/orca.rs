@@ -4,60 +4,18 @@
 use std::path::Path;
 
 use hyplan_core::Point2;
+
+use crate::reacting::{closest_gap, far, scenario, walk};
 use sim::{
-    Disc, Orca, OrcaParams, PeopleModel, PeopleModelKind, Person, Pose, Scenario, ScenarioError,
-    SocialForce, SocialForceParams, StaticWorld, Walk, World,
+    Disc, Orca, OrcaParams, PeopleModel, PeopleModelKind, Person, Scenario, ScenarioError,
+    SocialForce, SocialForceParams, StaticWorld, Walk,
 };
-
-/// A scenario of `world` (RON) and `people` (RON list), with `extra` keys.
-fn scenario(world: &str, people: &str, extra: &str) -> (Scenario, World) {
-    let text = format!(
-        "SimScenario(name: \"orca\", world: ({world}), people: [{people}], \
-         start: (0.5, 0.5), goal: (1.0, 0.5), {extra})"
-    );
-    let path = Path::new("orca.ron");
-    let sc = Scenario::parse(&text, path).unwrap();
-    let world = sc.build_world(path).unwrap();
-    (sc, world)
-}
-
-/// Everyone's discs at every tick up to `seconds`, the robot at `robot(t)`.
-fn walk(model: &mut dyn PeopleModel, seconds: f64, robot: impl Fn(f64) -> Pose) -> Vec<Vec<Disc>> {
-    let ticks = (seconds * sim::TICKS_PER_SECOND as f64) as u64;
-    (0..=ticks)
-        .map(|k| {
-            let t = sim::time_of(k);
-            model.people(t, robot(t))
-        })
-        .collect()
-}
-
-fn far(_: f64) -> Pose {
-    Pose {
-        x: 100.0,
-        y: 100.0,
-        phi: 0.0,
-    }
-}
 
 fn params(sees_robot: bool) -> OrcaParams {
     OrcaParams {
         sees_robot,
         ..OrcaParams::default()
     }
-}
-
-/// The smallest gap between two bodies over all frames, m (negative: overlap).
-fn closest_gap(frames: &[Vec<Disc>]) -> f64 {
-    let mut closest = f64::INFINITY;
-    for f in frames {
-        for (i, a) in f.iter().enumerate() {
-            for b in &f[i + 1..] {
-                closest = closest.min((a.center - b.center).norm() - a.radius - b.radius);
-            }
-        }
-    }
-    closest
 }
 
 /// Two people walking head-on along one line in an open space pass each other without
@@ -168,85 +126,6 @@ fn around_a_wall() {
     );
     let held = run("Wall(from: (6.0, 0.5), to: (6.0, 3.0), thickness: 0.2)");
     assert!(held.x < 6.0, "ended at {held:?}");
-}
-
-/// The smallest gap between the walker's body and a robot standing on their route, and
-/// where the walker ends.
-fn past_a_standing_robot(sees_robot: bool) -> (f64, Point2) {
-    let (sc, world) = scenario(
-        "size: (12.0, 4.0)",
-        "(path: [(1.0, 2.0), (11.0, 2.0)], speed: 1.3)",
-        "",
-    );
-    let r = sc.robot.body_radius;
-    let robot = Pose {
-        x: 6.0,
-        y: 2.0,
-        phi: std::f64::consts::PI,
-    };
-    let mut model = Orca::new(&world.people, &world.statics, r, params(sees_robot));
-    let frames = walk(&mut model, 20.0, |_| robot);
-    let gap = frames
-        .iter()
-        .map(|f| (f[0].center - Point2::new(robot.x, robot.y)).norm() - f[0].radius - r)
-        .fold(f64::INFINITY, f64::min);
-    (gap, frames.last().unwrap()[0].center)
-}
-
-/// People who see the robot take the whole avoidance and get round it with clearance;
-/// people who do not walk into it.
-#[test]
-fn a_robot_on_the_route() {
-    let (seen, end_seen) = past_a_standing_robot(true);
-    let (unseen, _) = past_a_standing_robot(false);
-    println!("ORCA robot on the route: gap {seen:.4} m seen, {unseen:.4} m unseen");
-    assert!(seen > 0.0, "a person who sees the robot touched it: {seen}");
-    assert!(
-        unseen < 0.0,
-        "a person who does not see it kept off: {unseen}"
-    );
-    assert!(
-        (end_seen - Point2::new(11.0, 2.0)).norm() < 0.05,
-        "ended at {end_seen:?}"
-    );
-}
-
-/// The same inputs give the same positions, bit for bit: five people crossing, one
-/// starting on top of another, a moving robot, walls.
-#[test]
-fn deterministic() {
-    let (sc, world) = scenario(
-        "size: (10.0, 10.0), shapes: [Box(center: (5.0, 5.0), size: (1.0, 1.0)), \
-         Disc(center: (2.0, 7.0), radius: 0.4)]",
-        "(path: [(1.0, 5.0), (9.0, 5.0)], speed: 1.2, walk: BackAndForth), \
-         (path: [(5.0, 1.0), (5.0, 9.0)], speed: 1.0, walk: Loop), \
-         (path: [(1.0, 1.0), (9.0, 9.0), (1.0, 9.0)], speed: 1.4, walk: Loop), \
-         (path: [(9.0, 1.0), (1.0, 9.0)], speed: 0.9, start: 2.0), \
-         (path: [(9.0, 1.0), (8.0, 2.0)], speed: 1.3, walk: BackAndForth)",
-        "",
-    );
-    let robot = |t: f64| Pose {
-        x: 1.0 + 0.3 * t,
-        y: 3.0 + (0.5 * t).sin(),
-        phi: 0.0,
-    };
-    let bits = || {
-        let mut m = Orca::new(
-            &world.people,
-            &world.statics,
-            sc.robot.body_radius,
-            params(true),
-        );
-        walk(&mut m, 30.0, robot)
-            .iter()
-            .flatten()
-            .flat_map(|d| [d.center.x.to_bits(), d.center.y.to_bits()])
-            .collect::<Vec<u64>>()
-    };
-    let a = bits();
-    assert_eq!(a, bits());
-    // They did move and meet: not a trivially equal pair of standstills.
-    assert_ne!(a[..10], a[a.len() - 10..]);
 }
 
 /// A call at an earlier time than the last starts over (an episode restarted).

@@ -4,48 +4,14 @@
 use std::path::Path;
 
 use hyplan_core::Point2;
+
+use crate::reacting::{far, scenario, walk};
 use sim::{
-    PeopleModel, PeopleModelKind, Person, Pose, Scenario, ScenarioError, Scripted, SocialForce,
-    SocialForceParams, World,
+    PeopleModelKind, Person, Scenario, ScenarioError, Scripted, SocialForce, SocialForceParams,
 };
 
 /// Seconds per engine tick.
 const TICK: f64 = 1.0 / sim::TICKS_PER_SECOND as f64;
-
-/// A scenario of `world` (RON) and `people` (RON list), with `extra` keys.
-fn scenario(world: &str, people: &str, extra: &str) -> (Scenario, World) {
-    let text = format!(
-        "SimScenario(name: \"sf\", world: ({world}), people: [{people}], \
-         start: (0.5, 0.5), goal: (1.0, 0.5), {extra})"
-    );
-    let path = Path::new("sf.ron");
-    let sc = Scenario::parse(&text, path).unwrap();
-    let world = sc.build_world(path).unwrap();
-    (sc, world)
-}
-
-/// Everyone's discs at every tick up to `seconds`, the robot at `robot(t)`.
-fn walk(
-    model: &mut dyn PeopleModel,
-    seconds: f64,
-    robot: impl Fn(f64) -> Pose,
-) -> Vec<Vec<sim::Disc>> {
-    let ticks = (seconds * sim::TICKS_PER_SECOND as f64) as u64;
-    (0..=ticks)
-        .map(|k| {
-            let t = sim::time_of(k);
-            model.people(t, robot(t))
-        })
-        .collect()
-}
-
-fn far(_: f64) -> Pose {
-    Pose {
-        x: 100.0,
-        y: 100.0,
-        phi: 0.0,
-    }
-}
 
 fn params(sees_robot: bool) -> SocialForceParams {
     SocialForceParams {
@@ -151,82 +117,6 @@ fn a_grazed_box_is_not_entered() {
         (last[0].center - Point2::new(11.0, 1.7)).norm() < 0.1,
         "{last:?}"
     );
-}
-
-/// The smallest gap between the walker's body and a robot standing on their route, and
-/// where the walker ends.
-fn past_a_standing_robot(sees_robot: bool) -> (f64, Point2) {
-    let (sc, world) = scenario(
-        "size: (12.0, 4.0)",
-        "(path: [(1.0, 2.0), (11.0, 2.0)], speed: 1.3)",
-        "",
-    );
-    let r = sc.robot.body_radius;
-    let robot = Pose {
-        x: 6.0,
-        y: 2.0,
-        phi: std::f64::consts::PI,
-    };
-    let mut model = SocialForce::new(&world.people, &world.statics, r, params(sees_robot));
-    let frames = walk(&mut model, 20.0, |_| robot);
-    let gap = frames
-        .iter()
-        .map(|f| (f[0].center - Point2::new(robot.x, robot.y)).norm() - f[0].radius - r)
-        .fold(f64::INFINITY, f64::min);
-    (gap, frames.last().unwrap()[0].center)
-}
-
-/// People who see the robot keep off it (and get round it); people who do not walk
-/// into it: the hard case is real.
-#[test]
-fn a_robot_on_the_route() {
-    let (seen, end_seen) = past_a_standing_robot(true);
-    let (unseen, _) = past_a_standing_robot(false);
-    println!("robot on the route: gap {seen:.3} m seen, {unseen:.3} m unseen");
-    assert!(seen > 0.0, "a person who sees the robot touched it: {seen}");
-    assert!(
-        unseen < 0.0,
-        "a person who does not see it kept off: {unseen}"
-    );
-    assert!(
-        (end_seen - Point2::new(11.0, 2.0)).norm() < 0.1,
-        "{end_seen:?}"
-    );
-}
-
-/// The same inputs give the same positions, bit for bit: five people crossing, a
-/// moving robot, walls.
-#[test]
-fn deterministic() {
-    let (sc, world) = scenario(
-        "size: (10.0, 10.0), shapes: [Box(center: (5.0, 5.0), size: (1.0, 1.0)), \
-         Disc(center: (2.0, 7.0), radius: 0.4)]",
-        "(path: [(1.0, 5.0), (9.0, 5.0)], speed: 1.2, walk: BackAndForth), \
-         (path: [(5.0, 1.0), (5.0, 9.0)], speed: 1.0, walk: Loop), \
-         (path: [(1.0, 1.0), (9.0, 9.0), (1.0, 9.0)], speed: 1.4, walk: Loop), \
-         (path: [(9.0, 1.0), (1.0, 9.0)], speed: 0.9, start: 2.0), \
-         (path: [(2.0, 2.0), (8.0, 2.0)], speed: 1.3, walk: BackAndForth)",
-        "",
-    );
-    let robot = |t: f64| Pose {
-        x: 1.0 + 0.3 * t,
-        y: 3.0 + (0.5 * t).sin(),
-        phi: 0.0,
-    };
-    let bits = || {
-        let mut m = SocialForce::new(&world.people, &world.statics, sc.robot.body_radius, {
-            params(true)
-        });
-        walk(&mut m, 30.0, robot)
-            .iter()
-            .flatten()
-            .flat_map(|d| [d.center.x.to_bits(), d.center.y.to_bits()])
-            .collect::<Vec<u64>>()
-    };
-    let a = bits();
-    assert_eq!(a, bits());
-    // They did move and meet: not a trivially equal pair of standstills.
-    assert_ne!(a[..10], a[a.len() - 10..]);
 }
 
 /// Alone on a one-segment route, a person walks at their desired speed (within 5 %), as
