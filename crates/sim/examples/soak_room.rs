@@ -3,6 +3,8 @@
 //! `cargo run --release -p sim --example soak_room -- SEED INDEX [OUT [MODEL [CONTROLLER]]]`.
 //! With a people MODEL (`social-force`, `orca-blind`, ...; `-` for none) the room is the
 //! soak at walking speed's (people at 0.8-1.6 m/s) and its people move by that model.
+//! With `CROWD=FLOW:DENSITY` in the environment the run is the crowd scenario
+//! `sim::crowd(FLOW, DENSITY, SEED, INDEX)` instead (as `cargo xtask crowd` runs it).
 /// Everyone's centre at every tick.
 #[derive(Default)]
 struct Seen(Vec<(f64, Vec<hyplan_core::Point2>)>);
@@ -20,10 +22,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let seed: u64 = args.get(1).ok_or(usage)?.parse()?;
     let k: u64 = args.get(2).ok_or(usage)?.parse()?;
     let model = args.get(4).filter(|m| *m != "-");
+    let crowd = std::env::var("CROWD").ok();
+    let room = |speeds| match &crowd {
+        Some(spec) => {
+            let (flow, density) = spec.split_once(':').ok_or("CROWD=FLOW:DENSITY")?;
+            Ok::<_, Box<dyn std::error::Error>>(sim::crowd(
+                flow.parse()?,
+                density.parse()?,
+                seed,
+                k,
+            ))
+        }
+        None => Ok(sim::room_at(seed, k, speeds)),
+    };
     let mut sc = match model {
-        None => sim::room(seed, k),
+        None => room((0.1, sim::Robot::default().v_max))?,
         Some(name) => {
-            let mut sc = sim::room_at(seed, k, (0.8, 1.6));
+            let mut sc = room((0.8, 1.6))?;
             sc.people_model = sim::PeopleModelKind::from_name(name).ok_or("unknown MODEL")?;
             sc
         }
