@@ -50,6 +50,10 @@ pub struct Args {
     /// `--soak-models` (0: none).
     #[arg(long, default_value_t = 0)]
     pub soak: u64,
+    /// Write one scenario file per flow (density 1, the first run of `--seed`) into DIR
+    /// (`crowd-FLOW.ron`, for `hyplan sim`) and stop.
+    #[arg(long, value_name = "DIR")]
+    pub write_scenarios: Option<PathBuf>,
     /// People models of the soak, comma-separated.
     #[arg(long, value_delimiter = ',', default_values_t = ["scripted".to_string(), "social-force".to_string(), "social-force-blind".to_string()])]
     pub soak_models: Vec<String>,
@@ -77,6 +81,9 @@ struct RunRecord<'a> {
 ///
 /// An unknown controller or people model; outputs that cannot be written.
 pub fn run(args: &Args) -> anyhow::Result<()> {
+    if let Some(dir) = &args.write_scenarios {
+        return write_scenarios(dir, args.seed);
+    }
     let mut controllers = Vec::new();
     for c in &args.controllers {
         let Some(local) = LocalPlanner::from_name(c, None) else {
@@ -338,5 +345,24 @@ fn soak(
     );
     std::fs::write(out.join("soak.md"), &md).context("writing soak.md")?;
     println!("{md}");
+    Ok(())
+}
+
+/// Writes `crowd-FLOW.ron` into `dir` for every flow: density 1, run 0 of `seed`.
+fn write_scenarios(dir: &std::path::Path, seed: u64) -> anyhow::Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    for flow in CrowdFlow::ALL {
+        let sc = sim::crowd(flow, 1.0, seed, 0);
+        let text = ron::ser::to_string_pretty(&sc, ron::ser::PrettyConfig::default())?;
+        let header = format!(
+            "// A generated {flow} crowd, 1 person per 100 m^2 on average, people under social \
+             forces who see the robot.\n// Written by `cargo xtask crowd --write-scenarios DIR` \
+             (sim::crowd({flow}, 1.0, {seed}, 0)); try `hyplan sim FILE --people-model orca-blind`.\n"
+        );
+        let path = dir.join(format!("crowd-{flow}.ron"));
+        std::fs::write(&path, header + &text + "\n")
+            .with_context(|| format!("writing {}", path.display()))?;
+        println!("wrote {}", path.display());
+    }
     Ok(())
 }

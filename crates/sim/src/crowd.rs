@@ -138,7 +138,7 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
     };
     Scenario {
         name: format!("crowd-{flow}-{density}-{seed}-{index}"),
-        description: format!("generated {flow} crowd, {density} people per 100 m^2"),
+        description: format!("generated {flow} crowd, density {density} per 100 m^2"),
         notes: Vec::new(),
         world: WorldSpec {
             size: Some(size),

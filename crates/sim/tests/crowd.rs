@@ -128,3 +128,16 @@ fn orca_crowds_walk_through() {
     assert_eq!(m.contacts_at_fault, 0, "{m:?}");
     assert!(m.people_arrived >= 2, "{m:?}");
 }
+
+/// The crowd scenarios in `scenarios/sim/` are the generator's, unchanged: written by
+/// `cargo xtask crowd --write-scenarios scenarios/sim`, read back equal.
+#[test]
+fn the_shipped_crowd_files_are_the_generators() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim");
+    for flow in CrowdFlow::ALL {
+        let path = dir.join(format!("crowd-{flow}.ron"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let read = sim::Scenario::parse(&text, &path).unwrap();
+        assert_eq!(read, sim::crowd(flow, 1.0, 2026, 0), "{}", path.display());
+    }
+}
