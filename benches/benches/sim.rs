@@ -10,8 +10,9 @@
 //! 1 m circle near the start of scenario 3, with the person walking.
 //!
 //! `crowd/004-nav-3-person`: scenario 3's run with nobody in the hall, and with 20 people
-//! walking back and forth across it at 1.3 m/s under social forces (who see the robot):
-//! issue 29 asks the crowd to cost at most twice the run without people. The two runs
+//! walking back and forth across it at 1.3 m/s under social forces, and the same people
+//! under ORCA (who see the robot in both): issue 29 asks the crowd to cost at most twice
+//! the run without people. The runs
 //! differ in what the robot does too (it stops and re-plans for people), so the bench
 //! also prints the cost per simulated second of each.
 //!
@@ -112,7 +113,13 @@ fn crowd(c: &mut Criterion) {
         })
         .collect();
     crowd.people_model = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
-    for (name, scenario) in [("nobody", &empty), ("20-people", &crowd)] {
+    let mut orca = crowd.clone();
+    orca.people_model = sim::PeopleModelKind::Orca(sim::OrcaParams::default());
+    for (name, scenario) in [
+        ("nobody", &empty),
+        ("20-people", &crowd),
+        ("20-people-orca", &orca),
+    ] {
         let world = scenario.build_world(&file).expect("the hall builds");
         let m = sim::run(scenario, &world, 0, GlobalPlanner::Dijkstra)
             .trace
