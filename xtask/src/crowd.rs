@@ -93,6 +93,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     }
     let models = people_models(&args.models)?;
     let soak_models = people_models(&args.soak_models)?;
+    if models.is_empty() || controllers.is_empty() {
+        bail!("--models and --controllers need at least one name each");
+    }
     let out = args.out.clone().unwrap_or_else(|| {
         PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("..")
