@@ -32,7 +32,7 @@ use crate::engine::{Observer, TICKS_PER_SECOND, time_of};
 use crate::kinematics::{Pose, Robot};
 use crate::laser::Scan;
 use crate::planner::GlobalPlanner;
-use crate::scenario::{Scenario, WorldSpec};
+use crate::scenario::Scenario;
 use crate::social_force::{PeopleModelKind, SocialForceParams};
 use crate::tracking::MIN_POINTS;
 use crate::world::{OFFSTAGE, Person, Shape, Walk, World, pt};
@@ -128,40 +128,25 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
         CrowdFlow::Crossing => hall(&[(8.0, 6.0)]),
         CrowdFlow::Corridor => corridor(),
     };
-    let robot = Robot::default();
     let route = (pt(goal) - pt(start)).norm();
-    let time_limit = (3.0 * route / robot.v_max).ceil();
+    let time_limit = (3.0 * route / Robot::default().v_max).ceil();
     let people = if density > 0.0 && density.is_finite() {
         people(flow, density, time_limit, start, &mut rng)
     } else {
         Vec::new()
     };
     Scenario {
-        name: format!("crowd-{flow}-{density}-{seed}-{index}"),
-        description: format!("generated {flow} crowd, density {density} per 100 m^2"),
-        notes: Vec::new(),
-        world: WorldSpec {
-            size: Some(size),
-            origin: (0.0, 0.0),
-            shapes,
-            unmapped: Vec::new(),
-            map: None,
-        },
-        people,
         people_model: PeopleModelKind::SocialForce(SocialForceParams::default()),
-        start,
-        start_heading_deg: 0.0,
-        goal,
-        known_map: true,
-        exploration: crate::explore::Exploration::default(),
-        time_limit,
-        robot,
-        laser: Default::default(),
-        mapping: Default::default(),
-        costmap: Default::default(),
-        controller: Default::default(),
-        local_planner: Default::default(),
-        navigation: Default::default(),
+        ..Scenario::generated(
+            (
+                format!("crowd-{flow}-{density}-{seed}-{index}"),
+                format!("generated {flow} crowd, density {density} per 100 m^2"),
+            ),
+            (size, shapes),
+            people,
+            (start, 0.0, goal),
+            time_limit,
+        )
     }
 }
 

@@ -283,6 +283,46 @@ impl Scenario {
             })
     }
 
+    /// A generated scenario (the soak's rooms, the crowds): a world of `shapes` over
+    /// `size` from the origin, known to the robot, `people` walking their scripted routes,
+    /// from `start` (heading `start_heading_deg`) to `goal` within `time_limit`; every
+    /// other value its default.
+    pub(crate) fn generated(
+        (name, description): (String, String),
+        (size, shapes): ((f64, f64), Vec<crate::world::Shape>),
+        people: Vec<Person>,
+        (start, start_heading_deg, goal): ((f64, f64), f64, (f64, f64)),
+        time_limit: f64,
+    ) -> Self {
+        Self {
+            name,
+            description,
+            notes: Vec::new(),
+            world: WorldSpec {
+                size: Some(size),
+                origin: (0.0, 0.0),
+                shapes,
+                unmapped: Vec::new(),
+                map: None,
+            },
+            people,
+            people_model: PeopleModelKind::default(),
+            start,
+            start_heading_deg,
+            goal,
+            known_map: true,
+            exploration: crate::explore::Exploration::default(),
+            time_limit,
+            robot: Robot::default(),
+            laser: Default::default(),
+            mapping: Default::default(),
+            costmap: Default::default(),
+            controller: Default::default(),
+            local_planner: Default::default(),
+            navigation: Default::default(),
+        }
+    }
+
     /// The robot's pose at the start: `start`, heading `start_heading_deg` (wrapped).
     #[must_use]
     pub fn start_pose(&self) -> Pose {

@@ -19,7 +19,7 @@ use serde::{Deserialize, Serialize};
 use crate::kinematics::Robot;
 use crate::planner::GlobalPlanner;
 use crate::rollout::LocalPlanner;
-use crate::scenario::{Scenario, WorldSpec};
+use crate::scenario::Scenario;
 use crate::world::{Person, Shape, Walk};
 
 /// The generated room `index` of a soak seeded `seed`, its people walking at 0.1 m/s up
@@ -124,33 +124,13 @@ pub fn room_at(seed: u64, index: u64, speeds: (f64, f64)) -> Scenario {
             }
         })
         .collect();
-    Scenario {
-        name: format!("soak-{seed}-{index}"),
-        description: "generated room".into(),
-        notes: Vec::new(),
-        world: WorldSpec {
-            size: Some((w, h)),
-            origin: (0.0, 0.0),
-            shapes,
-            unmapped: Vec::new(),
-            map: None,
-        },
+    Scenario::generated(
+        (format!("soak-{seed}-{index}"), "generated room".into()),
+        ((w, h), shapes),
         people,
-        people_model: Default::default(),
-        start,
-        start_heading_deg: rng.random_range(-180.0..180.0),
-        goal,
-        known_map: true,
-        exploration: crate::explore::Exploration::default(),
-        time_limit: 90.0,
-        robot: Robot::default(),
-        laser: Default::default(),
-        mapping: Default::default(),
-        costmap: Default::default(),
-        controller: Default::default(),
-        local_planner: Default::default(),
-        navigation: Default::default(),
-    }
+        (start, rng.random_range(-180.0..180.0), goal),
+        90.0,
+    )
 }
 
 /// Totals of a soak.

@@ -5,10 +5,10 @@ use std::path::Path;
 
 use hyplan_core::Point2;
 
-use crate::reacting::{closest_gap, far, scenario, walk};
+use crate::reacting::{bad_parameter_is_named, closest_gap, drives_among, far, scenario, walk};
 use sim::{
-    Disc, Orca, OrcaParams, PeopleModel, PeopleModelKind, Person, Scenario, ScenarioError,
-    SocialForce, SocialForceParams, StaticWorld, Walk,
+    Disc, Orca, OrcaParams, PeopleModel, PeopleModelKind, Person, Scenario, SocialForce,
+    SocialForceParams, StaticWorld, Walk,
 };
 
 fn params(sees_robot: bool) -> OrcaParams {
@@ -183,35 +183,8 @@ fn chosen_by_the_scenario() {
             ..OrcaParams::default()
         }
     );
-    let out = sim::run(&sc, &world, 1, sim::GlobalPlanner::Dijkstra);
-    let m = &out.trace.summary;
-    println!(
-        "hall among ORCA people: reached {} in {:?} s, contacts {} at fault",
-        m.reached, m.travel_time, m.contacts_at_fault
-    );
-    assert!(m.reached);
-    let scripted = Scenario {
-        people_model: PeopleModelKind::Scripted,
-        ..sc.clone()
-    };
-    let before = sim::run(&scripted, &world, 1, sim::GlobalPlanner::Dijkstra);
-    assert_ne!(out.trace.rows, before.trace.rows);
-    // Out of range: the file, the field and the value are named.
-    let text = "SimScenario(name: \"orca\", world: (size: (6.0, 3.0)), start: (0.5, 0.5), \
-                goal: (1.0, 0.5), people_model: Orca((time_horizon: -1.0)))";
-    let path = Path::new("bad.ron");
-    let bad = Scenario::parse(text, path).unwrap();
-    match bad.build_world(path) {
-        Err(e @ ScenarioError::Field { .. }) => {
-            let msg = e.to_string();
-            assert!(msg.contains("bad.ron"), "{msg}");
-            assert!(msg.contains("people_model.time_horizon` = -1"), "{msg}");
-        }
-        other => panic!("expected a field error, got {other:?}"),
-    }
-    // Unknown keys are refused.
-    let text = text.replace("time_horizon: -1.0", "time_horizn: 1.0");
-    assert!(Scenario::parse(&text, path).is_err());
+    drives_among(&sc, &world);
+    bad_parameter_is_named("Orca((time_horizon: -1.0))", "time_horizon", "time_horizn");
 }
 
 /// The cost of one `people` call (one 5 ms tick) with 20 people crossing an open 10 m

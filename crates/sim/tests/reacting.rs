@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use hyplan_core::Point2;
-use sim::{Disc, PeopleModel, PeopleModelKind, Pose, Scenario, World};
+use sim::{Disc, PeopleModel, PeopleModelKind, Pose, Scenario, ScenarioError, World};
 
 /// The reacting models, by name, seeing the robot and not.
 const MODELS: [(&str, &str); 2] = [
@@ -142,4 +142,47 @@ fn deterministic() {
         // They did move and meet: not a trivially equal pair of standstills.
         assert_ne!(a[..10], a[a.len() - 10..], "{name}");
     }
+}
+
+/// `sc` driven with seed 1 reaches its goal, and its people move otherwise than
+/// scripted ones would: the engine runs the scenario's people model.
+pub(crate) fn drives_among(sc: &Scenario, world: &World) {
+    let out = sim::run(sc, world, 1, sim::GlobalPlanner::Dijkstra);
+    let m = &out.trace.summary;
+    println!(
+        "{:?}: reached {} in {:?} s, contacts {} at fault",
+        sc.people_model, m.reached, m.travel_time, m.contacts_at_fault
+    );
+    assert!(m.reached);
+    let scripted = Scenario {
+        people_model: PeopleModelKind::Scripted,
+        ..sc.clone()
+    };
+    let before = sim::run(&scripted, world, 1, sim::GlobalPlanner::Dijkstra);
+    assert_ne!(out.trace.rows, before.trace.rows);
+}
+
+/// A `people_model` (RON, e.g. `Orca((time_horizon: -1.0))`) whose `field` is out of
+/// range is refused naming the file, the field and the value; the same with the field's
+/// name misspelt as `typo` is refused at parsing.
+pub(crate) fn bad_parameter_is_named(model: &str, field: &str, typo: &str) {
+    let text = format!(
+        "SimScenario(name: \"bad\", world: (size: (6.0, 3.0)), start: (0.5, 0.5), \
+         goal: (1.0, 0.5), people_model: {model})"
+    );
+    let path = Path::new("bad.ron");
+    let bad = Scenario::parse(&text, path).unwrap();
+    match bad.build_world(path) {
+        Err(e @ ScenarioError::Field { .. }) => {
+            let msg = e.to_string();
+            assert!(msg.contains("bad.ron"), "{msg}");
+            assert!(
+                msg.contains(&format!("people_model.{field}` = -1")),
+                "{msg}"
+            );
+        }
+        other => panic!("expected a field error, got {other:?}"),
+    }
+    let text = text.replace(field, typo);
+    assert!(Scenario::parse(&text, path).is_err());
 }

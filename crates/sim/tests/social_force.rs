@@ -5,10 +5,8 @@ use std::path::Path;
 
 use hyplan_core::Point2;
 
-use crate::reacting::{far, scenario, walk};
-use sim::{
-    PeopleModelKind, Person, Scenario, ScenarioError, Scripted, SocialForce, SocialForceParams,
-};
+use crate::reacting::{bad_parameter_is_named, drives_among, far, scenario, walk};
+use sim::{PeopleModelKind, Person, Scenario, Scripted, SocialForce, SocialForceParams};
 
 /// Seconds per engine tick.
 const TICK: f64 = 1.0 / sim::TICKS_PER_SECOND as f64;
@@ -185,35 +183,12 @@ fn chosen_by_the_scenario() {
     assert!(p.sees_robot);
     assert_eq!((p.view_deg, p.person_strength), (180.0, 2.1));
     // The engine moves them: the trace's people are the social force model's.
-    let out = sim::run(&sc, &world, 1, sim::GlobalPlanner::Dijkstra);
-    let m = &out.trace.summary;
-    println!(
-        "hall among social force people: reached {} in {:?} s, contacts {} at fault",
-        m.reached, m.travel_time, m.contacts_at_fault
+    drives_among(&sc, &world);
+    bad_parameter_is_named(
+        "SocialForce((person_range: -1.0))",
+        "person_range",
+        "speeed",
     );
-    assert!(m.reached);
-    let scripted = Scenario {
-        people_model: PeopleModelKind::Scripted,
-        ..sc.clone()
-    };
-    let before = sim::run(&scripted, &world, 1, sim::GlobalPlanner::Dijkstra);
-    assert_ne!(out.trace.rows, before.trace.rows);
-    // Out of range: the file, the field and the value are named.
-    let text = "SimScenario(name: \"sf\", world: (size: (6.0, 3.0)), start: (0.5, 0.5), \
-                goal: (1.0, 0.5), people_model: SocialForce((person_range: -1.0)))";
-    let path = Path::new("bad.ron");
-    let bad = Scenario::parse(text, path).unwrap();
-    match bad.build_world(path) {
-        Err(e @ ScenarioError::Field { .. }) => {
-            let msg = e.to_string();
-            assert!(msg.contains("bad.ron"), "{msg}");
-            assert!(msg.contains("people_model.person_range` = -1"), "{msg}");
-        }
-        other => panic!("expected a field error, got {other:?}"),
-    }
-    // Unknown keys are refused.
-    let text = text.replace("person_range: -1.0", "speeed: 1.0");
-    assert!(Scenario::parse(&text, path).is_err());
 }
 
 /// A driven episode restarted ([`sim::Driven::reset`]) replays the social force people
