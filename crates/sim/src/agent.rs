@@ -9,7 +9,7 @@
 
 use hyplan_core::Point2;
 
-use crate::engine::{GoalSource, Observer, Sim, TickInfo, stream};
+use crate::engine::{GoalSource, Observer, Sim, TickInfo, noise_stream};
 use crate::kinematics::{Pose, Twist};
 use crate::planner::GlobalPlanner;
 use crate::scenario::Scenario;
@@ -180,7 +180,7 @@ fn first_observation(sim: &Sim<'_>, goal: Point2, seed: u64) -> Observation {
     let (o, h) = sim.laser().origin(&pose);
     let mut scan = sim.laser().cast(&sim.world.statics, &people, o, h);
     sim.laser()
-        .add_noise(&mut scan, &mut stream(seed, FIRST_SCAN_STREAM));
+        .add_noise(&mut scan, &mut noise_stream(seed, FIRST_SCAN_STREAM));
     let (clearance, people_contact) = nearest_contact(sim, &people);
     let mut seen = Observation {
         ranges: scan.ranges,

@@ -332,15 +332,11 @@ impl LaserModel {
 /// Ranges outside `[lo, hi]` as REP 117 writes them: `NEG_INFINITY` below (something at
 /// the scanner), `INFINITY` above (no return).
 fn rep_117(ranges: &mut [f64], lo: f64, hi: f64) {
+    // Two selects, not a chain of branches: they compile to masks, and the beams that
+    // leave the range (every scan has some) cost no mispredicted branch.
     for r in ranges {
-        let v = *r;
-        *r = if v < lo {
-            f64::NEG_INFINITY
-        } else if v > hi {
-            f64::INFINITY
-        } else {
-            v
-        };
+        let v = if *r > hi { f64::INFINITY } else { *r };
+        *r = if v < lo { f64::NEG_INFINITY } else { v };
     }
 }
 
@@ -417,12 +413,12 @@ fn segment_distance(p: Vector2<f64>, e: Vector2<f64>) -> f64 {
 #[must_use]
 pub fn ray_segment(d: Vector2<f64>, p: Vector2<f64>, e: Vector2<f64>) -> Option<f64> {
     let denom = d.perp(&e);
-    if denom == 0.0 {
-        return None;
-    }
-    let t = p.perp(&e) / denom;
-    let s = p.perp(&d) / denom;
-    (t >= 0.0 && (0.0..=1.0).contains(&s)).then_some(t)
+    let (num_t, num_s) = (p.perp(&e), p.perp(&d));
+    // t = num_t / denom >= 0 and s = num_s / denom in [0, 1], decided on the numerators
+    // (turned to denom's sign, which is exact) so that only a hit pays a division.
+    let sign = 1.0f64.copysign(denom);
+    let (nt, ns) = (num_t * sign, num_s * sign);
+    (denom != 0.0 && nt >= 0.0 && ns >= 0.0 && ns <= denom.abs()).then(|| num_t / denom)
 }
 
 /// Distance along unit ray `d` from the origin to the circle of radius `r` centred at

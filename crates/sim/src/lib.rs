@@ -116,8 +116,8 @@ pub use crowd::{
     arrivals_alone, crowd, measure,
 };
 pub use engine::{
-    FixedGoal, Flow, GoalSource, NOISE_STREAM, Observer, PLANNER_STREAM, Sim, TICKS_PER_SECOND,
-    TickInfo, every, stream, time_of,
+    FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PLANNER_STREAM, Sim,
+    TICKS_PER_SECOND, TickInfo, every, noise_stream, stream, time_of,
 };
 pub use explore::{
     Assigner, AssignerMode, ContactCounter, Coverage, CoverageMeter, DetectorCost, DetectorKind,
