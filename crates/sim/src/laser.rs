@@ -234,6 +234,14 @@ impl LaserModel {
         } else {
             &world.grid_segments
         };
+        // With a field of view of at most a half turn every beam points into the
+        // half-plane ahead of the scanner (its component along the heading is >= 0), so
+        // an obstacle wholly behind the scanner's line cannot be hit: it is left out
+        // before any distance, angle or span is computed. (1 um of margin: an edge beam
+        // at exactly 90 degrees is off the line by rounding, far below it.)
+        let ahead = Vector2::new(c, s);
+        let half_turn = self.fov <= std::f64::consts::PI;
+        let wholly_behind = |along: f64| half_turn && along < -1e-6;
         for (i, seg) in world.segments.iter().chain(grid_segments).enumerate() {
             let pa = seg.a - origin;
             // Seen from behind (the scanner inside the half-plane behind an outward
@@ -243,6 +251,10 @@ impl LaserModel {
             {
                 continue;
             }
+            let pb = seg.b - origin;
+            if wholly_behind(ahead.dot(&pa).max(ahead.dot(&pb))) {
+                continue;
+            }
             order.push((segment_distance(pa, seg.b - seg.a), Obstacle::Segment(i)));
         }
         for (i, disc) in world.discs.iter().chain(people).enumerate() {
@@ -250,6 +262,9 @@ impl LaserModel {
             if dist <= disc.radius {
                 // Inside the disc: every beam is blocked at once.
                 ranges.iter_mut().for_each(|r| *r = 0.0);
+                continue;
+            }
+            if wholly_behind(ahead.dot(&(disc.center - origin)) + disc.radius) {
                 continue;
             }
             order.push((dist - disc.radius, Obstacle::Disc(i)));

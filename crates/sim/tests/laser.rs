@@ -93,7 +93,9 @@ proptest! {
         shapes in prop::collection::vec(shape_strategy(), 1..8),
         ox in 0.0..10.0f64, oy in 0.0..10.0f64, heading in -3.2..3.2f64,
         person in (0.0..10.0f64, 0.0..10.0f64, 0.1..0.4f64),
-        fov in 30.0..360.0f64, beams in 2usize..400,
+        // Exactly a half turn half of the time: the widest field of view for which the
+        // cast leaves out the obstacles behind the scanner, its edge beams at 90 degrees.
+        fov in prop_oneof![Just(180.0f64), 30.0..360.0f64], beams in 2usize..400,
     ) {
         let w = world(&shapes);
         let o = Point2::new(ox, oy);
