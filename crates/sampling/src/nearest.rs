@@ -3,10 +3,11 @@
 //! One small type, [`NearestIndex`], hides the k-d tree (kiddo 5's mutable `KdTree`), so
 //! swapping it for another index touches this file only.
 
-use std::collections::HashMap;
-
 use hyplan_core::Point2;
 use kiddo::SquaredEuclidean;
+// Fx, not SipHash: the keys are the bits of sampled coordinates, hashed at every
+// insertion (a few per cent of a short RRT's time with SipHash), and no one chooses them.
+use rustc_hash::FxHashMap as HashMap;
 
 /// kiddo's mutable tree: `f64` coordinates, `u64` items (our point ids), 2 axes, buckets of
 /// 32 points, `u32` node indices.
@@ -68,7 +69,7 @@ impl NearestIndex {
     pub fn with_capacity(n: usize) -> Self {
         Self {
             points: Vec::with_capacity(n),
-            first_at: HashMap::with_capacity(n),
+            first_at: HashMap::with_capacity_and_hasher(n, Default::default()),
             ..Self::default()
         }
     }
