@@ -295,16 +295,36 @@ impl JumpPointSearch {
             // All jumps first, then the successors' states: their loads (often cache
             // misses on large maps) then overlap instead of each waiting for its jump.
             found.clear();
-            for (d, &(dx, dy, _)) in DIRS.iter().enumerate() {
-                if kept >> d & 1 == 0 {
-                    continue;
+            // The goal found by a jump from `p` is reached at g + octile(p, t) = f(p), the
+            // least f left (the heuristic is consistent): that path is optimal and the
+            // search ends there, without the other jumps. The directions toward the goal
+            // go first, since those are where it is found.
+            let toward = TOWARD[octant((x, y), t)];
+            let mut goal_found = false;
+            'jumps: for mask in [kept & toward, kept & !toward] {
+                let mut rest = mask;
+                while rest != 0 {
+                    let d = rest.trailing_zeros() as usize;
+                    rest &= rest - 1;
+                    let (dx, dy) = (DIRS[d].0 as isize, DIRS[d].1 as isize);
+                    if dx == 0 || dy == 0 {
+                        found.extend(self.bits.jump_straight((x, y), (dx, dy), t));
+                    } else {
+                        self.bits.jump_diagonal((x, y), (dx, dy), t, &mut found);
+                    }
+                    if found.last() == Some(&t) {
+                        goal_found = true;
+                        break 'jumps;
+                    }
                 }
-                let (dx, dy) = (dx as isize, dy as isize);
-                if dx == 0 || dy == 0 {
-                    found.extend(self.bits.jump_straight((x, y), (dx, dy), t));
-                } else {
-                    self.bits.jump_diagonal((x, y), (dx, dy), t, &mut found);
-                }
+            }
+            if goal_found {
+                let old = self.states[tp];
+                stats.reached += u64::from(State::stamp(old) & !CLOSED != generation);
+                stats.pushes += 1;
+                let ng = g + octile(fx, t.0.abs_diff(x), t.1.abs_diff(y));
+                self.states[tp] = State::pack(ng, p as u32, generation | CLOSED);
+                break Ok(());
             }
             for &(qx, qy) in &found {
                 let q = qy * pw + qx;
@@ -587,11 +607,45 @@ impl BitGrid {
                 out.push(goal);
                 return;
             }
-            out.extend(self.jump_straight((x, y), (dx, 0), goal));
-            out.extend(self.jump_straight((x, y), (0, dy), goal));
+            // Nothing after the goal is needed: the search ends once it is found.
+            for dir in [(dx, 0), (0, dy)] {
+                if let Some(q) = self.jump_straight((x, y), dir, goal) {
+                    out.push(q);
+                    if q == goal {
+                        return;
+                    }
+                }
+            }
         }
     }
 }
+
+/// Index into [`TOWARD`] of the goal's side of `(x, y)`: `3 (sx + 1) + sy + 1` for the
+/// signs `sx`, `sy` of the coordinate differences.
+#[inline]
+fn octant((x, y): (usize, usize), goal: (usize, usize)) -> usize {
+    3 * (goal.0.cmp(&x) as isize + 1) as usize + (goal.1.cmp(&y) as isize + 1) as usize
+}
+
+/// For each [`octant`], the directions (bits in [`DIRS`]' order) whose components both
+/// point toward the goal or are zero.
+const TOWARD: [u8; 9] = {
+    let mut table = [0; 9];
+    let mut k = 0;
+    while k < 9 {
+        let (sx, sy) = (k as i32 / 3 - 1, k as i32 % 3 - 1);
+        let mut d = 0;
+        while d < 8 {
+            let (dx, dy) = (DIRS[d].0, DIRS[d].1);
+            if (dx == 0 || dx == sx) && (dy == 0 || dy == sy) {
+                table[k] |= 1 << d;
+            }
+            d += 1;
+        }
+        k += 1;
+    }
+    table
+};
 
 /// The bit of direction `(dx, dy)` in [`DIRS`]' order (E, W, N, S, NE, NW, SE, SW).
 #[inline]
