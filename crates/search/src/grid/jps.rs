@@ -16,10 +16,6 @@ use super::{
 use crate::SearchStats;
 use crate::heap::{MinHeap, Upper};
 
-/// Bits before padded cell 0 of a bit line: one word, so that a window ending at a cell
-/// near the low end of the line starts at a non-negative bit.
-const PAD: usize = 64;
-
 /// Why a [`JumpPointSearch`] cannot be prepared.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
@@ -480,42 +476,211 @@ fn octile(fx: Fixed, dx: usize, dy: usize) -> u64 {
     hi as u64 * fx.unit + lo as u64 * (fx.diag - fx.unit)
 }
 
-/// Which padded cells are free, one bit per cell: rows (bit `PAD + x` of line `y`) and
-/// columns (bit `PAD + y` of line `x`), each line followed by zero words so that a
-/// 64-bit window may start at any cell of it.
+/// Which padded cells are free, one bit per cell: rows (line `y`, bit `PAD + x`) and
+/// columns (line `x`, bit `PAD + y`).
 #[derive(Debug, Clone)]
 struct BitGrid {
-    /// Words per row line.
-    row_words: usize,
-    /// Words per column line.
-    col_words: usize,
-    rows: Vec<u64>,
-    cols: Vec<u64>,
+    rows: Lines,
+    cols: Lines,
+}
+
+/// Bits before cell 0 of a bit line: one word, so that a window ending at a cell near the
+/// low end of the line starts at a non-negative bit.
+const PAD: usize = 64;
+
+/// Bit lines of equal length, each padded with zero words so that a 64-bit window may
+/// start or end at any cell of it.
+#[derive(Debug, Clone)]
+struct Lines {
+    /// Words per line.
+    words: usize,
+    bits: Vec<u64>,
+}
+
+impl Lines {
+    /// `count` all-blocked lines of `len` cells.
+    fn new(count: usize, len: usize) -> Self {
+        // A window at the line's last cell reads the word after it.
+        let words = (PAD + len) / 64 + 2;
+        Self {
+            words,
+            bits: vec![0; words * count],
+        }
+    }
+
+    fn set(&mut self, l: usize, at: usize) {
+        let b = PAD + at;
+        self.bits[l * self.words + b / 64] |= 1 << (b % 64);
+    }
+
+    /// The 64 cells of line `l` from cell `at` on (bit 0: cell `at`).
+    #[inline(always)]
+    fn window(&self, l: usize, at: usize) -> u64 {
+        self.bits_from(l, PAD + at)
+    }
+
+    /// The 64 bits of line `l` from bit `b` on.
+    #[inline(always)]
+    fn bits_from(&self, l: usize, b: usize) -> u64 {
+        let (w, s) = (l * self.words + b / 64, b % 64);
+        let pair = &self.bits[w..w + 2];
+        // `<< 1 << (63 - s)`: a shift by 64 - s without the overflow at s = 0.
+        (pair[0] >> s) | ((pair[1] << 1) << (63 - s))
+    }
+
+    /// The window of a jump at cell `at` of line `l`: the 64 cells from `at` on when
+    /// `FWD`, else the 64 ending at `at` (bit 63: cell `at`).
+    #[inline(always)]
+    fn window_at<const FWD: bool>(&self, l: usize, at: usize) -> u64 {
+        self.bits_from(l, if FWD { PAD + at } else { PAD + at - 63 })
+    }
+
+    /// The windows from bit `b` on of line `l` and of the lines below and above it.
+    #[inline(always)]
+    fn windows(&self, l: usize, b: usize) -> (u64, u64, u64) {
+        let words = self.words;
+        let (w, s) = (b / 64, b % 64);
+        let start = (l - 1) * words + w;
+        // The three lines' words in one slice: one bounds check.
+        let span = &self.bits[start..start + 2 * words + 2];
+        let at = |i: usize| (span[i] >> s) | ((span[i + 1] << 1) << (63 - s));
+        (at(words), at(0), at(2 * words))
+    }
+}
+
+/// The cells a jump's window still knows past the jump's cell, as bits of a forward
+/// window: bits 1 to 61 when carried (shifted up to twice since it was read, its top two
+/// bits lost), bits 1 to 63 when just read. A backward window's are these reversed.
+const CARRIED: u64 = (1 << 62) - 2;
+const FRESH: u64 = !1;
+
+/// Mirrors a forward window's bit set for a backward one.
+#[inline(always)]
+const fn oriented<const FWD: bool>(bits: u64) -> u64 {
+    if FWD { bits } else { bits.reverse_bits() }
+}
+
+/// A jump window moved one cell along the jump.
+#[inline(always)]
+fn advance<const FWD: bool>(w: u64) -> u64 {
+    if FWD { w >> 1 } else { w << 1 }
+}
+
+/// The first stop of a straight jump in windows of the line (`line`) and the lines beside
+/// it (`side_b`, `side_a`) at the jump's cell, among the cells of `valid` (as forward
+/// bits): how many cells ahead lies the first cell of the line that is blocked or has a
+/// forced neighbour (a free side cell whose predecessor along the jump is blocked), and
+/// whether that cell is free.
+#[inline(always)]
+fn first_stop<const FWD: bool>(
+    side_b: u64,
+    line: u64,
+    side_a: u64,
+    valid: u64,
+) -> Option<(usize, bool)> {
+    let behind = |w: u64| if FWD { w << 1 } else { w >> 1 };
+    let forced = (side_a & !behind(side_a)) | (side_b & !behind(side_b));
+    let stop = (forced | !line) & oriented::<FWD>(valid);
+    (stop != 0).then(|| {
+        let k = if FWD {
+            stop.trailing_zeros()
+        } else {
+            stop.leading_zeros()
+        } as usize;
+        let bit = if FWD { k } else { 63 - k };
+        (k, (line >> bit) & 1 != 0)
+    })
+}
+
+/// What a straight jump from `from` found, its first stop being `k` cells ahead (`open`:
+/// a free cell with a forced neighbour, else a wall): `target` if the jump passes it,
+/// else the stop if open.
+#[inline(always)]
+fn outcome<const FWD: bool>(from: usize, (k, open): (usize, bool), target: usize) -> Option<usize> {
+    let ahead = |c: usize, n: usize| if FWD { c + n } else { c - n };
+    let at = ahead(from, k);
+    // The last cell the jump reaches: the stop, or the one before the wall.
+    let reach = if open { at } else { ahead(from, k - 1) };
+    let passed = if FWD {
+        target > from && target <= reach
+    } else {
+        target < from && target >= reach
+    };
+    if passed {
+        return Some(target);
+    }
+    open.then_some(at)
+}
+
+/// A straight jump along line `l` of `lines` from cell `from`, toward higher positions
+/// if `FWD`: the first cell after `from` that is `target` or has a forced neighbour on
+/// line `l - 1` or `l + 1`, or `None` when a blocked cell comes first. Scans 63 cells a
+/// window.
+#[inline]
+fn scan<const FWD: bool>(lines: &Lines, l: usize, from: usize, target: usize) -> Option<usize> {
+    // The window's first bit (the line's cell c is bit PAD + c); the jump's current cell
+    // is its bit 0 (bit 63 backward).
+    let mut s = if FWD { PAD + from } else { PAD + from - 63 };
+    loop {
+        let (c, b, a) = lines.windows(l, s);
+        if let Some((k, open)) = first_stop::<FWD>(b, c, a, FRESH) {
+            // Cells from `from` to the stop.
+            let k = if FWD {
+                s + k - PAD - from
+            } else {
+                from - (s + 63 - k - PAD)
+            };
+            return outcome::<FWD>(from, (k, open), target);
+        }
+        // The blocked border stops a backward scan before s could go below 0.
+        s = if FWD { s + 63 } else { s - 63 };
+    }
+}
+
+/// A straight jump along line `l` of `lines` from cell `from` as [`scan`], given its
+/// carried windows (the line behind, the jump's line, the line ahead) at `from`: the first
+/// 61 cells from the windows, the rest by [`scan`].
+#[inline(always)]
+fn carried_scan<const FWD: bool>(
+    lines: &Lines,
+    l: usize,
+    from: usize,
+    (b, c, a): (u64, u64, u64),
+    target: usize,
+) -> Option<usize> {
+    if let Some(stop) = first_stop::<FWD>(b, c, a, CARRIED) {
+        return outcome::<FWD>(from, stop, target);
+    }
+    let last = if FWD { from + 61 } else { from - 61 };
+    let passed = if FWD {
+        target > from && target <= last
+    } else {
+        target < from && target >= last
+    };
+    if passed {
+        Some(target)
+    } else {
+        scan::<FWD>(lines, l, last, target)
+    }
 }
 
 impl BitGrid {
     /// An all-blocked `pw x ph` grid.
     fn new(pw: usize, ph: usize) -> Self {
-        // A window at the line's last cell reads the word after it.
-        let (row_words, col_words) = ((PAD + pw) / 64 + 2, (PAD + ph) / 64 + 2);
         Self {
-            row_words,
-            col_words,
-            rows: vec![0; row_words * ph],
-            cols: vec![0; col_words * pw],
+            rows: Lines::new(ph, pw),
+            cols: Lines::new(pw, ph),
         }
     }
 
     fn set_free(&mut self, x: usize, y: usize) {
-        let (bx, by) = (PAD + x, PAD + y);
-        self.rows[y * self.row_words + bx / 64] |= 1 << (bx % 64);
-        self.cols[x * self.col_words + by / 64] |= 1 << (by % 64);
+        self.rows.set(y, x);
+        self.cols.set(x, y);
     }
 
     #[inline]
     fn free(&self, x: usize, y: usize) -> bool {
-        let b = PAD + x;
-        (self.rows[y * self.row_words + b / 64] >> (b % 64)) & 1 != 0
+        self.rows.window(y, x) & 1 != 0
     }
 
     /// The directions (bits in the order of [`DIRS`]) to jump along from jump point
@@ -577,10 +742,20 @@ impl BitGrid {
     ) -> Option<(usize, usize)> {
         if dy == 0 {
             let target = if goal.1 == y { goal.0 } else { usize::MAX };
-            scan(&self.rows, self.row_words, y, x, dx > 0, target).map(|x| (x, y))
+            let found = if dx > 0 {
+                scan::<true>(&self.rows, y, x, target)
+            } else {
+                scan::<false>(&self.rows, y, x, target)
+            };
+            found.map(|x| (x, y))
         } else {
             let target = if goal.0 == x { goal.1 } else { usize::MAX };
-            scan(&self.cols, self.col_words, x, y, dy > 0, target).map(|y| (x, y))
+            let found = if dy > 0 {
+                scan::<true>(&self.cols, x, y, target)
+            } else {
+                scan::<false>(&self.cols, x, y, target)
+            };
+            found.map(|y| (x, y))
         }
     }
 
@@ -592,28 +767,83 @@ impl BitGrid {
     /// diagonal moves, then straight ones.
     fn jump_diagonal(
         &self,
-        (mut x, mut y): (usize, usize),
+        start: (usize, usize),
         (dx, dy): (isize, isize),
         goal: (usize, usize),
         out: &mut Vec<(usize, usize)>,
     ) {
+        match (dx > 0, dy > 0) {
+            (true, true) => self.diagonal::<true, true>(start, goal, out),
+            (true, false) => self.diagonal::<true, false>(start, goal, out),
+            (false, true) => self.diagonal::<false, true>(start, goal, out),
+            (false, false) => self.diagonal::<false, false>(start, goal, out),
+        }
+    }
+
+    /// [`jump_diagonal`](BitGrid::jump_diagonal) toward increasing x if `EAST`, y if
+    /// `NORTH`.
+    ///
+    /// Each step reads one new window for each straight jump: the line ahead. The windows
+    /// of the jump's own line and of the line behind it are the previous step's, moved by
+    /// the cell stepped (their far bits lost: [`CARRIED`]); they also hold the three cells
+    /// of the next diagonal move.
+    #[inline(always)]
+    fn diagonal<const EAST: bool, const NORTH: bool>(
+        &self,
+        (mut x, mut y): (usize, usize),
+        goal: (usize, usize),
+        out: &mut Vec<(usize, usize)>,
+    ) {
+        let step = |c: usize, up: bool| if up { c + 1 } else { c - 1 };
+        // The first move checked on the rows alone: on mazes and dense obstacles most
+        // diagonal jumps end there, before the columns are read.
+        let (nx, ny) = (step(x, EAST), step(y, NORTH));
+        if !(self.free(nx, y) && self.free(x, ny) && self.free(nx, ny)) {
+            return;
+        }
+        let (rows, cols) = (&self.rows, &self.cols);
+        // The next cell's bit in a window at the jump's cell.
+        let (next_x, next_y) = (oriented::<EAST>(2), oriented::<NORTH>(2));
+        // Row windows on the jump's row and the one ahead (the one behind comes with the
+        // first move); column windows the same.
+        let (mut ro, mut ra) = (rows.window_at::<EAST>(y, x), rows.window_at::<EAST>(ny, x));
+        let (mut co, mut ca) = (
+            cols.window_at::<NORTH>(x, y),
+            cols.window_at::<NORTH>(nx, y),
+        );
         loop {
-            let (nx, ny) = (x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
-            if !(self.free(nx, y) && self.free(x, ny) && self.free(nx, ny)) {
+            // The move's two sides and the cell it reaches.
+            if ro & ra & next_x == 0 || co & next_y == 0 {
                 return;
             }
-            (x, y) = (nx, ny);
+            (x, y) = (step(x, EAST), step(y, NORTH));
             if (x, y) == goal {
                 out.push(goal);
                 return;
             }
-            // Nothing after the goal is needed: the search ends once it is found.
-            for dir in [(dx, 0), (0, dy)] {
-                if let Some(q) = self.jump_straight((x, y), dir, goal) {
-                    out.push(q);
-                    if q == goal {
-                        return;
-                    }
+            let (rb, cb) = (advance::<EAST>(ro), advance::<NORTH>(co));
+            (ro, ra) = (
+                advance::<EAST>(ra),
+                rows.window_at::<EAST>(step(y, NORTH), x),
+            );
+            (co, ca) = (
+                advance::<NORTH>(ca),
+                cols.window_at::<NORTH>(step(x, EAST), y),
+            );
+            // Along the row, then along the column (nothing after the goal is needed:
+            // the search ends once it is found).
+            let target = if goal.1 == y { goal.0 } else { usize::MAX };
+            if let Some(qx) = carried_scan::<EAST>(rows, y, x, (rb, ro, ra), target) {
+                out.push((qx, y));
+                if (qx, y) == goal {
+                    return;
+                }
+            }
+            let target = if goal.0 == x { goal.1 } else { usize::MAX };
+            if let Some(qy) = carried_scan::<NORTH>(cols, x, y, (cb, co, ca), target) {
+                out.push((x, qy));
+                if (x, qy) == goal {
+                    return;
                 }
             }
         }
@@ -661,73 +891,4 @@ fn dir_bit(dx: isize, dy: isize) -> u8 {
         _ => 7,
     };
     1 << d
-}
-
-/// The 64-bit windows from bit `bit` on (bit 0 of each is bit `bit` of its line) of line
-/// `l` of `lines` (`words` per line) and of the lines below and above it.
-#[inline(always)]
-fn windows(lines: &[u64], words: usize, l: usize, bit: usize) -> (u64, u64, u64) {
-    let (w, s) = (bit / 64, bit % 64);
-    let start = (l - 1) * words + w;
-    // The three lines' words in one slice: one bounds check.
-    let span = &lines[start..start + 2 * words + 2];
-    // `<< 1 << (63 - s)`: a shift by 64 - s without the overflow at s = 0.
-    let at = |i: usize| (span[i] >> s) | ((span[i + 1] << 1) << (63 - s));
-    (at(words), at(0), at(2 * words))
-}
-
-/// A straight jump along line `l` of `lines` (`words` per line) from cell `from`, toward
-/// larger positions if `forward`: the first cell after `from` that is `target` or has a
-/// forced neighbour on line `l - 1` or `l + 1`, or `None` when a blocked cell comes first.
-#[inline]
-fn scan(
-    lines: &[u64],
-    words: usize,
-    l: usize,
-    from: usize,
-    forward: bool,
-    target: usize,
-) -> Option<usize> {
-    if forward {
-        // Bit k of a window at s is cell s - PAD + k; bit 0 was looked at before.
-        let mut s = PAD + from;
-        loop {
-            let (c, b, a) = windows(lines, words, l, s);
-            // Forced: a free side cell whose predecessor on its line is blocked.
-            let forced = (a & !(a << 1)) | (b & !(b << 1));
-            let stop = (forced | !c) & !1;
-            if stop != 0 {
-                let k = stop.trailing_zeros() as usize;
-                let at = s - PAD + k;
-                let open = (c >> k) & 1 != 0;
-                let reach = if open { at } else { at - 1 };
-                if target > from && target <= reach {
-                    return Some(target);
-                }
-                return open.then_some(at);
-            }
-            s += 63;
-        }
-    } else {
-        // Bit 63 - k of a window at s is cell s + 63 - PAD - k; bit 63 was looked at
-        // before. The blocked border stops the scan before s could go below 0.
-        let mut s = PAD + from - 63;
-        loop {
-            let (c, b, a) = windows(lines, words, l, s);
-            // Forced: a free side cell whose successor on its line is blocked.
-            let forced = (a & !(a >> 1)) | (b & !(b >> 1));
-            let stop = (forced | !c) & !(1 << 63);
-            if stop != 0 {
-                let k = stop.leading_zeros() as usize;
-                let at = s + 63 - PAD - k;
-                let open = (c >> (63 - k)) & 1 != 0;
-                let reach = if open { at } else { at + 1 };
-                if target < from && target >= reach {
-                    return Some(target);
-                }
-                return open.then_some(at);
-            }
-            s -= 63;
-        }
-    }
 }
