@@ -401,8 +401,8 @@ impl JumpPointSearch {
         let pw = self.pw;
         let xy = |p: usize| (p % pw, p / pw);
         let parent = |p: usize| State::parent(self.states[p]) as usize;
-        // The number of moves first (the larger coordinate difference of each leg), so
-        // that the cells are written once, from the goal back, into a vector of their size.
+        // The number of moves first (the larger coordinate difference of each leg), for
+        // the vector's size.
         let mut moves = 0;
         let mut p = t;
         while p != s {
@@ -410,27 +410,30 @@ impl JumpPointSearch {
             moves += x.abs_diff(qx).max(y.abs_diff(qy));
             p = parent(p);
         }
-        let mut cells = vec![(0, 0); moves + 1];
+        // From the goal back, each leg's straight moves, then its diagonal ones (a run of
+        // one step repeated, without a test per cell), then the list turned around.
+        let mut cells = Vec::with_capacity(moves + 1);
         let (mut x, mut y) = xy(t);
-        let mut k = moves;
         p = t;
         while p != s {
-            let (qx, qy) = xy(parent(p));
-            // Back along the straight moves, then the diagonal ones.
-            while (x, y) != (qx, qy) {
-                cells[k] = (x - 1, y - 1);
-                k -= 1;
-                let (ax, ay) = (x.abs_diff(qx), y.abs_diff(qy));
-                if ax >= ay {
-                    x = x.wrapping_add_signed(qx.cmp(&x) as isize);
-                }
-                if ay >= ax {
-                    y = y.wrapping_add_signed(qy.cmp(&y) as isize);
+            p = parent(p);
+            let (qx, qy) = xy(p);
+            let (ax, ay) = (x.abs_diff(qx), y.abs_diff(qy));
+            let (sx, sy) = (qx.cmp(&x) as isize, qy.cmp(&y) as isize);
+            let (straight, step) = if ax > ay {
+                (ax - ay, (sx, 0))
+            } else {
+                (ay - ax, (0, sy))
+            };
+            for (n, (dx, dy)) in [(straight, step), (ax.min(ay), (sx, sy))] {
+                for _ in 0..n {
+                    cells.push((x - 1, y - 1));
+                    (x, y) = (x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
                 }
             }
-            p = parent(p);
         }
-        cells[0] = (x - 1, y - 1);
+        cells.push((x - 1, y - 1));
+        cells.reverse();
         GridPath {
             cells,
             cost: self.fixed.to_cells(State::g(self.states[t])),
