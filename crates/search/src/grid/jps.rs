@@ -254,6 +254,16 @@ impl JumpPointSearch {
         let key = |g: u64, hq: u64, p: usize| K::pack(fx, fx.order(g + hq, hq), p as u32);
         let (sp, tp) = (s.1 * pw + s.0, t.1 * pw + t.0);
         self.states[sp] = State::pack(0, NONE, generation);
+        // The goal reached straight from the start, by diagonal moves then straight ones,
+        // costs octile(s, t) = h(s), the least any path can: that path is optimal. (The
+        // jumps would find it later, or a longer way round when a forced neighbour stops
+        // them first.) Only from the start: at every jump point the test cost more than
+        // it saved on mazes and random obstacles.
+        if sp != tp && self.limit.max_expansions > 0 && self.bits.octile_path_free(s, t) {
+            self.states[tp] = State::pack(h(s.0, s.1), sp as u32, generation | CLOSED);
+            (stats.expansions, stats.pushes, stats.reached) = (1, 1, 2);
+            return Ok(self.trace(sp, tp, stats));
+        }
         let mut heap = std::mem::take(K::heap(&mut self.heap, &mut self.wide_heap));
         heap.push(key(0, h(s.0, s.1), sp));
         stats.pushes = 1;
@@ -397,6 +407,7 @@ impl JumpPointSearch {
 
     /// The path to padded cell `t` by the parent links, with the cells between
     /// consecutive jump points (diagonal moves, then straight ones) filled in.
+    #[inline(never)]
     fn trace(&self, s: usize, t: usize, stats: SearchStats) -> GridPath {
         let pw = self.pw;
         let xy = |p: usize| (p % pw, p / pw);
@@ -529,6 +540,20 @@ impl Lines {
         let pair = &self.bits[w..w + 2];
         // `<< 1 << (63 - s)`: a shift by 64 - s without the overflow at s = 0.
         (pair[0] >> s) | ((pair[1] << 1) << (63 - s))
+    }
+
+    /// Whether cells `lo` to `hi` of line `l` are all free, 64 at a time.
+    fn run_free(&self, l: usize, lo: usize, hi: usize) -> bool {
+        let mut at = lo;
+        while at <= hi {
+            let n = (hi - at + 1).min(64);
+            let mask = u64::MAX >> (64 - n);
+            if self.window(l, at) & mask != mask {
+                return false;
+            }
+            at += 64;
+        }
+        true
     }
 
     /// The window of a jump at cell `at` of line `l`: the 64 cells from `at` on when
@@ -732,6 +757,25 @@ impl BitGrid {
             }
         }
         kept
+    }
+
+    /// Whether the way from `(x, y)` to `goal` by diagonal moves, then straight ones (the
+    /// octile distance), is free (no corner cut).
+    #[inline(never)]
+    fn octile_path_free(&self, (mut x, mut y): (usize, usize), goal: (usize, usize)) -> bool {
+        let (sx, sy) = (goal.0.cmp(&x) as isize, goal.1.cmp(&y) as isize);
+        for _ in 0..x.abs_diff(goal.0).min(y.abs_diff(goal.1)) {
+            let (nx, ny) = (x.wrapping_add_signed(sx), y.wrapping_add_signed(sy));
+            if !(self.free(nx, y) && self.free(x, ny) && self.free(nx, ny)) {
+                return false;
+            }
+            (x, y) = (nx, ny);
+        }
+        if x != goal.0 {
+            self.rows.run_free(y, x.min(goal.0), x.max(goal.0))
+        } else {
+            self.cols.run_free(x, y.min(goal.1), y.max(goal.1))
+        }
     }
 
     /// Jumps from `(x, y)` along the straight direction `(dx, dy)`: the first cell that
