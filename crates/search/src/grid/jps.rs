@@ -49,11 +49,17 @@ pub enum JpsError {
 /// this expands a small fraction of A*'s cells for the same cost; on random obstacles
 /// (20-35 % blocked), where jump points are dense, it is about as fast as A*.
 ///
+/// The search ends as soon as the goal is found: a goal reached by a jump from the
+/// expanded cell (tried toward the goal first), or from the start by its octile path
+/// (diagonal moves, then straight ones, all free), costs the least f left, so that path
+/// is optimal; short queries on open maps then cost one expansion or none.
+///
 /// [`new`](JumpPointSearch::new) **prepares the map once**: which cells are free, packed
 /// one bit per cell in rows and again in columns (the transpose), with a blocked border.
 /// A straight jump then reads three 64-bit windows (its line and the two beside it) per 63
 /// cells and finds the first wall or forced neighbour with one `trailing_zeros` (or
-/// `leading_zeros` going back). Per-cell search state (g, parent and a query stamp in one
+/// `leading_zeros` going back); along a diagonal jump, the straight jumps of one step
+/// reuse the previous step's windows and read one new window each. Per-cell search state (g, parent and a query stamp in one
 /// `u128`: 16 bytes per padded cell, allocated zeroed so untouched pages cost nothing) is
 /// reset by bumping the query's generation, so a query costs what it touches, not the
 /// map's size.
