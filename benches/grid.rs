@@ -365,6 +365,9 @@ pub fn queries(map: &GridMap, rng: &mut ChaCha8Rng) -> Vec<Scenario> {
     out
 }
 
+/// A generator of `n x n` maps.
+type MapMaker = fn(usize, &mut ChaCha8Rng) -> GridMap;
+
 /// The generated maps of the second group: mazes, random obstacles and rooms, then city
 /// streets, StarCraft-like open ground and Dragon-Age-like caverns.
 pub fn generated() -> Vec<Suite> {
@@ -389,7 +392,7 @@ pub fn generated() -> Vec<Suite> {
     // queries above stay as they were measured before these were added.
     let mut rng = ChaCha8Rng::seed_from_u64(2026);
     rng.set_stream(1);
-    let later: [(&'static str, fn(usize, &mut ChaCha8Rng) -> GridMap); 3] = [
+    let later: [(&'static str, MapMaker); 3] = [
         ("streets512", streets),
         ("game512", game_like),
         ("caverns512", caverns),
