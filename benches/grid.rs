@@ -193,6 +193,157 @@ pub fn rooms(n: usize, room: usize, rng: &mut ChaCha8Rng) -> GridMap {
     map
 }
 
+/// Blocks the cells of `map` within `r` of `(cx, cy)` (clipped to the map).
+fn disc(map: &mut GridMap, cx: i64, cy: i64, r: i64) {
+    let (w, h) = (map.width() as i64, map.height() as i64);
+    for y in (cy - r).max(0)..(cy + r + 1).min(h) {
+        for x in (cx - r).max(0)..(cx + r + 1).min(w) {
+            if (x - cx).pow(2) + (y - cy).pow(2) <= r * r {
+                map.set_cell_zone(x as usize, y as usize, Zone::Forbidden);
+            }
+        }
+    }
+}
+
+/// Splits `[at, at + len)` into spans of `min..max` cells separated by gaps of `gap`
+/// cells (each drawn anew); the last span is cut at the end. Returns `(start, len)`.
+fn spans(
+    rng: &mut ChaCha8Rng,
+    at: usize,
+    len: usize,
+    span: std::ops::Range<usize>,
+    gap: &dyn Fn(&mut ChaCha8Rng) -> usize,
+) -> Vec<(usize, usize)> {
+    let (mut out, mut x, end) = (Vec::new(), at, at + len);
+    while x < end {
+        let l = rng.random_range(span.clone()).min(end - x);
+        out.push((x, l));
+        x += l + gap(rng);
+    }
+    out
+}
+
+/// A `n x n` city imitating MovingAI's street maps (`street/*.map`, cities cut out of
+/// OpenStreetMap): blocks 16-64 cells on a side separated by streets 2-5 cells wide (an
+/// avenue of 8-13 one time in five), each block split into lots by 1-2 cell alleys, each
+/// lot a rectangular building set back 0-2 cells from it; one block in ten is a park
+/// (left open).
+pub fn streets(n: usize, rng: &mut ChaCha8Rng) -> GridMap {
+    let mut map = GridMap::filled(n, n, Zone::Free).expect("size");
+    let street = |rng: &mut ChaCha8Rng| {
+        if rng.random_bool(0.2) {
+            rng.random_range(8..14)
+        } else {
+            rng.random_range(2..6)
+        }
+    };
+    let alley = |rng: &mut ChaCha8Rng| rng.random_range(1..3);
+    let (xs, ys) = (
+        spans(rng, 0, n, 16..64, &street),
+        spans(rng, 0, n, 16..64, &street),
+    );
+    for &(bx, bw) in &xs {
+        for &(by, bh) in &ys {
+            if rng.random_bool(0.1) {
+                continue;
+            }
+            let lots_x = spans(rng, bx, bw, 6..bw.max(7), &alley);
+            let lots_y = spans(rng, by, bh, 6..bh.max(7), &alley);
+            for &(lx, lw) in &lots_x {
+                for &(ly, lh) in &lots_y {
+                    let mut inset = || rng.random_range(0..3);
+                    let (x0, x1) = (lx + inset(), (lx + lw).saturating_sub(inset()));
+                    let (y0, y1) = (ly + inset(), (ly + lh).saturating_sub(inset()));
+                    for y in y0..y1 {
+                        for x in x0..x1 {
+                            map.set_cell_zone(x, y, Zone::Forbidden);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    map
+}
+
+/// A `n x n` map imitating StarCraft's (MovingAI's `sc1/*.map`): open ground cut into
+/// plateaus by three wandering cliffs 3-5 cells thick, crossed by ramps 4-9 cells wide every
+/// 50-150 cells, with about `n / 8` irregular obstacles (each a clump of 3-6 overlapping
+/// discs of radius 2-15: rocks, water, doodads); about 20 % of the cells blocked.
+pub fn game_like(n: usize, rng: &mut ChaCha8Rng) -> GridMap {
+    let mut map = GridMap::filled(n, n, Zone::Free).expect("size");
+    for c in 0..3 {
+        let thick = rng.random_range(3..6);
+        let mut off = rng.random_range(n / 8..n - n / 8) as i64;
+        let ramps = spans(rng, 0, n, 50..150, &|rng| rng.random_range(4..10));
+        for &(from, len) in &ramps {
+            for t in from..from + len {
+                // The cliff drifts one cell sideways at most per cell along it.
+                off = (off + rng.random_range(-1..2)).clamp(8, n as i64 - 8 - thick);
+                for k in 0..thick as usize {
+                    let o = off as usize + k;
+                    let (x, y) = if c % 2 == 0 { (t, o) } else { (o, t) };
+                    map.set_cell_zone(x, y, Zone::Forbidden);
+                }
+            }
+        }
+    }
+    for _ in 0..n / 8 {
+        let (cx, cy) = (rng.random_range(0..n) as i64, rng.random_range(0..n) as i64);
+        for _ in 0..rng.random_range(3..7) {
+            let r = rng.random_range(2..16);
+            let (ox, oy) = (
+                rng.random_range(-2 * r..2 * r + 1),
+                rng.random_range(-r..r + 1),
+            );
+            disc(&mut map, cx + ox, cy + oy, r);
+        }
+    }
+    map
+}
+
+/// A `n x n` map of caverns imitating Dragon Age's (MovingAI's `dao/*.map` caves and
+/// dungeons): a cave carved at a quarter of the resolution (47 % of the coarse cells
+/// blocked at random, then five rounds of the majority rule: a cell is blocked when 5 or
+/// more of its 3 x 3 neighbourhood are, outside the map counting as blocked), scaled up,
+/// 8 % of the cells flipped and two rounds of the rule at full resolution to make the walls
+/// irregular. What is left is caves tens of cells across joined by winding passages.
+pub fn caverns(n: usize, rng: &mut ChaCha8Rng) -> GridMap {
+    let majority = |b: &[bool], m: usize| -> Vec<bool> {
+        let at = |x: i64, y: i64| {
+            x < 0 || y < 0 || x >= m as i64 || y >= m as i64 || b[y as usize * m + x as usize]
+        };
+        (0..m * m)
+            .map(|p| {
+                let (x, y) = ((p % m) as i64, (p / m) as i64);
+                let around = (-1..2)
+                    .flat_map(|dy| (-1..2).map(move |dx| (dx, dy)))
+                    .filter(|&(dx, dy)| at(x + dx, y + dy))
+                    .count();
+                around >= 5
+            })
+            .collect()
+    };
+    let m = n / 4;
+    let mut coarse: Vec<bool> = (0..m * m).map(|_| rng.random_bool(0.47)).collect();
+    for _ in 0..5 {
+        coarse = majority(&coarse, m);
+    }
+    let mut fine: Vec<bool> = (0..n * n)
+        .map(|p| {
+            coarse[(p / n / 4).min(m - 1) * m + (p % n / 4).min(m - 1)] ^ rng.random_bool(0.08)
+        })
+        .collect();
+    for _ in 0..2 {
+        fine = majority(&fine, n);
+    }
+    let mut map = GridMap::filled(n, n, Zone::Free).expect("size");
+    for (p, _) in fine.iter().enumerate().filter(|(_, b)| **b) {
+        map.set_cell_zone(p % n, p / n, Zone::Forbidden);
+    }
+    map
+}
+
 /// Ten queries between random free cells of `map` at least `n / 4` apart (by the optimal
 /// length), with our Dijkstra's cost as the reference.
 pub fn queries(map: &GridMap, rng: &mut ChaCha8Rng) -> Vec<Scenario> {
@@ -214,7 +365,11 @@ pub fn queries(map: &GridMap, rng: &mut ChaCha8Rng) -> Vec<Scenario> {
     out
 }
 
-/// The generated maps of the second group.
+/// A generator of `n x n` maps.
+type MapMaker = fn(usize, &mut ChaCha8Rng) -> GridMap;
+
+/// The generated maps of the second group: mazes, random obstacles and rooms, then city
+/// streets, StarCraft-like open ground and Dragon-Age-like caverns.
 pub fn generated() -> Vec<Suite> {
     let n = 512;
     let mut rng = ChaCha8Rng::seed_from_u64(2026);
@@ -226,12 +381,28 @@ pub fn generated() -> Vec<Suite> {
         ("random512-35", random(n, 0.35, &mut rng)),
         ("rooms512-32", rooms(n, 32, &mut rng)),
     ];
-    maps.into_iter()
+    let mut out: Vec<Suite> = maps
+        .into_iter()
         .map(|(name, map)| {
             let queries = queries(&map, &mut rng);
             Suite { name, map, queries }
         })
-        .collect()
+        .collect();
+    // The later families on their own stream of the same seed, so that the maps and
+    // queries above stay as they were measured before these were added.
+    let mut rng = ChaCha8Rng::seed_from_u64(2026);
+    rng.set_stream(1);
+    let later: [(&'static str, MapMaker); 3] = [
+        ("streets512", streets),
+        ("game512", game_like),
+        ("caverns512", caverns),
+    ];
+    for (name, make) in later {
+        let map = make(n, &mut rng);
+        let queries = queries(&map, &mut rng);
+        out.push(Suite { name, map, queries });
+    }
+    out
 }
 
 /// The two MovingAI suites of the main group: `data/movingai`'s arena pair (160 scenarios)

@@ -14,7 +14,8 @@
 //!
 //! A second group, `grid_search_generated`, runs all three on 512 x 512 maps of the kinds of
 //! the MovingAI benchmark sets, generated here from fixed seeds (mazes with corridors 1, 4
-//! and 16 cells wide, random obstacles at 20% and 35%, 32-cell rooms with doors), ten
+//! and 16 cells wide, random obstacles at 20% and 35%, 32-cell rooms with doors, city
+//! streets, StarCraft-like open ground, Dragon-Age-like caverns), ten
 //! queries each between random free cells at least 128 apart. There is no `.scen` file:
 //! each query's optimum is our Dijkstra's cost, and all three are checked against it.
 //! `cargo bench -p hyplan-benches --bench grid_search -- grid_search/` runs the first group

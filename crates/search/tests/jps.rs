@@ -90,6 +90,15 @@ proptest! {
         agree(&map, &queries)?;
     }
 
+    /// Nearly open and wider than a word: the diagonal jumps' straight scans run past the
+    /// windows they carry from step to step and go on block by block, both ways.
+    #[test]
+    fn jps_finds_astars_cost_on_open_wide_grids(
+        (map, queries) in scenario(64..300, 64..200, 0.01),
+    ) {
+        agree(&map, &queries)?;
+    }
+
     #[test]
     fn jps_finds_astars_cost_on_dense_grids(
         (map, queries) in scenario(20..90, 20..90, 0.4),

@@ -16,10 +16,6 @@ use super::{
 use crate::SearchStats;
 use crate::heap::{MinHeap, Upper};
 
-/// Bits before padded cell 0 of a bit line: one word, so that a window ending at a cell
-/// near the low end of the line starts at a non-negative bit.
-const PAD: usize = 64;
-
 /// Why a [`JumpPointSearch`] cannot be prepared.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
@@ -53,11 +49,17 @@ pub enum JpsError {
 /// this expands a small fraction of A*'s cells for the same cost; on random obstacles
 /// (20-35 % blocked), where jump points are dense, it is about as fast as A*.
 ///
+/// The search ends as soon as the goal is found: a goal reached by a jump from the
+/// expanded cell (tried toward the goal first), or from the start by its octile path
+/// (diagonal moves, then straight ones, all free), costs the least f left, so that path
+/// is optimal; short queries on open maps then cost one expansion or none.
+///
 /// [`new`](JumpPointSearch::new) **prepares the map once**: which cells are free, packed
 /// one bit per cell in rows and again in columns (the transpose), with a blocked border.
 /// A straight jump then reads three 64-bit windows (its line and the two beside it) per 63
 /// cells and finds the first wall or forced neighbour with one `trailing_zeros` (or
-/// `leading_zeros` going back). Per-cell search state (g, parent and a query stamp in one
+/// `leading_zeros` going back); along a diagonal jump, the straight jumps of one step
+/// reuse the previous step's windows and read one new window each. Per-cell search state (g, parent and a query stamp in one
 /// `u128`: 16 bytes per padded cell, allocated zeroed so untouched pages cost nothing) is
 /// reset by bumping the query's generation, so a query costs what it touches, not the
 /// map's size.
@@ -258,6 +260,16 @@ impl JumpPointSearch {
         let key = |g: u64, hq: u64, p: usize| K::pack(fx, fx.order(g + hq, hq), p as u32);
         let (sp, tp) = (s.1 * pw + s.0, t.1 * pw + t.0);
         self.states[sp] = State::pack(0, NONE, generation);
+        // The goal reached straight from the start, by diagonal moves then straight ones,
+        // costs octile(s, t) = h(s), the least any path can: that path is optimal. (The
+        // jumps would find it later, or a longer way round when a forced neighbour stops
+        // them first.) Only from the start: at every jump point the test cost more than
+        // it saved on mazes and random obstacles.
+        if sp != tp && self.limit.max_expansions > 0 && self.bits.octile_path_free(s, t) {
+            self.states[tp] = State::pack(h(s.0, s.1), sp as u32, generation | CLOSED);
+            (stats.expansions, stats.pushes, stats.reached) = (1, 1, 2);
+            return Ok(self.trace(sp, tp, stats));
+        }
         let mut heap = std::mem::take(K::heap(&mut self.heap, &mut self.wide_heap));
         heap.push(key(0, h(s.0, s.1), sp));
         stats.pushes = 1;
@@ -295,16 +307,36 @@ impl JumpPointSearch {
             // All jumps first, then the successors' states: their loads (often cache
             // misses on large maps) then overlap instead of each waiting for its jump.
             found.clear();
-            for (d, &(dx, dy, _)) in DIRS.iter().enumerate() {
-                if kept >> d & 1 == 0 {
-                    continue;
+            // The goal found by a jump from `p` is reached at g + octile(p, t) = f(p), the
+            // least f left (the heuristic is consistent): that path is optimal and the
+            // search ends there, without the other jumps. The directions toward the goal
+            // go first, since those are where it is found.
+            let toward = TOWARD[octant((x, y), t)];
+            let mut goal_found = false;
+            'jumps: for mask in [kept & toward, kept & !toward] {
+                let mut rest = mask;
+                while rest != 0 {
+                    let d = rest.trailing_zeros() as usize;
+                    rest &= rest - 1;
+                    let (dx, dy) = (DIRS[d].0 as isize, DIRS[d].1 as isize);
+                    if dx == 0 || dy == 0 {
+                        found.extend(self.bits.jump_straight((x, y), (dx, dy), t));
+                    } else {
+                        self.bits.jump_diagonal((x, y), (dx, dy), t, &mut found);
+                    }
+                    if found.last() == Some(&t) {
+                        goal_found = true;
+                        break 'jumps;
+                    }
                 }
-                let (dx, dy) = (dx as isize, dy as isize);
-                if dx == 0 || dy == 0 {
-                    found.extend(self.bits.jump_straight((x, y), (dx, dy), t));
-                } else {
-                    self.bits.jump_diagonal((x, y), (dx, dy), t, &mut found);
-                }
+            }
+            if goal_found {
+                let old = self.states[tp];
+                stats.reached += u64::from(State::stamp(old) & !CLOSED != generation);
+                stats.pushes += 1;
+                let ng = g + octile(fx, t.0.abs_diff(x), t.1.abs_diff(y));
+                self.states[tp] = State::pack(ng, p as u32, generation | CLOSED);
+                break Ok(());
             }
             for &(qx, qy) in &found {
                 let q = qy * pw + qx;
@@ -381,12 +413,13 @@ impl JumpPointSearch {
 
     /// The path to padded cell `t` by the parent links, with the cells between
     /// consecutive jump points (diagonal moves, then straight ones) filled in.
+    #[inline(never)]
     fn trace(&self, s: usize, t: usize, stats: SearchStats) -> GridPath {
         let pw = self.pw;
         let xy = |p: usize| (p % pw, p / pw);
         let parent = |p: usize| State::parent(self.states[p]) as usize;
-        // The number of moves first (the larger coordinate difference of each leg), so
-        // that the cells are written once, from the goal back, into a vector of their size.
+        // The number of moves first (the larger coordinate difference of each leg), for
+        // the vector's size.
         let mut moves = 0;
         let mut p = t;
         while p != s {
@@ -394,27 +427,30 @@ impl JumpPointSearch {
             moves += x.abs_diff(qx).max(y.abs_diff(qy));
             p = parent(p);
         }
-        let mut cells = vec![(0, 0); moves + 1];
+        // From the goal back, each leg's straight moves, then its diagonal ones (a run of
+        // one step repeated, without a test per cell), then the list turned around.
+        let mut cells = Vec::with_capacity(moves + 1);
         let (mut x, mut y) = xy(t);
-        let mut k = moves;
         p = t;
         while p != s {
-            let (qx, qy) = xy(parent(p));
-            // Back along the straight moves, then the diagonal ones.
-            while (x, y) != (qx, qy) {
-                cells[k] = (x - 1, y - 1);
-                k -= 1;
-                let (ax, ay) = (x.abs_diff(qx), y.abs_diff(qy));
-                if ax >= ay {
-                    x = x.wrapping_add_signed(qx.cmp(&x) as isize);
-                }
-                if ay >= ax {
-                    y = y.wrapping_add_signed(qy.cmp(&y) as isize);
+            p = parent(p);
+            let (qx, qy) = xy(p);
+            let (ax, ay) = (x.abs_diff(qx), y.abs_diff(qy));
+            let (sx, sy) = (qx.cmp(&x) as isize, qy.cmp(&y) as isize);
+            let (straight, step) = if ax > ay {
+                (ax - ay, (sx, 0))
+            } else {
+                (ay - ax, (0, sy))
+            };
+            for (n, (dx, dy)) in [(straight, step), (ax.min(ay), (sx, sy))] {
+                for _ in 0..n {
+                    cells.push((x - 1, y - 1));
+                    (x, y) = (x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
                 }
             }
-            p = parent(p);
         }
-        cells[0] = (x - 1, y - 1);
+        cells.push((x - 1, y - 1));
+        cells.reverse();
         GridPath {
             cells,
             cost: self.fixed.to_cells(State::g(self.states[t])),
@@ -460,42 +496,225 @@ fn octile(fx: Fixed, dx: usize, dy: usize) -> u64 {
     hi as u64 * fx.unit + lo as u64 * (fx.diag - fx.unit)
 }
 
-/// Which padded cells are free, one bit per cell: rows (bit `PAD + x` of line `y`) and
-/// columns (bit `PAD + y` of line `x`), each line followed by zero words so that a
-/// 64-bit window may start at any cell of it.
+/// Which padded cells are free, one bit per cell: rows (line `y`, bit `PAD + x`) and
+/// columns (line `x`, bit `PAD + y`).
 #[derive(Debug, Clone)]
 struct BitGrid {
-    /// Words per row line.
-    row_words: usize,
-    /// Words per column line.
-    col_words: usize,
-    rows: Vec<u64>,
-    cols: Vec<u64>,
+    rows: Lines,
+    cols: Lines,
+}
+
+/// Bits before cell 0 of a bit line: one word, so that a window ending at a cell near the
+/// low end of the line starts at a non-negative bit.
+const PAD: usize = 64;
+
+/// Bit lines of equal length, each padded with zero words so that a 64-bit window may
+/// start or end at any cell of it.
+#[derive(Debug, Clone)]
+struct Lines {
+    /// Words per line.
+    words: usize,
+    bits: Vec<u64>,
+}
+
+impl Lines {
+    /// `count` all-blocked lines of `len` cells.
+    fn new(count: usize, len: usize) -> Self {
+        // A window at the line's last cell reads the word after it.
+        let words = (PAD + len) / 64 + 2;
+        Self {
+            words,
+            bits: vec![0; words * count],
+        }
+    }
+
+    fn set(&mut self, l: usize, at: usize) {
+        let b = PAD + at;
+        self.bits[l * self.words + b / 64] |= 1 << (b % 64);
+    }
+
+    /// The 64 cells of line `l` from cell `at` on (bit 0: cell `at`).
+    #[inline(always)]
+    fn window(&self, l: usize, at: usize) -> u64 {
+        self.bits_from(l, PAD + at)
+    }
+
+    /// The 64 bits of line `l` from bit `b` on.
+    #[inline(always)]
+    fn bits_from(&self, l: usize, b: usize) -> u64 {
+        let (w, s) = (l * self.words + b / 64, b % 64);
+        let pair = &self.bits[w..w + 2];
+        // `<< 1 << (63 - s)`: a shift by 64 - s without the overflow at s = 0.
+        (pair[0] >> s) | ((pair[1] << 1) << (63 - s))
+    }
+
+    /// Whether cells `lo` to `hi` of line `l` are all free, 64 at a time.
+    fn run_free(&self, l: usize, lo: usize, hi: usize) -> bool {
+        let mut at = lo;
+        while at <= hi {
+            let n = (hi - at + 1).min(64);
+            let mask = u64::MAX >> (64 - n);
+            if self.window(l, at) & mask != mask {
+                return false;
+            }
+            at += 64;
+        }
+        true
+    }
+
+    /// The window of a jump at cell `at` of line `l`: the 64 cells from `at` on when
+    /// `FWD`, else the 64 ending at `at` (bit 63: cell `at`).
+    #[inline(always)]
+    fn window_at<const FWD: bool>(&self, l: usize, at: usize) -> u64 {
+        self.bits_from(l, if FWD { PAD + at } else { PAD + at - 63 })
+    }
+
+    /// The windows from bit `b` on of line `l` and of the lines below and above it.
+    #[inline(always)]
+    fn windows(&self, l: usize, b: usize) -> (u64, u64, u64) {
+        let words = self.words;
+        let (w, s) = (b / 64, b % 64);
+        let start = (l - 1) * words + w;
+        // The three lines' words in one slice: one bounds check.
+        let span = &self.bits[start..start + 2 * words + 2];
+        let at = |i: usize| (span[i] >> s) | ((span[i + 1] << 1) << (63 - s));
+        (at(words), at(0), at(2 * words))
+    }
+}
+
+/// The cells a jump's window still knows past the jump's cell, as bits of a forward
+/// window: bits 1 to 61 when carried (shifted up to twice since it was read, its top two
+/// bits lost), bits 1 to 63 when just read. A backward window's are these reversed.
+const CARRIED: u64 = (1 << 62) - 2;
+const FRESH: u64 = !1;
+
+/// Mirrors a forward window's bit set for a backward one.
+#[inline(always)]
+const fn oriented<const FWD: bool>(bits: u64) -> u64 {
+    if FWD { bits } else { bits.reverse_bits() }
+}
+
+/// A jump window moved one cell along the jump.
+#[inline(always)]
+fn advance<const FWD: bool>(w: u64) -> u64 {
+    if FWD { w >> 1 } else { w << 1 }
+}
+
+/// The first stop of a straight jump in windows of the line (`line`) and the lines beside
+/// it (`side_b`, `side_a`) at the jump's cell, among the cells of `valid` (as forward
+/// bits): how many cells ahead lies the first cell of the line that is blocked or has a
+/// forced neighbour (a free side cell whose predecessor along the jump is blocked), and
+/// whether that cell is free.
+#[inline(always)]
+fn first_stop<const FWD: bool>(
+    side_b: u64,
+    line: u64,
+    side_a: u64,
+    valid: u64,
+) -> Option<(usize, bool)> {
+    let behind = |w: u64| if FWD { w << 1 } else { w >> 1 };
+    let forced = (side_a & !behind(side_a)) | (side_b & !behind(side_b));
+    let stop = (forced | !line) & oriented::<FWD>(valid);
+    (stop != 0).then(|| {
+        let k = if FWD {
+            stop.trailing_zeros()
+        } else {
+            stop.leading_zeros()
+        } as usize;
+        let bit = if FWD { k } else { 63 - k };
+        (k, (line >> bit) & 1 != 0)
+    })
+}
+
+/// What a straight jump from `from` found, its first stop being `k` cells ahead (`open`:
+/// a free cell with a forced neighbour, else a wall): `target` if the jump passes it,
+/// else the stop if open.
+#[inline(always)]
+fn outcome<const FWD: bool>(from: usize, (k, open): (usize, bool), target: usize) -> Option<usize> {
+    let ahead = |c: usize, n: usize| if FWD { c + n } else { c - n };
+    let at = ahead(from, k);
+    // The last cell the jump reaches: the stop, or the one before the wall.
+    let reach = if open { at } else { ahead(from, k - 1) };
+    let passed = if FWD {
+        target > from && target <= reach
+    } else {
+        target < from && target >= reach
+    };
+    if passed {
+        return Some(target);
+    }
+    open.then_some(at)
+}
+
+/// A straight jump along line `l` of `lines` from cell `from`, toward higher positions
+/// if `FWD`: the first cell after `from` that is `target` or has a forced neighbour on
+/// line `l - 1` or `l + 1`, or `None` when a blocked cell comes first. Scans 63 cells a
+/// window.
+#[inline]
+fn scan<const FWD: bool>(lines: &Lines, l: usize, from: usize, target: usize) -> Option<usize> {
+    // The window's first bit (the line's cell c is bit PAD + c); the jump's current cell
+    // is its bit 0 (bit 63 backward).
+    let mut s = if FWD { PAD + from } else { PAD + from - 63 };
+    loop {
+        let (c, b, a) = lines.windows(l, s);
+        if let Some((k, open)) = first_stop::<FWD>(b, c, a, FRESH) {
+            // Cells from `from` to the stop.
+            let k = if FWD {
+                s + k - PAD - from
+            } else {
+                from - (s + 63 - k - PAD)
+            };
+            return outcome::<FWD>(from, (k, open), target);
+        }
+        // The blocked border stops a backward scan before s could go below 0.
+        s = if FWD { s + 63 } else { s - 63 };
+    }
+}
+
+/// A straight jump along line `l` of `lines` from cell `from` as [`scan`], given its
+/// carried windows (the line behind, the jump's line, the line ahead) at `from`: the first
+/// 61 cells from the windows, the rest by [`scan`].
+#[inline(always)]
+fn carried_scan<const FWD: bool>(
+    lines: &Lines,
+    l: usize,
+    from: usize,
+    (b, c, a): (u64, u64, u64),
+    target: usize,
+) -> Option<usize> {
+    if let Some(stop) = first_stop::<FWD>(b, c, a, CARRIED) {
+        return outcome::<FWD>(from, stop, target);
+    }
+    let last = if FWD { from + 61 } else { from - 61 };
+    let passed = if FWD {
+        target > from && target <= last
+    } else {
+        target < from && target >= last
+    };
+    if passed {
+        Some(target)
+    } else {
+        scan::<FWD>(lines, l, last, target)
+    }
 }
 
 impl BitGrid {
     /// An all-blocked `pw x ph` grid.
     fn new(pw: usize, ph: usize) -> Self {
-        // A window at the line's last cell reads the word after it.
-        let (row_words, col_words) = ((PAD + pw) / 64 + 2, (PAD + ph) / 64 + 2);
         Self {
-            row_words,
-            col_words,
-            rows: vec![0; row_words * ph],
-            cols: vec![0; col_words * pw],
+            rows: Lines::new(ph, pw),
+            cols: Lines::new(pw, ph),
         }
     }
 
     fn set_free(&mut self, x: usize, y: usize) {
-        let (bx, by) = (PAD + x, PAD + y);
-        self.rows[y * self.row_words + bx / 64] |= 1 << (bx % 64);
-        self.cols[x * self.col_words + by / 64] |= 1 << (by % 64);
+        self.rows.set(y, x);
+        self.cols.set(x, y);
     }
 
     #[inline]
     fn free(&self, x: usize, y: usize) -> bool {
-        let b = PAD + x;
-        (self.rows[y * self.row_words + b / 64] >> (b % 64)) & 1 != 0
+        self.rows.window(y, x) & 1 != 0
     }
 
     /// The directions (bits in the order of [`DIRS`]) to jump along from jump point
@@ -546,6 +765,25 @@ impl BitGrid {
         kept
     }
 
+    /// Whether the way from `(x, y)` to `goal` by diagonal moves, then straight ones (the
+    /// octile distance), is free (no corner cut).
+    #[inline(never)]
+    fn octile_path_free(&self, (mut x, mut y): (usize, usize), goal: (usize, usize)) -> bool {
+        let (sx, sy) = (goal.0.cmp(&x) as isize, goal.1.cmp(&y) as isize);
+        for _ in 0..x.abs_diff(goal.0).min(y.abs_diff(goal.1)) {
+            let (nx, ny) = (x.wrapping_add_signed(sx), y.wrapping_add_signed(sy));
+            if !(self.free(nx, y) && self.free(x, ny) && self.free(nx, ny)) {
+                return false;
+            }
+            (x, y) = (nx, ny);
+        }
+        if x != goal.0 {
+            self.rows.run_free(y, x.min(goal.0), x.max(goal.0))
+        } else {
+            self.cols.run_free(x, y.min(goal.1), y.max(goal.1))
+        }
+    }
+
     /// Jumps from `(x, y)` along the straight direction `(dx, dy)`: the first cell that
     /// is the goal or has a forced neighbour, or `None` at a wall.
     #[inline]
@@ -557,10 +795,20 @@ impl BitGrid {
     ) -> Option<(usize, usize)> {
         if dy == 0 {
             let target = if goal.1 == y { goal.0 } else { usize::MAX };
-            scan(&self.rows, self.row_words, y, x, dx > 0, target).map(|x| (x, y))
+            let found = if dx > 0 {
+                scan::<true>(&self.rows, y, x, target)
+            } else {
+                scan::<false>(&self.rows, y, x, target)
+            };
+            found.map(|x| (x, y))
         } else {
             let target = if goal.0 == x { goal.1 } else { usize::MAX };
-            scan(&self.cols, self.col_words, x, y, dy > 0, target).map(|y| (x, y))
+            let found = if dy > 0 {
+                scan::<true>(&self.cols, x, y, target)
+            } else {
+                scan::<false>(&self.cols, x, y, target)
+            };
+            found.map(|y| (x, y))
         }
     }
 
@@ -572,26 +820,115 @@ impl BitGrid {
     /// diagonal moves, then straight ones.
     fn jump_diagonal(
         &self,
-        (mut x, mut y): (usize, usize),
+        start: (usize, usize),
         (dx, dy): (isize, isize),
         goal: (usize, usize),
         out: &mut Vec<(usize, usize)>,
     ) {
+        match (dx > 0, dy > 0) {
+            (true, true) => self.diagonal::<true, true>(start, goal, out),
+            (true, false) => self.diagonal::<true, false>(start, goal, out),
+            (false, true) => self.diagonal::<false, true>(start, goal, out),
+            (false, false) => self.diagonal::<false, false>(start, goal, out),
+        }
+    }
+
+    /// [`jump_diagonal`](BitGrid::jump_diagonal) toward increasing x if `EAST`, y if
+    /// `NORTH`.
+    ///
+    /// Each step reads one new window for each straight jump: the line ahead. The windows
+    /// of the jump's own line and of the line behind it are the previous step's, moved by
+    /// the cell stepped (their far bits lost: [`CARRIED`]); they also hold the three cells
+    /// of the next diagonal move.
+    #[inline(always)]
+    fn diagonal<const EAST: bool, const NORTH: bool>(
+        &self,
+        (mut x, mut y): (usize, usize),
+        goal: (usize, usize),
+        out: &mut Vec<(usize, usize)>,
+    ) {
+        let step = |c: usize, up: bool| if up { c + 1 } else { c - 1 };
+        // The first move checked on the rows alone: on mazes and dense obstacles most
+        // diagonal jumps end there, before the columns are read.
+        let (nx, ny) = (step(x, EAST), step(y, NORTH));
+        if !(self.free(nx, y) && self.free(x, ny) && self.free(nx, ny)) {
+            return;
+        }
+        let (rows, cols) = (&self.rows, &self.cols);
+        // The next cell's bit in a window at the jump's cell.
+        let (next_x, next_y) = (oriented::<EAST>(2), oriented::<NORTH>(2));
+        // Row windows on the jump's row and the one ahead (the one behind comes with the
+        // first move); column windows the same.
+        let (mut ro, mut ra) = (rows.window_at::<EAST>(y, x), rows.window_at::<EAST>(ny, x));
+        let (mut co, mut ca) = (
+            cols.window_at::<NORTH>(x, y),
+            cols.window_at::<NORTH>(nx, y),
+        );
         loop {
-            let (nx, ny) = (x.wrapping_add_signed(dx), y.wrapping_add_signed(dy));
-            if !(self.free(nx, y) && self.free(x, ny) && self.free(nx, ny)) {
+            // The move's two sides and the cell it reaches.
+            if ro & ra & next_x == 0 || co & next_y == 0 {
                 return;
             }
-            (x, y) = (nx, ny);
+            (x, y) = (step(x, EAST), step(y, NORTH));
             if (x, y) == goal {
                 out.push(goal);
                 return;
             }
-            out.extend(self.jump_straight((x, y), (dx, 0), goal));
-            out.extend(self.jump_straight((x, y), (0, dy), goal));
+            let (rb, cb) = (advance::<EAST>(ro), advance::<NORTH>(co));
+            (ro, ra) = (
+                advance::<EAST>(ra),
+                rows.window_at::<EAST>(step(y, NORTH), x),
+            );
+            (co, ca) = (
+                advance::<NORTH>(ca),
+                cols.window_at::<NORTH>(step(x, EAST), y),
+            );
+            // Along the row, then along the column (nothing after the goal is needed:
+            // the search ends once it is found).
+            let target = if goal.1 == y { goal.0 } else { usize::MAX };
+            if let Some(qx) = carried_scan::<EAST>(rows, y, x, (rb, ro, ra), target) {
+                out.push((qx, y));
+                if (qx, y) == goal {
+                    return;
+                }
+            }
+            let target = if goal.0 == x { goal.1 } else { usize::MAX };
+            if let Some(qy) = carried_scan::<NORTH>(cols, x, y, (cb, co, ca), target) {
+                out.push((x, qy));
+                if (x, qy) == goal {
+                    return;
+                }
+            }
         }
     }
 }
+
+/// Index into [`TOWARD`] of the goal's side of `(x, y)`: `3 (sx + 1) + sy + 1` for the
+/// signs `sx`, `sy` of the coordinate differences.
+#[inline]
+fn octant((x, y): (usize, usize), goal: (usize, usize)) -> usize {
+    3 * (goal.0.cmp(&x) as isize + 1) as usize + (goal.1.cmp(&y) as isize + 1) as usize
+}
+
+/// For each [`octant`], the directions (bits in [`DIRS`]' order) whose components both
+/// point toward the goal or are zero.
+const TOWARD: [u8; 9] = {
+    let mut table = [0; 9];
+    let mut k = 0;
+    while k < 9 {
+        let (sx, sy) = (k as i32 / 3 - 1, k as i32 % 3 - 1);
+        let mut d = 0;
+        while d < 8 {
+            let (dx, dy) = (DIRS[d].0, DIRS[d].1);
+            if (dx == 0 || dx == sx) && (dy == 0 || dy == sy) {
+                table[k] |= 1 << d;
+            }
+            d += 1;
+        }
+        k += 1;
+    }
+    table
+};
 
 /// The bit of direction `(dx, dy)` in [`DIRS`]' order (E, W, N, S, NE, NW, SE, SW).
 #[inline]
@@ -607,73 +944,4 @@ fn dir_bit(dx: isize, dy: isize) -> u8 {
         _ => 7,
     };
     1 << d
-}
-
-/// The 64-bit windows from bit `bit` on (bit 0 of each is bit `bit` of its line) of line
-/// `l` of `lines` (`words` per line) and of the lines below and above it.
-#[inline(always)]
-fn windows(lines: &[u64], words: usize, l: usize, bit: usize) -> (u64, u64, u64) {
-    let (w, s) = (bit / 64, bit % 64);
-    let start = (l - 1) * words + w;
-    // The three lines' words in one slice: one bounds check.
-    let span = &lines[start..start + 2 * words + 2];
-    // `<< 1 << (63 - s)`: a shift by 64 - s without the overflow at s = 0.
-    let at = |i: usize| (span[i] >> s) | ((span[i + 1] << 1) << (63 - s));
-    (at(words), at(0), at(2 * words))
-}
-
-/// A straight jump along line `l` of `lines` (`words` per line) from cell `from`, toward
-/// larger positions if `forward`: the first cell after `from` that is `target` or has a
-/// forced neighbour on line `l - 1` or `l + 1`, or `None` when a blocked cell comes first.
-#[inline]
-fn scan(
-    lines: &[u64],
-    words: usize,
-    l: usize,
-    from: usize,
-    forward: bool,
-    target: usize,
-) -> Option<usize> {
-    if forward {
-        // Bit k of a window at s is cell s - PAD + k; bit 0 was looked at before.
-        let mut s = PAD + from;
-        loop {
-            let (c, b, a) = windows(lines, words, l, s);
-            // Forced: a free side cell whose predecessor on its line is blocked.
-            let forced = (a & !(a << 1)) | (b & !(b << 1));
-            let stop = (forced | !c) & !1;
-            if stop != 0 {
-                let k = stop.trailing_zeros() as usize;
-                let at = s - PAD + k;
-                let open = (c >> k) & 1 != 0;
-                let reach = if open { at } else { at - 1 };
-                if target > from && target <= reach {
-                    return Some(target);
-                }
-                return open.then_some(at);
-            }
-            s += 63;
-        }
-    } else {
-        // Bit 63 - k of a window at s is cell s + 63 - PAD - k; bit 63 was looked at
-        // before. The blocked border stops the scan before s could go below 0.
-        let mut s = PAD + from - 63;
-        loop {
-            let (c, b, a) = windows(lines, words, l, s);
-            // Forced: a free side cell whose successor on its line is blocked.
-            let forced = (a & !(a >> 1)) | (b & !(b >> 1));
-            let stop = (forced | !c) & !(1 << 63);
-            if stop != 0 {
-                let k = stop.leading_zeros() as usize;
-                let at = s + 63 - PAD - k;
-                let open = (c >> (63 - k)) & 1 != 0;
-                let reach = if open { at } else { at + 1 };
-                if target < from && target >= reach {
-                    return Some(target);
-                }
-                return open.then_some(at);
-            }
-            s -= 63;
-        }
-    }
 }
