@@ -347,8 +347,8 @@ impl LaserModel {
 /// Ranges outside `[lo, hi]` as REP 117 writes them: `NEG_INFINITY` below (something at
 /// the scanner), `INFINITY` above (no return).
 fn rep_117(ranges: &mut [f64], lo: f64, hi: f64) {
-    // Two selects, not a chain of branches: they compile to masks, and the beams that
-    // leave the range (every scan has some) cost no mispredicted branch.
+    // Two selects, not a chain of branches: they compile to masks, so the beams that
+    // leave the range cost no mispredicted branch.
     for r in ranges {
         let v = if *r > hi { f64::INFINITY } else { *r };
         *r = if v < lo { f64::NEG_INFINITY } else { v };
