@@ -75,7 +75,11 @@ fn jps_gives_astars_lengths_and_help_says_which_to_use() {
     }
     let o = hyplan(&["scen", "--help"]);
     let help = stdout(&o);
-    assert!(help.contains("random-obstacle"), "{help}");
+    // Which planner where: jps on open maps, astar where cells are blocked at random.
+    assert!(
+        help.contains("astar where") && help.contains("blocked at random"),
+        "{help}"
+    );
 }
 
 #[test]
