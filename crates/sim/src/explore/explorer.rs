@@ -88,6 +88,9 @@ pub(crate) struct Explorer {
     given_up: Vec<GivenUp>,
     /// Frontiers the final pass sent the robot to: each once.
     final_tries: Vec<Point2>,
+    /// Whether the goal in force was sent by the final pass: the filter's costmap test
+    /// does not end it (the pass chose it on that costmap, as reachable).
+    final_goal: bool,
     /// The last frontier assigned (the start before the first: the reference's assigner
     /// first sends the robot where it stands).
     last_goal: Point2,
@@ -189,6 +192,7 @@ impl Explorer {
             turned: ex.initial_turn.then_some(0.0),
             given_up: Vec::new(),
             final_tries: Vec::new(),
+            final_goal: false,
             ready: [0.0; 2],
             last_goal: crate::world::pt(scenario.start),
             busy: 0.0,
@@ -324,6 +328,7 @@ impl Explorer {
         self.final_tries.push(f);
         self.idle_since = None;
         self.send(sim, f, f);
+        self.final_goal = true;
         true
     }
 
@@ -334,7 +339,10 @@ impl Explorer {
         let state = sim.nav.state();
         // The frontier sought: the goal itself, or the target of its view point.
         let f = self.target.unwrap_or(g);
-        let too_costly = self.frontier_cost(map, f) > self.ex.costmap_threshold;
+        // A final-pass goal lies next to what inflation marks costly more often than not
+        // (that is why the detectors' filter dropped it); ending it for that at once
+        // would undo the pass.
+        let too_costly = !self.final_goal && self.frontier_cost(map, f) > self.ex.costmap_threshold;
         let too_little =
             !too_costly && information_gain(map, f, self.ex.filter_radius) < self.ex.min_gain;
         if (here - self.anchor.0).norm() >= 0.2 || self.look.is_some() {
@@ -382,6 +390,7 @@ impl Explorer {
         self.goal = None;
         self.target = None;
         self.look = None;
+        self.final_goal = false;
         if let Some(r) = self.goal_log.last_mut() {
             r.ended = t;
             r.end = end;
@@ -512,6 +521,7 @@ impl Explorer {
     fn send(&mut self, sim: &mut Sim<'_>, f: Point2, g: Point2) {
         let (tick, t, here) = (sim.tick(), sim.time(), sim.here());
         self.goal = Some(g);
+        self.final_goal = false;
         self.last_goal = f;
         self.target = (self.ex.view_points && !self.recovering).then_some(f);
         self.anchor = (here, tick);
