@@ -88,8 +88,8 @@ pub(crate) struct Explorer {
     given_up: Vec<GivenUp>,
     /// Frontiers the final pass sent the robot to: each once.
     final_tries: Vec<Point2>,
-    /// Whether the goal in force was sent by the final pass: the filter's costmap test
-    /// does not end it (the pass chose it on that costmap, as reachable).
+    /// Whether the goal in force was sent by the final pass (cleared by every
+    /// [`send`](Explorer::send)): the filter's costmap test does not end it.
     final_goal: bool,
     /// The last frontier assigned (the start before the first: the reference's assigner
     /// first sends the robot where it stands).
@@ -339,9 +339,9 @@ impl Explorer {
         let state = sim.nav.state();
         // The frontier sought: the goal itself, or the target of its view point.
         let f = self.target.unwrap_or(g);
-        // A final-pass goal lies next to what inflation marks costly more often than not
-        // (that is why the detectors' filter dropped it); ending it for that at once
-        // would undo the pass.
+        // Not for a final-pass goal: the pass chose it as reachable on this costmap, and
+        // the test had ended such goals within half a second, undoing the pass
+        // (measurements/issue-27.md).
         let too_costly = !self.final_goal && self.frontier_cost(map, f) > self.ex.costmap_threshold;
         let too_little =
             !too_costly && information_gain(map, f, self.ex.filter_radius) < self.ex.min_gain;
@@ -390,7 +390,6 @@ impl Explorer {
         self.goal = None;
         self.target = None;
         self.look = None;
-        self.final_goal = false;
         if let Some(r) = self.goal_log.last_mut() {
             r.ended = t;
             r.end = end;
