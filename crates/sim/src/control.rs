@@ -96,6 +96,10 @@ pub fn clearance_kept(radius: f64, here: Point2, memory: &ObstacleMemory, tick: 
     }
 }
 
+/// Heading error (rad) above which a robot with no clear arc turns in place toward the
+/// path instead of reporting the way obstructed (10 degrees).
+const TURN_TO_FREE_ABOVE: f64 = 10.0 * std::f64::consts::PI / 180.0;
+
 /// What a control step decided.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Command {
@@ -444,11 +448,25 @@ impl Controller {
         // Near a wall the arc to the far carrot may cut the corner the path goes round:
         // a nearer carrot keeps the arc on the path (which the costmap kept clear), or
         // turns the robot in place toward it.
+        // When no arc is clear and the path leaves sideways (a robot that backed into a
+        // corner, or one escaping a gap that closed behind it), it first turns in place
+        // toward the nearest carrot: a round body turns anywhere it stands.
         let want = [1.0, 0.5, 0.25]
             .into_iter()
             .map(|f| toward(self.lookahead * f))
             .find(|&w| self.arc_clear(robot, pose, self.limit(robot, prev, w), memory, tick))
-            .unwrap_or_else(|| toward(self.lookahead));
+            .unwrap_or_else(|| {
+                let near = along(path, k, q, self.lookahead * 0.25) - here;
+                let angle = kinematics::wrap_angle(near.y.atan2(near.x) - pose.phi);
+                if near.norm() > 1e-6 && angle.abs() > TURN_TO_FREE_ABOVE {
+                    Twist {
+                        v: 0.0,
+                        omega: self.rotate_speed.copysign(angle),
+                    }
+                } else {
+                    toward(self.lookahead)
+                }
+            });
         let want = self.yield_to(robot, pose, want, movers);
         let mut twist = self.limit(robot, prev, want);
         let dt = self.period();

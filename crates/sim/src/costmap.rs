@@ -350,14 +350,53 @@ impl CostmapBuilder {
     /// for the default robot: a door of about 0.6 m passes.
     #[must_use]
     pub fn inflation(&self) -> Inflation {
-        let inscribed = self.body_radius
-            + self.params.padding
-            + self.params.resolution * std::f64::consts::SQRT_2;
+        self.inflation_with(self.params.resolution * std::f64::consts::SQRT_2)
+    }
+
+    /// The tight inflation: inscribed radius = body + padding between cell centres, as
+    /// Nav2 measures it (0.208 m for the default robot), without
+    /// [`inflation`](Self::inflation)'s cell of fatness; see
+    /// [`build_tight`](Self::build_tight).
+    #[must_use]
+    pub fn tight_inflation(&self) -> Inflation {
+        self.inflation_with(0.0)
+    }
+
+    fn inflation_with(&self, cell_slack: f64) -> Inflation {
+        let inscribed = self.body_radius + self.params.padding + cell_slack;
         Inflation {
             inscribed_radius: inscribed,
             inflation_radius: self.params.inflation_radius.max(inscribed),
             cost_scaling_factor: self.params.cost_scaling_factor,
         }
+    }
+
+    /// The costmap of the navigator's last try, when no plan exists on
+    /// [`build`](Self::build)'s: the same lethal cells under the
+    /// [`tight_inflation`](Self::tight_inflation), so gaps about 0.07 m narrower pass.
+    ///
+    /// A robot can drive through a gap while the map around it is half seen; once the
+    /// laser maps the gap's sides cell by cell, the cell of fatness can close it behind
+    /// the robot, and every plan out fails (measured on a real floor's chairs,
+    /// measurements/issue-27.md). On this costmap the robot plans its way out; the
+    /// controller's arc test (body + margin from the real hits) still keeps the body
+    /// clear along such a path.
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{CostmapBuilder, CostmapParams, StaticWorld};
+    /// let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(4.0, 4.0));
+    /// let builder = CostmapBuilder::new(bounds, &StaticWorld::default(), CostmapParams::default(), 0.18);
+    /// // Two hits 0.55 m apart: closed on the usual costmap, open on the tight one.
+    /// let hits = [Point2::new(1.725, 2.025), Point2::new(2.275, 2.025)];
+    /// let gap = Point2::new(2.025, 2.025);
+    /// let (i, j) = builder.build(None, &hits).map.world_to_cell(gap).unwrap();
+    /// assert!(!builder.build(None, &hits).map.cell_free(i, j));
+    /// assert!(builder.build_tight(None, &hits).map.cell_free(i, j));
+    /// ```
+    #[must_use]
+    pub fn build_tight(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Costmap {
+        self.costmap_with(&self.lethal(built, hits), &self.tight_inflation())
     }
 
     /// The costmap of the prior map, the built map's occupied cells and `hits`.
@@ -368,8 +407,15 @@ impl CostmapBuilder {
 
     /// The costmap of the lethal cells `lethal`.
     fn costmap_of(&self, lethal: &Mask) -> Costmap {
-        let costs = self.inflate(lethal);
-        let risk_from = self.risk_from();
+        self.costmap_with(lethal, &self.inflation())
+    }
+
+    /// The costmap of the lethal cells `lethal` under `inflation`.
+    fn costmap_with(&self, lethal: &Mask, inflation: &Inflation) -> Costmap {
+        let costs = inflation
+            .inflate(lethal, self.params.resolution)
+            .expect("the builder's own parameters are valid");
+        let risk_from = risk_from(inflation, self.params.preferred_clearance);
         let zones = costs.iter().map(|&c| zone_of(c, risk_from)).collect();
         let f = self.frame;
         let map = GridMap::from_zones(f.width, f.height, f.resolution, f.origin, zones)
@@ -440,7 +486,7 @@ impl CostmapBuilder {
             .collect();
         let sub = Mask::from_cells(sub_w, nj.len(), cells).expect("a window of the grid");
         let costs = self.inflate(&sub);
-        let risk_from = self.risk_from();
+        let risk_from = risk_from(&self.inflation(), self.params.preferred_clearance);
         let zones = costmap.map.zones_mut();
         for j in cj {
             let from = (j - nj.start) * sub_w + (ci.start - ni.start);
@@ -481,13 +527,12 @@ impl CostmapBuilder {
             .inflate(lethal, self.params.resolution)
             .expect("the builder's own parameters are valid")
     }
+}
 
-    /// The least cost of a `Risk` cell: the cost at the preferred clearance.
-    fn risk_from(&self) -> u8 {
-        self.inflation()
-            .cost(self.params.preferred_clearance)
-            .max(1)
-    }
+/// The least cost of a `Risk` cell under `inflation`: the cost at the preferred
+/// clearance.
+fn risk_from(inflation: &Inflation, preferred_clearance: f64) -> u8 {
+    inflation.cost(preferred_clearance).max(1)
 }
 
 /// The zone of a cell of cost `c`.

@@ -111,6 +111,10 @@ pub struct Navigator {
     rng: ChaCha8Rng,
     scratch: PlanScratch,
     costmap: CostmapCache,
+    /// The tight costmap's own searches: it differs from the usual costmap near every
+    /// wall, so a shared scratch would be prepared again at every switch.
+    tight_scratch: PlanScratch,
+    tight_plans: u32,
 }
 
 impl Navigator {
@@ -142,6 +146,8 @@ impl Navigator {
             path_version: 0,
             scratch: PlanScratch::default(),
             costmap: CostmapCache::default(),
+            tight_scratch: PlanScratch::default(),
+            tight_plans: 0,
             rng,
         }
     }
@@ -171,6 +177,13 @@ impl Navigator {
     #[must_use]
     pub const fn path_version(&self) -> u64 {
         self.path_version
+    }
+
+    /// How many plans were found only on the tight costmap
+    /// ([`CostmapBuilder::build_tight`]): none existed on the usual one.
+    #[must_use]
+    pub const fn tight_plans(&self) -> u32 {
+        self.tight_plans
     }
 
     fn brake(&self, prev: Twist) -> Twist {
@@ -263,8 +276,23 @@ impl Navigator {
             // disables, `recovery_behavior_enabled: false`): a robot hemmed in by
             // remembered hits (chair legs it passed between) plans on the map alone;
             // the controller's arc test still keeps it off the hits.
-            let found =
+            let mut found =
                 plan_on(&hits).or_else(|| (!hits.is_empty()).then(|| plan_on(&[])).flatten());
+            if found.is_none() {
+                // Hemmed in by the map itself (a gap it came through may have closed
+                // behind it as the laser mapped the gap's sides), or a door narrower
+                // than the usual costmap lets through: the last try, on the tight one.
+                let tight = self.costmaps.build_tight(built, &[]);
+                found = self.planner.plan_with(
+                    &mut self.tight_scratch,
+                    &tight.map,
+                    here,
+                    self.goal,
+                    self.params.goal_tolerance,
+                    &mut self.rng,
+                );
+                self.tight_plans += u32::from(found.is_some());
+            }
             match found {
                 Some(path) => {
                     events.push(if self.plans == 0 {

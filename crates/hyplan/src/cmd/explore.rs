@@ -157,12 +157,13 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         outcome.missed_area()
     )?;
     outln!(
-        "distance {:.1} m, goals {}, blacklisted {}, points published {}, contact ticks {}",
+        "distance {:.1} m, goals {}, blacklisted {}, points published {}, contact ticks {}, tight plans {}",
         outcome.distance,
         outcome.goals.len(),
         outcome.blacklisted.len(),
         outcome.published,
-        outcome.contact_ticks
+        outcome.contact_ticks,
+        outcome.tight_plans
     )?;
     // What is left, and why: "it stopped" always comes with "why".
     let left = sim::left_unknown(&scenario, &world, &outcome);
@@ -217,6 +218,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             "distance_m": outcome.distance,
             "goals": outcome.goals.len(),
             "blacklisted": outcome.blacklisted.len(),
+            "tight_plans": outcome.tight_plans,
             "left_by_cause": by_cause
                 .iter()
                 .map(|(c, a, n)| serde_json::json!({"cause": c, "area_m2": a, "patches": n}))

@@ -314,15 +314,21 @@ impl Explorer {
     fn final_pass(&mut self, sim: &mut Sim<'_>) -> bool {
         let (here, tick) = (sim.here(), sim.tick());
         let hits = sim.memory.points(tick);
+        let radius = self.ex.blacklist_radius;
+        let min_cells = self.ex.min_frontier_cells;
+        let tried = &self.final_tries;
+        let skip = |p: Point2| tried.iter().any(|t| (t - p).norm() <= radius);
         let costmap = sim
             .nav
             .costmaps
             .rebuild(&mut self.final_costmap, Some(&sim.map), &hits);
-        let radius = self.ex.blacklist_radius;
-        let tried = &self.final_tries;
-        let Some(f) = nearest_frontier(&sim.map, costmap, here, self.ex.min_frontier_cells, |p| {
-            tried.iter().any(|t| (t - p).norm() <= radius)
-        }) else {
+        // A robot hemmed in on its costmap reaches no frontier there; the navigator's
+        // last try plans on the tight costmap, so the pass looks there too.
+        let found = nearest_frontier(&sim.map, costmap, here, min_cells, skip).or_else(|| {
+            let tight = sim.nav.costmaps.build_tight(Some(&sim.map), &[]);
+            nearest_frontier(&sim.map, &tight, here, min_cells, skip)
+        });
+        let Some(f) = found else {
             return false;
         };
         self.final_tries.push(f);

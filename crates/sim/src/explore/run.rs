@@ -157,6 +157,9 @@ pub struct ExploreOutcome {
     pub frames: MapFrames,
     /// Laser ticks on which the robot's body overlapped the true static world.
     pub contact_ticks: usize,
+    /// Plans found only on the tight costmap ([`crate::CostmapBuilder::build_tight`]):
+    /// how often the robot was hemmed in on its usual one.
+    pub tight_plans: u32,
     /// Iterations of the global and the local detector (0 for one not run).
     pub detector_iterations: [u64; 2],
     /// With the scenario's `detector_cost`: the detectors' summed compute time, s.
@@ -187,7 +190,8 @@ impl ExploreOutcome {
 
     /// The end of the run in two lines, as `hyplan explore` prints it: coverage of the
     /// reachable free area with the times it reached 95 % and 99 % and the area missed;
-    /// then distance driven, goals, goals blacklisted, points published and contact ticks.
+    /// then distance driven, goals, goals blacklisted, points published, contact ticks and
+    /// plans on the tight costmap.
     #[must_use]
     pub fn summary(&self) -> String {
         let time = |f: f64| {
@@ -196,7 +200,7 @@ impl ExploreOutcome {
         };
         format!(
             "coverage {:.2} % of {:.1} m^2 reachable free; 95 % at {}, 99 % at {}; missed {:.2} m^2\n\
-             distance {:.1} m, goals {}, blacklisted {}, points published {}, contact ticks {}",
+             distance {:.1} m, goals {}, blacklisted {}, points published {}, contact ticks {}, tight plans {}",
             100.0 * self.final_coverage(),
             self.reachable_area,
             time(0.95),
@@ -206,7 +210,8 @@ impl ExploreOutcome {
             self.goals.len(),
             self.blacklisted.len(),
             self.published,
-            self.contact_ticks
+            self.contact_ticks,
+            self.tight_plans
         )
     }
 
@@ -439,6 +444,7 @@ pub fn explore_observed(
         distance,
         frames: frames.frames,
         contact_ticks: contacts.ticks,
+        tight_plans: sim.nav.tight_plans(),
         detector_iterations: explorer.iterations,
         detector_busy: explorer.busy,
     })
