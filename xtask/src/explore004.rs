@@ -60,6 +60,8 @@ const SWEEP_STOP: f64 = 0.99;
 
 fn run(base: &Scenario, world: &sim::World, spec: Spec) -> anyhow::Result<Result> {
     let mut scenario = base.clone();
+    // Seed 004's set-up: `assigner.py`'s revenue takes the straight line.
+    scenario.exploration.revenue_distance = sim::RevenueDistance::Straight;
     spec.profile.apply(&mut scenario);
     if let Some(eta) = spec.eta {
         scenario.exploration.eta_global = eta;

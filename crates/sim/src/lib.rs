@@ -39,7 +39,7 @@
 //!   [`nearest_frontier`] (the baseline), [`ViewPoints`], [`explore_then_navigate`].
 //! - Profiles: [`Profile`] (`tutorial`, the stack of `rrt_exploration_tutorials` with
 //!   every value's source; `hyplan`, our defaults), [`DetectorCost`] (the reference
-//!   detectors' compute time), [`FilterPool`], [`AssignerMode`].
+//!   detectors' compute time), [`FilterPool`], [`AssignerMode`], [`RevenueDistance`].
 //! - Files: [`Scenario`] (RON), [`ScenarioError`], [`MapSpec`] (a map file, or a generated
 //!   building at [`BUILDING_RESOLUTION`]); [`Trace`], [`Row`], [`Event`],
 //!   [`Summary`] and their CSV / JSON / SVG outputs ([`write_all`], [`OutputError`]);
@@ -122,12 +122,12 @@ pub use engine::{
 pub use explore::{
     Assigner, AssignerMode, ContactCounter, Coverage, CoverageMeter, DetectorCost, DetectorKind,
     Edge, Exploration, ExploreOutcome, Filter, FilterPool, FrameRecorder, GLOBAL_STREAM, GoalEnd,
-    GoalRecord, LOCAL_STREAM, LeftCause, LeftRegion, MapFrames, Region, RegionError, RrtDetector,
-    SelfMapped, Snapshot, Strategy, TrackRecorder, ViewPoints, animation_png, built_cost,
-    built_cost_reach, costmap_steps, edge_check, explore, explore_observed, explore_then_navigate,
-    explore_with, frontier_cells, frontier_clusters, information_gain, left_by_cause, left_unknown,
-    mean_shift, nearest_frontier, reachable_free, region_of, revenue, sees, snapshot_scene,
-    snapshot_svg,
+    GoalRecord, LOCAL_STREAM, LeftCause, LeftRegion, MapFrames, Region, RegionError,
+    RevenueDistance, RrtDetector, SelfMapped, Snapshot, Strategy, TrackRecorder, ViewPoints,
+    animation_png, built_cost, built_cost_reach, costmap_steps, edge_check, explore,
+    explore_observed, explore_then_navigate, explore_with, frontier_cells, frontier_clusters,
+    information_gain, left_by_cause, left_unknown, mean_shift, nearest_frontier, reachable_free,
+    region_of, revenue, sees, snapshot_scene, snapshot_svg, travel,
 };
 pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, pose_rate, saturate,

@@ -71,6 +71,47 @@ impl Assigner {
         self.ranked(robot, frontiers, map).first().copied()
     }
 
+    /// The frontier of best revenue (ties to the first) with `distance` as the distance
+    /// (the travel on the costmap, [`crate::travel`]), skipping blacklisted frontiers and
+    /// those for which `distance` is `None` (out of reach).
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{Assigner, Mapping, OccupancyGrid};
+    /// let p = Point2::new;
+    /// let map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(10.0, 10.0)), Mapping::default());
+    /// let a = Assigner { info_radius: 1.0, info_multiplier: 3.0, hysteresis_radius: 3.0,
+    ///     hysteresis_gain: 2.0, ..Default::default() };
+    /// // (8, 8) is the nearer in a straight line but a wall away: 20 m round.
+    /// let fs = [p(8.0, 8.0), p(2.0, 9.0)];
+    /// let travel = |f: Point2| Some(if f == p(8.0, 8.0) { 20.0 } else { 9.0 });
+    /// assert_eq!(a.choose_by(&fs, &map, travel), Some(p(2.0, 9.0)));
+    /// ```
+    #[must_use]
+    pub fn choose_by(
+        &self,
+        frontiers: &[Point2],
+        map: &OccupancyGrid,
+        distance: impl Fn(Point2) -> Option<f64>,
+    ) -> Option<Point2> {
+        let mut best: Option<(f64, Point2)> = None;
+        for &f in frontiers.iter().filter(|&&f| !self.blacklisted(f)) {
+            let Some(d) = distance(f) else { continue };
+            let gain = information_gain(map, f, self.info_radius);
+            let r = revenue(
+                gain,
+                d,
+                self.info_multiplier,
+                self.hysteresis_radius,
+                self.hysteresis_gain,
+            );
+            if best.is_none_or(|(b, _)| r > b) {
+                best = Some((r, f));
+            }
+        }
+        best.map(|(_, f)| f)
+    }
+
     /// The frontiers not blacklisted, best revenue first (ties in the given order).
     #[must_use]
     pub fn ranked(&self, robot: Point2, frontiers: &[Point2], map: &OccupancyGrid) -> Vec<Point2> {

@@ -12,7 +12,7 @@ use crate::explore::cost::DetectorCost;
 use crate::explore::detector::{Region, RrtDetector};
 use crate::explore::filter::{Filter, built_cost, built_cost_reach, information_gain};
 use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
-use crate::explore::params::{AssignerMode, Exploration, Strategy};
+use crate::explore::params::{AssignerMode, Exploration, RevenueDistance, Strategy};
 use crate::explore::run::{GoalEnd, GoalRecord, Snapshot};
 use crate::explore::viewpoint::ViewPoints;
 use crate::kinematics::{self, Pose, Twist};
@@ -435,13 +435,16 @@ impl Explorer {
         // The baseline without view points needs the whole costmap (reachability);
         // the RRT filter and the goal test ask about a few points (`built_cost`).
         // Built only when a goal is chosen, and once per map change.
-        if !rrt && !ex.view_points && self.costmap_at != Some(sim.map_version()) {
+        let by_travel = rrt
+            && ex.assigner_mode == AssignerMode::Idle
+            && ex.revenue_distance == RevenueDistance::Travel;
+        if (by_travel || !rrt && !ex.view_points) && self.costmap_at != Some(sim.map_version()) {
             sim.nav.costmaps.rebuild(&mut self.costmap, Some(map), &[]);
             self.costmap_at = Some(sim.map_version());
         }
         let costmap = self.costmap_at.and_then(|_| self.costmap.costmap());
         let steps = match costmap {
-            Some(c) if ex.view_points => costmap_steps(c, here),
+            Some(c) if ex.view_points || by_travel => costmap_steps(c, here),
             _ => Vec::new(),
         };
         let views = costmap.map(|costmap| ViewPoints {
@@ -466,6 +469,13 @@ impl Explorer {
                     .first()
                     .map(|&f| (f, f))
             }
+            (true, None) if by_travel => costmap
+                .and_then(|c| {
+                    assigner.choose_by(&self.candidates, map, |f| {
+                        crate::explore::frontier::travel(c, &steps, f, ex.info_radius)
+                    })
+                })
+                .map(|f| (f, f)),
             (true, None) => assigner.choose(here, &self.candidates, map).map(|f| (f, f)),
             (true, Some(views)) => assigner
                 .ranked(here, &self.candidates, map)

@@ -80,6 +80,42 @@ pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
     steps_from(&open, start, Connectivity::Eight)
 }
 
+/// The travel to `target` on `costmap`, m: over the reachable cells within `radius` of
+/// it, the least of [`costmap_steps`]' `steps` times the cell side plus the straight line
+/// on to the target; `None` when no reachable cell is that near.
+///
+/// ```
+/// use hyplan_core::{Bounds, Point2};
+/// use sim::{CostmapBuilder, CostmapParams, StaticWorld, costmap_steps, travel};
+/// let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(4.0, 4.0));
+/// let builder = CostmapBuilder::new(bounds, &StaticWorld::default(), CostmapParams::default(), 0.18);
+/// let costmap = builder.build(None, &[]);
+/// let steps = costmap_steps(&costmap, Point2::new(1.0, 1.0));
+/// let t = travel(&costmap, &steps, Point2::new(3.0, 1.0), 0.5).unwrap();
+/// assert!((t - 2.0).abs() < 0.1);
+/// ```
+#[must_use]
+pub fn travel(costmap: &Costmap, steps: &[u32], target: Point2, radius: f64) -> Option<f64> {
+    let map = &costmap.map;
+    let frame = map.frame();
+    let res = map.resolution();
+    let mut best: Option<f64> = None;
+    for j in frame.rows(target.y - radius, target.y + radius) {
+        for i in frame.columns(target.x - radius, target.x + radius) {
+            let s = steps[j * frame.width + i];
+            let d = (map.cell_center(i, j) - target).norm();
+            if s == u32::MAX || d > radius {
+                continue;
+            }
+            let t = f64::from(s) * res + d;
+            if best.is_none_or(|b| t < b) {
+                best = Some(t);
+            }
+        }
+    }
+    best
+}
+
 /// The goal of nearest-frontier exploration: the centre of the reachable frontier cell
 /// closest to `robot` (in costmap steps) among clusters of at least `min_cells` cells,
 /// skipping cells for which `skip` holds (blacklisted goals); `None` when there is none.

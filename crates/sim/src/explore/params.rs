@@ -68,6 +68,20 @@ pub enum AssignerMode {
     Reference,
 }
 
+/// The distance in the assigner's revenue (`info_multiplier` x gain - distance).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum RevenueDistance {
+    /// The travel on the costmap (ours): breadth-first steps from the robot to the
+    /// nearest reachable cell within `info_radius` of the frontier, times the cell side,
+    /// plus the straight line on. A frontier with no such cell is not assigned. On a
+    /// 60 m building of eighty rooms the straight line sends the robot to frontiers a
+    /// wall away and a long way round (measurements/issue-27.md).
+    #[default]
+    Travel,
+    /// The straight line from the robot (`assigner.py`), as seed 004's set-up.
+    Straight,
+}
+
 /// Exploration parameters. Defaults are `rrt_exploration`'s launch and script defaults
 /// (`simple.launch`, `filter.py`, `assigner.py`) unless a field says otherwise.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -93,6 +107,10 @@ pub struct Exploration {
     pub filter_pool: FilterPool,
     /// When the assigner sends a goal (default [`AssignerMode::Idle`]).
     pub assigner_mode: AssignerMode,
+    /// The distance in the revenue, in [`AssignerMode::Idle`] (default
+    /// [`RevenueDistance::Travel`], ours; [`AssignerMode::Reference`] scores the straight
+    /// line, as `assigner.py`).
+    pub revenue_distance: RevenueDistance,
     /// Mean-shift bandwidth, m (`filter.py`: 0.3).
     pub bandwidth: f64,
     /// Costmap value (0-100) above which a frontier is dropped (`filter.py`: 70).
@@ -166,6 +184,7 @@ impl Default for Exploration {
             detector_cost: None,
             filter_pool: FilterPool::Passed,
             assigner_mode: AssignerMode::Idle,
+            revenue_distance: RevenueDistance::Travel,
             bandwidth: 0.3,
             costmap_threshold: 70,
             filter_radius: 0.5,
