@@ -447,10 +447,9 @@ impl Controller {
         };
         // Near a wall the arc to the far carrot may cut the corner the path goes round:
         // a nearer carrot keeps the arc on the path (which the costmap kept clear), or
-        // turns the robot in place toward it.
-        // When no arc is clear and the path leaves sideways (a robot that backed into a
-        // corner, or one escaping a gap that closed behind it), it first turns in place
-        // toward the nearest carrot: a round body turns anywhere it stands.
+        // turns the robot in place toward it. When no arc is clear and the path leaves
+        // sideways (a robot escaping a gap that closed behind it), it turns in place
+        // toward the nearest carrot first: a round body turns anywhere it stands.
         let want = [1.0, 0.5, 0.25]
             .into_iter()
             .map(|f| toward(self.lookahead * f))

@@ -432,9 +432,10 @@ impl Explorer {
         let here = sim.here();
         let (ex, rrt, res) = (&self.ex, self.rrt, self.res);
         let map = &sim.map;
-        // The baseline without view points needs the whole costmap (reachability);
-        // the RRT filter and the goal test ask about a few points (`built_cost`).
-        // Built only when a goal is chosen, and once per map change.
+        // The baseline without view points, and the assigner's travel, need the whole
+        // costmap (reachability); the RRT filter and the goal test ask about a few
+        // points (`built_cost`). Built only when a goal is chosen, and once per map
+        // change.
         let by_travel = rrt
             && ex.assigner_mode == AssignerMode::Idle
             && ex.revenue_distance == RevenueDistance::Travel;
