@@ -402,19 +402,12 @@ impl CostmapBuilder {
     /// The costmap of the prior map, the built map's occupied cells and `hits`.
     #[must_use]
     pub fn build(&self, built: Option<&OccupancyGrid>, hits: &[Point2]) -> Costmap {
-        self.costmap_of(&self.lethal(built, hits))
-    }
-
-    /// The costmap of the lethal cells `lethal`.
-    fn costmap_of(&self, lethal: &Mask) -> Costmap {
-        self.costmap_with(lethal, &self.inflation())
+        self.costmap_with(&self.lethal(built, hits), &self.inflation())
     }
 
     /// The costmap of the lethal cells `lethal` under `inflation`.
     fn costmap_with(&self, lethal: &Mask, inflation: &Inflation) -> Costmap {
-        let costs = inflation
-            .inflate(lethal, self.params.resolution)
-            .expect("the builder's own parameters are valid");
+        let costs = self.inflate(lethal, inflation);
         let risk_from = risk_from(inflation, self.params.preferred_clearance);
         let zones = costs.iter().map(|&c| zone_of(c, risk_from)).collect();
         let f = self.frame;
@@ -445,6 +438,28 @@ impl CostmapBuilder {
         built: Option<&OccupancyGrid>,
         hits: &[Point2],
     ) -> &'c Costmap {
+        self.rebuild_with(cache, built, hits, &self.inflation())
+    }
+
+    /// [`build_tight`](Self::build_tight)'s costmap kept in `cache`, as
+    /// [`rebuild`](Self::rebuild) keeps [`build`](Self::build)'s (a cache serves one of
+    /// the two only).
+    pub fn rebuild_tight<'c>(
+        &self,
+        cache: &'c mut CostmapCache,
+        built: Option<&OccupancyGrid>,
+        hits: &[Point2],
+    ) -> &'c Costmap {
+        self.rebuild_with(cache, built, hits, &self.tight_inflation())
+    }
+
+    fn rebuild_with<'c>(
+        &self,
+        cache: &'c mut CostmapCache,
+        built: Option<&OccupancyGrid>,
+        hits: &[Point2],
+        inflation: &Inflation,
+    ) -> &'c Costmap {
         let lethal = self.lethal(built, hits);
         let f = self.frame;
         let window = match (&cache.costmap, &cache.lethal) {
@@ -454,7 +469,7 @@ impl CostmapBuilder {
                 changed_window(last.cells(), lethal.cells(), f.width)
             }
             _ => {
-                cache.costmap = Some(self.costmap_of(&lethal));
+                cache.costmap = Some(self.costmap_with(&lethal, inflation));
                 cache.lethal = Some(lethal);
                 return cache.costmap.as_ref().expect("just built");
             }
@@ -466,7 +481,7 @@ impl CostmapBuilder {
         // A cell's cost depends on the lethal cells within the inflation radius: the
         // cells that may change are the window grown by that reach, and the lethal cells
         // that decide them lie within the reach of those.
-        let reach = (self.inflation().inflation_radius / f.resolution).ceil() as usize + 1;
+        let reach = (inflation.inflation_radius / f.resolution).ceil() as usize + 1;
         let grow = |r: std::ops::Range<usize>, by: usize, n: usize| {
             r.start.saturating_sub(by)..(r.end + by).min(n)
         };
@@ -485,8 +500,8 @@ impl CostmapBuilder {
             })
             .collect();
         let sub = Mask::from_cells(sub_w, nj.len(), cells).expect("a window of the grid");
-        let costs = self.inflate(&sub);
-        let risk_from = risk_from(&self.inflation(), self.params.preferred_clearance);
+        let costs = self.inflate(&sub, inflation);
+        let risk_from = risk_from(inflation, self.params.preferred_clearance);
         let zones = costmap.map.zones_mut();
         for j in cj {
             let from = (j - nj.start) * sub_w + (ci.start - ni.start);
@@ -522,8 +537,8 @@ impl CostmapBuilder {
         mask
     }
 
-    fn inflate(&self, lethal: &Mask) -> Vec<u8> {
-        self.inflation()
+    fn inflate(&self, lethal: &Mask, inflation: &Inflation) -> Vec<u8> {
+        inflation
             .inflate(lethal, self.params.resolution)
             .expect("the builder's own parameters are valid")
     }

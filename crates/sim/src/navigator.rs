@@ -111,8 +111,9 @@ pub struct Navigator {
     rng: ChaCha8Rng,
     scratch: PlanScratch,
     costmap: CostmapCache,
-    /// The tight costmap's own searches: it differs from the usual costmap near every
-    /// wall, so a shared scratch would be prepared again at every switch.
+    /// The tight costmap and its own searches: it differs from the usual costmap near
+    /// every wall, so a shared cache or scratch would be rebuilt at every switch.
+    tight_costmap: CostmapCache,
     tight_scratch: PlanScratch,
     tight_plans: u32,
 }
@@ -146,6 +147,7 @@ impl Navigator {
             path_version: 0,
             scratch: PlanScratch::default(),
             costmap: CostmapCache::default(),
+            tight_costmap: CostmapCache::default(),
             tight_scratch: PlanScratch::default(),
             tight_plans: 0,
             rng,
@@ -282,7 +284,9 @@ impl Navigator {
                 // Hemmed in by the map itself (a gap it came through may have closed
                 // behind it as the laser mapped the gap's sides), or a door narrower
                 // than the usual costmap lets through: the last try, on the tight one.
-                let tight = self.costmaps.build_tight(built, &[]);
+                let tight = self
+                    .costmaps
+                    .rebuild_tight(&mut self.tight_costmap, built, &[]);
                 found = self.planner.plan_with(
                     &mut self.tight_scratch,
                     &tight.map,

@@ -286,8 +286,8 @@ proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
 
     /// A costmap kept and inflated again only where its lethal cells changed is the
-    /// costmap built afresh, build after build (hits appearing and going, walls known
-    /// beforehand, cells near the edges).
+    /// costmap built afresh (the usual one and the tight one), build after build (hits
+    /// appearing and going, walls known beforehand, cells near the edges).
     #[test]
     fn rebuilt_costmaps_equal_fresh_ones(
         rounds in proptest::collection::vec(
@@ -299,11 +299,15 @@ proptest::proptest! {
         world.add_shape(&envmap::Shape::Rect { x: 2.0, y: 1.0, w: 0.2, h: 2.0 });
         let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(6.0, 4.0));
         let builder = sim::CostmapBuilder::new(bounds, &world, sim::CostmapParams::default(), 0.178);
-        let mut cache = sim::CostmapCache::default();
+        let (mut cache, mut tight_cache) = (sim::CostmapCache::default(), sim::CostmapCache::default());
         for hits in rounds {
             let hits: Vec<Point2> = hits.into_iter().map(|(x, y)| Point2::new(x, y)).collect();
             let fresh = builder.build(None, &hits);
             let kept = builder.rebuild(&mut cache, None, &hits);
+            proptest::prop_assert_eq!(&kept.costs, &fresh.costs);
+            proptest::prop_assert_eq!(kept.map.zones(), fresh.map.zones());
+            let fresh = builder.build_tight(None, &hits);
+            let kept = builder.rebuild_tight(&mut tight_cache, None, &hits);
             proptest::prop_assert_eq!(&kept.costs, &fresh.costs);
             proptest::prop_assert_eq!(kept.map.zones(), fresh.map.zones());
         }
