@@ -145,46 +145,154 @@ pub fn steps_from_cells(
     seeds: impl IntoIterator<Item = (usize, usize)>,
     conn: Connectivity,
 ) -> Vec<u32> {
-    let (w, h) = (mask.width(), mask.height());
-    let mut dist = vec![u32::MAX; w * h];
     let open = mask.cells();
-    let mut queue = Vec::new();
-    for (i, j) in seeds {
-        if i < w && j < h && dist[j * w + i] != 0 {
-            dist[j * w + i] = 0;
-            queue.push(j * w + i);
+    let mut flood = StepsFlood::new(mask.width(), mask.height(), conn);
+    flood.restart(seeds);
+    flood.grow_to(u32::MAX, |c| open[c]);
+    flood.steps
+}
+
+/// [`steps_from_cells`] grown on demand: a breadth-first flood that stops at a level of
+/// steps and can go on from there, over the open cells a test names (by row-major
+/// index), with its buffers kept from one flood to the next. A caller that needs the
+/// steps of a few cells near the start (the nearest of several targets) floods only as
+/// far as those.
+///
+/// ```
+/// use envmap::{Connectivity, StepsFlood};
+/// let open = [true, true, true, false, true];
+/// let mut flood = StepsFlood::new(5, 1, Connectivity::Eight);
+/// flood.restart([(0, 0)]);
+/// flood.grow_to(1, |c| open[c]);
+/// assert_eq!(flood.steps()[..3], [0, 1, u32::MAX]);
+/// assert_eq!(flood.unreached_from(), 2);
+/// flood.grow_to(u32::MAX, |c| open[c]);
+/// assert!(flood.finished());
+/// assert_eq!(flood.steps(), [0, 1, 2, u32::MAX, u32::MAX]);
+/// ```
+#[derive(Debug, Clone)]
+pub struct StepsFlood {
+    width: usize,
+    height: usize,
+    offsets: Vec<isize>,
+    conn: Connectivity,
+    steps: Vec<u32>,
+    queue: Vec<u32>,
+    head: usize,
+    /// Every cell with fewer steps than this has been expanded.
+    level: u32,
+}
+
+impl StepsFlood {
+    /// An empty flood of a `width` x `height` grid (no cell reached until
+    /// [`restart`](Self::restart)).
+    #[must_use]
+    pub fn new(width: usize, height: usize, conn: Connectivity) -> Self {
+        let offsets = conn
+            .offsets()
+            .iter()
+            .map(|&(di, dj)| dj as isize * width as isize + di as isize)
+            .collect();
+        Self {
+            width,
+            height,
+            offsets,
+            conn,
+            steps: vec![u32::MAX; width * height],
+            queue: Vec::new(),
+            head: 0,
+            level: 0,
         }
     }
-    // Distances do not depend on the order neighbours are visited in: a plain vector is
-    // the queue, and cells off the border skip the bounds tests.
-    let mut offsets = [0isize; 8];
-    for (o, &(di, dj)) in offsets.iter_mut().zip(conn.offsets()) {
-        *o = dj as isize * w as isize + di as isize;
+
+    /// Starts again from `seeds` (0 steps each, entered whether open or not; those
+    /// outside the grid are skipped).
+    pub fn restart(&mut self, seeds: impl IntoIterator<Item = (usize, usize)>) {
+        // Every reached cell is in the queue: clearing those costs the last flood's
+        // size, not the grid's.
+        for &c in &self.queue {
+            self.steps[c as usize] = u32::MAX;
+        }
+        self.queue.clear();
+        self.head = 0;
+        self.level = 0;
+        let w = self.width;
+        for (i, j) in seeds {
+            if i < w && j < self.height && self.steps[j * w + i] != 0 {
+                self.steps[j * w + i] = 0;
+                self.queue.push((j * w + i) as u32);
+            }
+        }
     }
-    let offsets = &offsets[..conn.offsets().len()];
-    let mut head = 0;
-    while head < queue.len() {
-        let c = queue[head];
-        head += 1;
-        let next = dist[c] + 1;
-        let (ci, cj) = (c % w, c / w);
-        let mut visit = |n: usize| {
-            if dist[n] == u32::MAX && open[n] {
-                dist[n] = next;
-                queue.push(n);
+
+    /// Expands every reached cell with fewer than `level` steps, through the cells
+    /// `open` says are open: afterwards every cell within `level` steps has its steps.
+    pub fn grow_to(&mut self, level: u32, open: impl Fn(usize) -> bool) {
+        let (w, h, conn) = (self.width, self.height, self.conn);
+        let Self {
+            steps,
+            queue,
+            head,
+            offsets,
+            ..
+        } = self;
+        // Steps do not depend on the order neighbours are visited in: a plain vector is
+        // the queue, and cells off the border skip the bounds tests.
+        while *head < queue.len() {
+            let c = queue[*head] as usize;
+            if steps[c] >= level {
+                break;
             }
-        };
-        if ci > 0 && cj > 0 && ci + 1 < w && cj + 1 < h {
-            for &o in offsets {
-                visit(c.wrapping_add_signed(o));
+            *head += 1;
+            let next = steps[c] + 1;
+            let (ci, cj) = (c % w, c / w);
+            let mut visit = |n: usize| {
+                if steps[n] == u32::MAX && open(n) {
+                    steps[n] = next;
+                    queue.push(n as u32);
+                }
+            };
+            if ci > 0 && cj > 0 && ci + 1 < w && cj + 1 < h {
+                for &o in offsets.iter() {
+                    visit(c.wrapping_add_signed(o));
+                }
+            } else {
+                for (a, b) in neighbours((ci, cj), (w, h), conn) {
+                    visit(b * w + a);
+                }
             }
+        }
+        self.level = self.level.max(level);
+    }
+
+    /// Whether every cell the seeds reach has its steps.
+    #[must_use]
+    pub fn finished(&self) -> bool {
+        self.head == self.queue.len()
+    }
+
+    /// The least steps a cell not yet reached can have (`u32::MAX` once finished: it
+    /// cannot be reached).
+    #[must_use]
+    pub fn unreached_from(&self) -> u32 {
+        if self.finished() {
+            u32::MAX
         } else {
-            for (a, b) in neighbours((ci, cj), (w, h), conn) {
-                visit(b * w + a);
-            }
+            self.level.saturating_add(1)
         }
     }
-    dist
+
+    /// Steps per cell, row-major from the bottom row: `u32::MAX` where not (yet) reached.
+    #[must_use]
+    pub fn steps(&self) -> &[u32] {
+        &self.steps
+    }
+
+    /// The grid's width and height.
+    #[must_use]
+    pub const fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
 }
 
 /// The passable cell nearest `cell` within `max_ring` rings (squares of cells around it),

@@ -17,7 +17,7 @@
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
 //!   pictures and `.map` files, metres y up for ROS maps).
 //! - [`CellFrame`]: where any grid's cells lie in the world (the one metres-to-cells
-//!   conversion); [`CellWalk`]: the cells a segment crosses, in order; [`flood_fill`], [`clusters`], [`steps_from`], [`steps_from_cells`] ([`Connectivity`]) and
+//!   conversion); [`CellWalk`]: the cells a segment crosses, in order; [`flood_fill`], [`clusters`], [`steps_from`], [`steps_from_cells`], [`StepsFlood`] ([`Connectivity`]) and
 //!   [`nearest_passable`]: the one traversal of connected cells.
 //! - `Shape` (feature `shapes`): the workspace's one obstacle vocabulary (rectangles,
 //!   circles, polygons, walls, rotated boxes, discs), `rasterize_shapes` exactly
@@ -117,7 +117,7 @@ pub use demo::demo_room;
 pub use edt::{DistanceField, distance_transform};
 pub use error::MapError;
 pub use flood::{
-    Connectivity, clusters, flood_fill, nearest_passable, steps_from, steps_from_cells,
+    Connectivity, StepsFlood, clusters, flood_fill, nearest_passable, steps_from, steps_from_cells,
 };
 pub use frame::InputFrame;
 pub use generate::{

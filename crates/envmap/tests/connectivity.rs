@@ -117,3 +117,47 @@ fn large_band_case_matches_the_reference() {
         fast
     );
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// A flood grown level by level in arbitrary increments, after a restart that reuses
+    /// the last flood's buffers, holds the whole flood's steps for every cell within the
+    /// level it reached, and no cell beyond; grown to the end it equals the whole flood.
+    #[test]
+    fn a_flood_grown_on_demand_agrees_with_the_whole_one(
+        w in 1usize..30,
+        h in 1usize..30,
+        bits in proptest::collection::vec(any::<bool>(), 900),
+        seeds in proptest::collection::vec((0usize..32, 0usize..32), 1..4),
+        first in proptest::collection::vec((0usize..32, 0usize..32), 1..3),
+        levels in proptest::collection::vec(0u32..12, 1..6),
+        eight in any::<bool>(),
+    ) {
+        let conn = if eight { envmap::Connectivity::Eight } else { envmap::Connectivity::Four };
+        let open: Vec<bool> = bits[..w * h].to_vec();
+        let mask = Mask::from_cells(w, h, open.clone()).unwrap();
+        let whole = envmap::steps_from_cells(&mask, seeds.iter().copied(), conn);
+        let mut flood = envmap::StepsFlood::new(w, h, conn);
+        flood.restart(first.iter().copied());
+        flood.grow_to(u32::MAX, |c| open[c]);
+        flood.restart(seeds.iter().copied());
+        let mut level = 0;
+        for step in levels {
+            level += step;
+            flood.grow_to(level, |c| open[c]);
+            let from = flood.unreached_from();
+            for (c, (&s, &full)) in flood.steps().iter().zip(&whole).enumerate() {
+                if full <= level {
+                    prop_assert_eq!(s, full, "cell {} at level {}", c, level);
+                }
+                if s == u32::MAX && full != u32::MAX {
+                    prop_assert!(full >= from, "cell {}: {} steps, reported at least {}", c, full, from);
+                }
+            }
+        }
+        flood.grow_to(u32::MAX, |c| open[c]);
+        prop_assert!(flood.finished());
+        prop_assert_eq!(flood.steps(), &whole[..]);
+    }
+}

@@ -272,11 +272,17 @@ impl LaserModel {
         order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
         let segments = world.segments.len();
         let discs = world.discs.len();
+        let mut reach = Reach::new(&ranges);
         for &(near, obstacle) in &order {
             // A beam whose range is already shorter than the obstacle's distance cannot
             // be lowered by it. Computed hits can fall a few ulps short of the computed
             // distance: a margin far above rounding keeps the skip exact.
             let behind = near - 1e-9 * (1.0 + near);
+            // Nearest first: once every beam ends before this obstacle, it and all the
+            // farther ones are hidden.
+            if reach.all < behind && reach.longest() < behind {
+                break;
+            }
             match obstacle {
                 Obstacle::Segment(i) => {
                     let seg = if i < segments {
@@ -294,7 +300,7 @@ impl LaserModel {
                         d += tau;
                     }
                     let (lo, span) = if d >= 0.0 { (ua, d) } else { (ub, -d) };
-                    lower(&mut ranges, spans(lo, span), behind, |k| {
+                    lower(&mut ranges, &mut reach, spans(lo, span), behind, |k| {
                         ray_segment(dirs[k], pa, e)
                     });
                 }
@@ -308,7 +314,7 @@ impl LaserModel {
                     let half = (disc.radius / rel.norm()).asin();
                     let mid = u_of(rel);
                     let span = spans((mid - half).rem_euclid(tau), 2.0 * half);
-                    lower(&mut ranges, span, behind, |k| {
+                    lower(&mut ranges, &mut reach, span, behind, |k| {
                         ray_disc(dirs[k], rel, disc.radius)
                     });
                 }
@@ -356,24 +362,79 @@ fn rep_117(ranges: &mut [f64], lo: f64, hi: f64) {
 }
 
 /// Lowers each range of the beams in `spans` to the obstacle's hit `hit(k)` where that is
-/// nearer; a beam already shorter than `behind` (the obstacle's distance) is skipped.
+/// nearer; a beam already shorter than `behind` (the obstacle's distance) is skipped, a
+/// block of them at once when `reach` says its longest range is.
 fn lower(
     ranges: &mut [f64],
+    reach: &mut Reach,
     spans: [std::ops::Range<usize>; 2],
     behind: f64,
     hit: impl Fn(usize) -> Option<f64>,
 ) {
     for range in spans {
-        for k in range {
-            if ranges[k] < behind {
+        if range.is_empty() {
+            continue;
+        }
+        for b in range.start / BLOCK..=(range.end - 1) / BLOCK {
+            if reach.block[b] < behind {
                 continue;
             }
-            if let Some(t) = hit(k)
-                && t < ranges[k]
-            {
-                ranges[k] = t;
+            let beams = range.start.max(b * BLOCK)..range.end.min((b + 1) * BLOCK);
+            let mut lowered = false;
+            for k in beams {
+                if ranges[k] < behind {
+                    continue;
+                }
+                if let Some(t) = hit(k)
+                    && t < ranges[k]
+                {
+                    ranges[k] = t;
+                    lowered = true;
+                }
+            }
+            if lowered {
+                reach.refresh(ranges, b);
             }
         }
+    }
+}
+
+/// Beams per block of [`Reach`].
+const BLOCK: usize = 16;
+
+/// The longest range of each block of [`BLOCK`] beams of a cast under way: most of a
+/// building's walls are hidden behind nearer ones, and their spans are then skipped a
+/// block at a time instead of beam by beam.
+struct Reach {
+    block: Vec<f64>,
+    /// The longest of all, or more: ranges only fall, so it is brought down only when
+    /// an obstacle is beyond it.
+    all: f64,
+}
+
+impl Reach {
+    fn new(ranges: &[f64]) -> Self {
+        let mut reach = Self {
+            block: vec![f64::INFINITY; ranges.len().div_ceil(BLOCK)],
+            all: f64::INFINITY,
+        };
+        for b in 0..reach.block.len() {
+            reach.refresh(ranges, b);
+        }
+        reach
+    }
+
+    fn refresh(&mut self, ranges: &[f64], b: usize) {
+        let end = ranges.len().min((b + 1) * BLOCK);
+        self.block[b] = ranges[b * BLOCK..end]
+            .iter()
+            .fold(f64::NEG_INFINITY, |m, &r| m.max(r));
+    }
+
+    /// The longest range (`all` brought down to it).
+    fn longest(&mut self) -> f64 {
+        self.all = self.block.iter().fold(f64::NEG_INFINITY, |m, &r| m.max(r));
+        self.all
     }
 }
 

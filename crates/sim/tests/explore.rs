@@ -657,4 +657,74 @@ mod properties {
             }
         }
     }
+
+    proptest! {
+        // Pruning decides only where a far frontier's gain could still win: enough cases
+        // to meet those (the hysteresis bound left out fails within about 3,000).
+        #![proptest_config(ProptestConfig::with_cases(4096))]
+
+        /// The assigner's choice on a flood grown only as far as it needs is the choice
+        /// on the whole flood, on random rooms of walls, unknown cells and frontiers.
+        #[test]
+        fn a_lazy_travel_flood_chooses_as_the_whole_one(
+            walls in proptest::collection::vec((0usize..80, 0usize..80, 1usize..30, any::<bool>()), 0..8),
+            unknown in proptest::collection::vec((0usize..80, 0usize..80, 1usize..20), 0..4),
+            robot in (0.2..3.8f64, 0.2..3.8f64),
+            fs in proptest::collection::vec((0.0..4.0f64, 0.0..4.0f64), 0..8),
+            info_radius in 0.2..1.5f64,
+            info_multiplier in 0.0..5.0f64,
+            hysteresis in (0.0..4.0f64, 0.2..3.0f64),
+            blacklist in proptest::collection::vec((0.0..4.0f64, 0.0..4.0f64), 0..2),
+        ) {
+            let bounds = Bounds::new(p(0.0, 0.0), p(4.0, 4.0));
+            let mut map = OccupancyGrid::new(bounds, Mapping::default());
+            for j in 0..map.height() {
+                for i in 0..map.width() {
+                    map.set_value(i, j, FREE);
+                }
+            }
+            for (i, j, len, across) in walls {
+                for k in 0..len {
+                    let (a, b) = if across { (i + k, j) } else { (i, j + k) };
+                    if a < map.width() && b < map.height() {
+                        map.set_value(a, b, OCCUPIED);
+                    }
+                }
+            }
+            for (i, j, side) in unknown {
+                for b in j..(j + side).min(map.height()) {
+                    for a in i..(i + side).min(map.width()) {
+                        map.set_value(a, b, UNKNOWN);
+                    }
+                }
+            }
+            let costmap = sim::CostmapBuilder::new(
+                bounds,
+                &sim::StaticWorld::default(),
+                sim::CostmapParams::default(),
+                0.18,
+            )
+            .build(Some(&map), &[]);
+            let assigner = sim::Assigner {
+                info_radius,
+                info_multiplier,
+                hysteresis_radius: hysteresis.0,
+                hysteresis_gain: hysteresis.1,
+                blacklist: blacklist.into_iter().map(|(x, y)| p(x, y)).collect(),
+                blacklist_radius: 0.3,
+            };
+            let robot = p(robot.0, robot.1);
+            let fs: Vec<Point2> = fs.into_iter().map(|(x, y)| p(x, y)).collect();
+            let steps = sim::costmap_steps(&costmap, robot);
+            let whole = assigner.choose_by(&fs, &map, |f| sim::travel(&costmap, &steps, f, info_radius));
+            let mut flood = sim::TravelFlood::new(&costmap, robot, info_radius, None);
+            prop_assert_eq!(assigner.choose_by_travel(&fs, &map, &mut flood), whole);
+            // Its buffers serve the next flood from elsewhere.
+            let mut again = sim::TravelFlood::new(&costmap, fs.first().copied().unwrap_or(robot), info_radius, Some(flood.into_buffers()));
+            let steps = sim::costmap_steps(&costmap, fs.first().copied().unwrap_or(robot));
+            for &f in &fs {
+                prop_assert_eq!(again.travel(f), sim::travel(&costmap, &steps, f, info_radius));
+            }
+        }
+    }
 }

@@ -14,6 +14,7 @@
 use hyplan_core::Point2;
 
 use crate::explore::filter::information_gain;
+use crate::explore::frontier::TravelFlood;
 use crate::mapping::OccupancyGrid;
 
 /// The reference's revenue: `multiplier x gain x (hysteresis when near) - distance`.
@@ -105,6 +106,95 @@ impl Assigner {
                 self.hysteresis_radius,
                 self.hysteresis_gain,
             );
+            if best.is_none_or(|(b, _)| r > b) {
+                best = Some((r, f));
+            }
+        }
+        best.map(|(_, f)| f)
+    }
+
+    /// [`choose_by`](Self::choose_by) with the travel on `flood`: the same choice,
+    /// flooding only until no frontier still unreached could beat (or tie) the best
+    /// one reached, since a frontier `floor()` away or more earns at most its gain's
+    /// worth minus that.
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{Assigner, CostmapBuilder, CostmapParams, Mapping, OccupancyGrid, StaticWorld, TravelFlood, costmap_steps, travel};
+    /// let p = Point2::new;
+    /// let bounds = Bounds::new(p(0.0, 0.0), p(10.0, 10.0));
+    /// let map = OccupancyGrid::new(bounds, Mapping::default());
+    /// let costmap = CostmapBuilder::new(bounds, &StaticWorld::default(), CostmapParams::default(), 0.18)
+    ///     .build(None, &[]);
+    /// let a = Assigner { info_radius: 1.0, info_multiplier: 3.0, ..Default::default() };
+    /// let fs = [p(8.0, 8.0), p(2.0, 1.0)];
+    /// let steps = costmap_steps(&costmap, p(1.0, 1.0));
+    /// let whole = a.choose_by(&fs, &map, |f| travel(&costmap, &steps, f, 1.0));
+    /// let mut flood = TravelFlood::new(&costmap, p(1.0, 1.0), 1.0, None);
+    /// assert_eq!(a.choose_by_travel(&fs, &map, &mut flood), whole);
+    /// assert_eq!(whole, Some(p(2.0, 1.0)));
+    /// ```
+    #[must_use]
+    pub fn choose_by_travel(
+        &self,
+        frontiers: &[Point2],
+        map: &OccupancyGrid,
+        flood: &mut TravelFlood<'_>,
+    ) -> Option<Point2> {
+        let revenue_at = |gain: f64, d: f64| {
+            revenue(
+                gain,
+                d,
+                self.info_multiplier,
+                self.hysteresis_radius,
+                self.hysteresis_gain,
+            )
+        };
+        // The most a frontier of `gain` at least `floor` away can earn (the hysteresis
+        // may raise or lower the gain within its radius).
+        let most = |gain: f64, floor: f64| {
+            let far = self.info_multiplier * gain;
+            if floor <= self.hysteresis_radius {
+                far.max(far * self.hysteresis_gain) - floor
+            } else {
+                far - floor
+            }
+        };
+        // Per frontier not blacklisted: its gain, and its travel once final.
+        let mut open: Vec<(Point2, f64, Option<Option<f64>>)> = frontiers
+            .iter()
+            .filter(|&&f| !self.blacklisted(f))
+            .map(|&f| (f, information_gain(map, f, self.info_radius), None))
+            .collect();
+        loop {
+            let floor = flood.floor();
+            let mut best: Option<f64> = None;
+            for (f, gain, known) in &mut open {
+                if known.is_none() {
+                    let t = flood.known(*f);
+                    if flood.finished() || t.is_some_and(|t| t <= floor) {
+                        *known = Some(t);
+                    }
+                }
+                if let Some(Some(t)) = known {
+                    let r = revenue_at(*gain, *t);
+                    best = Some(best.map_or(r, |b: f64| b.max(r)));
+                }
+            }
+            let undecided = open.iter().any(|&(_, gain, known)| {
+                known.is_none() && best.is_none_or(|b| most(gain, floor) >= b)
+            });
+            if !undecided {
+                break;
+            }
+            flood.grow();
+        }
+        // As `choose_by`: the first of the best. A frontier left undecided earns less
+        // than the best decided one.
+        let mut best: Option<(f64, Point2)> = None;
+        for &(f, gain, known) in &open {
+            let Some(Some(t)) = known else { continue };
+            let r = revenue_at(gain, t);
             if best.is_none_or(|(b, _)| r > b) {
                 best = Some((r, f));
             }

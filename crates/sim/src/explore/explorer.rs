@@ -3,7 +3,7 @@
 
 use hyplan_core::Point2;
 
-use envmap::Inflation;
+use envmap::{Inflation, StepsFlood};
 
 use crate::costmap::CostmapCache;
 use crate::engine::{Flow, GoalSource, Sim, TICKS_PER_SECOND, every, stream};
@@ -11,7 +11,7 @@ use crate::explore::assigner::Assigner;
 use crate::explore::cost::DetectorCost;
 use crate::explore::detector::{Region, RrtDetector};
 use crate::explore::filter::{Filter, built_cost, built_cost_reach, information_gain};
-use crate::explore::frontier::{costmap_steps, frontier_clusters, nearest_frontier};
+use crate::explore::frontier::{TravelFlood, costmap_steps, frontier_clusters, nearest_frontier};
 use crate::explore::params::{AssignerMode, Exploration, RevenueDistance, Strategy};
 use crate::explore::run::{GoalEnd, GoalRecord, Snapshot};
 use crate::explore::viewpoint::ViewPoints;
@@ -76,6 +76,8 @@ pub(crate) struct Explorer {
     /// version it was built at.
     costmap: CostmapCache,
     costmap_at: Option<u64>,
+    /// The buffers of the assigner's travel flood, kept between goal choices.
+    flood: Option<StepsFlood>,
     /// The costmap of the final pass.
     final_costmap: CostmapCache,
     /// Where the robot was when it last moved 0.2 m, and when.
@@ -186,6 +188,7 @@ impl Explorer {
             idle_since: None,
             costmap: CostmapCache::default(),
             costmap_at: None,
+            flood: None,
             final_costmap: CostmapCache::default(),
             anchor: (crate::world::pt(scenario.start), 0),
             finished: false,
@@ -444,8 +447,13 @@ impl Explorer {
             self.costmap_at = Some(sim.map_version());
         }
         let costmap = self.costmap_at.and_then(|_| self.costmap.costmap());
+        // The assigner's travel floods the costmap only as far as its choice needs; the
+        // view points need every reachable cell.
+        let mut flood = costmap
+            .filter(|_| by_travel && !ex.view_points)
+            .map(|c| TravelFlood::new(c, here, ex.info_radius, self.flood.take()));
         let steps = match costmap {
-            Some(c) if ex.view_points || by_travel => costmap_steps(c, here),
+            Some(c) if ex.view_points => costmap_steps(c, here),
             _ => Vec::new(),
         };
         let views = costmap.map(|costmap| ViewPoints {
@@ -470,12 +478,9 @@ impl Explorer {
                     .first()
                     .map(|&f| (f, f))
             }
-            (true, None) if by_travel => costmap
-                .and_then(|c| {
-                    assigner.choose_by(&self.candidates, map, |f| {
-                        crate::explore::frontier::travel(c, &steps, f, ex.info_radius)
-                    })
-                })
+            (true, None) if by_travel => flood
+                .as_mut()
+                .and_then(|flood| assigner.choose_by_travel(&self.candidates, map, flood))
                 .map(|f| (f, f)),
             (true, None) => assigner.choose(here, &self.candidates, map).map(|f| (f, f)),
             (true, Some(views)) => assigner
@@ -500,6 +505,7 @@ impl Explorer {
                 views.nearest(map, &cells, |p| assigner.blacklisted(p))
             }
         };
+        self.flood = flood.map(TravelFlood::into_buffers);
         if !rrt {
             self.candidates = next.map(|(f, _)| f).into_iter().collect();
         }

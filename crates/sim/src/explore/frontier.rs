@@ -9,7 +9,7 @@
 //! clusters of fewer than `min_cells` cells are ignored (laser speckle).
 
 use envmap::{
-    Connectivity, INSCRIBED_INFLATED_OBSTACLE, Mask, clusters, nearest_passable, steps_from,
+    Connectivity, INSCRIBED_INFLATED_OBSTACLE, Mask, StepsFlood, clusters, nearest_passable,
 };
 use hyplan_core::Point2;
 
@@ -65,19 +65,119 @@ pub fn frontier_clusters(map: &OccupancyGrid) -> Vec<Vec<(usize, usize)>> {
 /// would find every cell unreachable).
 #[must_use]
 pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
-    let (w, h) = (costmap.map.width(), costmap.map.height());
-    let Some(cell) = costmap.map.world_to_cell(from) else {
-        return vec![u32::MAX; w * h];
-    };
-    let open = costmap
-        .costs
-        .iter()
-        .map(|&c| c < INSCRIBED_INFLATED_OBSTACLE)
-        .collect();
-    let open = Mask::from_cells(w, h, open).expect("a cost per cell");
-    let rings = crate::planner::start_rings(costmap.map.resolution());
-    let start = nearest_passable((w, h), cell, rings, |i, j| open.get(i, j)).unwrap_or(cell);
-    steps_from(&open, start, Connectivity::Eight)
+    let mut flood = TravelFlood::new(costmap, from, 0.0, None);
+    flood.finish();
+    flood.flood.steps().to_vec()
+}
+
+/// [`travel`] to frontiers with the costmap flooded only as far as the questions need:
+/// the breadth-first steps of [`costmap_steps`] grown on demand (a choice among
+/// frontiers a few metres away need not flood a whole building), exact all the same.
+///
+/// ```
+/// use hyplan_core::{Bounds, Point2};
+/// use sim::{CostmapBuilder, CostmapParams, StaticWorld, TravelFlood, costmap_steps, travel};
+/// let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(8.0, 8.0));
+/// let builder = CostmapBuilder::new(bounds, &StaticWorld::default(), CostmapParams::default(), 0.18);
+/// let costmap = builder.build(None, &[]);
+/// let (robot, frontier) = (Point2::new(1.0, 1.0), Point2::new(3.0, 1.0));
+/// let mut flood = TravelFlood::new(&costmap, robot, 0.5, None);
+/// let lazily = flood.travel(frontier);
+/// assert_eq!(lazily, travel(&costmap, &costmap_steps(&costmap, robot), frontier, 0.5));
+/// assert!(!flood.finished(), "a frontier 2 m away floods 2 m, not the 8 m square");
+/// ```
+#[derive(Debug)]
+pub struct TravelFlood<'c> {
+    costmap: &'c Costmap,
+    flood: StepsFlood,
+    /// How far from a frontier its nearest reachable cell may be, m.
+    radius: f64,
+}
+
+impl<'c> TravelFlood<'c> {
+    /// Travel from `from` on `costmap` to within `radius` of the frontiers asked about,
+    /// with the buffers of an earlier flood (`reuse`, of any grid) when given.
+    #[must_use]
+    pub fn new(costmap: &'c Costmap, from: Point2, radius: f64, reuse: Option<StepsFlood>) -> Self {
+        let (w, h) = (costmap.map.width(), costmap.map.height());
+        let mut flood = reuse
+            .filter(|f| f.size() == (w, h))
+            .unwrap_or_else(|| StepsFlood::new(w, h, Connectivity::Eight));
+        let start = costmap.map.world_to_cell(from).map(|cell| {
+            // The start cell is always entered, or, when it is at the inscribed cost or
+            // above, the nearest cell below it within the planner's start slack.
+            let rings = crate::planner::start_rings(costmap.map.resolution());
+            let open = |i: usize, j: usize| costmap.costs[j * w + i] < INSCRIBED_INFLATED_OBSTACLE;
+            nearest_passable((w, h), cell, rings, open).unwrap_or(cell)
+        });
+        flood.restart(start);
+        Self {
+            costmap,
+            flood,
+            radius,
+        }
+    }
+
+    /// The flood's buffers, for the next one.
+    #[must_use]
+    pub fn into_buffers(self) -> StepsFlood {
+        self.flood
+    }
+
+    /// Whether the flood reached every cell it can.
+    #[must_use]
+    pub fn finished(&self) -> bool {
+        self.flood.finished()
+    }
+
+    /// The least travel a frontier whose [`known`](Self::known) travel is `None` or
+    /// above this can have, m (infinite once finished).
+    #[must_use]
+    pub fn floor(&self) -> f64 {
+        match self.flood.unreached_from() {
+            u32::MAX => f64::INFINITY,
+            s => f64::from(s) * self.costmap.map.resolution(),
+        }
+    }
+
+    /// [`travel`] over the cells reached so far: exact when at most [`floor`](Self::floor).
+    #[must_use]
+    pub fn known(&self, target: Point2) -> Option<f64> {
+        travel(self.costmap, self.flood.steps(), target, self.radius)
+    }
+
+    /// Floods further: half as far again, and at least a metre.
+    pub fn grow(&mut self) {
+        let res = self.costmap.map.resolution();
+        let level = self.flood.unreached_from().saturating_sub(1);
+        let more = (level / 2).max((1.0 / res).ceil() as u32);
+        self.grow_to(level.saturating_add(more));
+    }
+
+    /// Floods every cell that can be reached.
+    pub fn finish(&mut self) {
+        self.grow_to(u32::MAX);
+    }
+
+    fn grow_to(&mut self, level: u32) {
+        let costs = &self.costmap.costs;
+        self.flood
+            .grow_to(level, |c| costs[c] < INSCRIBED_INFLATED_OBSTACLE);
+    }
+
+    /// The exact [`travel`] to `target`, flooding as far as it takes.
+    pub fn travel(&mut self, target: Point2) -> Option<f64> {
+        loop {
+            let known = self.known(target);
+            if self.finished() || known.is_some_and(|t| t <= self.floor()) {
+                return known;
+            }
+            match known {
+                Some(t) => self.grow_to((t / self.costmap.map.resolution()).ceil() as u32),
+                None => self.grow(),
+            }
+        }
+    }
 }
 
 /// The travel to `target` on `costmap`, m: over the reachable cells within `radius` of

@@ -33,7 +33,9 @@ pub use detector::{DetectorKind, Edge, Region, RegionError, RrtDetector, edge_ch
 pub use explorer::{GLOBAL_STREAM, LOCAL_STREAM};
 pub use figure::{animation_png, snapshot_scene, snapshot_svg};
 pub use filter::{Filter, built_cost, built_cost_reach, information_gain, mean_shift};
-pub use frontier::{costmap_steps, frontier_cells, frontier_clusters, nearest_frontier, travel};
+pub use frontier::{
+    TravelFlood, costmap_steps, frontier_cells, frontier_clusters, nearest_frontier, travel,
+};
 pub use left::{LeftCause, LeftRegion, left_by_cause, left_unknown};
 pub use params::{AssignerMode, Exploration, FilterPool, RevenueDistance, Strategy};
 pub use run::{
