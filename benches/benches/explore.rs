@@ -10,8 +10,9 @@
 //! limit after reaching it): a broken run must not look fast.
 //!
 //! The group `explore-maps` times one exploration (both detectors, seed 0) of each
-//! real-building map of `data/ros_maps/` (the scenarios `scenarios/sim/explore-<map>.ron`)
-//! and prints its simulated seconds per second of thread CPU before the timed loop.
+//! real-building map of `data/ros_maps/` and of the generated 60 m building (the
+//! scenarios `scenarios/sim/explore-<map>.ron`) and prints its simulated seconds per
+//! second of thread CPU before the timed loop.
 //!
 //! Run with `cargo bench -p hyplan-benches --bench explore`; `EXPLORE_BENCH_SEEDS=0` skips
 //! the per-seed table; `cargo bench -p hyplan-benches --bench explore -- explore-maps` runs
@@ -70,13 +71,15 @@ fn explore22(c: &mut Criterion) {
     g.finish();
 }
 
-/// The real-building maps with an exploration scenario.
-const MAPS: [&str; 5] = [
+/// The real-building maps with an exploration scenario, and the generated 60 m building
+/// (issue 27: 500x real time wanted there, 300x on every map).
+const MAPS: [&str; 6] = [
     "aws_small_house",
     "yujin_rnd_hokuyo",
     "uos_avz5floor_open",
     "mit_building_31",
     "mit_stata_basement",
+    "building-60m",
 ];
 
 fn explore_maps(c: &mut Criterion) {
