@@ -149,7 +149,7 @@ pub fn steps_from_cells(
     let mut flood = StepsFlood::new(mask.width(), mask.height(), conn);
     flood.restart(seeds);
     flood.grow_to(u32::MAX, |c| open[c]);
-    flood.steps
+    flood.into_steps()
 }
 
 /// [`steps_from_cells`] grown on demand: a breadth-first flood that stops at a level of
@@ -286,6 +286,12 @@ impl StepsFlood {
     #[must_use]
     pub fn steps(&self) -> &[u32] {
         &self.steps
+    }
+
+    /// The steps per cell, as [`steps`](Self::steps), without a copy.
+    #[must_use]
+    pub fn into_steps(self) -> Vec<u32> {
+        self.steps
     }
 
     /// The grid's width and height.

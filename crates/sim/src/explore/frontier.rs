@@ -67,7 +67,7 @@ pub fn frontier_clusters(map: &OccupancyGrid) -> Vec<Vec<(usize, usize)>> {
 pub fn costmap_steps(costmap: &Costmap, from: Point2) -> Vec<u32> {
     let mut flood = TravelFlood::new(costmap, from, 0.0, None);
     flood.finish();
-    flood.flood.steps().to_vec()
+    flood.into_buffers().into_steps()
 }
 
 /// [`travel`] to frontiers with the costmap flooded only as far as the questions need:
