@@ -199,7 +199,6 @@ impl LaserModel {
             }
         };
         let inc = self.inc;
-        let last = (n - 1) as f64;
         // The beams k with u_k = k inc in [lo, lo + span] (mod 2 pi), with a margin on
         // each side: the exact intersection test decides, so a span may be wider than the
         // obstacle but never narrower. One beam covers an error in the span's ends below
@@ -210,15 +209,26 @@ impl LaserModel {
         } else {
             1.0 + (2.0 * FAST_ATAN2_ERROR / inc).ceil()
         };
+        // In beam units, `x` to `y` widened by the margin: each end converted once to an
+        // index (truncation floors what is not negative) rather than rounded, divided and
+        // converted; a span one beam wider at an end costs a ray test, not an error. A
+        // product, not a quotient, per end: its rounding is far inside the margin.
+        let per_inc = 1.0 / inc;
+        let last = n - 1;
         let spans = |lo: f64, span: f64| {
             [0.0, -tau].map(|shift| {
-                let a = (((lo + shift) / inc).ceil() - margin).max(0.0);
-                let b = (((lo + span + shift) / inc).floor() + margin).min(last);
-                if a <= b {
-                    a as usize..b as usize + 1
+                let x = (lo + shift) * per_inc;
+                let y = (lo + span + shift) * per_inc + margin;
+                // `as` saturates: below 0 (or NaN) is beam 0.
+                let a = (x - margin) as usize;
+                let b = if y >= 0.0 {
+                    (y as usize).min(last)
+                } else if y.is_nan() {
+                    last
                 } else {
-                    0..0
-                }
+                    return 0..0;
+                };
+                if a <= b { a..b + 1 } else { 0..0 }
             })
         };
         // Nearest obstacles first, so that one hidden behind nearer hits over its whole
