@@ -279,7 +279,8 @@ impl LaserModel {
             }
             order.push((dist - disc.radius, Obstacle::Disc(i)));
         }
-        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        // Distances are never negative (nor NaN): their bits sort as they do.
+        order.sort_unstable_by_key(|o| o.0.to_bits());
         let segments = world.segments.len();
         let discs = world.discs.len();
         let mut reach = Reach::new(&ranges);
