@@ -552,6 +552,30 @@ fn free_cells(logodds: &[f32], mask: &[bool]) -> usize {
 mod tests {
     use super::*;
 
+    /// The blocks passed over at once hide no occupied cell: every cell holding a
+    /// positive log-odds comes out, in row-major order, with a grid whose last block is
+    /// partial and cells set at block edges.
+    #[test]
+    fn occupied_cells_are_every_positive_cell() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(3.37, 2.11));
+        let mut g = OccupancyGrid::new(bounds, Mapping::default());
+        let n = g.width() * g.height();
+        assert_ne!(n % 64, 0);
+        for k in 0..n {
+            if rng.random_bool(0.01) || k % 64 == 0 || k % 64 == 63 || k == n - 1 {
+                g.logodds[k] = if rng.random_bool(0.8) { 0.5 } else { -0.5 };
+            }
+        }
+        let want: Vec<(usize, usize)> = (0..n)
+            .filter(|&k| g.logodds[k] > 0.0)
+            .map(|k| (k % g.width(), k / g.width()))
+            .collect();
+        assert!(want.len() > 10);
+        assert_eq!(g.occupied_cells().collect::<Vec<_>>(), want);
+    }
+
     /// The built map is written as map_saver writes one (P5, 254 / 0 / 205, trinary) and
     /// envmap's loader reads it back with its documented rule for unknown cells.
     #[test]
