@@ -54,6 +54,14 @@ pub struct Args {
     /// (`crowd-FLOW.ron`, for `hyplan sim`) and stop.
     #[arg(long, value_name = "DIR")]
     pub write_scenarios: Option<PathBuf>,
+    /// Runs the robot without its collision monitor (`sim::CollisionMonitor`, on in
+    /// every crowd and soak room by default), to measure what the monitor does.
+    #[arg(long)]
+    pub no_monitor: bool,
+    /// The laser's field of view for every run, degrees (default: the scenarios' 180,
+    /// seed 004's scanner), to measure what a wider scanner sees in time.
+    #[arg(long, value_name = "DEG")]
+    pub fov: Option<f64>,
     /// People models of the soak, comma-separated.
     #[arg(long, value_delimiter = ',', default_values_t = ["scripted".to_string(), "social-force".to_string(), "social-force-blind".to_string()])]
     pub soak_models: Vec<String>,
@@ -83,6 +91,11 @@ struct RunRecord<'a> {
 pub fn run(args: &Args) -> anyhow::Result<()> {
     if let Some(dir) = &args.write_scenarios {
         return write_scenarios(dir, args.seed);
+    }
+    if let Some(fov) = args.fov
+        && !(fov > 0.0 && fov <= 360.0)
+    {
+        bail!("--fov {fov}: the field of view must be in (0, 360] degrees");
     }
     let mut controllers = Vec::new();
     for c in &args.controllers {
@@ -145,6 +158,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 let mut sc = sim::crowd(flow, density, args.seed, k);
                 sc.local_planner = local;
                 sc.people_model = kind;
+                if args.no_monitor {
+                    sc.navigation.collision_monitor = None;
+                }
+                if let Some(fov) = args.fov {
+                    sc.laser.fov_deg = fov;
+                }
                 let world = sc
                     .build_world(std::path::Path::new(&sc.name))
                     .with_context(|| format!("building {}", sc.name))?;
@@ -291,6 +310,11 @@ fn soak(
                     |sc| {
                         sc.local_planner = local;
                         sc.people_model = kind;
+                        sc.navigation.collision_monitor =
+                            (!args.no_monitor).then(sim::CollisionMonitor::default);
+                        if let Some(fov) = args.fov {
+                            sc.laser.fov_deg = fov;
+                        }
                     },
                 );
                 let wall = t0.elapsed().as_secs_f64();

@@ -66,6 +66,31 @@ fn other_planners_by_name() {
     assert_exit(&o, 2, &["no-such-planner"]);
 }
 
+/// The collision monitor from the file (`Some(())`: its defaults) and from the flag.
+#[test]
+fn the_collision_monitor_from_the_file_and_the_flag() {
+    let on = SCRATCH.file(
+        "monitor_on.ron",
+        hall(
+            "",
+            "\n    navigation: (collision_monitor: Some(())),",
+            "(0.5, 1.5)",
+        ),
+    );
+    let plain = SCRATCH.file("monitor_plain.ron", hall("", "", "(0.5, 1.5)"));
+    for args in [
+        vec!["sim", &on],
+        vec!["sim", &on, "--collision-monitor", "off"],
+        vec!["sim", &plain, "--collision-monitor", "on"],
+    ] {
+        let o = hyplan(&args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        assert!(stdout(&o).contains("0 at fault"), "{args:?}");
+    }
+    let o = hyplan(&["sim", &plain, "--collision-monitor", "maybe"]);
+    assert_exit(&o, 2, &["maybe"]);
+}
+
 #[test]
 fn unreachable_goal_exits_1() {
     // A wall across the hall: no way through.
@@ -85,7 +110,7 @@ fn unreachable_goal_exits_1() {
 /// Each bad scenario, and what the message must name (file, field, value).
 #[test]
 fn bad_scenarios_exit_2_naming_field_and_value() {
-    let cases: [(&str, String, &[&str]); 8] = [
+    let cases: [(&str, String, &[&str]); 9] = [
         (
             "unknown.ron",
             hall("", "\n    colour: 3,", "(0.5, 1.5)"),
@@ -120,6 +145,19 @@ fn bad_scenarios_exit_2_naming_field_and_value() {
             "goal_outside.ron",
             hall("", "", "(0.5, 1.5)").replace("goal: (5.5, 1.5)", "goal: (5.5, 4.0)"),
             &["goal_outside.ron", "goal", "(5.5, 4)", "outside the world"],
+        ),
+        (
+            "monitor.ron",
+            hall(
+                "",
+                "\n    navigation: (collision_monitor: Some((person_speed: -1.0))),",
+                "(0.5, 1.5)",
+            ),
+            &[
+                "monitor.ron",
+                "navigation.collision_monitor.person_speed",
+                "-1",
+            ],
         ),
         (
             "path.ron",

@@ -5,6 +5,7 @@
 //! soak at walking speed's (people at 0.8-1.6 m/s) and its people move by that model.
 //! With `CROWD=FLOW:DENSITY` in the environment the run is the crowd scenario
 //! `sim::crowd(FLOW, DENSITY, SEED, INDEX)` instead (as `cargo xtask crowd` runs it).
+//! With `NO_MONITOR` in the environment the robot runs without its collision monitor.
 /// Everyone's centre at every tick.
 #[derive(Default)]
 struct Seen(Vec<(f64, Vec<hyplan_core::Point2>)>);
@@ -43,6 +44,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             sc
         }
     };
+    // As `cargo xtask crowd` runs them: the collision monitor on among people at walking
+    // speed (crowds have it from `sim::crowd`), off with NO_MONITOR in the environment.
+    if model.is_some() {
+        sc.navigation.collision_monitor = Some(sim::CollisionMonitor::default());
+    }
+    if let Ok(f) = std::env::var("FOV") {
+        sc.laser.fov_deg = f.parse()?;
+    }
+    if std::env::var_os("NO_MONITOR").is_some() {
+        sc.navigation.collision_monitor = None;
+    }
     if let Some(c) = args.get(5) {
         sc.local_planner = sim::LocalPlanner::from_name(c, None).ok_or("unknown CONTROLLER")?;
     }

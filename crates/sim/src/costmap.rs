@@ -150,6 +150,36 @@ impl ObstacleMemory {
         })
     }
 
+    /// Distance from `p` to the nearest remembered hit the static prior does not explain
+    /// (maybe a person) within `radius` and on the side of `p` that `ahead` points to
+    /// (`(q - p) . ahead >= 0`), at `tick`.
+    #[must_use]
+    pub fn nearest_loose_ahead(
+        &self,
+        p: Point2,
+        ahead: nalgebra::Vector2<f64>,
+        radius: f64,
+        tick: u64,
+    ) -> Option<f64> {
+        let mut best: Option<f64> = None;
+        for c in self.cells_near(p, radius, tick) {
+            if self.explained[c] {
+                continue;
+            }
+            if let Some(q) = self.remembered(c, tick) {
+                let d = (q - p).norm();
+                if d <= radius
+                    && (q - p).dot(&ahead) >= 0.0
+                    && best.is_none_or(|b| d < b)
+                    && !self.cleared(c, q, tick)
+                {
+                    best = Some(d);
+                }
+            }
+        }
+        best
+    }
+
     /// Records the hits of a scan taken at `tick`.
     pub fn insert(&mut self, scan: Scan, tick: u64) {
         let now = tick + 1;

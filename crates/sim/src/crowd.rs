@@ -31,6 +31,8 @@ use serde::{Deserialize, Serialize};
 use crate::engine::{Observer, TICKS_PER_SECOND, time_of};
 use crate::kinematics::{Pose, Robot};
 use crate::laser::Scan;
+use crate::monitor::CollisionMonitor;
+use crate::navigator::Navigation;
 use crate::planner::GlobalPlanner;
 use crate::scenario::Scenario;
 use crate::social_force::{PeopleModelKind, SocialForceParams};
@@ -109,13 +111,15 @@ const WALL: f64 = 0.2;
 
 /// The crowd scenario `index` of a set seeded `seed`: `flow` at `density` people per
 /// 100 m^2, people under social forces who see the robot (set `people_model` for
-/// others), the robot's defaults and a known map.
+/// others), the robot's defaults with its collision monitor on ([`CollisionMonitor`]) and
+/// a known map.
 ///
 /// ```
 /// let sc = sim::crowd(sim::CrowdFlow::Doors, 1.0, 7, 0);
 /// let world = sc.build_world(std::path::Path::new(&sc.name)).unwrap();
 /// assert!(!world.people.is_empty());
 /// assert!(sc.people.iter().all(|p| (0.8..=1.8).contains(&p.speed)));
+/// assert!(sc.navigation.collision_monitor.is_some());
 /// let empty = sim::crowd(sim::CrowdFlow::Doors, 0.0, 7, 0);
 /// assert!(empty.people.is_empty());
 /// ```
@@ -137,6 +141,10 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
     };
     Scenario {
         people_model: PeopleModelKind::SocialForce(SocialForceParams::default()),
+        navigation: Navigation {
+            collision_monitor: Some(CollisionMonitor::default()),
+            ..Navigation::default()
+        },
         ..Scenario::generated(
             (
                 format!("crowd-{flow}-{density}-{seed}-{index}"),

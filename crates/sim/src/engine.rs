@@ -490,6 +490,7 @@ impl<'w> Sim<'w> {
         self.events.clear();
         let controlled = flow == Flow::Continue && tick.is_multiple_of(self.rates.control);
         if controlled {
+            let prev = self.twist;
             self.twist = match goals.command(self) {
                 Some(want) => self
                     .nav
@@ -509,6 +510,20 @@ impl<'w> Sim<'w> {
                     )
                 }
             };
+            if let Some(m) = &self.scenario.navigation.collision_monitor {
+                let robot = &self.scenario.robot;
+                let controller = &self.nav.controller;
+                self.twist = m.limit(
+                    robot,
+                    self.rates.control as f64 / TICKS_PER_SECOND as f64,
+                    self.pose,
+                    prev,
+                    self.twist,
+                    &self.memory,
+                    tick,
+                    |t| controller.limit(robot, prev, t),
+                );
+            }
             flow = goals.controlled(self, &self.events);
         }
         let info = TickInfo {

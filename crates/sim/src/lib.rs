@@ -87,6 +87,7 @@ mod grid_cast;
 mod kinematics;
 mod laser;
 mod mapping;
+mod monitor;
 mod navigator;
 mod orca;
 mod people;
@@ -135,6 +136,7 @@ pub use kinematics::{
 };
 pub use laser::{Laser, LaserModel, Scan};
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
+pub use monitor::CollisionMonitor;
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};
 pub use orca::{Orca, OrcaParams};
 pub use people::{PeopleModel, Scripted};

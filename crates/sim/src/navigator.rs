@@ -23,6 +23,7 @@ use crate::control::{FollowInput, LocalController, along, project};
 use crate::costmap::{CostmapBuilder, CostmapCache, ObstacleMemory};
 use crate::kinematics::{Pose, Robot, Twist};
 use crate::mapping::OccupancyGrid;
+use crate::monitor::CollisionMonitor;
 use crate::planner::{GlobalPlanner, PlanScratch};
 use crate::tracking::Mover;
 
@@ -40,6 +41,9 @@ pub struct Navigation {
     pub retry_period: f64,
     /// Progress on a plan that resets the failure count, m (0.5).
     pub progress_reset: f64,
+    /// The collision monitor between the stack and the wheels (none by default, as in
+    /// the paper's `move_base`): `Some(())` for [`CollisionMonitor`]'s defaults.
+    pub collision_monitor: Option<CollisionMonitor>,
 }
 
 impl Default for Navigation {
@@ -50,6 +54,7 @@ impl Default for Navigation {
             max_failures: 8,
             retry_period: 1.0,
             progress_reset: 0.5,
+            collision_monitor: None,
         }
     }
 }

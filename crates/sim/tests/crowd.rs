@@ -129,6 +129,29 @@ fn orca_crowds_walk_through() {
     assert!(m.people_arrived >= 2, "{m:?}");
 }
 
+/// A person who does not look walks into the robot's side from behind it, seen at the
+/// edge of the 180-degree laser's view a moment before contact (the doors crowd 2026 /
+/// 332 of `cargo xtask crowd`, social forces, regulated pure pursuit). Without the
+/// collision monitor the robot still creeps toward them at contact (at fault); with it
+/// (the crowd scenarios' default) it has stopped.
+#[test]
+fn the_collision_monitor_stops_before_a_blind_walker_arrives() {
+    let mut sc = sim::crowd(CrowdFlow::Doors, 1.0, 2026, 332);
+    assert!(sc.navigation.collision_monitor.is_some());
+    sc.people_model = PeopleModelKind::from_name("social-force-blind").unwrap();
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let with = sim::run(&sc, &world, 332, GlobalPlanner::Dijkstra);
+    assert!(with.trace.summary.reached);
+    assert_eq!(
+        with.trace.summary.contacts_at_fault, 0,
+        "{:?}",
+        with.trace.contacts
+    );
+    sc.navigation.collision_monitor = None;
+    let without = sim::run(&sc, &world, 332, GlobalPlanner::Dijkstra);
+    assert!(without.trace.summary.contacts_at_fault > 0);
+}
+
 /// The crowd scenarios in `scenarios/sim/` are the generator's, unchanged: written by
 /// `cargo xtask crowd --write-scenarios scenarios/sim`, read back equal.
 #[test]

@@ -39,6 +39,12 @@ pub struct Args {
     /// scenario's `people_model`.
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(sim::PeopleModelKind::NAMES))]
     pub people_model: Option<String>,
+    /// The collision monitor between the navigation stack and the wheels (Nav2's
+    /// `collision_monitor`; `sim::CollisionMonitor`): `on` slows and stops the robot before
+    /// someone walking straight at it could reach it, `off` drives the bare stack. Default:
+    /// the scenario's `navigation.collision_monitor` (off unless the file turns it on).
+    #[arg(long, value_parser = ["on", "off"])]
+    pub collision_monitor: Option<String>,
     /// Folder for the trace (CSV, JSON), the built map (ROS YAML + PGM, as map_saver
     /// writes it: free 254, occupied 0, unknown 205, `mode: trinary`) and the figures
     /// (trajectory, v and omega, animation; SVG).
@@ -133,6 +139,14 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     if let Some(name) = &args.people_model {
         scenario.people_model =
             sim::PeopleModelKind::from_name(name).context("--people-model: a known name")?;
+    }
+    match args.collision_monitor.as_deref() {
+        Some("on") => {
+            scenario.navigation.collision_monitor =
+                Some(scenario.navigation.collision_monitor.unwrap_or_default());
+        }
+        Some(_) => scenario.navigation.collision_monitor = None,
+        None => {}
     }
     let planner = global_planner(&args.planner)?;
     let mut meter = sim::CrowdMeter::new(world.people.len());
