@@ -58,6 +58,10 @@ pub struct Args {
     /// every crowd and soak room by default), to measure what the monitor does.
     #[arg(long)]
     pub no_monitor: bool,
+    /// How long the robot waits for people before their blocks count as failures, s
+    /// (`navigation.people_patience`; default: `sim::PEOPLE_PATIENCE`, 0 for none).
+    #[arg(long, value_name = "S")]
+    pub people_patience: Option<f64>,
     /// The laser's field of view for every run, degrees (default: the scenarios' 180,
     /// seed 004's scanner), to measure what a wider scanner sees in time.
     #[arg(long, value_name = "DEG")]
@@ -97,6 +101,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     {
         bail!("--fov {fov}: the field of view must be in (0, 360] degrees");
     }
+    let patience = args.people_patience.unwrap_or(sim::PEOPLE_PATIENCE);
+    if !(patience >= 0.0 && patience.is_finite()) {
+        bail!("--people-patience {patience}: must be finite and >= 0 seconds");
+    }
     let mut controllers = Vec::new();
     for c in &args.controllers {
         let Some(local) = LocalPlanner::from_name(c, None) else {
@@ -122,7 +130,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .build()
         .context("starting the worker threads")?;
     if args.soak > 0 {
-        soak(args, &controllers, &soak_models, &pool, &out)?;
+        soak(args, &controllers, &soak_models, patience, &pool, &out)?;
     }
     if args.runs == 0 {
         return Ok(());
@@ -164,6 +172,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 if let Some(fov) = args.fov {
                     sc.laser.fov_deg = fov;
                 }
+                sc.navigation.people_patience = patience;
                 let world = sc
                     .build_world(std::path::Path::new(&sc.name))
                     .with_context(|| format!("building {}", sc.name))?;
@@ -284,6 +293,7 @@ fn soak(
     args: &Args,
     controllers: &[(&str, LocalPlanner)],
     models: &[(&str, PeopleModelKind)],
+    patience: f64,
     pool: &rayon::ThreadPool,
     out: &std::path::Path,
 ) -> anyhow::Result<()> {
@@ -315,6 +325,7 @@ fn soak(
                         if let Some(fov) = args.fov {
                             sc.laser.fov_deg = fov;
                         }
+                        sc.navigation.people_patience = patience;
                     },
                 );
                 let wall = t0.elapsed().as_secs_f64();

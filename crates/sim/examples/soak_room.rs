@@ -48,6 +48,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // speed (crowds have it from `sim::crowd`), off with NO_MONITOR in the environment.
     if model.is_some() {
         sc.navigation.collision_monitor = Some(sim::CollisionMonitor::default());
+        sc.navigation.people_patience = sim::PEOPLE_PATIENCE;
     }
     if let Ok(f) = std::env::var("FOV") {
         sc.laser.fov_deg = f.parse()?;

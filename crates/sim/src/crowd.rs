@@ -108,6 +108,9 @@ const LOBBY: f64 = 2.0;
 const CORRIDOR: (f64, f64) = (20.0, 3.0);
 /// Wall thickness, m.
 const WALL: f64 = 0.2;
+/// How long the robot of a crowd scenario waits for people before their blocks count
+/// as failures, s (`navigation.people_patience`).
+pub const PEOPLE_PATIENCE: f64 = 30.0;
 
 /// The crowd scenario `index` of a set seeded `seed`: `flow` at `density` people per
 /// 100 m^2, people under social forces who see the robot (set `people_model` for
@@ -143,6 +146,7 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
         people_model: PeopleModelKind::SocialForce(SocialForceParams::default()),
         navigation: Navigation {
             collision_monitor: Some(CollisionMonitor::default()),
+            people_patience: PEOPLE_PATIENCE,
             ..Navigation::default()
         },
         ..Scenario::generated(

@@ -113,8 +113,8 @@ pub use costmap::{
     rasterize,
 };
 pub use crowd::{
-    CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, SPEED_LIMITS, TRACK_GATE, WALKING_SPEED,
-    arrivals_alone, crowd, measure,
+    CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, PEOPLE_PATIENCE, SPEED_LIMITS, TRACK_GATE,
+    WALKING_SPEED, arrivals_alone, crowd, measure,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PLANNER_STREAM, Sim,

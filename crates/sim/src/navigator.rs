@@ -10,7 +10,9 @@
 //!   the laser sees now);
 //! - a failed plan, or a new block before the robot made `progress_reset` metres on the
 //!   last plan, counts as a failure; after one the navigator waits `retry_period` before
-//!   planning again, and after `max_failures` failures in a row it gives up.
+//!   planning again, and after `max_failures` failures in a row it gives up; with
+//!   `people_patience`, blocks while tracked people are near are waits, not failures,
+//!   for up to that long.
 //!
 //! The navigator owns nothing of the world: an explorer can hand it goals one after the
 //! other ([`Navigator::set_goal`]) and read its state.
@@ -41,6 +43,11 @@ pub struct Navigation {
     pub retry_period: f64,
     /// Progress on a plan that resets the failure count, m (0.5).
     pub progress_reset: f64,
+    /// How long the robot waits for people, s (0: not at all, as `move_base`): while a
+    /// tracked mover is within `blocked_lookahead` of the robot, a block or a failed plan
+    /// is not counted as a failure (people walk on; the robot stops, waits
+    /// `retry_period` and plans again), for up to this long in a row without progress.
+    pub people_patience: f64,
     /// The collision monitor between the stack and the wheels (none by default, as in
     /// the paper's `move_base`): `Some(())` for [`CollisionMonitor`]'s defaults.
     pub collision_monitor: Option<CollisionMonitor>,
@@ -54,6 +61,7 @@ impl Default for Navigation {
             max_failures: 8,
             retry_period: 1.0,
             progress_reset: 0.5,
+            people_patience: 0.0,
             collision_monitor: None,
         }
     }
@@ -121,6 +129,8 @@ pub struct Navigator {
     tight_costmap: CostmapCache,
     tight_scratch: PlanScratch,
     tight_plans: u32,
+    /// Since when the robot has been waiting for people without progress.
+    waiting_since: Option<u64>,
 }
 
 impl Navigator {
@@ -155,6 +165,7 @@ impl Navigator {
             tight_costmap: CostmapCache::default(),
             tight_scratch: PlanScratch::default(),
             tight_plans: 0,
+            waiting_since: None,
             rng,
         }
     }
@@ -163,6 +174,7 @@ impl Navigator {
     pub fn set_goal(&mut self, goal: Point2) {
         self.goal = goal;
         self.state = NavState::Planning;
+        self.waiting_since = None;
         self.failures = 0;
         self.path.clear();
     }
@@ -219,6 +231,31 @@ impl Navigator {
             s += step;
         }
         false
+    }
+
+    /// A block or a failed plan at `here`: a failure, unless people are about and the
+    /// robot has not yet waited `people_patience` for them.
+    fn fail_or_wait(
+        &mut self,
+        here: Point2,
+        movers: &[Mover],
+        tick: u64,
+        ticks_per_s: f64,
+        events: &mut Vec<NavEvent>,
+    ) {
+        let reach = self.params.blocked_lookahead;
+        let people = movers
+            .iter()
+            .any(|m| (m.center - here).norm() - m.radius <= reach);
+        if self.params.people_patience > 0.0 && people {
+            let since = *self.waiting_since.get_or_insert(tick);
+            if (tick - since) as f64 <= self.params.people_patience * ticks_per_s {
+                self.state = NavState::Planning;
+                self.retry_at = tick + (self.params.retry_period * ticks_per_s).round() as u64;
+                return;
+            }
+        }
+        self.fail(tick, ticks_per_s, events);
     }
 
     fn fail(&mut self, tick: u64, ticks_per_s: f64, events: &mut Vec<NavEvent>) {
@@ -319,7 +356,7 @@ impl Navigator {
                     self.state = NavState::Following;
                 }
                 None => {
-                    self.fail(tick, ticks_per_s, events);
+                    self.fail_or_wait(here, movers, tick, ticks_per_s, events);
                     return self.brake(prev);
                 }
             }
@@ -327,9 +364,10 @@ impl Navigator {
         // Following.
         if (here - self.planned_at).norm() >= self.params.progress_reset {
             self.failures = 0;
+            self.waiting_since = None;
         }
         if self.controller.stops_for_blocked_path() && self.path_blocked(here, memory, tick) {
-            return self.blocked(here, prev, tick, ticks_per_s, events);
+            return self.blocked(here, prev, movers, tick, ticks_per_s, events);
         }
         let (cmd, k) = self.controller.follow(&FollowInput {
             robot: &self.robot,
@@ -343,7 +381,7 @@ impl Navigator {
         });
         self.progress = k;
         if cmd.obstructed {
-            return self.blocked(here, prev, tick, ticks_per_s, events);
+            return self.blocked(here, prev, movers, tick, ticks_per_s, events);
         }
         cmd.twist
     }
@@ -352,6 +390,7 @@ impl Navigator {
         &mut self,
         here: Point2,
         prev: Twist,
+        movers: &[Mover],
         tick: u64,
         ticks_per_s: f64,
         events: &mut Vec<NavEvent>,
@@ -359,7 +398,7 @@ impl Navigator {
         events.push(NavEvent::Stop);
         if (here - self.planned_at).norm() < self.params.progress_reset && self.plans > 1 {
             // Blocked again before getting anywhere on the new plan.
-            self.fail(tick, ticks_per_s, events);
+            self.fail_or_wait(here, movers, tick, ticks_per_s, events);
             if self.state == NavState::Failed {
                 return self.brake(prev);
             }

@@ -128,6 +128,7 @@ impl Check<'_> {
         self.positive("navigation.blocked_lookahead", n.blocked_lookahead)?;
         self.non_negative("navigation.retry_period", n.retry_period)?;
         self.non_negative("navigation.progress_reset", n.progress_reset)?;
+        self.non_negative("navigation.people_patience", n.people_patience)?;
         if let Some(m) = &n.collision_monitor {
             self.non_negative("navigation.collision_monitor.person_speed", m.person_speed)?;
             self.non_negative("navigation.collision_monitor.delay", m.delay)?;

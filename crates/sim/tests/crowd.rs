@@ -152,6 +152,29 @@ fn the_collision_monitor_stops_before_a_blind_walker_arrives() {
     assert!(without.trace.summary.contacts_at_fault > 0);
 }
 
+/// People who see the robot crowd round it in the corridor (crowd 2026 / 2, social
+/// forces, regulated pure pursuit): counted as failures, their blocks make the navigator
+/// give up after eight in a row; waited for (the crowd scenarios' `people_patience`),
+/// they walk on and the robot arrives.
+#[test]
+fn the_robot_waits_for_people_instead_of_giving_up() {
+    let mut sc = sim::crowd(CrowdFlow::Corridor, 1.0, 2026, 2);
+    assert_eq!(sc.navigation.people_patience, sim::PEOPLE_PATIENCE);
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let waited = sim::run(&sc, &world, 2, GlobalPlanner::Dijkstra);
+    assert!(waited.trace.summary.reached);
+    sc.navigation.people_patience = 0.0;
+    let counted = sim::run(&sc, &world, 2, GlobalPlanner::Dijkstra);
+    assert!(!counted.trace.summary.reached);
+    assert!(
+        counted
+            .trace
+            .events
+            .iter()
+            .any(|e| e.kind == sim::EventKind::Nav(sim::NavEvent::GaveUp))
+    );
+}
+
 /// The crowd scenarios in `scenarios/sim/` are the generator's, unchanged: written by
 /// `cargo xtask crowd --write-scenarios scenarios/sim`, read back equal.
 #[test]
