@@ -510,7 +510,11 @@ impl<'w> Sim<'w> {
                     )
                 }
             };
-            if let Some(m) = &self.scenario.navigation.collision_monitor {
+            // The monitor guards the navigation stack's commands; a caller that drives
+            // the robot itself (`sensing_only`, no memory of hits) gets its own.
+            if let Some(m) = &self.scenario.navigation.collision_monitor
+                && !self.sensing_only
+            {
                 let robot = &self.scenario.robot;
                 let controller = &self.nav.controller;
                 self.twist = m.limit(
