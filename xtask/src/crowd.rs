@@ -71,6 +71,16 @@ pub struct Args {
     pub soak_models: Vec<String>,
 }
 
+/// The robot of every crowd and soak run: the collision monitor unless `--no-monitor`,
+/// the patience with people, the laser's `--fov`.
+fn robot_options(args: &Args, patience: f64, sc: &mut sim::Scenario) {
+    sc.navigation.collision_monitor = (!args.no_monitor).then(sim::CollisionMonitor::default);
+    sc.navigation.people_patience = patience;
+    if let Some(fov) = args.fov {
+        sc.laser.fov_deg = fov;
+    }
+}
+
 /// Walking speeds of the soak at walking speed, m/s (issue 29).
 const SOAK_SPEEDS: (f64, f64) = (0.8, 1.6);
 
@@ -166,13 +176,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 let mut sc = sim::crowd(flow, density, args.seed, k);
                 sc.local_planner = local;
                 sc.people_model = kind;
-                if args.no_monitor {
-                    sc.navigation.collision_monitor = None;
-                }
-                if let Some(fov) = args.fov {
-                    sc.laser.fov_deg = fov;
-                }
-                sc.navigation.people_patience = patience;
+                robot_options(args, patience, &mut sc);
                 let world = sc
                     .build_world(std::path::Path::new(&sc.name))
                     .with_context(|| format!("building {}", sc.name))?;
@@ -320,12 +324,7 @@ fn soak(
                     |sc| {
                         sc.local_planner = local;
                         sc.people_model = kind;
-                        sc.navigation.collision_monitor =
-                            (!args.no_monitor).then(sim::CollisionMonitor::default);
-                        if let Some(fov) = args.fov {
-                            sc.laser.fov_deg = fov;
-                        }
-                        sc.navigation.people_patience = patience;
+                        robot_options(args, patience, sc);
                     },
                 );
                 let wall = t0.elapsed().as_secs_f64();

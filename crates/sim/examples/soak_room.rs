@@ -6,14 +6,27 @@
 //! With `CROWD=FLOW:DENSITY` in the environment the run is the crowd scenario
 //! `sim::crowd(FLOW, DENSITY, SEED, INDEX)` instead (as `cargo xtask crowd` runs it).
 //! With `NO_MONITOR` in the environment the robot runs without its collision monitor.
-/// Everyone's centre at every tick.
+/// Everyone's centre at every tick, and at control ticks the robot's command and the
+/// distance from its centre to the nearest remembered hit ahead that the prior map does
+/// not explain (what the collision monitor reads; within 1 m).
 #[derive(Default)]
-struct Seen(Vec<(f64, Vec<hyplan_core::Point2>)>);
+struct Seen(
+    Vec<(f64, Vec<hyplan_core::Point2>)>,
+    Vec<(f64, f64, Option<f64>)>,
+);
 
 impl sim::Observer for Seen {
     fn ticked(&mut self, sim: &sim::Sim<'_>, info: &sim::TickInfo<'_>) {
         self.0
             .push((info.t, sim.people().iter().map(|d| d.center).collect()));
+        if info.controlled {
+            let pose = sim.pose();
+            let ahead = nalgebra::Vector2::new(pose.phi.cos(), pose.phi.sin());
+            let near = sim
+                .memory()
+                .nearest_loose_ahead(sim.here(), ahead, 1.0, info.tick);
+            self.1.push((info.t, sim.twist().v, near));
+        }
     }
 }
 
@@ -81,6 +94,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row.v,
             row.omega
         );
+        // What the monitor read at the control ticks of the last half second.
+        for (t, v, near) in seen.1.iter().filter(|(t, ..)| *t > c.t - 0.5 && *t <= c.t) {
+            let near = near.map_or("-".to_string(), |d| format!("{d:.3}"));
+            println!("  t {t:.2}: command v {v:.3}, nearest hit ahead off the map {near} m");
+        }
         // The person's route position is where they are only for scripted people.
         if let Some(n) = c.with.strip_prefix("person ") {
             let n: usize = n.parse()?;

@@ -161,23 +161,10 @@ impl ObstacleMemory {
         radius: f64,
         tick: u64,
     ) -> Option<f64> {
-        let mut best: Option<f64> = None;
-        for c in self.cells_near(p, radius, tick) {
-            if self.explained[c] {
-                continue;
-            }
-            if let Some(q) = self.remembered(c, tick) {
-                let d = (q - p).norm();
-                if d <= radius
-                    && (q - p).dot(&ahead) >= 0.0
-                    && best.is_none_or(|b| d < b)
-                    && !self.cleared(c, q, tick)
-                {
-                    best = Some(d);
-                }
-            }
-        }
-        best
+        self.nearest_where(p, radius, tick, |c, q| {
+            !self.explained[c] && (q - p).dot(&ahead) >= 0.0
+        })
+        .map(|(d, _)| d)
     }
 
     /// Records the hits of a scan taken at `tick`.
@@ -291,11 +278,27 @@ impl ObstacleMemory {
     /// The nearest remembered obstacle within `radius` of `p` at `tick`.
     #[must_use]
     pub fn nearest_within(&self, p: Point2, radius: f64, tick: u64) -> Option<(f64, Point2)> {
+        self.nearest_where(p, radius, tick, |_, _| true)
+    }
+
+    /// The nearest remembered obstacle within `radius` of `p` at `tick` whose cell and
+    /// point pass `keep`.
+    fn nearest_where(
+        &self,
+        p: Point2,
+        radius: f64,
+        tick: u64,
+        keep: impl Fn(usize, Point2) -> bool,
+    ) -> Option<(f64, Point2)> {
         let mut best: Option<(f64, Point2)> = None;
         for c in self.cells_near(p, radius, tick) {
             if let Some(q) = self.remembered(c, tick) {
                 let d = (q - p).norm();
-                if d <= radius && best.is_none_or(|b| d < b.0) && !self.cleared(c, q, tick) {
+                if d <= radius
+                    && best.is_none_or(|b| d < b.0)
+                    && keep(c, q)
+                    && !self.cleared(c, q, tick)
+                {
                     best = Some((d, q));
                 }
             }

@@ -435,6 +435,13 @@ impl<'w> Sim<'w> {
         &self.people
     }
 
+    /// The laser hits the robot remembers (what the controllers and the collision
+    /// monitor read).
+    #[must_use]
+    pub const fn memory(&self) -> &ObstacleMemory {
+        &self.memory
+    }
+
     /// The laser.
     #[must_use]
     pub const fn laser(&self) -> &LaserModel {
