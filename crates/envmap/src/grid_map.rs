@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 
 use hyplan_core::{Bounds, Point2, Zone};
 
-use crate::{CellFrame, DistanceField, Mask, distance_transform};
+use crate::{CellBits, CellFrame, DistanceField, Mask, distance_transform};
 
 /// A grid map whose cells are [`Zone::Free`], [`Zone::Risk`] or [`Zone::Forbidden`].
 ///
@@ -56,6 +56,9 @@ pub struct GridMap {
     /// The stride tables of those fields ([`DistanceField::strides`]), made on first use;
     /// reset when zones change.
     stride_tables: [OnceLock<Vec<u8>>; 2],
+    /// Those cells as packed bits ([`CellBits`]), made on first use; reset when zones
+    /// change.
+    cell_bits: [OnceLock<CellBits>; 2],
     /// Cells swept by edge checks since the zones last changed: past a share of the map,
     /// the checks make the stride table ([`crate::workspace`]).
     pub(crate) edge_work: crate::workspace::EdgeWork,
@@ -134,6 +137,7 @@ impl GridMap {
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
             stride_tables: Default::default(),
+            cell_bits: Default::default(),
             edge_work: Default::default(),
             connectivity: Default::default(),
         })
@@ -172,6 +176,7 @@ impl GridMap {
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
             stride_tables: Default::default(),
+            cell_bits: Default::default(),
             edge_work: Default::default(),
             connectivity: Default::default(),
         }
@@ -258,6 +263,7 @@ impl GridMap {
     pub fn zones_mut(&mut self) -> &mut [Zone] {
         self.clearance_fields = Default::default();
         self.stride_tables = Default::default();
+        self.cell_bits = Default::default();
         self.edge_work = Default::default();
         self.connectivity = Default::default();
         &mut self.zones
@@ -284,6 +290,7 @@ impl GridMap {
         if i < self.width && j < self.height {
             self.clearance_fields = Default::default();
             self.stride_tables = Default::default();
+            self.cell_bits = Default::default();
             self.edge_work = Default::default();
             self.connectivity = Default::default();
             self.zones[j * self.width + i] = zone;
@@ -395,6 +402,27 @@ impl GridMap {
         let k = cache_slot(zone)?;
         let field = self.distance_from(zone)?;
         Some(self.stride_tables[k].get_or_init(|| field.strides()))
+    }
+
+    /// The cells whose zone is at least `zone` as packed bits by rows and by columns
+    /// ([`CellBits`]), made once and cached (`None` for `Zone::Free`). Ray marches scan
+    /// the last cells before an obstacle with them, a row or a column at a time.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use hyplan_core::Zone;
+    /// let map = GridMap::from_ascii("..#..#")?;
+    /// let bits = map.bits_from(Zone::Forbidden).unwrap();
+    /// assert_eq!(bits.first_in_row(0, 3, 5), Some(5));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn bits_from(&self, zone: Zone) -> Option<&CellBits> {
+        let k = cache_slot(zone)?;
+        Some(
+            self.cell_bits[k]
+                .get_or_init(|| CellBits::from_mask(&Mask::from_zones_at_least(self, zone))),
+        )
     }
 
     /// The blocked cells' stride table if it is made already

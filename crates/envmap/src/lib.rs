@@ -13,7 +13,8 @@
 //!   touches, corners included (cells are closed; [`TOUCH_TOLERANCE`] is the rounding
 //!   margin); [`GridMap::clearance_at`] (also `Workspace::clearance`):
 //!   a lower bound on the distance to the nearest blocked cell, from a cached exact EDT.
-//! - [`Mask`]: a binary grid in map cells; [`Picture`]: an 8-bit raster, top row first.
+//! - [`Mask`]: a binary grid in map cells; [`CellBits`]: one packed by rows and columns
+//!   ([`GridMap::bits_from`]); [`Picture`]: an 8-bit raster, top row first.
 //! - [`InputFrame`]: the coordinates users give for a loaded map (cells y down for
 //!   pictures and `.map` files, metres y up for ROS maps).
 //! - [`CellFrame`]: where any grid's cells lie in the world (the one metres-to-cells
@@ -83,6 +84,7 @@
 //! - `serde`: derives for the plain data types.
 
 mod binarize;
+mod cell_bits;
 mod cell_frame;
 mod cell_walk;
 mod components;
@@ -106,6 +108,7 @@ mod workspace;
 mod zones;
 
 pub use binarize::binarize;
+pub use cell_bits::CellBits;
 pub use cell_frame::CellFrame;
 pub use cell_walk::CellWalk;
 pub use components::{Component, Labels, components, label_components};
