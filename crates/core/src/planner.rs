@@ -20,8 +20,9 @@ pub struct PlannerInfo {
 /// A planner behind a pointer, as the harness and the CLI hold it (`Box<dyn Planner>`).
 ///
 /// Each planner crate implements it by forwarding to the struct's own generic
-/// `plan(&self, workspace, query, rng)`. Nothing survives between calls: the planner is a
-/// parameter struct, and everything it builds comes back inside the [`Plan`].
+/// `plan(&self, workspace, query, rng)`. Nothing survives between calls in the planner: it
+/// is a parameter struct, and everything it builds comes back inside the [`Plan`] (a
+/// workspace may keep what a planner prepared from it: [`Planner::prepare`]).
 pub trait Planner: Send + Sync {
     /// The planner's name and capabilities.
     fn info(&self) -> PlannerInfo;
@@ -37,4 +38,17 @@ pub trait Planner: Send + Sync {
         query: &Query,
         rng: &mut dyn RngCore,
     ) -> Result<Plan, PlanError>;
+
+    /// Prepares `ws` once for this planner's calls, where the workspace keeps what is
+    /// made (a grid map keeps a grid search's tables), so that later [`plan`](Self::plan)
+    /// calls cost their search alone. A caller that times queries calls it first and
+    /// reports its time apart; `plan` works without it. Nothing to do by default.
+    ///
+    /// # Errors
+    ///
+    /// As [`plan`](Self::plan) for a workspace this planner refuses.
+    fn prepare(&self, ws: &dyn Workspace) -> Result<(), PlanError> {
+        let _ = ws;
+        Ok(())
+    }
 }

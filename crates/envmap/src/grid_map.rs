@@ -65,6 +65,23 @@ pub struct GridMap {
     /// Components of the passable cells and the runs the "no path" proof needs, computed
     /// on the first check ([`crate::connectivity`]); reset when zones change.
     connectivity: crate::connectivity::Cache,
+    /// What callers prepared from the cells and handed back to be kept for their next
+    /// call ([`keep`](GridMap::keep)); dropped when zones change, empty in a clone.
+    kept: Kept,
+}
+
+/// How many values a map keeps for its callers ([`GridMap::keep`]).
+pub const KEPT_MAX: usize = 2;
+
+/// The values kept with a map, of any type.
+#[derive(Default)]
+struct Kept(std::sync::Mutex<Vec<Box<dyn std::any::Any + Send>>>);
+
+impl Clone for Kept {
+    /// A clone keeps nothing: what was prepared belongs to the original's cells.
+    fn clone(&self) -> Self {
+        Self::default()
+    }
 }
 
 impl PartialEq for GridMap {
@@ -140,6 +157,7 @@ impl GridMap {
             cell_bits: Default::default(),
             edge_work: Default::default(),
             connectivity: Default::default(),
+            kept: Kept::default(),
         })
     }
 
@@ -179,6 +197,7 @@ impl GridMap {
             cell_bits: Default::default(),
             edge_work: Default::default(),
             connectivity: Default::default(),
+            kept: Kept::default(),
         }
         .with_frame(resolution, origin)
     }
@@ -266,6 +285,7 @@ impl GridMap {
         self.cell_bits = Default::default();
         self.edge_work = Default::default();
         self.connectivity = Default::default();
+        self.kept = Kept::default();
         &mut self.zones
     }
 
@@ -293,6 +313,7 @@ impl GridMap {
             self.cell_bits = Default::default();
             self.edge_work = Default::default();
             self.connectivity = Default::default();
+            self.kept = Kept::default();
             self.zones[j * self.width + i] = zone;
         }
     }
@@ -423,6 +444,52 @@ impl GridMap {
             self.cell_bits[k]
                 .get_or_init(|| CellBits::from_mask(&Mask::from_zones_at_least(self, zone))),
         )
+    }
+
+    /// Keeps `value`, something a caller prepared from this map's cells (a planner's
+    /// search structures), for a later [`take_kept`](GridMap::take_kept): so that a query
+    /// through an interface that hands over only the map (`hyplan_core::Planner`) costs
+    /// what it searches, not the preparation again. Changing a zone drops what is kept;
+    /// so does a clone, which keeps nothing. At most [`KEPT_MAX`] values are kept (the
+    /// oldest goes first), as each may be as large as the map.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// let mut map = GridMap::from_ascii("...")?;
+    /// map.keep(vec![1u8, 2, 3]);
+    /// assert_eq!(map.take_kept(|v: &Vec<u8>| v.len() == 3), Some(vec![1, 2, 3]));
+    /// assert_eq!(map.take_kept(|_: &Vec<u8>| true), None); // taken
+    /// map.keep(7u32);
+    /// map.set_cell_zone(0, 0, hyplan_core::Zone::Forbidden);
+    /// assert_eq!(map.take_kept(|_: &u32| true), None); // the cells changed
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn keep<T: std::any::Any + Send>(&self, value: T) {
+        // A poisoned lock only means another thread panicked while holding it; the list
+        // itself is always whole.
+        let mut kept = self
+            .kept
+            .0
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if kept.len() >= KEPT_MAX {
+            kept.remove(0);
+        }
+        kept.push(Box::new(value));
+    }
+
+    /// Takes back the most recently kept value of type `T` that `fits` accepts
+    /// ([`keep`](GridMap::keep)), if any.
+    pub fn take_kept<T: std::any::Any + Send>(&self, fits: impl Fn(&T) -> bool) -> Option<T> {
+        let mut kept = self
+            .kept
+            .0
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let k = kept
+            .iter()
+            .rposition(|v| v.downcast_ref::<T>().is_some_and(&fits))?;
+        kept.remove(k).downcast::<T>().ok().map(|v| *v)
     }
 
     /// The blocked cells' stride table if it is made already

@@ -47,7 +47,8 @@
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
 //! - [`demo_room`]: a synthetic top-view room picture for examples and benchmarks.
-//! - [`disconnection`], [`disconnection_hopping`] ([`Moves`]): whether start and goal are
+//! - [`disconnection`], [`disconnection_hopping`] ([`Moves`]), [`prepare_disconnection`]:
+//!   whether start and goal are
 //!   connected in the cells a planner may use, and if not why (an obstacle wall, or the
 //!   risk band and the largest safety radius that connects them); their slow exact
 //!   references for tests, [`disconnection_reference`], [`disconnection_hopping_reference`].
@@ -114,7 +115,7 @@ pub use cell_walk::CellWalk;
 pub use components::{Component, Labels, components, label_components};
 pub use connectivity::{
     Moves, disconnection, disconnection_hopping, disconnection_hopping_reference,
-    disconnection_reference,
+    disconnection_reference, prepare_disconnection,
 };
 pub use demo::demo_room;
 pub use edt::{DistanceField, distance_transform};
@@ -127,7 +128,7 @@ pub use generate::{
     Generated, HardMap, SUITE_BAND, SUITE_GOAL_RADIUS, bug_trap, clutter, floor_plan, maze,
     narrow_passage, random_query, rooms, spiral, with_risk_band,
 };
-pub use grid_map::{GridError, GridMap};
+pub use grid_map::{GridError, GridMap, KEPT_MAX};
 pub use inflation::{INSCRIBED_INFLATED_OBSTACLE, Inflation, LETHAL_OBSTACLE};
 pub use io::image::{
     FORBIDDEN_COLOUR, RECTANGLE_COLOUR, RISK_COLOUR, SAFE_COLOUR, decode_picture, read_picture,

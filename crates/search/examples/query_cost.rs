@@ -1,7 +1,10 @@
 //! What a short grid query costs after the map's one-time preparation, on a 512 x 512 and a
 //! 4096 x 4096 map of rooms: the preparation is paid once per map, a query what it touches
 //! (issue 31: a query that expands k nodes costs O(k), not O(map)). Jump point search, A*
-//! and Dijkstra, each on its own prepared search.
+//! and Dijkstra, each on its own prepared search; then the same through the `Planner`
+//! trait (as `hyplan plan`, the registry and Python call them), after `Planner::prepare`
+//! has left the search with the map: the query from world point (10.5, 11.5) to (13.5,
+//! 12.5), its time the whole `plan` call (checks, search and path).
 //!
 //! ```sh
 //! cargo run --release -p search --example query_cost
@@ -10,8 +13,11 @@
 use std::time::Instant;
 
 use envmap::GridMap;
-use hyplan_core::Zone;
-use search::{GridOptions, GridPath, GridSearch, GridSearchError, JumpPointSearch};
+use hyplan_core::{Goal, Planner, Point2, Query, Zone};
+use search::{
+    GridAstar, GridDijkstra, GridOptions, GridPath, GridSearch, GridSearchError, Jps,
+    JumpPointSearch,
+};
 
 /// The first query's time and the fastest of 1,000 more, microseconds, and the first path.
 fn time(
@@ -67,6 +73,44 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 path.cost
             );
         }
+        let query = Query::new(
+            Point2::new(10.5, 11.5),
+            Goal::Point(Point2::new(13.5, 12.5)),
+        );
+        let planners: [(&str, &dyn Planner); 3] = [
+            ("jps (Planner)", &Jps::default()),
+            ("astar (Planner)", &GridAstar::default()),
+            ("dijkstra (Planner)", &GridDijkstra::default()),
+        ];
+        let mut rng = rand::rng();
+        for (name, planner) in planners {
+            let t = Instant::now();
+            planner.prepare(&map)?;
+            let prepare = t.elapsed();
+            let (first_us, best, plan) = time_plan(|| planner.plan(&map, &query, &mut rng))?;
+            println!(
+                "{n}x{n},{name},{:.1},{first_us:.1},{best:.2},{},{:.4}",
+                prepare.as_secs_f64() * 1e3,
+                plan.stats.expansions,
+                plan.cost
+            );
+        }
     }
     Ok(())
+}
+
+/// [`time`] for a planner's call.
+fn time_plan(
+    mut plan: impl FnMut() -> Result<hyplan_core::Plan, hyplan_core::PlanError>,
+) -> Result<(f64, f64, hyplan_core::Plan), hyplan_core::PlanError> {
+    let t = Instant::now();
+    let first = plan()?;
+    let first_us = t.elapsed().as_secs_f64() * 1e6;
+    let mut best = f64::MAX;
+    for _ in 0..1000 {
+        let t = Instant::now();
+        std::hint::black_box(plan()?);
+        best = best.min(t.elapsed().as_secs_f64() * 1e6);
+    }
+    Ok((first_us, best, first))
 }

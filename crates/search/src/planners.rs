@@ -4,7 +4,7 @@ use std::time::Instant;
 
 use envmap::GridMap;
 use hyplan_core::{
-    Budget, Goal, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace,
+    Budget, Goal, Plan, PlanError, PlanStats, Planner, PlannerInfo, Point2, Query, Workspace, Zone,
 };
 use rand_core::RngCore;
 
@@ -104,6 +104,12 @@ macro_rules! grid_planner {
                 rng: &mut dyn RngCore,
             ) -> Result<Plan, PlanError> {
                 $ty::plan(self, GridMap::of_workspace(ws, $name)?, query, rng)
+            }
+
+            /// Prepares the grid search on the map and keeps it there ([`GridMap::keep`]):
+            /// later plans on the map (until its zones change) skip the preparation.
+            fn prepare(&self, ws: &dyn Workspace) -> Result<(), PlanError> {
+                prepare_grid(GridMap::of_workspace(ws, $name)?, self.options, self.algo())
             }
         }
     };
@@ -273,11 +279,7 @@ fn plan_on_grid(
     budget.validate()?;
     query.validate(map)?;
     // A flood fill proves "no path", with its cause, faster than exhausting the search.
-    let moves = match (algo, options.connectivity, options.corner_cutting) {
-        (Algo::Astar | Algo::Dijkstra, crate::Connectivity::Eight, true) => envmap::Moves::Eight,
-        _ => envmap::Moves::Four,
-    };
-    if let Some(cause) = envmap::disconnection(map, query, moves) {
+    if let Some(cause) = envmap::disconnection(map, query, moves(algo, options)) {
         return Err(PlanError::Disconnected {
             cause,
             stats: PlanStats {
@@ -396,9 +398,50 @@ fn plan_on_grid(
     })
 }
 
-/// Prepares the grid search `algo` on `map` with `limit` (deadline, expansions) and runs it
-/// from `start` to `goal` (the inner result). The outer error is the preparation's: the
-/// move rules rule jump point search out, the map is too large, or the deadline passed.
+/// The moves of `algo` under `options`, for the connectivity check.
+fn moves(algo: Algo, options: GridOptions) -> envmap::Moves {
+    match (algo, options.connectivity, options.corner_cutting) {
+        (Algo::Astar | Algo::Dijkstra, crate::Connectivity::Eight, true) => envmap::Moves::Eight,
+        _ => envmap::Moves::Four,
+    }
+}
+
+/// A search prepared from a map's cells, kept with the map between planner calls
+/// ([`GridMap::keep`]): it fits the map while the map keeps it (the map drops it when
+/// its zones change) for the same `blocked_from` and options.
+struct Kept<S> {
+    blocked_from: Zone,
+    options: GridOptions,
+    search: S,
+}
+
+/// The search kept with `map` for `options`, or a new one from `make`; handed to `run`,
+/// then kept with the map for the next call (also when `run` found no path).
+fn with_kept<S: Send + 'static, T>(
+    map: &GridMap,
+    options: GridOptions,
+    make: impl FnOnce() -> Result<S, JpsError>,
+    run: impl FnOnce(&mut S) -> T,
+) -> Result<T, JpsError> {
+    let blocked_from = map.blocked_from;
+    let fits = |k: &Kept<S>| k.blocked_from == blocked_from && k.options == options;
+    let mut search = match map.take_kept(fits) {
+        Some(kept) => kept.search,
+        None => make()?,
+    };
+    let found = run(&mut search);
+    map.keep(Kept {
+        blocked_from,
+        options,
+        search,
+    });
+    Ok(found)
+}
+
+/// Runs the grid search `algo` on `map` with `limit` (deadline, expansions) from `start`
+/// to `goal` (the inner result), on the search kept with the map from an earlier call or
+/// on one prepared now. The outer error is the preparation's: the move rules rule jump
+/// point search out, the map is too large, or the deadline passed.
 fn search_cells(
     map: &GridMap,
     options: GridOptions,
@@ -407,21 +450,46 @@ fn search_cells(
     start: (usize, usize),
     goal: (usize, usize),
 ) -> Result<Result<GridPath, GridSearchError>, JpsError> {
-    let grid = || -> Result<GridSearch, JpsError> {
-        let mut search = GridSearch::new_until(map, options, deadline)?;
-        search.set_limit(max_expansions, deadline);
-        Ok(search)
-    };
-    Ok(match algo {
-        Algo::Astar => grid()?.astar(start, goal),
-        Algo::Dijkstra => grid()?.dijkstra(start, goal),
-        Algo::ThetaStar => grid()?.theta_star(map, start, goal),
-        Algo::LazyThetaStar => grid()?.lazy_theta_star(map, start, goal),
-        Algo::Jps => {
-            let mut search = JumpPointSearch::new_until(map, options, deadline)?;
+    if let Algo::Jps = algo {
+        return with_kept(
+            map,
+            options,
+            || JumpPointSearch::new_until(map, options, deadline),
+            |search: &mut JumpPointSearch| {
+                search.set_limit(max_expansions, deadline);
+                search.search(start, goal)
+            },
+        );
+    }
+    with_kept(
+        map,
+        options,
+        || Ok(GridSearch::new_until(map, options, deadline)?),
+        |search: &mut GridSearch| {
             search.set_limit(max_expansions, deadline);
-            search.search(start, goal)
-        }
+            match algo {
+                Algo::Astar => search.astar(start, goal),
+                Algo::Dijkstra => search.dijkstra(start, goal),
+                Algo::ThetaStar => search.theta_star(map, start, goal),
+                Algo::LazyThetaStar | Algo::Jps => search.lazy_theta_star(map, start, goal),
+            }
+        },
+    )
+}
+
+/// Prepares what a plan of `algo` on `map` reads first: the connectivity check's
+/// components (cached in the map) and the grid search (kept with the map,
+/// [`GridMap::keep`]), so that the next plan on it does not.
+fn prepare_grid(map: &GridMap, options: GridOptions, algo: Algo) -> Result<(), PlanError> {
+    envmap::prepare_disconnection(map, moves(algo, options));
+    let kept = match algo {
+        Algo::Jps => with_kept(map, options, || JumpPointSearch::new(map, options), |_| ()),
+        _ => with_kept(map, options, || Ok(GridSearch::new(map, options)?), |_| ()),
+    };
+    kept.map_err(|e| PlanError::InvalidParameter {
+        name: "workspace",
+        value: e.to_string(),
+        reason: "the grid search could not be prepared on this map",
     })
 }
 

@@ -170,3 +170,64 @@ proptest! {
         }
     }
 }
+
+/// One random query on `w x h`: (start, goal) cells from `k`.
+fn cell_query(map: &GridMap, (a, b, c, d): (usize, usize, usize, usize)) -> Query {
+    let (w, h) = (map.width(), map.height());
+    let at = |i: usize, j: usize| map.cell_center(i % w, j % h);
+    Query::new(at(a, b), Goal::Point(at(c, d)))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// Plans through the `Planner` trait on one map, which keeps each planner's prepared
+    /// search between calls (and drops it when a zone changes or is given another
+    /// `blocked_from`), equal plans on a fresh copy of the map each time: what a call
+    /// leaves behind never changes the next one's answer.
+    #[test]
+    fn a_kept_search_plans_as_a_fresh_one(
+        (map, _, _) in scenario(),
+        steps in proptest::collection::vec(
+            (0u8..5, (0usize..24, 0usize..24, 0usize..24, 0usize..24), 0u8..4, any::<bool>(), (0usize..24, 0usize..24)),
+            1..12,
+        ),
+    ) {
+        use hyplan_core::Planner;
+        use search::{GridDijkstra, Jps, LazyThetaStar};
+        let mut map = map;
+        let mut rng = rand::rng();
+        for (which, cells, change, toggle, (ci, cj)) in steps {
+            // Now and then the map changes between plans: a cell, or what blocks.
+            match change {
+                0 => {
+                    let (i, j) = (ci % map.width(), cj % map.height());
+                    let zone = if map.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
+                    map.set_cell_zone(i, j, zone);
+                }
+                1 if toggle => map.set_cell_zone(ci % map.width(), cj % map.height(), Zone::Risk),
+                2 => map.blocked_from = if toggle { Zone::Risk } else { Zone::Forbidden },
+                _ => {}
+            }
+            let planner: Box<dyn Planner> = match which {
+                0 => Box::new(GridAstar::default()),
+                1 => Box::new(GridDijkstra::default()),
+                2 => Box::new(Jps::default()),
+                3 => Box::new(LazyThetaStar::default()),
+                _ => Box::new(ThetaStar::default()),
+            };
+            if toggle {
+                let _ = planner.prepare(&map);
+            }
+            let query = cell_query(&map, cells);
+            let kept = planner.plan(&map, &query, &mut rng).map(|p| p.path).map_err(|e| e.to_string());
+            let fresh = planner.plan(&map.clone(), &query, &mut rng).map(|p| p.path).map_err(|e| e.to_string());
+            // The error texts carry elapsed times; their kind is what must agree.
+            match (&kept, &fresh) {
+                (Ok(a), Ok(b)) => prop_assert_eq!(a, b),
+                (Err(a), Err(b)) => prop_assert_eq!(a.split(':').next(), b.split(':').next()),
+                _ => prop_assert!(false, "kept {:?} fresh {:?}", kept, fresh),
+            }
+        }
+    }
+}

@@ -102,6 +102,25 @@ pub fn disconnection(map: &GridMap, query: &Query, moves: Moves) -> Option<NoPat
     )
 }
 
+/// Computes the components that [`disconnection`] reads first for `moves` on `map` (the
+/// passable cells under its `blocked_from`) and caches them in the map, as its first call
+/// would: a caller that times queries prepares them apart.
+///
+/// ```
+/// use envmap::{GridMap, Moves, disconnection, prepare_disconnection};
+/// use hyplan_core::{Goal, Point2, Query};
+/// let map = GridMap::from_ascii("..#..")?;
+/// prepare_disconnection(&map, Moves::Four);
+/// let query = Query::new(Point2::new(0.5, 0.5), Goal::Point(Point2::new(4.5, 0.5)));
+/// assert!(disconnection(&map, &query, Moves::Four).is_some());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn prepare_disconnection(map: &GridMap, moves: Moves) {
+    if map.blocked_from != Zone::Free {
+        let _ = map.connectivity_cache().below(map, map.blocked_from, moves);
+    }
+}
+
 /// Why no path can join the query's start to its goal for a planner whose nodes stay in
 /// the Free zone while its edges, at most `hop` world units long, may cross the high-risk
 /// band (seed 003's safety-cost RRT*), on a map where only Forbidden blocks; `None` when
