@@ -238,15 +238,14 @@ fn sweep(
     };
     let tol = TOUCH_TOLERANCE;
     // Closed strip [c, c+1] meets [lo, hi] iff ceil(lo) - 1 <= c <= floor(hi).
-    let c_first =
-        clamp_index((lo - tol).ceil() - 1.0, np).max(clamp_index(middle.0.floor() - 1.0, np));
-    let c_last = clamp_index((hi + tol).floor(), np).min(clamp_index(middle.1.floor() + 1.0, np));
+    let c_first = ceil_index(lo - tol, -1, np).max(floor_index(middle.0, -1, np));
+    let c_last = floor_index(hi + tol, 0, np).min(floor_index(middle.1, 1, np));
     for c in c_first..=c_last {
         let s0 = lo.max(c as f64).min(hi);
         let s1 = hi.min(c as f64 + 1.0).max(lo);
         let (qa, qb) = (q_at(s0), q_at(s1));
         let (qlo, qhi) = (qa.min(qb) - tol, qa.max(qb) + tol);
-        for r in clamp_index(qlo.ceil() - 1.0, nq)..=clamp_index(qhi.floor(), nq) {
+        for r in ceil_index(qlo, -1, nq)..=floor_index(qhi, 0, nq) {
             if !visit(c, r) {
                 return false;
             }
@@ -255,15 +254,43 @@ fn sweep(
     true
 }
 
-/// Clamps a (whole-number) float index to `[0, n - 1]`.
-fn clamp_index(x: f64, n: usize) -> usize {
-    if x < 0.0 {
-        0
-    } else if x >= n as f64 {
-        n - 1
-    } else {
-        x as usize
+/// `floor(x) + k` clamped to `[0, n - 1]` (`n > 0`; 0 for NaN). The floor is the truncation, one
+/// lower for a negative `x` with a fraction: the baseline x86-64 target has no rounding
+/// instruction, so `f64::floor` is a libm call, and the sweep makes several a cell.
+#[inline]
+fn floor_index(x: f64, k: i64, n: usize) -> usize {
+    if x.is_nan() {
+        return 0;
     }
+    // Saturating for infinite bounds; exact below 2^53, where every larger float is whole.
+    let t = x as i64;
+    let floor = if (t as f64) > x {
+        t.saturating_sub(1)
+    } else {
+        t
+    };
+    clamp_cell(floor.saturating_add(k), n)
+}
+
+/// `ceil(x) + k` clamped to `[0, n - 1]`, as [`floor_index`].
+#[inline]
+fn ceil_index(x: f64, k: i64, n: usize) -> usize {
+    if x.is_nan() {
+        return 0;
+    }
+    let t = x as i64;
+    let ceil = if (t as f64) < x {
+        t.saturating_add(1)
+    } else {
+        t
+    };
+    clamp_cell(ceil.saturating_add(k), n)
+}
+
+/// `c` clamped to `[0, n - 1]`.
+#[inline]
+fn clamp_cell(c: i64, n: usize) -> usize {
+    usize::try_from(c).map_or(0, |c| c.min(n - 1))
 }
 
 impl GridMap {
@@ -469,6 +496,39 @@ impl Workspace for GridMap {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// libm's floor and ceil, clamped as the sweep had them.
+    fn reference(x: f64, n: usize) -> usize {
+        if x < 0.0 {
+            0
+        } else if x >= n as f64 {
+            n - 1
+        } else {
+            x as usize
+        }
+    }
+
+    proptest! {
+        /// The sweep's index rounding without libm equals libm's, clamped, for any float.
+        #[test]
+        fn index_rounding_equals_floor_and_ceil(
+            x in prop_oneof![
+                -5.0..300.0f64,
+                (-3i64..300).prop_map(|k| k as f64),
+                any::<f64>(),
+                Just(f64::INFINITY),
+                Just(f64::NEG_INFINITY),
+                Just(f64::NAN),
+                Just(-0.0),
+            ],
+            k in -1i64..=1,
+            n in 1usize..300,
+        ) {
+            prop_assert_eq!(floor_index(x, k, n), reference(x.floor() + k as f64, n));
+            prop_assert_eq!(ceil_index(x, k, n), reference(x.ceil() + k as f64, n));
+        }
+    }
 
     #[test]
     fn clipped_length_of_a_diagonal() {
