@@ -10,11 +10,14 @@ use kiddo::SquaredEuclidean;
 use rustc_hash::FxHashMap as HashMap;
 
 /// kiddo's mutable tree: `f64` coordinates, `u64` items (our point ids), 2 axes, buckets of
-/// 32 points, `u32` node indices.
+/// [`BUCKET`] points, `u32` node indices.
 type KdTree = kiddo::float::kdtree::KdTree<f64, u64, 2, BUCKET, u32>;
 
-/// kiddo's leaf bucket size.
-const BUCKET: usize = 32;
+/// kiddo's leaf bucket size: 64 rather than kiddo's 32, because an RRT's samples land
+/// far from a tree that fills a maze slowly, and such a query visits many leaves; on the
+/// maze of `cargo xtask bench-peers` RRT took 0.80x and RRT-Connect 0.92x the time with
+/// 64 (the same paths), 16 was no faster on open maps and 128 or more slower on both.
+const BUCKET: usize = 64;
 
 /// A growing set of 2-D points with nearest and within-radius queries, in plain (not
 /// squared) world-unit distances.
@@ -28,9 +31,10 @@ const BUCKET: usize = 32;
 ///
 /// # Duplicates and degenerate inputs
 ///
-/// kiddo 5's mutable tree panics when one of its 32-point buckets fills with points that are
+/// kiddo 5's mutable tree panics when one of its buckets fills with points that are
 /// identical on every axis ("Cannot insert another item ... at exactly the same point", and in
-/// releases before 5.3 already when more than 32 points share one coordinate on one axis).
+/// releases before 5.3 already when more than a bucket's worth share one coordinate on one
+/// axis).
 /// Nodes snapped to integer cells (step 1) make that reachable, so the index never gives kiddo
 /// a point it already holds: an exact duplicate is kept in a side table and reported with its
 /// twin by every query. Points with a NaN or infinite coordinate get an id but are never
