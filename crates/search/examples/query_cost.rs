@@ -14,15 +14,11 @@ use std::time::Instant;
 
 use envmap::GridMap;
 use hyplan_core::{Goal, Planner, Point2, Query, Zone};
-use search::{
-    GridAstar, GridDijkstra, GridOptions, GridPath, GridSearch, GridSearchError, Jps,
-    JumpPointSearch,
-};
+use search::{GridAstar, GridDijkstra, GridOptions, GridSearch, Jps, JumpPointSearch};
 
-/// The first query's time and the fastest of 1,000 more, microseconds, and the first path.
-fn time(
-    mut query: impl FnMut() -> Result<GridPath, GridSearchError>,
-) -> Result<(f64, f64, GridPath), GridSearchError> {
+/// The first call's time and the fastest of 1,000 more, microseconds, and the first
+/// answer.
+fn time<T, E>(mut query: impl FnMut() -> Result<T, E>) -> Result<(f64, f64, T), E> {
     let t = Instant::now();
     let first = query()?;
     let first_us = t.elapsed().as_secs_f64() * 1e6;
@@ -87,7 +83,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let t = Instant::now();
             planner.prepare(&map)?;
             let prepare = t.elapsed();
-            let (first_us, best, plan) = time_plan(|| planner.plan(&map, &query, &mut rng))?;
+            let (first_us, best, plan) = time(|| planner.plan(&map, &query, &mut rng))?;
             println!(
                 "{n}x{n},{name},{:.1},{first_us:.1},{best:.2},{},{:.4}",
                 prepare.as_secs_f64() * 1e3,
@@ -97,20 +93,4 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     Ok(())
-}
-
-/// [`time`] for a planner's call.
-fn time_plan(
-    mut plan: impl FnMut() -> Result<hyplan_core::Plan, hyplan_core::PlanError>,
-) -> Result<(f64, f64, hyplan_core::Plan), hyplan_core::PlanError> {
-    let t = Instant::now();
-    let first = plan()?;
-    let first_us = t.elapsed().as_secs_f64() * 1e6;
-    let mut best = f64::MAX;
-    for _ in 0..1000 {
-        let t = Instant::now();
-        std::hint::black_box(plan()?);
-        best = best.min(t.elapsed().as_secs_f64() * 1e6);
-    }
-    Ok((first_us, best, first))
 }
