@@ -471,6 +471,7 @@ fn search_cells(
                 Algo::Astar => search.astar(start, goal),
                 Algo::Dijkstra => search.dijkstra(start, goal),
                 Algo::ThetaStar => search.theta_star(map, start, goal),
+                // (Jump point search has its own search, run above.)
                 Algo::LazyThetaStar | Algo::Jps => search.lazy_theta_star(map, start, goal),
             }
         },
