@@ -104,48 +104,46 @@ impl CellBits {
 /// The lowest set bit of `line` in `from..=to` (none when `from > to`).
 #[inline]
 fn first_set(line: &[u64], from: usize, to: usize) -> Option<usize> {
-    // The bits past the line's last cell are clear: only the words bound `to`.
-    let to = to.min((line.len() * 64).wrapping_sub(1));
-    if line.is_empty() || from > to {
-        return None;
-    }
-    let (first, last) = (from / 64, to / 64);
-    for (w, &word) in line.iter().enumerate().take(last + 1).skip(first) {
-        let mut word = word;
-        if w == first {
-            word &= u64::MAX << (from % 64);
-        }
-        if w == last {
-            word &= u64::MAX >> (63 - to % 64);
-        }
-        if word != 0 {
-            return Some(w * 64 + word.trailing_zeros() as usize);
-        }
-    }
-    None
+    let (words, to) = span(line, from, to)?;
+    words
+        .into_iter()
+        .find_map(|w| set_bit(w, within(line, w, from, to), u64::trailing_zeros))
 }
 
 /// The highest set bit of `line` in `from..=to` (none when `from > to`).
 #[inline]
 fn last_set(line: &[u64], from: usize, to: usize) -> Option<usize> {
+    let (words, to) = span(line, from, to)?;
+    words
+        .rev()
+        .find_map(|w| set_bit(w, within(line, w, from, to), |b| 63 - b.leading_zeros()))
+}
+
+/// The words of `line` holding bits `from..=to`, and `to` cut to the line (the bits past
+/// its last cell are clear, so only the words bound it); none when that leaves no bit.
+#[inline]
+fn span(line: &[u64], from: usize, to: usize) -> Option<(std::ops::RangeInclusive<usize>, usize)> {
     let to = to.min((line.len() * 64).wrapping_sub(1));
-    if line.is_empty() || from > to {
-        return None;
+    (!line.is_empty() && from <= to).then(|| (from / 64..=to / 64, to))
+}
+
+/// Word `w` of `line` with only its bits in `from..=to` kept.
+#[inline]
+fn within(line: &[u64], w: usize, from: usize, to: usize) -> u64 {
+    let mut word = line[w];
+    if w == from / 64 {
+        word &= u64::MAX << (from % 64);
     }
-    let (first, last) = (from / 64, to / 64);
-    for w in (first..=last).rev() {
-        let mut word = line[w];
-        if w == first {
-            word &= u64::MAX << (from % 64);
-        }
-        if w == last {
-            word &= u64::MAX >> (63 - to % 64);
-        }
-        if word != 0 {
-            return Some(w * 64 + 63 - word.leading_zeros() as usize);
-        }
+    if w == to / 64 {
+        word &= u64::MAX >> (63 - to % 64);
     }
-    None
+    word
+}
+
+/// The cell of bit `pick(word)` of word `w`, if the word has a set bit.
+#[inline]
+fn set_bit(w: usize, word: u64, pick: impl Fn(u64) -> u32) -> Option<usize> {
+    (word != 0).then(|| w * 64 + pick(word) as usize)
 }
 
 #[cfg(test)]
