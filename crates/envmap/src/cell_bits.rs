@@ -124,7 +124,7 @@ fn last_set(line: &[u64], from: usize, to: usize) -> Option<usize> {
 #[inline]
 fn span(line: &[u64], from: usize, to: usize) -> Option<(std::ops::RangeInclusive<usize>, usize)> {
     let to = to.min((line.len() * 64).wrapping_sub(1));
-    (!line.is_empty() && from <= to).then(|| (from / 64..=to / 64, to))
+    (!line.is_empty() && from <= to).then_some((from / 64..=to / 64, to))
 }
 
 /// Word `w` of `line` with only its bits in `from..=to` kept.
