@@ -12,17 +12,25 @@ impl GridSearch {
     /// through `slot`, plus a stack of cells whose f equals the f being expanded: they
     /// would come out of the heap next anyway (their g is final, the heuristic being
     /// consistent), so they skip it, and runs toward the goal go depth-first. Stale
-    /// entries are skipped by the closed bit.
+    /// entries are skipped by the closed bit. Dijkstra (no heuristic) uses [`Buckets`]
+    /// instead of the heap, which take its cells in the same order.
     pub(super) fn grid_search(
         &mut self,
         s0: u32,
         t0: u32,
         heuristic: bool,
     ) -> Result<GridPath, GridSearchError> {
-        if self.fixed.narrow {
-            self.grid_search_with::<u64>(s0, t0, heuristic)
+        // Without a heuristic every successor's f is at least a straight move above the
+        // expanded cell's, which lets buckets of one move's width replace the heap.
+        let open = if heuristic {
+            OpenKind::Heap
         } else {
-            self.grid_search_with::<Upper>(s0, t0, heuristic)
+            OpenKind::Buckets
+        };
+        if self.fixed.narrow {
+            self.grid_search_with::<u64>(s0, t0, heuristic, open)
+        } else {
+            self.grid_search_with::<Upper>(s0, t0, heuristic, open)
         }
     }
 
@@ -32,6 +40,7 @@ impl GridSearch {
         s0: u32,
         t0: u32,
         heuristic: bool,
+        open: OpenKind,
     ) -> Result<GridPath, GridSearchError> {
         let mut stats = SearchStats::default();
         let fx = self.fixed;
@@ -55,7 +64,7 @@ impl GridSearch {
         // `base | g << G_SHIFT | d << 1` is an open word of this query with cost g reached
         // by move d, `| 1` closes it.
         let base = self.begin(s0, &mut stats);
-        K::heap(&mut self.heap, &mut self.wide_heap).push(K::pack(fx, fx.order(h0, h0), s0));
+        let first = K::pack(fx, fx.order(h0, h0), s0);
         let run = Run {
             t0,
             base,
@@ -70,14 +79,30 @@ impl GridSearch {
             moves,
             heap,
             wide_heap,
+            buckets,
+            wide_buckets,
             stack,
             slot,
+            limit,
             ..
         } = self;
-        let heap = K::heap(heap, wide_heap);
-        match expand(
-            &run, words, moves, heap, stack, slot, &mut stats, self.limit,
-        ) {
+        // The buckets need f's quantum below their width (it is, on any grid that fits
+        // the words: f_shift = shift + bits(n) + 2 - 40 at most).
+        let ended = if open == OpenKind::Buckets && !heuristic && fx.f_shift < fx.shift {
+            let open = K::buckets(buckets, wide_buckets);
+            open.start(first, fx);
+            expand(&run, words, moves, open, stack, &mut stats, *limit)
+        } else {
+            let heap = K::heap(heap, wide_heap);
+            heap.push(first);
+            let mut open = HeapOpen {
+                heap,
+                slot,
+                taken: false,
+            };
+            expand(&run, words, moves, &mut open, stack, &mut stats, *limit)
+        };
+        match ended {
             Expanded::Target(g) => {
                 let cost = fx.to_cells(g);
                 Ok(self.trace_words(t0, cost, stats))
@@ -170,17 +195,12 @@ pub(super) enum Expanded {
 /// passed apart so that nothing else can alias them: expands cells until the target is
 /// taken from the open list (its g), the open list runs out, or the limit is reached.
 #[inline]
-#[expect(
-    clippy::too_many_arguments,
-    reason = "the arrays are passed apart, see above"
-)]
-pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
+pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, O: Open<K>>(
     run: &Run<H>,
     words: &mut [u64],
     moves: &[u8],
-    heap: &mut MinHeap<K>,
+    open: &mut O,
     stack: &mut Vec<u32>,
-    slot: &mut [u32],
     stats: &mut SearchStats,
     limit: Limit,
 ) -> Expanded {
@@ -200,28 +220,20 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
     // on the stack has it.
     let mut f_cur = f0;
-    // Keeps `slot` up to date as the heap moves keys.
-    macro_rules! place {
-        () => {
-            &mut |k: K, i: usize| slot[k.cell(fx) as usize] = i as u32
-        };
-    }
-    // The heap's root is the cell being expanded (taken but not yet removed): the first
-    // successor that goes to the heap replaces it (one sift instead of a pop and a push).
-    let mut taken = false;
     loop {
         let p = if let Some(p) = stack.pop() {
             p
         } else {
-            if taken {
-                heap.pop_placed(place!());
-            }
-            let Some(k) = heap.peek() else {
+            let Some(k) = open.next(fx) else {
                 break;
             };
-            taken = true;
             f_cur = k.order(fx) >> fx.tie_bits;
-            k.cell(fx)
+            let p = k.cell(fx);
+            let word = words[p as usize];
+            if word & 1 == 0 && open.stale(k, (word >> G_SHIFT) & G_MASK, fx) {
+                continue;
+            }
+            p
         };
         let pu = p as usize;
         let word = words[pu];
@@ -284,21 +296,7 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
                     if (ng + hq) >> fx.f_shift <= f_cur {
                         stack.push(q);
                     } else {
-                        let key = K::pack(fx, fx.order(ng + hq, hq), q);
-                        // Already queued (its g dropped): lower its key in place. The
-                        // taken root is on its way out, so it does not count.
-                        // (`K::MAX` holds no cell: the border cell with the last index
-                        // is never queued.)
-                        let i = slot[q as usize] as usize;
-                        let queued = (heap.at(i).cell(fx) == q) & ((i != 0) | !taken);
-                        if queued {
-                            heap.decrease_placed(i, key, place!());
-                        } else if taken {
-                            heap.replace_top_placed(key, place!());
-                            taken = false;
-                        } else {
-                            heap.push_placed(key, place!());
-                        }
+                        open.offer(K::pack(fx, fx.order(ng + hq, hq), q), q, fx);
                     }
                     stats.pushes += 1;
                 }
@@ -321,6 +319,157 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64>(
     Expanded::Exhausted
 }
 
+/// Which open list a search uses: [`HeapOpen`] or Dijkstra's [`Buckets`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum OpenKind {
+    Heap,
+    Buckets,
+}
+
+/// The open list of [`expand`]: where the cells to expand wait, smallest key first.
+pub(super) trait Open<K> {
+    /// The key of the next cell to expand, or `None` when the list is empty.
+    fn next(&mut self, fx: Fixed) -> Option<K>;
+    /// Queues cell `q` with `key`, or lowers its key if it is queued.
+    fn offer(&mut self, key: K, q: u32, fx: Fixed);
+    /// Whether `key`, just taken, is an outdated entry of its open cell, whose g is now
+    /// `g` (a list that lowers keys in place has none).
+    fn stale(&self, key: K, g: u64, fx: Fixed) -> bool;
+}
+
+/// The heap with decrease-key of A* (and of Dijkstra where the buckets do not apply):
+/// `slot` says where each queued cell's key sits. The root is the cell being expanded
+/// (taken but not yet removed): the first successor that goes to the heap replaces it,
+/// one sift instead of a pop and a push.
+pub(super) struct HeapOpen<'a, K> {
+    pub(super) heap: &'a mut MinHeap<K>,
+    pub(super) slot: &'a mut [u32],
+    pub(super) taken: bool,
+}
+
+impl<K: GridKey> Open<K> for HeapOpen<'_, K> {
+    #[inline(always)]
+    fn next(&mut self, fx: Fixed) -> Option<K> {
+        let slot = &mut *self.slot;
+        if self.taken {
+            self.heap
+                .pop_placed(&mut |k: K, i| slot[k.cell(fx) as usize] = i as u32);
+        }
+        let k = self.heap.peek()?;
+        self.taken = true;
+        Some(k)
+    }
+
+    #[inline(always)]
+    fn offer(&mut self, key: K, q: u32, fx: Fixed) {
+        let slot = &mut *self.slot;
+        // Already queued (its g dropped): lower its key in place. The taken root is on
+        // its way out, so it does not count. (`K::MAX` holds no cell: the border cell
+        // with the last index is never queued.)
+        let i = slot[q as usize] as usize;
+        let queued = (self.heap.at(i).cell(fx) == q) & ((i != 0) | !self.taken);
+        let place = &mut |k: K, i: usize| slot[k.cell(fx) as usize] = i as u32;
+        if queued {
+            self.heap.decrease_placed(i, key, place);
+        } else if self.taken {
+            self.heap.replace_top_placed(key, place);
+            self.taken = false;
+        } else {
+            self.heap.push_placed(key, place);
+        }
+    }
+
+    #[inline(always)]
+    fn stale(&self, _: K, _: u64, _: Fixed) -> bool {
+        false
+    }
+}
+
+/// Dijkstra's open list: keys in buckets one straight move (`2^shift`) of f wide, the
+/// current bucket sorted once and read in order.
+///
+/// Without a heuristic a successor's f is at least a straight move and less than two
+/// above the expanded cell's, so it lands one or two buckets ahead: a bucket is complete
+/// when its turn comes, and all its keys come before the next bucket's (the order's f
+/// field is f in steps of `2^f_shift`, a divisor of the width). Read sorted, the cells
+/// come out in the heap's order (with `u64` keys, whose cell bits settle ties, exactly
+/// the same; with `u128` keys, ties by cell where the heap leaves them in any order).
+/// A lowered key is queued again; the outdated entry comes later and is skipped.
+#[derive(Debug, Clone)]
+pub(super) struct Buckets<K> {
+    /// The buckets after the current one, by bucket number modulo 4.
+    ring: [Vec<K>; 4],
+    /// The current bucket, sorted.
+    current: Vec<K>,
+    /// Next position in `current`.
+    at: usize,
+    /// The current bucket's number (f >> shift).
+    number: u64,
+}
+
+impl<K> Default for Buckets<K> {
+    fn default() -> Self {
+        Self {
+            ring: Default::default(),
+            current: Vec::new(),
+            at: 0,
+            number: 0,
+        }
+    }
+}
+
+impl<K: GridKey> Buckets<K> {
+    /// Empties the list and queues `first`.
+    pub(super) fn start(&mut self, first: K, fx: Fixed) {
+        for bucket in &mut self.ring {
+            bucket.clear();
+        }
+        self.current.clear();
+        self.current.push(first);
+        self.at = 0;
+        self.number = Self::number(first, fx);
+    }
+
+    /// The bucket of `key`.
+    #[inline(always)]
+    fn number(key: K, fx: Fixed) -> u64 {
+        key.order(fx) >> (fx.tie_bits + fx.shift - fx.f_shift)
+    }
+}
+
+impl<K: GridKey> Open<K> for Buckets<K> {
+    #[inline(always)]
+    fn next(&mut self, _: Fixed) -> Option<K> {
+        loop {
+            if let Some(&k) = self.current.get(self.at) {
+                self.at += 1;
+                return Some(k);
+            }
+            // Keys go at most two buckets ahead.
+            let number = (1..=2)
+                .map(|d| self.number + d)
+                .find(|&n| !self.ring[(n & 3) as usize].is_empty())?;
+            std::mem::swap(&mut self.current, &mut self.ring[(number & 3) as usize]);
+            self.ring[(number & 3) as usize].clear();
+            K::sort(&mut self.current);
+            self.at = 0;
+            self.number = number;
+        }
+    }
+
+    #[inline(always)]
+    fn offer(&mut self, key: K, _: u32, fx: Fixed) {
+        let number = Self::number(key, fx);
+        debug_assert!(number > self.number && number <= self.number + 2);
+        self.ring[(number & 3) as usize].push(key);
+    }
+
+    #[inline(always)]
+    fn stale(&self, key: K, g: u64, fx: Fixed) -> bool {
+        key.order(fx) != fx.order(g, 0)
+    }
+}
+
 /// The open-list key of A* and Dijkstra: the order ([`Fixed::order`]: f, then the
 /// tie-break on h) above the cell, in one `u64` on grids where both fit
 /// ([`Fixed::narrow`]), else in the two halves of a `u128` ordered by its upper half.
@@ -331,6 +480,13 @@ pub(super) trait GridKey: HeapKey {
     fn order(self, fx: Fixed) -> u64;
     /// The cell.
     fn cell(self, fx: Fixed) -> u32;
+    /// Sorts `keys` in the order they come out of the open list.
+    fn sort(keys: &mut [Self]);
+    /// Dijkstra's buckets of this key type.
+    fn buckets<'a>(
+        narrow: &'a mut Buckets<u64>,
+        wide: &'a mut Buckets<Upper>,
+    ) -> &'a mut Buckets<Self>;
     /// The open list of this key type.
     fn heap<'a>(
         narrow: &'a mut MinHeap<u64>,
@@ -351,6 +507,15 @@ impl GridKey for u64 {
     fn cell(self, fx: Fixed) -> u32 {
         (self & ((1 << fx.cell_bits) - 1)) as u32
     }
+    fn sort(keys: &mut [Self]) {
+        keys.sort_unstable();
+    }
+    fn buckets<'a>(
+        narrow: &'a mut Buckets<u64>,
+        _: &'a mut Buckets<Upper>,
+    ) -> &'a mut Buckets<Self> {
+        narrow
+    }
     fn heap<'a>(narrow: &'a mut MinHeap<u64>, _: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
         narrow
     }
@@ -368,6 +533,12 @@ impl GridKey for Upper {
     #[inline(always)]
     fn cell(self, _: Fixed) -> u32 {
         self.0 as u32
+    }
+    fn sort(keys: &mut [Self]) {
+        keys.sort_unstable_by_key(|k| k.0);
+    }
+    fn buckets<'a>(_: &'a mut Buckets<u64>, wide: &'a mut Buckets<Upper>) -> &'a mut Buckets<Self> {
+        wide
     }
     fn heap<'a>(_: &'a mut MinHeap<u64>, wide: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
         wide
@@ -476,5 +647,60 @@ impl Fixed {
         let b = cost.wrapping_mul(self.inv_diag) & (self.unit - 1);
         let a = cost.wrapping_sub(b.wrapping_mul(self.diag)) >> self.shift;
         a as f64 + b as f64 * SQRT2
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hyplan_core::{Point2, Zone};
+    use proptest::prelude::*;
+
+    /// A random map, 2-60 cells a side, 0-40 % blocked (open grids have the most ties
+    /// between equal costs), a start and a few goals, some blocked or unreachable.
+    fn maps() -> impl Strategy<Value = (GridMap, Vec<(usize, usize)>)> {
+        (2usize..60, 2usize..60, 0.0f64..0.4).prop_flat_map(|(w, h, density)| {
+            (
+                proptest::collection::vec(prop::bool::weighted(density), w * h),
+                proptest::collection::vec((0..w, 0..h), 2..8),
+            )
+                .prop_map(move |(blocked, cells)| {
+                    let zones = blocked
+                        .iter()
+                        .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
+                        .collect();
+                    let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+                    (map, cells)
+                })
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// Dijkstra's buckets take the cells in the heap's order: the same path, the
+        /// same counts, and on a search without a target the same cost at every cell.
+        #[test]
+        fn buckets_expand_in_the_heap_order((map, cells) in maps(), four in any::<bool>()) {
+            let options = GridOptions {
+                connectivity: if four { Connectivity::Four } else { Connectivity::Eight },
+                ..GridOptions::default()
+            };
+            let mut heap = GridSearch::new(&map, options).unwrap();
+            let mut buckets = GridSearch::new(&map, options).unwrap();
+            prop_assert!(heap.fixed.narrow);
+            let Ok(s0) = heap.check(cells[0], true) else { return Ok(()) };
+            for &goal in &cells[1..] {
+                let t0 = heap.check(goal, false).unwrap_or(NONE);
+                let a = heap.grid_search_with::<u64>(s0, t0, false, OpenKind::Heap);
+                let b = buckets.grid_search_with::<u64>(s0, t0, false, OpenKind::Buckets);
+                prop_assert_eq!(&a, &b);
+                if t0 == NONE {
+                    for p in 0..heap.words.len() as u32 {
+                        prop_assert_eq!(heap.g_of(p), buckets.g_of(p));
+                    }
+                }
+            }
+        }
     }
 }
