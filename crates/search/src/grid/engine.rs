@@ -89,18 +89,19 @@ impl GridSearch {
         // The buckets need f's quantum below their width (it is, on any grid that fits
         // the words: f_shift = shift + bits(n) + 2 - 40 at most).
         let ended = if open == OpenKind::Buckets && !heuristic && fx.f_shift < fx.shift {
-            let open = K::buckets(buckets, wide_buckets);
-            open.start(first, fx);
-            expand(&run, words, moves, open, stack, &mut stats, *limit)
+            let buckets = K::buckets(buckets, wide_buckets);
+            buckets.start(first, fx);
+            let heap = K::heap(heap, wide_heap);
+            expand::<K, _, true>(
+                &run, words, moves, heap, buckets, stack, slot, &mut stats, *limit,
+            )
         } else {
             let heap = K::heap(heap, wide_heap);
             heap.push(first);
-            let mut open = HeapOpen {
-                heap,
-                slot,
-                taken: false,
-            };
-            expand(&run, words, moves, &mut open, stack, &mut stats, *limit)
+            let buckets = K::buckets(buckets, wide_buckets);
+            expand::<K, _, false>(
+                &run, words, moves, heap, buckets, stack, slot, &mut stats, *limit,
+            )
         };
         match ended {
             Expanded::Target(g) => {
@@ -194,13 +195,20 @@ pub(super) enum Expanded {
 /// The loop of A* / Dijkstra (see [`GridSearch::grid_search`]) on the query's arrays,
 /// passed apart so that nothing else can alias them: expands cells until the target is
 /// taken from the open list (its g), the open list runs out, or the limit is reached.
+/// The open list is `buckets` when `BUCKETS` (Dijkstra), else `heap`.
 #[inline]
-pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, O: Open<K>>(
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the arrays are passed apart, see above"
+)]
+pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
     run: &Run<H>,
     words: &mut [u64],
     moves: &[u8],
-    open: &mut O,
+    heap: &mut MinHeap<K>,
+    buckets: &mut Buckets<K>,
     stack: &mut Vec<u32>,
+    slot: &mut [u32],
     stats: &mut SearchStats,
     limit: Limit,
 ) -> Expanded {
@@ -220,20 +228,40 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, O: Open<K>>(
     // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
     // on the stack has it.
     let mut f_cur = f0;
+    // Keeps `slot` up to date as the heap moves keys.
+    macro_rules! place {
+        () => {
+            &mut |k: K, i: usize| slot[k.cell(fx) as usize] = i as u32
+        };
+    }
+    // The heap's root is the cell being expanded (taken but not yet removed): the first
+    // successor that goes to the heap replaces it (one sift instead of a pop and a push).
+    let mut taken = false;
     loop {
         let p = if let Some(p) = stack.pop() {
             p
-        } else {
-            let Some(k) = open.next(fx) else {
+        } else if BUCKETS {
+            let Some(k) = buckets.next() else {
                 break;
             };
             f_cur = k.order(fx) >> fx.tie_bits;
             let p = k.cell(fx);
+            // An outdated entry of a cell that is open with a smaller g (reopened).
             let word = words[p as usize];
-            if word & 1 == 0 && open.stale(k, (word >> G_SHIFT) & G_MASK, fx) {
+            if word & 1 == 0 && k.order(fx) != fx.order((word >> G_SHIFT) & G_MASK, 0) {
                 continue;
             }
             p
+        } else {
+            if taken {
+                heap.pop_placed(place!());
+            }
+            let Some(k) = heap.peek() else {
+                break;
+            };
+            taken = true;
+            f_cur = k.order(fx) >> fx.tie_bits;
+            k.cell(fx)
         };
         let pu = p as usize;
         let word = words[pu];
@@ -296,7 +324,25 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, O: Open<K>>(
                     if (ng + hq) >> fx.f_shift <= f_cur {
                         stack.push(q);
                     } else {
-                        open.offer(K::pack(fx, fx.order(ng + hq, hq), q), q, fx);
+                        let key = K::pack(fx, fx.order(ng + hq, hq), q);
+                        if BUCKETS {
+                            buckets.offer(key, fx);
+                        } else {
+                            // Already queued (its g dropped): lower its key in place.
+                            // The taken root is on its way out, so it does not count.
+                            // (`K::MAX` holds no cell: the border cell with the last
+                            // index is never queued.)
+                            let i = slot[q as usize] as usize;
+                            let queued = (heap.at(i).cell(fx) == q) & ((i != 0) | !taken);
+                            if queued {
+                                heap.decrease_placed(i, key, place!());
+                            } else if taken {
+                                heap.replace_top_placed(key, place!());
+                                taken = false;
+                            } else {
+                                heap.push_placed(key, place!());
+                            }
+                        }
                     }
                     stats.pushes += 1;
                 }
@@ -319,70 +365,11 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, O: Open<K>>(
     Expanded::Exhausted
 }
 
-/// Which open list a search uses: [`HeapOpen`] or Dijkstra's [`Buckets`].
+/// Which open list a search uses: the heap, or Dijkstra's [`Buckets`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum OpenKind {
     Heap,
     Buckets,
-}
-
-/// The open list of [`expand`]: where the cells to expand wait, smallest key first.
-pub(super) trait Open<K> {
-    /// The key of the next cell to expand, or `None` when the list is empty.
-    fn next(&mut self, fx: Fixed) -> Option<K>;
-    /// Queues cell `q` with `key`, or lowers its key if it is queued.
-    fn offer(&mut self, key: K, q: u32, fx: Fixed);
-    /// Whether `key`, just taken, is an outdated entry of its open cell, whose g is now
-    /// `g` (a list that lowers keys in place has none).
-    fn stale(&self, key: K, g: u64, fx: Fixed) -> bool;
-}
-
-/// The heap with decrease-key of A* (and of Dijkstra where the buckets do not apply):
-/// `slot` says where each queued cell's key sits. The root is the cell being expanded
-/// (taken but not yet removed): the first successor that goes to the heap replaces it,
-/// one sift instead of a pop and a push.
-pub(super) struct HeapOpen<'a, K> {
-    pub(super) heap: &'a mut MinHeap<K>,
-    pub(super) slot: &'a mut [u32],
-    pub(super) taken: bool,
-}
-
-impl<K: GridKey> Open<K> for HeapOpen<'_, K> {
-    #[inline(always)]
-    fn next(&mut self, fx: Fixed) -> Option<K> {
-        let slot = &mut *self.slot;
-        if self.taken {
-            self.heap
-                .pop_placed(&mut |k: K, i| slot[k.cell(fx) as usize] = i as u32);
-        }
-        let k = self.heap.peek()?;
-        self.taken = true;
-        Some(k)
-    }
-
-    #[inline(always)]
-    fn offer(&mut self, key: K, q: u32, fx: Fixed) {
-        let slot = &mut *self.slot;
-        // Already queued (its g dropped): lower its key in place. The taken root is on
-        // its way out, so it does not count. (`K::MAX` holds no cell: the border cell
-        // with the last index is never queued.)
-        let i = slot[q as usize] as usize;
-        let queued = (self.heap.at(i).cell(fx) == q) & ((i != 0) | !self.taken);
-        let place = &mut |k: K, i: usize| slot[k.cell(fx) as usize] = i as u32;
-        if queued {
-            self.heap.decrease_placed(i, key, place);
-        } else if self.taken {
-            self.heap.replace_top_placed(key, place);
-            self.taken = false;
-        } else {
-            self.heap.push_placed(key, place);
-        }
-    }
-
-    #[inline(always)]
-    fn stale(&self, _: K, _: u64, _: Fixed) -> bool {
-        false
-    }
 }
 
 /// Dijkstra's open list: keys in buckets one straight move (`2^shift`) of f wide, the
@@ -437,9 +424,10 @@ impl<K: GridKey> Buckets<K> {
     }
 }
 
-impl<K: GridKey> Open<K> for Buckets<K> {
+impl<K: GridKey> Buckets<K> {
+    /// The key of the next cell to expand, or `None` when the list is empty.
     #[inline(always)]
-    fn next(&mut self, _: Fixed) -> Option<K> {
+    fn next(&mut self) -> Option<K> {
         loop {
             if let Some(&k) = self.current.get(self.at) {
                 self.at += 1;
@@ -457,16 +445,13 @@ impl<K: GridKey> Open<K> for Buckets<K> {
         }
     }
 
+    /// Queues `key` (a cell already queued with a larger key keeps that entry too, which
+    /// comes out after it and is skipped).
     #[inline(always)]
-    fn offer(&mut self, key: K, _: u32, fx: Fixed) {
+    fn offer(&mut self, key: K, fx: Fixed) {
         let number = Self::number(key, fx);
         debug_assert!(number > self.number && number <= self.number + 2);
         self.ring[(number & 3) as usize].push(key);
-    }
-
-    #[inline(always)]
-    fn stale(&self, key: K, g: u64, fx: Fixed) -> bool {
-        key.order(fx) != fx.order(g, 0)
     }
 }
 
