@@ -304,8 +304,11 @@ impl GridSearch {
         // Columns k = 0..=du from s's column. The segment runs from u = 0.5 to du + 0.5
         // (in column units from s's column's left edge); column k is known free when its
         // stretch [k, k + 1] lies inside an open stretch. One column of margin each side.
-        let k_first = ((0.5 + open_lo).floor() as i64 - 2).max(0);
-        let k_last = ((du as f64 + 0.5 - open_hi).floor() as i64 + 1).min(du);
+        // Both floors' arguments are positive (`open_hi` is at most `du`), where the
+        // truncation of `as` is the floor, without a call to libm's `floor` (the
+        // baseline x86-64 target has no rounding instruction).
+        let k_first = (((0.5 + open_lo) as i64) - 2).max(0);
+        let k_last = (((du as f64 + 0.5 - open_hi) as i64) + 1).min(du);
         // In units of 1 / (2 du), the minor coordinate from s's row's lower edge at the
         // left edge of column k (k >= 1) is y = du + (2k - 1) dv; at the start, du. Each
         // column adds 2 dv (dv at the first and the last, which are half columns), at most
