@@ -80,7 +80,6 @@ impl GridSearch {
             heap,
             wide_heap,
             buckets,
-            wide_buckets,
             stack,
             slot,
             limit,
@@ -88,8 +87,11 @@ impl GridSearch {
         } = self;
         // The buckets need f's quantum below their width (it is, on any grid that fits
         // the words: f_shift = shift + bits(n) + 2 - 40 at most).
-        let ended = if open == OpenKind::Buckets && !heuristic && fx.f_shift < fx.shift {
-            let buckets = K::buckets(buckets, wide_buckets);
+        let ended = if open == OpenKind::Buckets
+            && !heuristic
+            && fx.f_shift < fx.shift
+            && K::fits_buckets(fx)
+        {
             buckets.start(first, fx);
             let heap = K::heap(heap, wide_heap);
             expand::<K, _, true>(
@@ -98,7 +100,6 @@ impl GridSearch {
         } else {
             let heap = K::heap(heap, wide_heap);
             heap.push(first);
-            let buckets = K::buckets(buckets, wide_buckets);
             expand::<K, _, false>(
                 &run, words, moves, heap, buckets, stack, slot, &mut stats, *limit,
             )
@@ -206,7 +207,7 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
     words: &mut [u64],
     moves: &[u8],
     heap: &mut MinHeap<K>,
-    buckets: &mut Buckets<K>,
+    buckets: &mut Buckets,
     stack: &mut Vec<u32>,
     slot: &mut [u32],
     stats: &mut SearchStats,
@@ -241,7 +242,7 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
         let p = if let Some(p) = stack.pop() {
             p
         } else if BUCKETS {
-            let Some(k) = buckets.next() else {
+            let Some(k) = buckets.next::<K>(fx) else {
                 break;
             };
             f_cur = k.order(fx) >> fx.tie_bits;
@@ -382,56 +383,46 @@ pub(super) enum OpenKind {
 /// come out in the heap's order (with `u64` keys, whose cell bits settle ties, exactly
 /// the same; with `u128` keys, ties by cell where the heap leaves them in any order).
 /// A lowered key is queued again; the outdated entry comes later and is skipped.
-#[derive(Debug, Clone)]
-pub(super) struct Buckets<K> {
+///
+/// Entries are `u64` for both key types ([`GridKey::to_bucket`]): a `u128` key keeps
+/// only the f bits below the bucket's number, which is all that differs within a bucket.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Buckets {
     /// The buckets after the current one, by bucket number modulo 4.
-    ring: [Vec<K>; 4],
+    ring: [Vec<u64>; 4],
     /// The current bucket, sorted.
-    current: Vec<K>,
+    current: Vec<u64>,
     /// Next position in `current`.
     at: usize,
     /// The current bucket's number (f >> shift).
     number: u64,
 }
 
-impl<K> Default for Buckets<K> {
-    fn default() -> Self {
-        Self {
-            ring: Default::default(),
-            current: Vec::new(),
-            at: 0,
-            number: 0,
-        }
-    }
-}
-
-impl<K: GridKey> Buckets<K> {
+impl Buckets {
     /// Empties the list and queues `first`.
-    pub(super) fn start(&mut self, first: K, fx: Fixed) {
+    pub(super) fn start<K: GridKey>(&mut self, first: K, fx: Fixed) {
         for bucket in &mut self.ring {
             bucket.clear();
         }
         self.current.clear();
-        self.current.push(first);
+        self.current.push(first.to_bucket(fx));
         self.at = 0;
         self.number = Self::number(first, fx);
     }
 
     /// The bucket of `key`.
     #[inline(always)]
-    fn number(key: K, fx: Fixed) -> u64 {
+    fn number<K: GridKey>(key: K, fx: Fixed) -> u64 {
         key.order(fx) >> (fx.tie_bits + fx.shift - fx.f_shift)
     }
-}
 
-impl<K: GridKey> Buckets<K> {
     /// The key of the next cell to expand, or `None` when the list is empty.
     #[inline(always)]
-    fn next(&mut self) -> Option<K> {
+    fn next<K: GridKey>(&mut self, fx: Fixed) -> Option<K> {
         loop {
             if let Some(&k) = self.current.get(self.at) {
                 self.at += 1;
-                return Some(k);
+                return Some(K::from_bucket(k, self.number, fx));
             }
             // Keys go at most two buckets ahead.
             let number = (1..=2)
@@ -439,7 +430,7 @@ impl<K: GridKey> Buckets<K> {
                 .find(|&n| !self.ring[(n & 3) as usize].is_empty())?;
             std::mem::swap(&mut self.current, &mut self.ring[(number & 3) as usize]);
             self.ring[(number & 3) as usize].clear();
-            K::sort(&mut self.current);
+            self.current.sort_unstable();
             self.at = 0;
             self.number = number;
         }
@@ -448,10 +439,10 @@ impl<K: GridKey> Buckets<K> {
     /// Queues `key` (a cell already queued with a larger key keeps that entry too, which
     /// comes out after it and is skipped).
     #[inline(always)]
-    fn offer(&mut self, key: K, fx: Fixed) {
+    fn offer<K: GridKey>(&mut self, key: K, fx: Fixed) {
         let number = Self::number(key, fx);
         debug_assert!(number > self.number && number <= self.number + 2);
-        self.ring[(number & 3) as usize].push(key);
+        self.ring[(number & 3) as usize].push(key.to_bucket(fx));
     }
 }
 
@@ -465,13 +456,13 @@ pub(super) trait GridKey: HeapKey {
     fn order(self, fx: Fixed) -> u64;
     /// The cell.
     fn cell(self, fx: Fixed) -> u32;
-    /// Sorts `keys` in the order they come out of the open list.
-    fn sort(keys: &mut [Self]);
-    /// Dijkstra's buckets of this key type.
-    fn buckets<'a>(
-        narrow: &'a mut Buckets<u64>,
-        wide: &'a mut Buckets<Upper>,
-    ) -> &'a mut Buckets<Self>;
+    /// Whether [`Buckets`] hold this key type's Dijkstra keys on grids of scale `fx`.
+    fn fits_buckets(fx: Fixed) -> bool;
+    /// A Dijkstra key (no tie-break field) as [`Buckets`] hold it: a `u64` ordered as the
+    /// keys of one bucket are.
+    fn to_bucket(self, fx: Fixed) -> u64;
+    /// The key of bucket entry `entry` of bucket `number`.
+    fn from_bucket(entry: u64, number: u64, fx: Fixed) -> Self;
     /// The open list of this key type.
     fn heap<'a>(
         narrow: &'a mut MinHeap<u64>,
@@ -492,14 +483,16 @@ impl GridKey for u64 {
     fn cell(self, fx: Fixed) -> u32 {
         (self & ((1 << fx.cell_bits) - 1)) as u32
     }
-    fn sort(keys: &mut [Self]) {
-        keys.sort_unstable();
+    fn fits_buckets(_: Fixed) -> bool {
+        true
     }
-    fn buckets<'a>(
-        narrow: &'a mut Buckets<u64>,
-        _: &'a mut Buckets<Upper>,
-    ) -> &'a mut Buckets<Self> {
-        narrow
+    #[inline(always)]
+    fn to_bucket(self, _: Fixed) -> u64 {
+        self
+    }
+    #[inline(always)]
+    fn from_bucket(entry: u64, _: u64, _: Fixed) -> Self {
+        entry
     }
     fn heap<'a>(narrow: &'a mut MinHeap<u64>, _: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
         narrow
@@ -519,11 +512,19 @@ impl GridKey for Upper {
     fn cell(self, _: Fixed) -> u32 {
         self.0 as u32
     }
-    fn sort(keys: &mut [Self]) {
-        keys.sort_unstable_by_key(|k| k.0);
+    fn fits_buckets(fx: Fixed) -> bool {
+        // The f bits below the bucket's number go above the cell's 32.
+        fx.shift - fx.f_shift <= 32
     }
-    fn buckets<'a>(_: &'a mut Buckets<u64>, wide: &'a mut Buckets<Upper>) -> &'a mut Buckets<Self> {
-        wide
+    #[inline(always)]
+    fn to_bucket(self, fx: Fixed) -> u64 {
+        let f = self.order(fx) >> fx.tie_bits;
+        ((f & ((1 << (fx.shift - fx.f_shift)) - 1)) << 32) | u64::from(self.cell(fx))
+    }
+    #[inline(always)]
+    fn from_bucket(entry: u64, number: u64, fx: Fixed) -> Self {
+        let f = (number << (fx.shift - fx.f_shift)) | (entry >> 32);
+        Self::pack(fx, f << fx.tie_bits, entry as u32)
     }
     fn heap<'a>(_: &'a mut MinHeap<u64>, wide: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
         wide
@@ -658,6 +659,51 @@ mod tests {
                     (map, cells)
                 })
         })
+    }
+
+    /// On a grid of more than 2^19 cells (`u128` keys, whose equal keys the heap takes in
+    /// any order) the buckets give every cell the heap's cost.
+    #[test]
+    fn buckets_on_a_large_grid_give_the_heap_costs() {
+        let (w, h) = (800, 700);
+        // 20 % of the cells blocked, from a fixed linear congruential sequence.
+        let mut x: u64 = 1;
+        let zones = (0..w * h)
+            .map(|_| {
+                x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+                if (x >> 33).is_multiple_of(5) {
+                    Zone::Forbidden
+                } else {
+                    Zone::Free
+                }
+            })
+            .collect();
+        let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+        let mut heap = GridSearch::new(&map, GridOptions::default()).unwrap();
+        let mut buckets = GridSearch::new(&map, GridOptions::default()).unwrap();
+        let fx = heap.fixed;
+        assert!(!fx.narrow && fx.f_shift < fx.shift && Upper::fits_buckets(fx));
+        let s0 = (0..w * h)
+            .find_map(|c| heap.check((c % w + w / 2, h / 2), true).ok())
+            .unwrap();
+        let t0 = (0..w * h)
+            .find_map(|c| heap.check((w - 1 - c % w, h - 1 - c / w), false).ok())
+            .unwrap();
+        let a = heap
+            .grid_search_with::<Upper>(s0, t0, false, OpenKind::Heap)
+            .unwrap();
+        let b = buckets
+            .grid_search_with::<Upper>(s0, t0, false, OpenKind::Buckets)
+            .unwrap();
+        assert_eq!(a.cost, b.cost);
+        let _ = heap.grid_search_with::<Upper>(s0, NONE, false, OpenKind::Heap);
+        let _ = buckets.grid_search_with::<Upper>(s0, NONE, false, OpenKind::Buckets);
+        let mut reached = 0;
+        for p in 0..heap.words.len() as u32 {
+            assert_eq!(heap.g_of(p), buckets.g_of(p), "cell {p}");
+            reached += usize::from(heap.g_of(p).is_some());
+        }
+        assert!(reached > w * h / 2);
     }
 
     proptest! {

@@ -272,10 +272,8 @@ pub struct GridSearch {
     heap: MinHeap<u64>,
     /// Open list of A* and Dijkstra on larger grids.
     wide_heap: MinHeap<Upper>,
-    /// Dijkstra's open list on grids whose keys fit 64 bits.
-    buckets: Buckets<u64>,
-    /// Dijkstra's open list on larger grids.
-    wide_buckets: Buckets<Upper>,
+    /// Dijkstra's open list.
+    buckets: Buckets,
     /// Open list of Theta* (ordered by the whole [`float_key`]).
     theta_heap: MinHeap<u128>,
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
@@ -379,7 +377,6 @@ impl GridSearch {
             heap: MinHeap::default(),
             wide_heap: MinHeap::default(),
             buckets: Buckets::default(),
-            wide_buckets: Buckets::default(),
             theta_heap: MinHeap::default(),
             stack: Vec::new(),
             slot: vec![0; n],
