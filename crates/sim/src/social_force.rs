@@ -357,7 +357,30 @@ pub struct SocialForce<'w> {
     group_of: Vec<Option<usize>>,
     /// Per group, the sum of its members' positions on stage and their number (scratch).
     centres: Vec<(Vector2<f64>, f64)>,
+    /// Each person's [`Stride`] at the current step (scratch).
+    strides: Vec<Stride>,
     clock: Stepper,
+}
+
+/// A moving body's speed, its step `v dt` and the step's length: what the elliptical
+/// repulsion and its cut-off take of the body's velocity.
+#[derive(Debug, Clone, Copy)]
+struct Stride {
+    speed: f64,
+    step: Vector2<f64>,
+    length: f64,
+}
+
+impl Stride {
+    /// The stride of a body moving at `velocity`, with the model's `dt`.
+    fn of(velocity: Vector2<f64>, dt: f64) -> Self {
+        let step = velocity * dt;
+        Self {
+            speed: velocity.norm(),
+            step,
+            length: step.norm(),
+        }
+    }
 }
 
 impl<'w> SocialForce<'w> {
@@ -393,6 +416,7 @@ impl<'w> SocialForce<'w> {
             walls: NearIndex::new(statics, CUTOFF_RANGES * params.wall_range),
             group_of,
             centres: vec![(Vector2::zeros(), 0.0); ids.len()],
+            strides: Vec::new(),
             clock: Stepper::default(),
         };
         model.reset();
@@ -414,10 +438,26 @@ impl<'w> SocialForce<'w> {
     /// The repulsion on a body at `at` of radius `radius` facing `facing`, of a body at
     /// `other` of radius `other_radius` moving at `velocity` (the elliptical potential,
     /// from the bodies' edges), weighted by the field of view.
+    #[cfg(test)]
     fn person_force(
         &self,
-        (at, radius, facing): (Point2, f64, Vector2<f64>),
+        me: (Point2, f64, Vector2<f64>),
         (other, other_radius, velocity): (Point2, f64, Vector2<f64>),
+    ) -> Vector2<f64> {
+        self.repulsion(me, (other, other_radius, &self.stride(velocity)))
+    }
+
+    /// What the repulsion of a body moving at `velocity` takes of it, once a step for
+    /// each person rather than once for each pair.
+    fn stride(&self, velocity: Vector2<f64>) -> Stride {
+        Stride::of(velocity, self.params.step_time)
+    }
+
+    /// [`person_force`](Self::person_force) with the other's [`Stride`].
+    fn repulsion(
+        &self,
+        (at, radius, facing): (Point2, f64, Vector2<f64>),
+        (other, other_radius, stride): (Point2, f64, &Stride),
     ) -> Vector2<f64> {
         let p = &self.params;
         let peak = p.person_strength / p.person_range;
@@ -431,9 +471,8 @@ impl<'w> SocialForce<'w> {
             away * peak
         } else {
             let gap = r * ((centres - contact) / centres) - left * p.keep_right;
-            let step = velocity * p.step_time;
-            let ahead = gap - step;
-            let (n1, n2, s) = (gap.norm(), ahead.norm(), step.norm());
+            let ahead = gap - stride.step;
+            let (n1, n2, s) = (gap.norm(), ahead.norm(), stride.length);
             let sum = n1 + n2;
             let b = 0.5 * (sum * sum - s * s).max(0.0).sqrt();
             // grad b = (|r| + |r - s e|) (r / |r| + (r - s e) / |r - s e|) / (4 b).
@@ -455,13 +494,13 @@ impl<'w> SocialForce<'w> {
     fn within_reach(
         &self,
         (at, radius, _): (Point2, f64, Vector2<f64>),
-        (other, other_radius, velocity): (Point2, f64, Vector2<f64>),
+        (other, other_radius, stride): (Point2, f64, &Stride),
     ) -> bool {
         let p = &self.params;
         let reach = radius
             + other_radius
             + p.keep_right
-            + velocity.norm() * p.step_time
+            + stride.speed * p.step_time
             + CUTOFF_RANGES * p.person_range;
         (at - other).norm_squared() <= reach * reach
     }
@@ -570,6 +609,11 @@ impl Stepped for SocialForce<'_> {
     fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
         self.enter_and_leave(t);
         self.group_centres();
+        let dt = self.params.step_time;
+        self.strides.clear();
+        self.strides
+            .extend(self.walkers.iter().map(|w| Stride::of(w.vel, dt)));
+        let robot_stride = self.stride(robot_velocity);
         let n = self.walkers.len();
         for k in 0..n {
             if !self.walkers[k].on_stage {
@@ -580,17 +624,15 @@ impl Stepped for SocialForce<'_> {
             let w = self.walkers[k];
             let me = (w.pos, self.people[k].radius, w.facing);
             let mut a = (desired - w.vel) / self.params.relaxation_time;
-            for (j, o) in self.walkers.iter().enumerate() {
-                if j != k
-                    && o.on_stage
-                    && self.within_reach(me, (o.pos, self.people[j].radius, o.vel))
-                {
-                    a += self.person_force(me, (o.pos, self.people[j].radius, o.vel));
+            for (j, (o, stride)) in self.walkers.iter().zip(&self.strides).enumerate() {
+                let other = (o.pos, self.people[j].radius, stride);
+                if j != k && o.on_stage && self.within_reach(me, other) {
+                    a += self.repulsion(me, other);
                 }
             }
-            let robot_body = (robot, self.robot_radius, robot_velocity);
+            let robot_body = (robot, self.robot_radius, &robot_stride);
             if self.params.sees_robot && self.within_reach(me, robot_body) {
-                a += self.person_force(me, robot_body);
+                a += self.repulsion(me, robot_body);
             }
             a += self.wall_force(k);
             a += self.group_force(k);
