@@ -115,10 +115,16 @@ proptest! {
                 "beam {} of {}: laser {} reference {}", k, beams, got, best
             );
             // parry2d (f32) agrees to its precision, except for beams that graze a
-            // corner, where rounding the geometry to f32 can move the hit to the next edge.
+            // corner, where rounding the geometry to f32 can move the hit to the next edge,
+            // and beams that cross an edge at a shallow angle (under 0.05 rad), where its
+            // f32 intersection is ill-conditioned (seeds kept: edges crossed at 0.004 and
+            // 0.013 rad, 17 and 3.7 mm off in f32; the exact reference above holds there).
             let grazing = w.segments.iter().any(|s| {
                 let v = s.a - o;
-                d.perp(&v).abs() < 1e-4 * v.norm()
+                let e = s.b - s.a;
+                let shallow = d.perp(&v) * d.perp(&(s.b - o)) <= 0.0
+                    && d.perp(&e).abs() < 0.05 * e.norm();
+                d.perp(&v).abs() < 1e-4 * v.norm() || shallow
             });
             if grazing {
                 continue;
