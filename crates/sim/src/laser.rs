@@ -492,13 +492,22 @@ const BIN: f64 = 0.25;
 /// Bins of [`nearest_first`] ([`BIN`] wide, the last one open-ended).
 const BINS: usize = 256;
 
+/// Below this many obstacles [`nearest_first`] sorts them exactly (distances are never
+/// negative nor NaN: their bits sort as they do).
+const SORTED_BELOW: usize = 64;
+
 /// `order` by distance, in bins of [`BIN`] (a counting sort: O(n), where a sort is
-/// O(n log n) for the hundreds of segments of a building).
+/// O(n log n) for the hundreds of segments of a building); sorted when there are few.
 ///
 /// The cast's ranges do not depend on the order (each is the minimum of its hits): the
 /// order only lets the obstacles behind nearer hits be skipped a block of beams at a
 /// time, which a quarter-metre order does about as well as an exact one.
-fn nearest_first(order: Vec<(f64, Obstacle)>) -> Vec<(f64, Obstacle)> {
+fn nearest_first(mut order: Vec<(f64, Obstacle)>) -> Vec<(f64, Obstacle)> {
+    if order.len() < SORTED_BELOW {
+        // A few shapes: sorting them costs less than the bins' counts.
+        order.sort_unstable_by_key(|o| o.0.to_bits());
+        return order;
+    }
     let mut starts = [0usize; BINS + 1];
     for &(d, _) in &order {
         starts[bin(d) + 1] += 1;
@@ -587,6 +596,8 @@ mod tests {
             })
             .collect();
         order.push((0.0, Obstacle::Disc(0)));
+        let few = nearest_first(order[..40].to_vec());
+        assert!(few.windows(2).all(|w| w[0].0 <= w[1].0));
         let sorted = nearest_first(order.clone());
         assert_eq!(sorted.len(), order.len());
         for w in sorted.windows(2) {
