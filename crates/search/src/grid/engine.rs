@@ -639,7 +639,7 @@ impl Fixed {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hyplan_core::{Point2, Zone};
+
     use proptest::prelude::*;
 
     /// A random map, 2-60 cells a side, 0-40 % blocked (open grids have the most ties
@@ -650,14 +650,7 @@ mod tests {
                 proptest::collection::vec(prop::bool::weighted(density), w * h),
                 proptest::collection::vec((0..w, 0..h), 2..8),
             )
-                .prop_map(move |(blocked, cells)| {
-                    let zones = blocked
-                        .iter()
-                        .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
-                        .collect();
-                    let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
-                    (map, cells)
-                })
+                .prop_map(move |(blocked, cells)| (test_map(w, h, blocked), cells))
         })
     }
 
@@ -668,17 +661,14 @@ mod tests {
         let (w, h) = (800, 700);
         // 20 % of the cells blocked, from a fixed linear congruential sequence.
         let mut x: u64 = 1;
-        let zones = (0..w * h)
-            .map(|_| {
+        let map = test_map(
+            w,
+            h,
+            (0..w * h).map(|_| {
                 x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
-                if (x >> 33).is_multiple_of(5) {
-                    Zone::Forbidden
-                } else {
-                    Zone::Free
-                }
-            })
-            .collect();
-        let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+                (x >> 33).is_multiple_of(5)
+            }),
+        );
         let mut heap = GridSearch::new(&map, GridOptions::default()).unwrap();
         let mut buckets = GridSearch::new(&map, GridOptions::default()).unwrap();
         let fx = heap.fixed;

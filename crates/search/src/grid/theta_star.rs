@@ -358,7 +358,7 @@ impl GridSearch {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hyplan_core::{Point2, Zone};
+
     use proptest::prelude::*;
 
     /// A cell `(i, j)`.
@@ -373,14 +373,7 @@ mod tests {
                 proptest::collection::vec(prop::bool::weighted(density), w * h),
                 proptest::collection::vec(((0..w, 0..h), (0..w, 0..h)), 1..200),
             )
-                .prop_map(move |(blocked, pairs)| {
-                    let zones = blocked
-                        .iter()
-                        .map(|&b| if b { Zone::Forbidden } else { Zone::Free })
-                        .collect();
-                    let map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
-                    (map, pairs)
-                })
+                .prop_map(move |(blocked, pairs)| (test_map(w, h, blocked), pairs))
         })
     }
 
