@@ -363,7 +363,8 @@ pub struct SocialForce<'w> {
 }
 
 /// A moving body's speed, its step `v dt` and the step's length: what the elliptical
-/// repulsion and its cut-off take of the body's velocity.
+/// repulsion and its cut-off take of the body's velocity, computed once a step for each
+/// person rather than once for each pair.
 #[derive(Debug, Clone, Copy)]
 struct Stride {
     speed: f64,
@@ -444,13 +445,8 @@ impl<'w> SocialForce<'w> {
         me: (Point2, f64, Vector2<f64>),
         (other, other_radius, velocity): (Point2, f64, Vector2<f64>),
     ) -> Vector2<f64> {
-        self.repulsion(me, (other, other_radius, &self.stride(velocity)))
-    }
-
-    /// What the repulsion of a body moving at `velocity` takes of it, once a step for
-    /// each person rather than once for each pair.
-    fn stride(&self, velocity: Vector2<f64>) -> Stride {
-        Stride::of(velocity, self.params.step_time)
+        let stride = Stride::of(velocity, self.params.step_time);
+        self.repulsion(me, (other, other_radius, &stride))
     }
 
     /// [`person_force`](Self::person_force) with the other's [`Stride`].
@@ -613,7 +609,7 @@ impl Stepped for SocialForce<'_> {
         self.strides.clear();
         self.strides
             .extend(self.walkers.iter().map(|w| Stride::of(w.vel, dt)));
-        let robot_stride = self.stride(robot_velocity);
+        let robot_stride = Stride::of(robot_velocity, dt);
         let n = self.walkers.len();
         for k in 0..n {
             if !self.walkers[k].on_stage {

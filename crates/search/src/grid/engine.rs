@@ -639,7 +639,6 @@ impl Fixed {
 #[cfg(test)]
 mod tests {
     use super::*;
-
     use proptest::prelude::*;
 
     /// A random map, 2-60 cells a side, 0-40 % blocked (open grids have the most ties

@@ -26,18 +26,6 @@ mod jps;
 mod theta_star;
 
 pub use cost_field::CostField;
-/// A test map of `w x h` unit cells, blocked where `blocked` says (row-major from the
-/// bottom row).
-#[cfg(test)]
-fn test_map(w: usize, h: usize, blocked: impl IntoIterator<Item = bool>) -> GridMap {
-    use hyplan_core::{Point2, Zone};
-    let zones = blocked
-        .into_iter()
-        .map(|b| if b { Zone::Forbidden } else { Zone::Free })
-        .collect();
-    GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap()
-}
-
 use engine::*;
 pub use jps::{JpsError, JumpPointSearch};
 
@@ -682,4 +670,16 @@ impl GridSearch {
         cells.reverse();
         GridPath { cells, cost, stats }
     }
+}
+
+/// A test map of `w x h` unit cells, blocked where `blocked` says (row-major from the
+/// bottom row).
+#[cfg(test)]
+fn test_map(w: usize, h: usize, blocked: impl IntoIterator<Item = bool>) -> GridMap {
+    use hyplan_core::{Point2, Zone};
+    let zones = blocked
+        .into_iter()
+        .map(|b| if b { Zone::Forbidden } else { Zone::Free })
+        .collect();
+    GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap()
 }

@@ -358,7 +358,6 @@ impl GridSearch {
 #[cfg(test)]
 mod tests {
     use super::*;
-
     use proptest::prelude::*;
 
     /// A cell `(i, j)`.
