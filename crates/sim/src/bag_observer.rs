@@ -24,7 +24,7 @@
 //! the true pose. Log time, publish time and every header stamp are the tick's time.
 
 use std::path::Path;
-use std::sync::mpsc::{SyncSender, sync_channel};
+use std::sync::mpsc::{Receiver, SyncSender, channel, sync_channel};
 use std::thread::JoinHandle;
 
 use bag::{
@@ -65,8 +65,13 @@ pub struct BagRecorder {
     writer: Option<JoinHandle<Result<(), BagError>>>,
     /// Messages not yet handed over: they go in batches, a wake-up of the thread each.
     batch: Vec<Job>,
-    /// The map's cells as last published.
+    /// Batches written, sent back to be dropped here: what the run's thread allocated
+    /// is freed by it, not by the writer (whose frees into this thread's heap would
+    /// contend with it for the allocator's lock).
+    written: Receiver<Vec<Job>>,
+    /// The map's cells as last published, and the map's version they are of.
     map: Vec<i8>,
+    map_version: u64,
     path_version: u64,
     /// The tick at which the goal source's frontiers and trees were last shown.
     shown_tick: Option<u64>,
@@ -77,8 +82,9 @@ pub struct BagRecorder {
     scans: u64,
 }
 
-/// One message for the writer thread.
-type Job = Box<dyn FnOnce(&mut BagWriter) -> Result<(), BagError> + Send>;
+/// One message for the writer thread (called once; `FnMut` so that what it holds comes
+/// back with its batch).
+type Job = Box<dyn FnMut(&mut BagWriter) -> Result<(), BagError> + Send>;
 
 /// Messages handed to the writer thread at a time.
 const BATCH: usize = 64;
@@ -99,9 +105,14 @@ impl BagRecorder {
     pub fn create(path: &Path) -> Result<Self, BagError> {
         let mut bag = BagWriter::create(path)?;
         let (queue, batches) = sync_channel::<Vec<Job>>(QUEUE);
+        let (back, written) = channel::<Vec<Job>>();
         let write = move || {
-            for job in batches.into_iter().flatten() {
-                job(&mut bag)?;
+            for mut batch in batches {
+                for job in &mut batch {
+                    job(&mut bag)?;
+                }
+                // The run may be over (its end drops the receiver): then they go here.
+                let _ = back.send(batch);
             }
             bag.finish()
         };
@@ -116,7 +127,9 @@ impl BagRecorder {
             queue: Some(queue),
             writer: Some(writer),
             batch: Vec::with_capacity(BATCH),
+            written,
             map: Vec::new(),
+            map_version: 0,
             path_version: 0,
             shown_tick: None,
             trees: TreeMarkers::default(),
@@ -167,17 +180,28 @@ impl BagRecorder {
         msg: M,
     ) {
         let ns = tick * TICK_NS;
-        self.batch.push(Box::new(move |bag: &mut BagWriter| {
+        self.queue(Box::new(move |bag: &mut BagWriter| {
             bag.write(topic, ns, &msg)
         }));
+    }
+
+    /// Queues `job` for the writer thread.
+    fn queue(&mut self, job: Job) {
+        self.batch.push(job);
         if self.batch.len() >= BATCH {
             self.hand_over();
         }
     }
 
-    /// Sends the batch to the writer thread.
+    /// Sends the batch to the writer thread (the next one reuses a written batch).
     fn hand_over(&mut self) {
-        let batch = std::mem::replace(&mut self.batch, Vec::with_capacity(BATCH));
+        let mut next = Vec::new();
+        while let Ok(mut done) = self.written.try_recv() {
+            done.clear();
+            next = done;
+        }
+        next.reserve(BATCH);
+        let batch = std::mem::replace(&mut self.batch, next);
         if let Some(queue) = &self.queue
             && queue.send(batch).is_err()
         {
@@ -190,22 +214,22 @@ impl BagRecorder {
     /// reaches into a cell, 0 elsewhere); else the built map whenever an update changed
     /// it, as gmapping does.
     fn publish_map(&mut self, sim: &Sim<'_>) {
-        let values = if sim.scenario.known_map {
+        if sim.scenario.known_map {
             if !self.map.is_empty() {
                 return;
             }
             let frame = sim.map.frame();
             let (_, _, cells) =
                 crate::costmap::rasterize(sim.world.bounds, &sim.world.mapped, frame.resolution);
-            cells
+            self.map = cells
                 .iter()
                 .map(|&c| if c { OCCUPIED } else { FREE })
-                .collect()
+                .collect();
         } else {
-            sim.map.ros_values()
-        };
-        if values == self.map {
-            return;
+            let since = std::mem::replace(&mut self.map_version, sim.map.version());
+            if !sim.map.update_ros_values(&mut self.map, since) {
+                return;
+            }
         }
         let ns = sim.tick() * TICK_NS;
         let frame = sim.map.frame();
@@ -219,10 +243,9 @@ impl BagRecorder {
                 height: frame.height as u32,
                 origin: Pose::planar(origin.x, origin.y, 0.0),
             },
-            data: values.clone(),
+            data: self.map.clone(),
         };
         self.write("/map", sim.tick(), grid);
-        self.map = values;
     }
 
     fn publish_scan(&mut self, sim: &Sim<'_>, scan: &Scan) {
@@ -243,34 +266,40 @@ impl BagRecorder {
         self.write("/scan", sim.tick(), msg);
     }
 
+    /// `/odom` and `/tf`, built by the writer thread from the pose: their dozen frame
+    /// names and vectors are then allocated and freed there, where the run's thread
+    /// would otherwise contend with it for the allocator's lock at the laser's rate.
     fn publish_pose(&mut self, sim: &Sim<'_>) {
         let ns = sim.tick() * TICK_NS;
         let (pose, twist) = (sim.pose(), sim.twist());
-        let mut odom = Odometry {
-            header: Header::at(ns, ODOM),
-            child_frame_id: BASE.into(),
-            ..Odometry::default()
-        };
-        odom.pose.pose = Pose::planar(pose.x, pose.y, pose.phi);
-        odom.twist.twist.linear.x = twist.v;
-        odom.twist.twist.angular.z = twist.omega;
-        self.write("/odom", sim.tick(), odom);
-        let link = |parent: &str, child: &str, x: f64, y: f64, yaw: f64| TransformStamped {
-            header: Header::at(ns, parent),
-            child_frame_id: child.into(),
-            transform: Transform {
-                translation: Vector3 { x, y, z: 0.0 },
-                rotation: Quaternion::from_yaw(yaw),
-            },
-        };
-        let tf = TFMessage {
-            transforms: vec![
-                link(MAP, ODOM, 0.0, 0.0, 0.0),
-                link(ODOM, BASE, pose.x, pose.y, pose.phi),
-                link(BASE, LASER, sim.laser().laser.mount_offset, 0.0, 0.0),
-            ],
-        };
-        self.write("/tf", sim.tick(), tf);
+        let mount = sim.laser().laser.mount_offset;
+        self.queue(Box::new(move |bag: &mut BagWriter| {
+            let mut odom = Odometry {
+                header: Header::at(ns, ODOM),
+                child_frame_id: BASE.into(),
+                ..Odometry::default()
+            };
+            odom.pose.pose = Pose::planar(pose.x, pose.y, pose.phi);
+            odom.twist.twist.linear.x = twist.v;
+            odom.twist.twist.angular.z = twist.omega;
+            bag.write("/odom", ns, &odom)?;
+            let link = |parent: &str, child: &str, x: f64, y: f64, yaw: f64| TransformStamped {
+                header: Header::at(ns, parent),
+                child_frame_id: child.into(),
+                transform: Transform {
+                    translation: Vector3 { x, y, z: 0.0 },
+                    rotation: Quaternion::from_yaw(yaw),
+                },
+            };
+            let tf = TFMessage {
+                transforms: vec![
+                    link(MAP, ODOM, 0.0, 0.0, 0.0),
+                    link(ODOM, BASE, pose.x, pose.y, pose.phi),
+                    link(BASE, LASER, mount, 0.0, 0.0),
+                ],
+            };
+            bag.write("/tf", ns, &tf)
+        }));
     }
 
     fn publish_plan(&mut self, sim: &Sim<'_>) {
@@ -304,10 +333,11 @@ impl BagRecorder {
             let markers = vec![delete_all(ns), dots];
             self.write("/frontiers", sim.tick(), MarkerArray { markers });
         }
-        let edges = info.goals.tree_edges();
-        if !edges.is_empty()
-            && let Some(array) = self.trees.show(ns, edges)
-        {
+        let mut edges = self.trees.buffer();
+        info.goals.tree_edges(&mut edges);
+        if edges.is_empty() {
+            self.trees.spare = edges;
+        } else if let Some(array) = self.trees.show(ns, edges) {
             self.write("/rrt_tree", sim.tick(), array);
         }
     }
@@ -362,6 +392,8 @@ fn delete_all(ns: u64) -> Marker {
 struct TreeMarkers {
     /// The edges of the last show.
     last: Vec<(Point2, Point2)>,
+    /// A buffer for the next show's edges (the one before's, reused).
+    spare: Vec<(Point2, Point2)>,
     /// How many of them kept markers `0..kept` hold.
     settled: usize,
     kept: i32,
@@ -371,9 +403,17 @@ struct TreeMarkers {
 const TREE_TAIL: i32 = i32::MAX;
 
 impl TreeMarkers {
+    /// An empty vector for the next show's edges, with the capacity of an earlier one.
+    fn buffer(&mut self) -> Vec<(Point2, Point2)> {
+        let mut edges = std::mem::take(&mut self.spare);
+        edges.clear();
+        edges
+    }
+
     /// The array showing `edges` at `ns`, or `None` when they did not change.
     fn show(&mut self, ns: u64, edges: Vec<(Point2, Point2)>) -> Option<MarkerArray> {
         if edges == self.last {
+            self.spare = edges;
             return None;
         }
         let common = edges
@@ -412,7 +452,7 @@ impl TreeMarkers {
         }
         // The tail, even empty: it replaces the last one.
         markers.push(lines(TREE_TAIL, &edges[self.settled..]));
-        self.last = edges;
+        self.spare = std::mem::replace(&mut self.last, edges);
         Some(MarkerArray { markers })
     }
 }

@@ -165,10 +165,10 @@ pub trait GoalSource {
     fn frontiers(&self) -> Vec<Point2> {
         Vec::new()
     }
-    /// The edges of the trees it grows (the RRT detectors), for observers that show them.
-    fn tree_edges(&self) -> Vec<(Point2, Point2)> {
-        Vec::new()
-    }
+    /// Appends the edges of the trees it grows (the RRT detectors) to `out`, for
+    /// observers that show them. A buffer the caller keeps: a grown tree's edges are
+    /// megabytes, and a fresh vector each time costs its page faults again.
+    fn tree_edges(&self, _out: &mut Vec<(Point2, Point2)>) {}
 }
 
 /// Watches a run: traces, coverage, snapshots, animation frames, logs.

@@ -261,9 +261,8 @@ impl RrtDetector {
     }
 
     /// The tree's edges (parent, child).
-    #[must_use]
-    pub fn edges(&self) -> Vec<(Point2, Point2)> {
-        self.tree.edges().collect()
+    pub fn edges(&self) -> impl Iterator<Item = (Point2, Point2)> + '_ {
+        self.tree.edges()
     }
 
     /// Number of nodes.

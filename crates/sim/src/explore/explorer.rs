@@ -210,16 +210,8 @@ impl Explorer {
         Snapshot {
             t,
             pose,
-            global_edges: self
-                .global
-                .as_ref()
-                .map(RrtDetector::edges)
-                .unwrap_or_default(),
-            local_edges: self
-                .local
-                .as_ref()
-                .map(RrtDetector::edges)
-                .unwrap_or_default(),
+            global_edges: self.global.iter().flat_map(RrtDetector::edges).collect(),
+            local_edges: self.local.iter().flat_map(RrtDetector::edges).collect(),
             published: self.all_published.clone(),
             frontiers: self.candidates.clone(),
             goal: self.goal,
@@ -651,12 +643,13 @@ impl GoalSource for Explorer {
     }
 
     /// The global tree's edges, then the local tree's.
-    fn tree_edges(&self) -> Vec<(Point2, Point2)> {
-        [self.global.as_ref(), self.local.as_ref()]
+    fn tree_edges(&self, out: &mut Vec<(Point2, Point2)>) {
+        for tree in [self.global.as_ref(), self.local.as_ref()]
             .into_iter()
             .flatten()
-            .flat_map(RrtDetector::edges)
-            .collect()
+        {
+            out.extend(tree.edges());
+        }
     }
 
     fn moved(&mut self, from: Pose, to: Pose, step: f64) {
