@@ -262,33 +262,64 @@ impl Walls {
         )
     }
 
-    /// The indices of the obstacles whose bounding box comes within `reach` of `p`, in
-    /// increasing order, into `out`.
-    fn near(&self, p: Point2, reach: f64, out: &mut Vec<u32>) {
-        out.clear();
+    /// The indices of the obstacles whose bounding box comes within `reach` of `p`,
+    /// nearest first (ties to the lower index), into `out.indices`.
+    fn near(&self, p: Point2, reach: f64, out: &mut Near) {
+        out.indices.clear();
+        out.keyed.clear();
         if self.buckets.is_empty() {
             return;
         }
+        if out.mark.len() != self.obstacles.len() {
+            out.mark = vec![0; self.obstacles.len()];
+            out.generation = 0;
+        }
+        // A new mark for this query; on wrap-around every old mark is cleared.
+        out.generation = out.generation.wrapping_add(1);
+        if out.generation == 0 {
+            out.mark.fill(0);
+            out.generation = 1;
+        }
+        let at = vec2(p);
         let r = Vector2::new(reach, reach);
         let ((i0, j0), (i1, j1)) = (self.cell_of(p - r), self.cell_of(p + r));
         for j in j0..=j1 {
             for i in i0..=i1 {
-                out.extend_from_slice(&self.buckets[j * self.size.0 + i]);
+                for &k in &self.buckets[j * self.size.0 + i] {
+                    // An obstacle in several buckets is taken once.
+                    let mark = &mut out.mark[k as usize];
+                    if *mark == out.generation {
+                        continue;
+                    }
+                    *mark = out.generation;
+                    let (lo, hi) = self.boxes[k as usize];
+                    let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
+                    let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
+                    if dx * dx + dy * dy <= reach * reach {
+                        let d = distance_sq(&self.obstacles[k as usize], at);
+                        out.keyed.push((d.to_bits(), k));
+                    }
+                }
             }
         }
-        out.sort_unstable();
-        out.dedup();
-        out.retain(|&k| {
-            let (lo, hi) = self.boxes[k as usize];
-            let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
-            let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
-            dx * dx + dy * dy <= reach * reach
-        });
         // Nearest first, as RVO2 orders obstacle neighbours: an edge hidden behind a
         // nearer one's half-plane is then skipped.
-        let at = vec2(p);
-        out.sort_by_cached_key(|&k| (distance_sq(&self.obstacles[k as usize], at).to_bits(), k));
+        out.keyed.sort_unstable();
+        out.indices.extend(out.keyed.iter().map(|&(_, k)| k));
     }
+}
+
+/// Scratch of [`Walls::near`], kept between queries: its result and what finding it
+/// takes.
+#[derive(Debug, Clone, Default)]
+struct Near {
+    /// The obstacles near the query point, nearest first.
+    indices: Vec<u32>,
+    /// (squared distance's bits, index) of each, before sorting.
+    keyed: Vec<(u32, u32)>,
+    /// Per obstacle, the last query that took it.
+    mark: Vec<u32>,
+    generation: u32,
 }
 
 /// The squared distance from `p` to `obstacle`'s edges (non-negative, so its bits sort
@@ -381,7 +412,7 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 /// (`cost_of_twenty_people`, release), one call takes about 40 us in an open room (1.5x
 /// [`crate::SocialForce`]) but about 3 ms among a loaded map's 3600 cell edges of
 /// pillars (about 25x, each person handed hundreds of edges). That is once per
-/// [`crate::STEP`] of simulated time (50 Hz, as [`crate::SocialForce`]); a call between
+/// [`crate::STEP`] of simulated time (25 Hz, as [`crate::SocialForce`]); a call between
 /// steps extrapolates the positions.
 ///
 /// # Use
@@ -417,6 +448,8 @@ pub struct Orca<'w> {
     walkers: Vec<Walker>,
     /// The velocities of the step being taken.
     next: Vec<Vector2<f64>>,
+    /// The walls near the person being stepped (scratch).
+    near: Near,
     clock: Stepper,
 }
 
@@ -437,6 +470,7 @@ impl<'w> Orca<'w> {
             robot_radius,
             walkers: Vec::with_capacity(people.len()),
             next: vec![Vector2::zeros(); people.len()],
+            near: Near::default(),
             clock: Stepper::default(),
         };
         let widest = (0..people.len())
@@ -536,7 +570,7 @@ impl Stepped for Orca<'_> {
             });
         }
         let mut candidates: Vec<(f64, usize)> = Vec::with_capacity(agents.len());
-        let mut near = Vec::new();
+        let mut near = std::mem::take(&mut self.near);
         let reach_sq = self.params.neighbour_distance * self.params.neighbour_distance;
         for k in 0..n {
             if !self.walkers[k].on_stage {
@@ -590,6 +624,7 @@ impl Stepped for Orca<'_> {
                 .collect();
             self.walls.near(at, self.reach(k), &mut near);
             let obstacles: Vec<Cow<'_, Obstacle>> = near
+                .indices
                 .iter()
                 .map(|&i| Cow::Borrowed(&self.walls.obstacles[i as usize]))
                 .collect();
@@ -612,6 +647,7 @@ impl Stepped for Orca<'_> {
                 Vector2::zeros()
             };
         }
+        self.near = near;
         for (w, v) in self.walkers.iter_mut().zip(&self.next) {
             if w.on_stage {
                 w.vel = *v;
@@ -715,14 +751,14 @@ mod tests {
             solid_left_at(4, Point2::new(21.0, 0.5)),
             solid_left_at(5, Point2::new(21.0, 0.5))
         );
-        let mut near = Vec::new();
+        let mut near = Near::default();
         walls.near(Point2::new(6.0, 6.0), 0.6, &mut near);
-        assert_eq!(near, [0, 1, 2, 3]);
+        assert_eq!(near.indices, [0, 1, 2, 3]);
         walls.near(Point2::new(20.5, 0.5), 0.6, &mut near);
-        assert_eq!(near, [4, 5]);
+        assert_eq!(near.indices, [4, 5]);
         walls.near(Point2::new(1.5, 1.5), 0.6, &mut near);
-        assert_eq!(near, [6, 7, 8, 9]);
+        assert_eq!(near.indices, [6, 7, 8, 9]);
         walls.near(Point2::new(10.0, 10.0), 1.0, &mut near);
-        assert!(near.is_empty());
+        assert!(near.indices.is_empty());
     }
 }

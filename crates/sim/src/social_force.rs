@@ -15,14 +15,15 @@ use crate::world::{Disc, NearIndex, OFFSTAGE, Person, StaticWorld, Walk, World, 
 /// encounters (see [`SocialForce`]).
 pub const KEEP_RIGHT: f64 = 1e-3;
 
-/// Repulsions are dropped beyond this many ranges (`sigma`, `R`): `exp(-14)` is below
-/// 1e-6, so what is dropped is under 1e-4 m/s^2 with the paper's parameters.
+/// Repulsions are dropped where the potential's `b` (for walls, the distance) exceeds this
+/// many ranges (`sigma`, `R`): `exp(-14)` is below 1e-6, so what is dropped is under
+/// 1e-4 m/s^2 with the paper's parameters.
 pub const CUTOFF_RANGES: f64 = 14.0;
 
 /// The integration step, s: people move in fixed steps of this length on their own clock
-/// (50 Hz, every fourth 5 ms tick of the engine), and a call between steps extrapolates
-/// their positions at their velocities.
-pub const STEP: f64 = 0.02;
+/// (25 Hz, every eighth 5 ms tick of the engine, the update rate of pedsim_ros's
+/// simulator), and a call between steps extrapolates their positions at their velocities.
+pub const STEP: f64 = 0.04;
 
 /// The social force model's parameters (scenario syntax), each defaulting to the paper's
 /// value (Helbing and Molnár 1995, the parameters of its simulations).
@@ -300,8 +301,10 @@ struct Walker {
 ///   face to face. Instead each person sees the others `keep_right` ([`KEEP_RIGHT`],
 ///   1 mm) further to their left than they are, so that an exact tie is broken toward
 ///   passing on the right (a side preference); set it to 0 for the paper's forces alone.
-/// - **Cut-off and step.** Repulsions from farther than [`CUTOFF_RANGES`] ranges are
-///   dropped (below 1e-4 m/s^2), and people move in fixed steps of [`STEP`] (50 Hz).
+/// - **Cut-off and step.** A repulsion whose `b` exceeds [`CUTOFF_RANGES`] ranges is
+///   dropped (below 1e-4 m/s^2), and people move in fixed steps of [`STEP`] (25 Hz,
+///   pedsim_ros's update rate; at 50 Hz a 20-person crowd cost 2.2 times the empty
+///   hall's time, against 1.9 at 25 Hz, see `docs/measurements/issue-29.md`).
 /// - **Groups.** Members of a [`Person::group`] are pulled toward the group's centre of
 ///   mass ([`SocialForceParams::group_strength`]), the paper's attraction to friends in
 ///   the form Moussaïd et al. 2010 give it.
@@ -310,8 +313,9 @@ struct Walker {
 ///
 /// # Cost
 ///
-/// One step with `n` people costs up to `n (n - 1)` pair forces (a
-/// square root, an exponential and a few products each), `n` robot forces and `n` calls
+/// One step with `n` people costs up to `n (n - 1)` pair forces (four square roots, an
+/// exponential and a few products each; a pair farther apart than the cut-off's reach,
+/// which grows with the other's speed, costs a comparison), `n` robot forces and `n` calls
 /// of [`StaticWorld::nearest`] (a sweep of the static segments, or a ring of the loaded
 /// map's distance transform): O(n^2) + n nearest-wall queries, with no allocation beyond
 /// the returned discs, once per [`STEP`] of simulated time (a call between steps costs
@@ -362,24 +366,30 @@ pub struct SocialForce<'w> {
     clock: Stepper,
 }
 
-/// A moving body's speed, its step `v dt` and the step's length: what the elliptical
-/// repulsion and its cut-off take of the body's velocity, computed once a step for each
-/// person rather than once for each pair.
+/// A moving body's step `v dt`, the step's length and the reach of its repulsion: what
+/// the elliptical repulsion and its cut-off take of the body's velocity, computed once a
+/// step for each person rather than once for each pair.
 #[derive(Debug, Clone, Copy)]
 struct Stride {
-    speed: f64,
     step: Vector2<f64>,
     length: f64,
+    /// The gap between bodies beyond which the potential's `b` exceeds `cutoff`.
+    reach: f64,
 }
 
 impl Stride {
-    /// The stride of a body moving at `velocity`, with the model's `dt`.
-    fn of(velocity: Vector2<f64>, dt: f64) -> Self {
+    /// The stride of a body moving at `velocity`, with the model's `dt`, for a repulsion
+    /// cut off where `b` exceeds `cutoff`, m.
+    fn of(velocity: Vector2<f64>, dt: f64, cutoff: f64) -> Self {
         let step = velocity * dt;
+        let length = step.norm();
+        // With `n1 = |r|` and `s = |v| dt`, `|r - s e| >= n1 - s`, so
+        // `b >= sqrt(n1 (n1 - s))`, which exceeds `cutoff` beyond this `n1`.
+        let reach = 0.5 * (length + (length * length + 4.0 * cutoff * cutoff).sqrt());
         Self {
-            speed: velocity.norm(),
             step,
-            length: step.norm(),
+            length,
+            reach,
         }
     }
 }
@@ -445,7 +455,7 @@ impl<'w> SocialForce<'w> {
         me: (Point2, f64, Vector2<f64>),
         (other, other_radius, velocity): (Point2, f64, Vector2<f64>),
     ) -> Vector2<f64> {
-        let stride = Stride::of(velocity, self.params.step_time);
+        let stride = Stride::of(velocity, self.params.step_time, self.cutoff());
         self.repulsion(me, (other, other_radius, &stride))
     }
 
@@ -471,6 +481,9 @@ impl<'w> SocialForce<'w> {
             let (n1, n2, s) = (gap.norm(), ahead.norm(), stride.length);
             let sum = n1 + n2;
             let b = 0.5 * (sum * sum - s * s).max(0.0).sqrt();
+            if b > self.cutoff() {
+                return Vector2::zeros();
+            }
             // grad b = (|r| + |r - s e|) (r / |r| + (r - s e) / |r - s e|) / (4 b).
             let unit = |v: Vector2<f64>, n: f64| if n > 0.0 { v / n } else { Vector2::zeros() };
             let grad = if b > 1e-12 {
@@ -483,21 +496,20 @@ impl<'w> SocialForce<'w> {
         force * self.view_weight(facing, force)
     }
 
-    /// Whether a body `other` may push one at `me` by more than the cut-off: the
-    /// potential's `b` is at least the gap between the bodies less the other's step
-    /// `|v_b| dt` (and the side preference), so beyond [`CUTOFF_RANGES`] ranges of that
-    /// the force is negligible.
+    /// The potential's `b` beyond which a repulsion is dropped: [`CUTOFF_RANGES`] ranges.
+    fn cutoff(&self) -> f64 {
+        CUTOFF_RANGES * self.params.person_range
+    }
+
+    /// Whether a body `other` may push one at `me` at all: a cheap test on the centre
+    /// distance, true for every pair whose `b` is within the cut-off (the gap between the
+    /// bodies, less the side preference, is within the other's [`Stride`] reach).
     fn within_reach(
         &self,
         (at, radius, _): (Point2, f64, Vector2<f64>),
         (other, other_radius, stride): (Point2, f64, &Stride),
     ) -> bool {
-        let p = &self.params;
-        let reach = radius
-            + other_radius
-            + p.keep_right
-            + stride.speed * p.step_time
-            + CUTOFF_RANGES * p.person_range;
+        let reach = radius + other_radius + self.params.keep_right + stride.reach;
         (at - other).norm_squared() <= reach * reach
     }
 
@@ -605,11 +617,11 @@ impl Stepped for SocialForce<'_> {
     fn step(&mut self, t: f64, h: f64, robot: Point2, robot_velocity: Vector2<f64>) {
         self.enter_and_leave(t);
         self.group_centres();
-        let dt = self.params.step_time;
+        let (dt, cutoff) = (self.params.step_time, self.cutoff());
         self.strides.clear();
         self.strides
-            .extend(self.walkers.iter().map(|w| Stride::of(w.vel, dt)));
-        let robot_stride = Stride::of(robot_velocity, dt);
+            .extend(self.walkers.iter().map(|w| Stride::of(w.vel, dt, cutoff)));
+        let robot_stride = Stride::of(robot_velocity, dt, cutoff);
         let n = self.walkers.len();
         for k in 0..n {
             if !self.walkers[k].on_stage {

@@ -131,16 +131,16 @@ fn orca_crowds_walk_through() {
 
 /// A person who does not look walks into the robot's side from behind it, seen at the
 /// edge of the 180-degree laser's view a moment before contact (the doors crowd 2026 /
-/// 332 of `cargo xtask crowd`, social forces, regulated pure pursuit). Without the
+/// 149 of `cargo xtask crowd`, social forces, regulated pure pursuit). Without the
 /// collision monitor the robot still creeps toward them at contact (at fault); with it
 /// (the crowd scenarios' default) it has stopped.
 #[test]
 fn the_collision_monitor_stops_before_a_blind_walker_arrives() {
-    let mut sc = sim::crowd(CrowdFlow::Doors, 1.0, 2026, 332);
+    let mut sc = sim::crowd(CrowdFlow::Doors, 1.0, 2026, 149);
     assert!(sc.navigation.collision_monitor.is_some());
     sc.people_model = PeopleModelKind::from_name("social-force-blind").unwrap();
     let world = sc.build_world(Path::new(&sc.name)).unwrap();
-    let with = sim::run(&sc, &world, 332, GlobalPlanner::Dijkstra);
+    let with = sim::run(&sc, &world, 149, GlobalPlanner::Dijkstra);
     assert!(with.trace.summary.reached);
     assert_eq!(
         with.trace.summary.contacts_at_fault, 0,
@@ -148,23 +148,23 @@ fn the_collision_monitor_stops_before_a_blind_walker_arrives() {
         with.trace.contacts
     );
     sc.navigation.collision_monitor = None;
-    let without = sim::run(&sc, &world, 332, GlobalPlanner::Dijkstra);
+    let without = sim::run(&sc, &world, 149, GlobalPlanner::Dijkstra);
     assert!(without.trace.summary.contacts_at_fault > 0);
 }
 
-/// People who see the robot crowd round it in the corridor (crowd 2026 / 2, social
+/// People who see the robot crowd round it in the corridor (crowd 2026 / 230, social
 /// forces, regulated pure pursuit): counted as failures, their blocks make the navigator
 /// give up after eight in a row; waited for (the crowd scenarios' `people_patience`),
 /// they walk on and the robot arrives.
 #[test]
 fn the_robot_waits_for_people_instead_of_giving_up() {
-    let mut sc = sim::crowd(CrowdFlow::Corridor, 1.0, 2026, 2);
+    let mut sc = sim::crowd(CrowdFlow::Corridor, 1.0, 2026, 230);
     assert_eq!(sc.navigation.people_patience, sim::PEOPLE_PATIENCE);
     let world = sc.build_world(Path::new(&sc.name)).unwrap();
-    let waited = sim::run(&sc, &world, 2, GlobalPlanner::Dijkstra);
+    let waited = sim::run(&sc, &world, 230, GlobalPlanner::Dijkstra);
     assert!(waited.trace.summary.reached);
     sc.navigation.people_patience = 0.0;
-    let counted = sim::run(&sc, &world, 2, GlobalPlanner::Dijkstra);
+    let counted = sim::run(&sc, &world, 230, GlobalPlanner::Dijkstra);
     assert!(!counted.trace.summary.reached);
     assert!(
         counted
