@@ -263,7 +263,8 @@ impl Walls {
     }
 
     /// The indices of the obstacles whose bounding box comes within `reach` of `p`,
-    /// nearest first (ties to the lower index), into `out.indices`.
+    /// nearest first (ties to the lower index), into `out.indices`, but for single edges
+    /// that `p` is behind ([`back_facing`]).
     fn near(&self, p: Point2, reach: f64, out: &mut Near) {
         out.indices.clear();
         out.keyed.clear();
@@ -295,9 +296,9 @@ impl Walls {
                     let (lo, hi) = self.boxes[k as usize];
                     let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
                     let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
-                    if dx * dx + dy * dy <= reach * reach {
-                        let d = distance_sq(&self.obstacles[k as usize], at);
-                        out.keyed.push((d.to_bits(), k));
+                    let obstacle = &self.obstacles[k as usize];
+                    if dx * dx + dy * dy <= reach * reach && !back_facing(obstacle, at) {
+                        out.keyed.push((distance_sq(obstacle, at).to_bits(), k));
                     }
                 }
             }
@@ -320,6 +321,22 @@ struct Near {
     /// Per obstacle, the last query that took it.
     mark: Vec<u32>,
     generation: u32,
+}
+
+/// Whether `obstacle` is a single edge with `p` strictly on its solid side, for
+/// which dodgy_2d draws no half-plane: by its own test, in its own `f32` arithmetic, so
+/// that leaving the edge out changes nothing. RVO2 leaves such edges out of an agent's
+/// obstacle neighbours too.
+fn back_facing(obstacle: &Obstacle, p: Vec2) -> bool {
+    match obstacle {
+        Obstacle::Open { vertices } if vertices.len() == 2 => {
+            let (left, right) = (vertices[0], vertices[1]);
+            let from_left = -(left - p);
+            let edge = right - left;
+            from_left.x * edge.y - from_left.y * edge.x < 0.0
+        }
+        _ => false,
+    }
 }
 
 /// The squared distance from `p` to `obstacle`'s edges (non-negative, so its bits sort
@@ -616,8 +633,15 @@ impl Stepped for Orca<'_> {
                     })
                     .filter(|&(d_sq, _)| d_sq <= reach_sq),
             );
-            candidates.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-            candidates.truncate(self.params.max_neighbours);
+            let nearer =
+                |a: &(f64, usize), b: &(f64, usize)| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1));
+            let keep = self.params.max_neighbours;
+            if keep > 0 && candidates.len() > keep {
+                // Only the nearest `keep` need sorting (a total order: the same ones).
+                candidates.select_nth_unstable_by(keep - 1, nearer);
+            }
+            candidates.truncate(keep);
+            candidates.sort_unstable_by(nearer);
             let neighbours: Vec<Cow<'_, Agent>> = candidates
                 .iter()
                 .map(|&(_, j)| seen(me, &agents[j], left * keep_right, j > k, h as f32))
@@ -751,13 +775,26 @@ mod tests {
             solid_left_at(4, Point2::new(21.0, 0.5)),
             solid_left_at(5, Point2::new(21.0, 0.5))
         );
+        // From inside the box and the cell every edge is seen from its solid side.
         let mut near = Near::default();
         walls.near(Point2::new(6.0, 6.0), 0.6, &mut near);
-        assert_eq!(near.indices, [0, 1, 2, 3]);
-        walls.near(Point2::new(20.5, 0.5), 0.6, &mut near);
-        assert_eq!(near.indices, [4, 5]);
+        assert!(near.indices.is_empty(), "{:?}", near.indices);
         walls.near(Point2::new(1.5, 1.5), 0.6, &mut near);
-        assert_eq!(near.indices, [6, 7, 8, 9]);
+        assert!(near.indices.is_empty(), "{:?}", near.indices);
+        // Below the box: its bottom edge; its sides are within reach but seen from behind.
+        walls.near(Point2::new(6.0, 5.2), 0.6, &mut near);
+        assert_eq!(near.indices.len(), 1);
+        let Obstacle::Open { vertices } = &walls.obstacles[near.indices[0] as usize] else {
+            panic!()
+        };
+        assert!(vertices.iter().all(|v| v.y == 5.5), "{vertices:?}");
+        // One side of the loose edge, the one facing the point.
+        walls.near(Point2::new(20.5, 0.5), 0.6, &mut near);
+        assert_eq!(near.indices.len(), 1);
+        assert!(!solid_left_at(
+            near.indices[0] as usize,
+            Point2::new(20.5, 0.5)
+        ));
         walls.near(Point2::new(10.0, 10.0), 1.0, &mut near);
         assert!(near.indices.is_empty());
     }
