@@ -383,7 +383,7 @@ impl Stride {
     fn of(velocity: Vector2<f64>, dt: f64, cutoff: f64) -> Self {
         let step = velocity * dt;
         let length = step.norm();
-        // With `n1 = |r|` and `s = |v| dt`, `|r - s e| >= n1 - s`, so
+        // With `n1` the gap between the bodies and `s = |v| dt`, `|r - s e| >= n1 - s`, so
         // `b >= sqrt(n1 (n1 - s))`, which exceeds `cutoff` beyond this `n1`.
         let reach = 0.5 * (length + (length * length + 4.0 * cutoff * cutoff).sqrt());
         Self {
@@ -789,6 +789,45 @@ mod tests {
             goals(Walk::BackAndForth),
             [s(1), s(2), s(1), s(0), s(1), s(2)]
         );
+    }
+
+    /// The cheap test on the centre distance drops only pairs whose `b` (computed here
+    /// from its definition, as the repulsion does) exceeds the cut-off, over random
+    /// bodies, facings and velocities up to a fast walker's 1.7 m/s.
+    #[test]
+    fn the_reach_test_drops_only_pairs_beyond_the_cut_off() {
+        use rand::{Rng, SeedableRng};
+        let statics = StaticWorld::default();
+        let model = SocialForce::new(&[], &statics, 0.2, SocialForceParams::default());
+        let p = model.params;
+        let cutoff = model.cutoff();
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(29);
+        let mut dropped = 0;
+        for _ in 0..100_000 {
+            let mut draw = |a: f64| rng.random_range(-a..a);
+            let at = Point2::new(draw(8.0), draw(8.0));
+            let velocity = Vector2::new(draw(1.7), draw(1.7));
+            let angle: f64 = draw(std::f64::consts::PI);
+            let facing = Vector2::new(angle.cos(), angle.sin());
+            let stride = Stride::of(velocity, p.step_time, cutoff);
+            let (me, other) = ((at, 0.25, facing), (Point2::origin(), 0.3, &stride));
+            if model.within_reach(me, other) {
+                continue;
+            }
+            dropped += 1;
+            let r = at - Point2::origin();
+            let centres = r.norm();
+            let left = Vector2::new(-facing.y, facing.x);
+            let gap = r * ((centres - 0.55) / centres) - left * p.keep_right;
+            let (n1, n2, s) = (
+                gap.norm(),
+                (gap - velocity * p.step_time).norm(),
+                stride.length,
+            );
+            let b = 0.5 * ((n1 + n2).powi(2) - s * s).max(0.0).sqrt();
+            assert!(b > cutoff, "b {b} at {at:?}, velocity {velocity:?}");
+        }
+        assert!(dropped > 10_000, "{dropped}");
     }
 
     /// The elliptical potential's force: away from a standing body, as strong as
