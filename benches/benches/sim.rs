@@ -13,8 +13,8 @@
 //! walking back and forth across it at 1.3 m/s under social forces, and the same people
 //! under ORCA (who see the robot in both): issue 29 asks the crowd to cost at most twice
 //! the run without people. The runs
-//! differ in what the robot does too (it stops and re-plans for people), so the bench
-//! also prints the cost per simulated second of each.
+//! differ in what the robot does too (it stops and re-plans for people), so each run's
+//! name carries its simulated time, and the costs compare per simulated second.
 //!
 //! `laser-cast/explore-22m`: one full scan (720 beams, exact) from each of 400 poses on a
 //! grid over the free space of the 22 m exploration world, the hot path of every run.
