@@ -10,17 +10,19 @@ use kiddo::SquaredEuclidean;
 use rustc_hash::FxHashMap as HashMap;
 
 /// kiddo's mutable tree: `f64` coordinates, `u64` items (our point ids), 2 axes, buckets of
-/// [`BUCKET`] points, `u32` node indices.
-type KdTree = kiddo::float::kdtree::KdTree<f64, u64, 2, BUCKET, u32>;
-
-/// kiddo's leaf bucket size: 64 rather than kiddo's 32, because an RRT's samples land
-/// far from a tree that fills a maze slowly, and such a query visits many leaves; on the
-/// maze of `cargo xtask bench-peers` RRT took 0.80x and RRT-Connect 0.92x the time with
-/// 64 (the same paths), 16 was no faster on open maps and 128 or more slower on both.
-const BUCKET: usize = 64;
+/// `B` points, `u32` node indices.
+type KdTree<const B: usize> = kiddo::float::kdtree::KdTree<f64, u64, 2, B, u32>;
 
 /// A growing set of 2-D points with nearest and within-radius queries, in plain (not
-/// squared) world-unit distances.
+/// squared) world-unit distances, in a k-d tree whose leaves hold `B` points.
+///
+/// The default `B`, 64 rather than kiddo's 32, suits planners: an RRT's samples land far
+/// from a tree that fills a maze slowly, and such a query visits many leaves. On the
+/// maze of `cargo xtask bench-peers` RRT took 0.80x and RRT-Connect 0.92x the time with
+/// 64 (the same paths); 16 was no faster on open maps and 128 or more slower on both. A
+/// tree that grows for hours over a whole building, queried from anywhere in it (an
+/// exploration's global frontier detector), is faster with 256
+/// ([`with_bucket_capacity`](Self::with_bucket_capacity)).
 ///
 /// Points get consecutive ids `0, 1, 2, ...` in insertion order, so callers keep their own
 /// per-node data (parents, costs) in plain vectors indexed by the id.
@@ -52,8 +54,8 @@ const BUCKET: usize = 64;
 /// assert_eq!(ids, [0, 1]);
 /// ```
 #[derive(Debug, Clone, Default)]
-pub struct NearestIndex {
-    tree: KdTree,
+pub struct NearestIndex<const B: usize = 64> {
+    tree: KdTree<B>,
     points: Vec<Point2>,
     /// Ids present in the k-d tree, by exact coordinates (bit patterns).
     first_at: HashMap<[u64; 2], u64>,
@@ -71,18 +73,42 @@ impl NearestIndex {
     /// An empty index with room for `n` points before reallocating.
     #[must_use]
     pub fn with_capacity(n: usize) -> Self {
-        Self {
-            points: Vec::with_capacity(n),
-            first_at: HashMap::with_capacity_and_hasher(n, Default::default()),
-            ..Self::default()
-        }
+        Self::with_bucket_capacity(n)
     }
 
     /// An index holding only `root` (id 0), with room for a growing tree's first 1024
     /// nodes.
     #[must_use]
     pub fn rooted_at(root: Point2) -> Self {
-        let mut index = Self::with_capacity(1024);
+        Self::rooted_in_buckets(root)
+    }
+}
+
+impl<const B: usize> NearestIndex<B> {
+    /// An empty index of leaves of `B` points, with room for `n` points before
+    /// reallocating.
+    ///
+    /// ```
+    /// use hyplan_core::Point2;
+    /// use sampling::NearestIndex;
+    /// let mut index = NearestIndex::<256>::with_bucket_capacity(16);
+    /// index.insert(Point2::new(1.0, 2.0));
+    /// assert_eq!(index.nearest(Point2::new(1.0, 3.0)), Some((0, 1.0)));
+    /// ```
+    #[must_use]
+    pub fn with_bucket_capacity(n: usize) -> Self {
+        Self {
+            tree: KdTree::default(),
+            points: Vec::with_capacity(n),
+            first_at: HashMap::with_capacity_and_hasher(n, Default::default()),
+            twins: HashMap::default(),
+        }
+    }
+
+    /// [`rooted_at`](NearestIndex::rooted_at) with leaves of `B` points.
+    #[must_use]
+    pub fn rooted_in_buckets(root: Point2) -> Self {
+        let mut index = Self::with_bucket_capacity(1024);
         index.insert(root);
         index
     }

@@ -41,8 +41,9 @@ use crate::toolkit::{self, CountingChecker};
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct GrowTree {
-    index: NearestIndex,
+pub struct GrowTree<const B: usize = 64> {
+    /// The nodes' points, in a k-d tree with leaves of `B` points (see [`NearestIndex`]).
+    index: NearestIndex<B>,
     parent: Vec<Option<u32>>,
     /// Costs-to-come by id; empty in a plain tree.
     cost: Vec<f64>,
@@ -84,12 +85,7 @@ impl GrowTree {
     /// A plain tree (no costs) holding only `root`, node 0.
     #[must_use]
     pub fn rooted_at(root: Point2) -> Self {
-        Self {
-            index: NearestIndex::rooted_at(root),
-            parent: vec![None],
-            cost: Vec::new(),
-            children: Vec::new(),
-        }
+        Self::rooted_in_buckets(root)
     }
 
     /// A tree with costs-to-come holding only `root`, node 0, at cost 0.
@@ -98,6 +94,28 @@ impl GrowTree {
         Self {
             cost: vec![0.0],
             ..Self::rooted_at(root)
+        }
+    }
+}
+
+impl<const B: usize> GrowTree<B> {
+    /// [`rooted_at`](GrowTree::rooted_at) with the nodes' k-d tree in leaves of `B`
+    /// points ([`NearestIndex::with_bucket_capacity`]).
+    ///
+    /// ```
+    /// use hyplan_core::Point2;
+    /// use sampling::GrowTree;
+    /// let mut tree = GrowTree::<256>::rooted_in_buckets(Point2::new(0.0, 0.0));
+    /// tree.add(Point2::new(1.0, 0.0), 0);
+    /// assert_eq!(tree.nearest(Point2::new(2.0, 0.0)), Some((1, 1.0)));
+    /// ```
+    #[must_use]
+    pub fn rooted_in_buckets(root: Point2) -> Self {
+        Self {
+            index: NearestIndex::rooted_in_buckets(root),
+            parent: vec![None],
+            cost: Vec::new(),
+            children: Vec::new(),
         }
     }
 

@@ -17,8 +17,14 @@ fn linear_within(points: &[Point2], q: Point2, r: f64) -> Vec<usize> {
         .collect()
 }
 
+/// The planners' index (leaves of 64 points) and the exploration detectors' (256).
 fn check_against_scan(points: &[Point2], queries: &[(Point2, f64)]) {
-    let mut index = NearestIndex::new();
+    check_in_buckets::<64>(points, queries);
+    check_in_buckets::<256>(points, queries);
+}
+
+fn check_in_buckets<const B: usize>(points: &[Point2], queries: &[(Point2, f64)]) {
+    let mut index = NearestIndex::<B>::with_bucket_capacity(0);
     for (i, &p) in points.iter().enumerate() {
         assert_eq!(index.insert(p), i);
     }

@@ -23,6 +23,13 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use sampling::GrowTree;
 
+/// The detectors' trees keep their nodes in k-d tree leaves of this many points, not the
+/// planners' 64: the global tree grows over a whole building for the whole exploration and
+/// is queried from samples anywhere in it, often far from every node, and such a query
+/// visits fewer leaves of a larger size (the 60 m building's exploration took 0.93x the
+/// time with 256, the same run; see `docs/measurements/issue-27.md`).
+const TREE_BUCKET: usize = 256;
+
 use crate::explore::cost::DetectorCost;
 use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
 
@@ -142,7 +149,7 @@ pub fn edge_check(map: &OccupancyGrid, a: Point2, b: Point2) -> Edge {
 /// One iteration of a detector's tree: sample, nearest, steer by `eta`, check. Returns
 /// the edge's verdict (the node is added when free) and the edge's length, m.
 fn grow(
-    tree: &mut GrowTree,
+    tree: &mut GrowTree<TREE_BUCKET>,
     map: &OccupancyGrid,
     region: &Region,
     eta: f64,
@@ -195,7 +202,7 @@ pub struct RrtDetector {
     pub eta: f64,
     /// Where it samples.
     pub region: Region,
-    tree: GrowTree,
+    tree: GrowTree<TREE_BUCKET>,
     rng: ChaCha8Rng,
 }
 
@@ -207,7 +214,7 @@ impl RrtDetector {
             kind,
             eta,
             region,
-            tree: GrowTree::rooted_at(region.root),
+            tree: GrowTree::rooted_in_buckets(region.root),
             rng,
         }
     }
@@ -252,7 +259,7 @@ impl RrtDetector {
         match edge {
             Edge::Unknown(p) => {
                 if self.kind == DetectorKind::Local {
-                    self.tree = GrowTree::rooted_at(robot);
+                    self.tree = GrowTree::rooted_in_buckets(robot);
                 }
                 (Some(p), took)
             }
