@@ -303,8 +303,8 @@ struct Walker {
 ///   passing on the right (a side preference); set it to 0 for the paper's forces alone.
 /// - **Cut-off and step.** A repulsion whose `b` exceeds [`CUTOFF_RANGES`] ranges is
 ///   dropped (below 1e-4 m/s^2), and people move in fixed steps of [`STEP`] (25 Hz,
-///   pedsim_ros's update rate; at 50 Hz a 20-person crowd cost 2.2 times the empty
-///   hall's time, against 1.9 at 25 Hz, see `docs/measurements/issue-29.md`).
+///   pedsim_ros's update rate; at 50 Hz a 20-person crowd cost 2.05-2.2 times the empty
+///   hall's time, against 1.84-1.88 at 25 Hz, see `docs/measurements/issue-29.md`).
 /// - **Groups.** Members of a [`Person::group`] are pulled toward the group's centre of
 ///   mass ([`SocialForceParams::group_strength`]), the paper's attraction to friends in
 ///   the form Moussaïd et al. 2010 give it.
