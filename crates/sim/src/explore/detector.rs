@@ -23,15 +23,15 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use sampling::GrowTree;
 
+use crate::explore::cost::DetectorCost;
+use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
+
 /// The detectors' trees keep their nodes in k-d tree leaves of this many points, not the
 /// planners' 64: the global tree grows over a whole building for the whole exploration and
 /// is queried from samples anywhere in it, often far from every node, and such a query
-/// visits fewer leaves of a larger size (the 60 m building's exploration took 0.93x the
+/// visits fewer leaves of a larger size (the 60 m building's exploration took 0.95x the
 /// time with 256, the same run; see `docs/measurements/issue-27.md`).
 const TREE_BUCKET: usize = 256;
-
-use crate::explore::cost::DetectorCost;
-use crate::mapping::{OCCUPIED, OccupancyGrid, UNKNOWN};
 
 /// Why the 5 points do not make a region.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
