@@ -81,6 +81,8 @@ pub struct ObstacleMemory {
     /// Cells the static prior map explains (see [`ObstacleMemory::with_prior`]).
     explained: Vec<bool>,
     obstacle_range: f64,
+    /// Tick and origin of each scan whose hits may still be remembered, oldest first.
+    origins: std::collections::VecDeque<(u64, Point2)>,
 }
 
 impl ObstacleMemory {
@@ -100,7 +102,24 @@ impl ObstacleMemory {
             latest: None,
             keep: keep_ticks,
             obstacle_range,
+            origins: std::collections::VecDeque::new(),
         }
+    }
+
+    /// How far a scan taken from `origin` at `tick` is read by the clearing of
+    /// remembered hits (a hit is cleared when the latest scan's beam toward it goes
+    /// [`MEMORY_RESOLUTION`] twice past it), m: every hit alive after `tick` is within
+    /// the obstacle range of the scanner that saw it, one of the scans of the memory's
+    /// length. A centimetre more for the points' `f32` rounding.
+    #[must_use]
+    pub fn clearing_reach(&self, origin: Point2, tick: u64) -> f64 {
+        let farthest = self
+            .origins
+            .iter()
+            .filter(|&&(t, _)| t + self.keep >= tick)
+            .map(|(_, o)| (o - origin).norm())
+            .fold(0.0, f64::max);
+        self.obstacle_range + farthest + 2.0 * MEMORY_RESOLUTION + 0.01
     }
 
     fn cell(&self, p: Point2) -> Option<(usize, usize)> {
@@ -171,6 +190,10 @@ impl ObstacleMemory {
     pub fn insert(&mut self, scan: Scan, tick: u64) {
         let now = tick + 1;
         let keep = self.keep;
+        while self.origins.front().is_some_and(|&(t, _)| t + keep < tick) {
+            self.origins.pop_front();
+        }
+        self.origins.push_back((tick, scan.origin));
         // Drop expired cells from the list once it has doubled, not at every scan: the
         // list is only read through `points`, which skips them anyway.
         if self.recent.len() >= self.compact_at {

@@ -466,6 +466,10 @@ fn arrivals(arrived: &mut [Option<f64>], was: &[Point2], now: &[Point2], t: f64)
 }
 
 impl Observer for CrowdMeter {
+    fn scan_reach(&self, sim: &crate::Sim<'_>) -> f64 {
+        sim.scenario.costmap.obstacle_range
+    }
+
     fn sensed(&mut self, sim: &crate::Sim<'_>, scan: &Scan) {
         let t = sim.time();
         let people = sim.people();

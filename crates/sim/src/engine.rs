@@ -20,7 +20,7 @@ use rand_xoshiro::Xoshiro256PlusPlus;
 
 use crate::costmap::{CostmapBuilder, ObstacleMemory};
 use crate::kinematics::{self, Pose, Twist};
-use crate::laser::{LaserModel, Scan};
+use crate::laser::{LaserModel, NearSegments, Scan};
 use crate::mapping::OccupancyGrid;
 use crate::navigator::{NavEvent, Navigator};
 use crate::people::PeopleModel;
@@ -173,6 +173,14 @@ pub trait GoalSource {
 
 /// Watches a run: traces, coverage, snapshots, animation frames, logs.
 pub trait Observer {
+    /// How far from the scanner this observer reads the scans it is shown, m. A beam
+    /// whose range is beyond what every reader of the run reads (the map update, the
+    /// costmap, the tracker and the observers) may read `INFINITY`, so that the laser is
+    /// cast only that far. The whole scan by default; an observer that reads no scan
+    /// says 0.
+    fn scan_reach(&self, _sim: &Sim<'_>) -> f64 {
+        f64::INFINITY
+    }
     /// Before a scan is integrated into the map.
     fn map_updating(&mut self, _sim: &Sim<'_>, _scan: &Scan) {}
     /// After the scan was integrated (and the footprint cleared, if the run does).
@@ -187,6 +195,9 @@ pub trait Observer {
 pub(crate) struct Each<'a, 'o>(pub(crate) &'a mut [&'o mut dyn Observer]);
 
 impl Observer for Each<'_, '_> {
+    fn scan_reach(&self, sim: &Sim<'_>) -> f64 {
+        self.0.iter().map(|o| o.scan_reach(sim)).fold(0.0, f64::max)
+    }
     fn map_updating(&mut self, sim: &Sim<'_>, scan: &Scan) {
         self.0.iter_mut().for_each(|o| o.map_updating(sim, scan));
     }
@@ -257,11 +268,14 @@ pub struct Sim<'w> {
     people_model: Box<dyn PeopleModel + 'w>,
     people: Vec<Disc>,
     laser: LaserModel,
+    /// The world's walls in buckets, for scans cast only as far as they are read.
+    near: NearSegments,
     noise: NoiseRng,
     rates: Rates,
     clear_footprint: bool,
     sensing_only: bool,
     tracking: bool,
+    whole_scans: bool,
     tick: u64,
     pose: Pose,
     twist: Twist,
@@ -324,11 +338,13 @@ impl<'w> Sim<'w> {
                 .build(world, scenario.robot.body_radius),
             people: Vec::new(),
             laser: LaserModel::new(scenario.laser),
+            near: NearSegments::new(&world.statics),
             noise: noise_stream(seed, NOISE_STREAM),
             rates,
             clear_footprint: false,
             sensing_only: false,
             tracking: true,
+            whole_scans: false,
             tick: 0,
             pose: scenario.start_pose(),
             twist: Twist::default(),
@@ -352,6 +368,15 @@ impl<'w> Sim<'w> {
     #[must_use]
     pub fn sensing_only(mut self) -> Self {
         self.sensing_only = true;
+        self
+    }
+
+    /// Every scan cast to the laser's range, as if the run read every beam to the end:
+    /// the same run, at the cost of the whole casts (by default each scan is cast only
+    /// as far as the run reads it, see [`Observer::scan_reach`]). For comparisons.
+    #[must_use]
+    pub fn with_whole_scans(mut self) -> Self {
+        self.whole_scans = true;
         self
     }
 
@@ -562,8 +587,19 @@ impl<'w> Sim<'w> {
 
     fn sense(&mut self, tick: u64, observers: &mut [&mut dyn Observer]) {
         let (o, h) = self.laser.origin(&self.pose);
-        let mut scan = self.laser.cast(&self.world.statics, &self.people, o, h);
-        self.laser.add_noise(&mut scan, &mut self.noise);
+        let need = self.scan_need(o, tick);
+        // Observers that read farther get the whole scan; the run reads the same.
+        let whole = observers.iter().any(|ob| ob.scan_reach(self) > need);
+        let scan = self.laser.scan_within(
+            &self.world.statics,
+            &self.people,
+            o,
+            h,
+            need,
+            whole,
+            &mut self.near,
+            &mut self.noise,
+        );
         if !self.sensing_only && tick.is_multiple_of(self.rates.map) {
             for ob in observers.iter_mut() {
                 ob.map_updating(self, &scan);
@@ -600,6 +636,24 @@ impl<'w> Sim<'w> {
             ob.sensed(self, &scan);
         }
         self.memory.insert(scan, tick);
+    }
+
+    /// How far the run reads the scan taken from `origin` at `tick`: the map update, the
+    /// tracker and the obstacle memory's clearing (a remembered hit is cleared by a beam
+    /// that goes past it); 1 cm more for the rounding of their comparisons.
+    fn scan_need(&self, origin: Point2, tick: u64) -> f64 {
+        if self.whole_scans {
+            return f64::INFINITY;
+        }
+        let mut need = self
+            .scenario
+            .mapping
+            .max_range
+            .max(self.memory.clearing_reach(origin, tick));
+        if self.tracking {
+            need = need.max(self.tracker.reach());
+        }
+        need + 0.01
     }
 
     /// The box of cells a map update may change: the traced beams' box and the robot's

@@ -11,6 +11,14 @@
 //! property-tested against the brute-force reference). Measured (issue 27): the sweep
 //! costs about 0.1 us a segment and the march about 0.15 us a beam per scan, hence the
 //! switch.
+//!
+//! A run reads its scans only a few metres out (the map update to 4 m, the costmap and
+//! the tracker to 3.5 m), so it casts each scan only that far
+//! ([`LaserModel::scan_within`]): the walls within the horizon come from buckets
+//! ([`NearSegments`]), and a loaded map's few boundary segments there are swept rather
+//! than its cells marched. Every beam the run reads is the one a whole cast gives, with
+//! the same noise (a property test checks it); a beam beyond reads `INFINITY`, unless an
+//! observer asks for whole scans.
 
 use hyplan_core::{Bounds, Point2};
 use nalgebra::Vector2;
@@ -18,6 +26,7 @@ use rand::Rng;
 use rand_distr::{Distribution, Normal};
 use serde::{Deserialize, Serialize};
 
+use crate::boxgrid::{BoxGrid, Marks};
 use crate::kinematics::Pose;
 use crate::world::{Disc, StaticWorld};
 
@@ -175,8 +184,23 @@ impl LaserModel {
     /// `range_min` (REP 117).
     #[must_use]
     pub fn cast(&self, world: &StaticWorld, people: &[Disc], origin: Point2, heading: f64) -> Scan {
+        self.cast_to(world, people, origin, heading, f64::INFINITY, None)
+    }
+
+    /// [`cast`](Self::cast) of the obstacles within `limit` only (all of them when it is
+    /// infinite; those `near` finds, when given): a beam that meets none reads `limit`
+    /// (or `INFINITY` beyond `range_max`).
+    fn cast_to(
+        &self,
+        world: &StaticWorld,
+        people: &[Disc],
+        origin: Point2,
+        heading: f64,
+        limit: f64,
+        near: Option<&mut NearSegments>,
+    ) -> Scan {
         let n = self.local.len();
-        let mut ranges = vec![f64::INFINITY; n];
+        let mut ranges = vec![limit; n];
         let (s, c) = heading.sin_cos();
         let dirs: Vec<Vector2<f64>> = self
             .local
@@ -236,7 +260,13 @@ impl LaserModel {
         let mut order: Vec<(f64, Obstacle)> = Vec::new();
         // A loaded map with more boundary segments than the sweep handles cheaply is cast
         // on its cells below (a world built by hand without the grid is always swept).
-        let march = (2 * world.grid_segments.len() > 3 * n)
+        // Within a horizon, the walls near enough to matter (their indices, the loaded
+        // map's after the shapes'), and how many of them are the map's.
+        let picked = near.map(|near| near.within(origin, limit));
+        let map_segments = picked.map_or(world.grid_segments.len(), |p| {
+            p.len() - p.partition_point(|&i| (i as usize) < world.segments.len())
+        });
+        let march = (2 * map_segments > 3 * n)
             .then(|| world.grid_rays())
             .flatten();
         let grid_segments: &[crate::world::Segment] = if march.is_some() {
@@ -252,20 +282,38 @@ impl LaserModel {
         let ahead = Vector2::new(c, s);
         let half_turn = self.fov <= std::f64::consts::PI;
         let wholly_behind = |along: f64| half_turn && along < -1e-6;
-        for (i, seg) in world.segments.iter().chain(grid_segments).enumerate() {
+        let mut consider = |i: usize, seg: &crate::world::Segment| {
             let pa = seg.a - origin;
             // Seen from behind (the scanner inside the half-plane behind an outward
             // edge of a closed outline): another edge of the same outline is nearer.
             if let Some(nrm) = seg.outward
                 && nrm.dot(&pa) >= 0.0
             {
-                continue;
+                return;
             }
             let pb = seg.b - origin;
             if wholly_behind(ahead.dot(&pa).max(ahead.dot(&pb))) {
-                continue;
+                return;
             }
             order.push((segment_distance(pa, seg.b - seg.a), Obstacle::Segment(i)));
+        };
+        match picked {
+            Some(picked) => {
+                let shapes = world.segments.len();
+                for &i in picked {
+                    let i = i as usize;
+                    if i < shapes {
+                        consider(i, &world.segments[i]);
+                    } else if march.is_none() {
+                        consider(i, &world.grid_segments[i - shapes]);
+                    }
+                }
+            }
+            None => {
+                for (i, seg) in world.segments.iter().chain(grid_segments).enumerate() {
+                    consider(i, seg);
+                }
+            }
         }
         for (i, disc) in world.discs.iter().chain(people).enumerate() {
             let dist = (disc.center - origin).norm();
@@ -334,7 +382,7 @@ impl LaserModel {
         }
         let (lo, hi) = (self.laser.range_min, self.laser.range_max);
         if let Some(grid) = march {
-            grid.lower(origin, &dirs, &mut ranges, hi);
+            grid.lower(origin, &dirs, &mut ranges, hi.min(limit));
         }
         rep_117(&mut ranges, lo, hi);
         Scan {
@@ -348,17 +396,206 @@ impl LaserModel {
     }
 
     /// Adds the seeded Gaussian noise to every valid range (clamped to the valid range,
-    /// as Gazebo's ray sensor does).
+    /// as Gazebo's ray sensor does). One draw per beam, valid or not, so that the draws
+    /// do not depend on what the beams met (a scan cast only to a horizon,
+    /// [`LaserModel::scan_within`], draws the same).
     pub fn add_noise<R: Rng + ?Sized>(&self, scan: &mut Scan, rng: &mut R) {
         let Some(noise) = &self.noise else {
             return;
         };
         let (lo, hi) = (self.laser.range_min, self.laser.range_max);
         for r in &mut scan.ranges {
+            let n = noise.sample(rng);
             if r.is_finite() {
-                *r = (*r + noise.sample(rng)).clamp(lo, hi);
+                *r = (*r + n).clamp(lo, hi);
             }
         }
+    }
+
+    /// The scan [`cast`](Self::cast) then [`add_noise`](Self::add_noise) would give,
+    /// drawing the same noise, except that a beam whose noisy range is beyond `need` may
+    /// read `INFINITY`: for readers that use nothing farther (the map update, the
+    /// costmap, the tracker), at the cost of the obstacles within `need` (and a margin)
+    /// only. The walls come from `near`, [`NearSegments`] of the same world (with
+    /// another world's, the whole scan is cast).
+    ///
+    /// With `whole`, the beams beyond the horizon are cast to the end as well (for a
+    /// reader of whole scans), and the beams within it keep the values they have
+    /// without: so a run reads the same numbers whether or not someone also wants the
+    /// whole scan. A beam is the same as [`cast`](Self::cast)'s to rounding (on a
+    /// loaded map the horizon's few walls may be swept where the whole cast marches
+    /// over the cells: both are exact to rounding).
+    ///
+    /// ```
+    /// use hyplan_core::Point2;
+    /// use rand::SeedableRng;
+    /// use sim::{Laser, LaserModel, NearSegments, Shape, StaticWorld};
+    /// let mut world = StaticWorld::default();
+    /// for center in [(2.5, 0.0), (20.5, 0.0)] {
+    ///     world.add_shape(&Shape::Box { center, size: (1.0, 12.0), angle_deg: 0.0 });
+    /// }
+    /// let laser = LaserModel::new(Laser::default());
+    /// let mut near = NearSegments::new(&world);
+    /// let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+    /// let o = Point2::new(0.0, 0.0);
+    /// let scan = laser.scan_within(&world, &[], o, 0.0, 5.0, false, &mut near, &mut rng);
+    /// let ahead = scan.beam_toward(0.0).unwrap();
+    /// assert!((scan.ranges[ahead] - 2.0).abs() < 0.1); // the near wall, measured
+    /// let side = scan.beam_toward(1.45).unwrap();
+    /// assert_eq!(scan.ranges[side], f64::INFINITY); // the near wall's end, beyond 5 m
+    /// ```
+    #[allow(clippy::too_many_arguments)]
+    pub fn scan_within<R: Rng + ?Sized>(
+        &self,
+        world: &StaticWorld,
+        people: &[Disc],
+        origin: Point2,
+        heading: f64,
+        need: f64,
+        whole: bool,
+        near: &mut NearSegments,
+        rng: &mut R,
+    ) -> Scan {
+        let margin = 0.05 + 20.0 * self.laser.noise_sd;
+        self.scan_within_margin(
+            world,
+            people,
+            origin,
+            heading,
+            (need, margin),
+            whole,
+            near,
+            rng,
+        )
+    }
+
+    /// [`scan_within`](Self::scan_within) with the margin past `need` that the cast goes:
+    /// a beam cast that far without a hit reads beyond `need` unless its noise draw is
+    /// below minus half of it (ten deviations for the public one); then the beams
+    /// beyond the horizon are cast to the end.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn scan_within_margin<R: Rng + ?Sized>(
+        &self,
+        world: &StaticWorld,
+        people: &[Disc],
+        origin: Point2,
+        heading: f64,
+        (need, margin): (f64, f64),
+        whole: bool,
+        near: &mut NearSegments,
+        rng: &mut R,
+    ) -> Scan {
+        let limit = need + margin;
+        // (A NaN `need` casts the whole scan too.)
+        if limit.partial_cmp(&self.laser.range_max) != Some(std::cmp::Ordering::Less)
+            || near.len() != world.segments.len() + world.grid_segments.len()
+        {
+            let mut scan = self.cast(world, people, origin, heading);
+            self.add_noise(&mut scan, rng);
+            return scan;
+        }
+        let mut scan = self.cast_to(world, people, origin, heading, limit, Some(near));
+        let n = scan.ranges.len();
+        let draws: Vec<f64> = match &self.noise {
+            Some(noise) => (0..n).map(|_| noise.sample(rng)).collect(),
+            None => vec![0.0; n],
+        };
+        // A beam that met nothing before `limit` has a true range of at least `limit`
+        // (to rounding): with a draw above `-margin / 2` its noisy range is beyond `need`.
+        let beyond = |r: f64| r >= limit && r.is_finite();
+        let unsure = scan
+            .ranges
+            .iter()
+            .zip(&draws)
+            .any(|(&r, &d)| beyond(r) && d <= -0.5 * margin);
+        if whole || unsure {
+            let all = self.cast(world, people, origin, heading);
+            for (r, a) in scan.ranges.iter_mut().zip(all.ranges) {
+                if beyond(*r) {
+                    *r = a;
+                }
+            }
+        } else {
+            for r in &mut scan.ranges {
+                if beyond(*r) {
+                    *r = f64::INFINITY;
+                }
+            }
+        }
+        if self.noise.is_some() {
+            let (lo, hi) = (self.laser.range_min, self.laser.range_max);
+            for (r, d) in scan.ranges.iter_mut().zip(draws) {
+                if r.is_finite() {
+                    *r = (*r + d).clamp(lo, hi);
+                }
+            }
+        }
+        scan
+    }
+}
+
+/// The walls of a world (its shapes' segments, then its loaded map's) in buckets, for
+/// casts to a horizon ([`LaserModel::scan_within`]): only the segments within it are
+/// swept, where a whole cast sweeps them all.
+///
+/// ```
+/// use sim::{NearSegments, Shape, StaticWorld};
+/// let mut world = StaticWorld::default();
+/// world.add_shape(&Shape::Box { center: (2.5, 0.0), size: (1.0, 2.0), angle_deg: 0.0 });
+/// assert_eq!(NearSegments::new(&world).len(), 4);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct NearSegments {
+    grid: BoxGrid,
+    marks: Marks,
+    picked: Vec<u32>,
+}
+
+/// Side of [`NearSegments`]' buckets, m: about a quarter of the horizon the runs cast to.
+const NEAR_BUCKET: f64 = 1.0;
+
+impl NearSegments {
+    /// `world`'s segments in buckets.
+    #[must_use]
+    pub fn new(world: &StaticWorld) -> Self {
+        let boxes = world
+            .segments
+            .iter()
+            .chain(&world.grid_segments)
+            .map(|s| {
+                (
+                    Point2::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)),
+                    Point2::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)),
+                )
+            })
+            .collect();
+        Self {
+            grid: BoxGrid::new(boxes, NEAR_BUCKET),
+            ..Self::default()
+        }
+    }
+
+    /// Number of segments held.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.grid.len()
+    }
+
+    /// Whether it holds no segment.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.grid.len() == 0
+    }
+
+    /// The indices of the segments within `reach` of `p` (a superset: their boxes are),
+    /// ascending.
+    fn within(&mut self, p: Point2, reach: f64) -> &[u32] {
+        self.picked.clear();
+        let picked = &mut self.picked;
+        self.grid
+            .near(p, reach, &mut self.marks, |k| picked.push(k));
+        self.picked.sort_unstable();
+        &self.picked
     }
 }
 
@@ -574,6 +811,53 @@ pub fn ray_disc(d: Vector2<f64>, c: Vector2<f64>, r: f64) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::{BIN, FAST_ATAN2_ERROR, Obstacle, bin, bin_start, fast_atan2, nearest_first};
+
+    /// A horizon just short of a wall's nearest point with a margin of 2 mm: the beams
+    /// near the wall's normal are cast to the horizon without a hit, and their noise
+    /// (1 cm) often brings them back within `need`. The scan must then cast those beams
+    /// to the end, and read as the whole noisy scan within `need`.
+    #[test]
+    fn beams_that_noise_may_bring_within_the_horizon_are_cast_to_the_end() {
+        use super::{Laser, LaserModel, NearSegments};
+        use crate::{Shape, StaticWorld};
+        use hyplan_core::Point2;
+        use rand::SeedableRng;
+        let mut world = StaticWorld::default();
+        world.add_shape(&Shape::Box {
+            center: (3.5, 0.0),
+            size: (1.0, 10.0),
+            angle_deg: 0.0,
+        });
+        let model = LaserModel::new(Laser::default());
+        let mut near = NearSegments::new(&world);
+        let (margin, o) = (0.002, Point2::new(0.0, 0.0));
+        let need = 3.0 - margin - 1e-6;
+        let mut within_need = 0;
+        for seed in 0..200 {
+            let rng = || rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+            let mut all = model.cast(&world, &[], o, 0.0);
+            model.add_noise(&mut all, &mut rng());
+            let got = model.scan_within_margin(
+                &world,
+                &[],
+                o,
+                0.0,
+                (need, margin),
+                false,
+                &mut near,
+                &mut rng(),
+            );
+            for (k, (&a, &g)) in all.ranges.iter().zip(&got.ranges).enumerate() {
+                assert!(
+                    a == g || (g == f64::INFINITY && a > need),
+                    "seed {seed} beam {k}: whole {a}, to the horizon {g}"
+                );
+                within_need += usize::from(a <= need);
+            }
+        }
+        // The case is met: noise brought beams within `need`.
+        assert!(within_need > 100, "{within_need}");
+    }
 
     /// What the cast's early stop relies on: the obstacles come out by bin, each bin's
     /// start at or below every distance in it and after, and none is lost.

@@ -77,6 +77,7 @@
 mod agent;
 #[cfg(feature = "mcap")]
 mod bag_observer;
+mod boxgrid;
 mod building;
 mod control;
 mod costmap;
@@ -134,7 +135,7 @@ pub use kinematics::{
     Pose, Robot, Twist, WheelSpeeds, integrate, jacobian, jacobian_inverse, pose_rate, saturate,
     twist_of, wheel_speeds, wrap_angle,
 };
-pub use laser::{Laser, LaserModel, Scan};
+pub use laser::{Laser, LaserModel, NearSegments, Scan};
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use monitor::CollisionMonitor;
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};

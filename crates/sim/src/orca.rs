@@ -8,6 +8,7 @@ use hyplan_core::{Point2, Zone};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
+use crate::boxgrid::{BoxGrid, Marks};
 use crate::people::{Stepped, Stepper, discs_ahead, on_stage};
 use crate::social_force::{KEEP_RIGHT, heading};
 use crate::world::{Disc, Person, Segment, StaticWorld, pt};
@@ -131,20 +132,9 @@ struct Walker {
 #[derive(Debug, Clone, Default)]
 struct Walls {
     obstacles: Vec<Obstacle>,
-    /// Each obstacle's bounding box, (min, max).
-    boxes: Vec<(Point2, Point2)>,
-    /// Lower-left corner of the bucket grid, m.
-    origin: Point2,
-    /// Side of a bucket, m.
-    cell: f64,
-    /// Buckets per row and per column.
-    size: (usize, usize),
-    /// Obstacle indices of each bucket, row by row.
-    buckets: Vec<Vec<u32>>,
+    /// Each obstacle's bounding box, in buckets.
+    grid: BoxGrid,
 }
-
-/// The most buckets along a side: the grid coarsens on very large maps.
-const MAX_BUCKETS_PER_SIDE: usize = 256;
 
 /// Vertices of the polygon standing in for a round obstacle.
 const DISC_SIDES: usize = 12;
@@ -217,49 +207,10 @@ impl Walls {
                 (lo, hi)
             })
             .collect();
-        let mut walls = Self {
+        Self {
             obstacles,
-            boxes,
-            ..Self::default()
-        };
-        walls.bucket(cell);
-        walls
-    }
-
-    /// Fills the bucket grid.
-    fn bucket(&mut self, cell: f64) {
-        let Some(&(first_lo, first_hi)) = self.boxes.first() else {
-            return;
-        };
-        let (lo, hi) = self.boxes.iter().fold((first_lo, first_hi), |(lo, hi), b| {
-            (
-                Point2::new(lo.x.min(b.0.x), lo.y.min(b.0.y)),
-                Point2::new(hi.x.max(b.1.x), hi.y.max(b.1.y)),
-            )
-        });
-        let longest = (hi.x - lo.x).max(hi.y - lo.y);
-        self.cell = cell.max(longest / MAX_BUCKETS_PER_SIDE as f64).max(1e-3);
-        self.origin = lo;
-        let side = |len: f64| (len / self.cell).floor() as usize + 1;
-        self.size = (side(hi.x - lo.x), side(hi.y - lo.y));
-        self.buckets = vec![Vec::new(); self.size.0 * self.size.1];
-        for (k, &(a, b)) in self.boxes.iter().enumerate() {
-            let ((i0, j0), (i1, j1)) = (self.cell_of(a), self.cell_of(b));
-            for j in j0..=j1 {
-                for i in i0..=i1 {
-                    self.buckets[j * self.size.0 + i].push(k as u32);
-                }
-            }
+            grid: BoxGrid::new(boxes, cell),
         }
-    }
-
-    /// The bucket holding `p`, clamped to the grid.
-    fn cell_of(&self, p: Point2) -> (usize, usize) {
-        let index = |v: f64, n: usize| ((v / self.cell).floor().max(0.0) as usize).min(n - 1);
-        (
-            index(p.x - self.origin.x, self.size.0),
-            index(p.y - self.origin.y, self.size.1),
-        )
     }
 
     /// The indices of the obstacles whose bounding box comes within `reach` of `p`,
@@ -268,41 +219,14 @@ impl Walls {
     fn near(&self, p: Point2, reach: f64, out: &mut Near) {
         out.indices.clear();
         out.keyed.clear();
-        if self.buckets.is_empty() {
-            return;
-        }
-        if out.mark.len() != self.obstacles.len() {
-            out.mark = vec![0; self.obstacles.len()];
-            out.generation = 0;
-        }
-        // A new mark for this query; on wrap-around every old mark is cleared.
-        out.generation = out.generation.wrapping_add(1);
-        if out.generation == 0 {
-            out.mark.fill(0);
-            out.generation = 1;
-        }
         let at = vec2(p);
-        let r = Vector2::new(reach, reach);
-        let ((i0, j0), (i1, j1)) = (self.cell_of(p - r), self.cell_of(p + r));
-        for j in j0..=j1 {
-            for i in i0..=i1 {
-                for &k in &self.buckets[j * self.size.0 + i] {
-                    // An obstacle in several buckets is taken once.
-                    let mark = &mut out.mark[k as usize];
-                    if *mark == out.generation {
-                        continue;
-                    }
-                    *mark = out.generation;
-                    let (lo, hi) = self.boxes[k as usize];
-                    let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
-                    let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
-                    let obstacle = &self.obstacles[k as usize];
-                    if dx * dx + dy * dy <= reach * reach && !back_facing(obstacle, at) {
-                        out.keyed.push((distance_sq(obstacle, at).to_bits(), k));
-                    }
-                }
+        let (obstacles, keyed) = (&self.obstacles, &mut out.keyed);
+        self.grid.near(p, reach, &mut out.marks, |k| {
+            let obstacle = &obstacles[k as usize];
+            if !back_facing(obstacle, at) {
+                keyed.push((distance_sq(obstacle, at).to_bits(), k));
             }
-        }
+        });
         // Nearest first, as RVO2 orders obstacle neighbours: an edge hidden behind a
         // nearer one's half-plane is then skipped.
         out.keyed.sort_unstable();
@@ -318,9 +242,8 @@ struct Near {
     indices: Vec<u32>,
     /// (squared distance's bits, index) of each, before sorting.
     keyed: Vec<(u32, u32)>,
-    /// Per obstacle, the last query that took it.
-    mark: Vec<u32>,
-    generation: u32,
+    /// The bucket query's own.
+    marks: Marks,
 }
 
 /// Whether `obstacle` is a single edge with `p` strictly on its solid side, for

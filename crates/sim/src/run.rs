@@ -171,6 +171,10 @@ impl Recorder {
 }
 
 impl Observer for Recorder {
+    fn scan_reach(&self, _sim: &Sim<'_>) -> f64 {
+        0.0
+    }
+
     fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
         let t = info.t;
         self.nav_events(sim, info);

@@ -202,6 +202,13 @@ impl Tracker {
         frame.index_of(p).is_none_or(|k| self.prior[k])
     }
 
+    /// How far from the scanner the tracker reads a scan, m: its range, and a cluster's
+    /// gap beyond it (to tell whether an object goes on past the range).
+    #[must_use]
+    pub fn reach(&self) -> f64 {
+        self.range + CLUSTER_GAP
+    }
+
     /// The clusters of a scan's unexplained hits: (centroid, covering radius).
     fn clusters(&self, scan: &Scan) -> Vec<Cluster> {
         let n = scan.ranges.len();

@@ -759,3 +759,47 @@ mod properties {
         }
     }
 }
+
+/// Reads whole scans, as a ROS bag writer does, and counts the beams that read farther
+/// than the run itself reads (its map update, costmap and tracker stop at about 4 m).
+#[derive(Default)]
+struct WholeScans {
+    far: usize,
+}
+
+impl sim::Observer for WholeScans {
+    fn sensed(&mut self, _sim: &sim::Sim<'_>, scan: &sim::Scan) {
+        self.far += scan
+            .ranges
+            .iter()
+            .filter(|r| r.is_finite() && **r > 6.0)
+            .count();
+    }
+}
+
+/// On a real building's map the run casts its scans only as far as it reads them; an
+/// observer that reads whole scans gets them whole, and the run is the same run.
+#[test]
+fn an_observer_of_whole_scans_does_not_change_the_run() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../scenarios/sim/explore-yujin_rnd_hokuyo.ron");
+    let (mut scenario, world) =
+        Scenario::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    scenario.time_limit = 120.0;
+    let mut whole = WholeScans::default();
+    let with = sim::explore_observed(
+        &scenario,
+        &world,
+        1,
+        Strategy::Both,
+        &mut |_| {},
+        &mut [&mut whole],
+    )
+    .unwrap();
+    let without = sim::explore(&scenario, &world, 1, Strategy::Both).unwrap();
+    assert!(whole.far > 1000, "{} beams beyond 6 m", whole.far);
+    assert_eq!(with.track, without.track);
+    assert_eq!(with.goals, without.goals);
+    assert_eq!(with.coverage, without.coverage);
+    assert_eq!(with.map.ros_values(), without.map.ros_values());
+}

@@ -9,7 +9,7 @@ use nalgebra::{Matrix2, Vector2};
 use parry2d::query::{Ray, RayCast};
 use proptest::prelude::*;
 use sim::{Disc, StaticWorld};
-use sim::{Laser, LaserModel, Shape};
+use sim::{Laser, LaserModel, NearSegments, Shape};
 
 fn world(shapes: &[Shape]) -> StaticWorld {
     let mut w = StaticWorld::default();
@@ -347,4 +347,77 @@ fn noise_is_seeded_and_bounded() {
         .collect();
     let sd = (hits.iter().map(|e| e * e).sum::<f64>() / hits.len() as f64).sqrt();
     assert!((sd - 0.01).abs() < 0.002, "noise sd {sd}");
+}
+
+/// The scan cast to a horizon against the whole scan with the same noise generator:
+/// every beam either reads as the whole scan's (to rounding) or reads `INFINITY` where
+/// the whole scan reads beyond `need`; with `whole`, every beam reads as the whole
+/// scan's; the beams within `need` read the same with and without `whole`; and all
+/// three leave the generator at the same point.
+fn check_within(
+    w: &StaticWorld,
+    people: &[Disc],
+    o: Point2,
+    heading: f64,
+    laser: Laser,
+    need: f64,
+    seed: u64,
+) -> Result<(), TestCaseError> {
+    use rand::{Rng, SeedableRng};
+    let model = LaserModel::new(laser);
+    let rng = || rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let (mut r_all, mut r_near, mut r_whole) = (rng(), rng(), rng());
+    let mut all = model.cast(w, people, o, heading);
+    model.add_noise(&mut all, &mut r_all);
+    let mut near = NearSegments::new(w);
+    let within = model.scan_within(w, people, o, heading, need, false, &mut near, &mut r_near);
+    let whole = model.scan_within(w, people, o, heading, need, true, &mut near, &mut r_whole);
+    let same = |a: f64, b: f64| a == b || (a - b).abs() <= 1e-9 * a.abs().max(1.0);
+    for k in 0..all.ranges.len() {
+        let (a, n, h) = (all.ranges[k], within.ranges[k], whole.ranges[k]);
+        prop_assert!(
+            same(a, n) || (n == f64::INFINITY && a > need),
+            "beam {}: whole cast {} horizon cast {} (need {})",
+            k,
+            a,
+            n,
+            need
+        );
+        prop_assert!(same(a, h), "beam {}: whole cast {} completed {}", k, a, h);
+        prop_assert!(
+            n == f64::INFINITY || n == h,
+            "beam {}: {} without whole, {} with",
+            k,
+            n,
+            h
+        );
+    }
+    let next = r_all.random::<u64>();
+    prop_assert_eq!(next, r_near.random::<u64>());
+    prop_assert_eq!(next, r_whole.random::<u64>());
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    /// Scans to a horizon on worlds of shapes, loaded maps (small ones swept, large ones
+    /// marched over their cells) and both, with and without noise.
+    #[test]
+    fn a_scan_to_a_horizon_reads_as_the_whole_scan_within_it(
+        map in prop::option::of(prop_oneof![grid_strategy(2..24), grid_strategy(40..160)]),
+        shapes in prop::collection::vec(shape_strategy(), 0..8),
+        ox in 0.0..10.0f64, oy in 0.0..10.0f64, heading in -7.0..7.0f64,
+        person in (0.0..10.0f64, 0.0..10.0f64, 0.1..0.4f64),
+        fov in 30.0..360.0f64, beams in 2usize..400, range_max in 0.5..40.0f64,
+        noise_sd in prop_oneof![Just(0.0), Just(0.01), 0.0..0.3f64],
+        need in 0.05..12.0f64, seed in any::<u64>(),
+    ) {
+        let mut w = world(&shapes);
+        if let Some(map) = map {
+            w.add_grid(map);
+        }
+        let people = [Disc { center: Point2::new(person.0, person.1), radius: person.2 }];
+        let laser = Laser { fov_deg: fov, beams, range_max, noise_sd, ..Laser::default() };
+        check_within(&w, &people, Point2::new(ox, oy), heading, laser, need, seed)?;
+    }
 }

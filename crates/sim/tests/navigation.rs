@@ -393,3 +393,43 @@ fn a_robot_hemmed_in_ahead_turns_toward_a_path_that_leaves_sideways() {
         "turns right, toward the path: {cmd:?}"
     );
 }
+
+/// The robot's pose, twist and the people at every tick.
+#[derive(Default)]
+struct Poses(Vec<(u64, [f64; 5], Vec<Point2>)>);
+
+impl sim::Observer for Poses {
+    fn scan_reach(&self, _sim: &sim::Sim<'_>) -> f64 {
+        0.0
+    }
+    fn ticked(&mut self, sim: &sim::Sim<'_>, info: &sim::TickInfo<'_>) {
+        let (p, t) = (sim.pose(), sim.twist());
+        let people = sim.people().iter().map(|d| d.center).collect();
+        self.0
+            .push((info.tick, [p.x, p.y, p.phi, t.v, t.omega], people));
+    }
+}
+
+/// A run that casts each scan only as far as it reads it (the map update, the costmap,
+/// the tracker, the clearing of remembered hits) is the run that casts every beam to the
+/// laser's 60 m: on a real house's map with people walking, where the tracker and the
+/// hits that people leave behind are read.
+#[test]
+fn scans_cast_to_the_runs_horizon_give_the_whole_casts_run() {
+    let (sc, world) = Scenario::load(&scenarios().join("nav-aws_small_house-people.ron")).unwrap();
+    let goal = Point2::new(sc.goal.0, sc.goal.1);
+    let poses = |whole: bool| {
+        let sim = sim::Sim::new(&sc, &world, 1, GlobalPlanner::Dijkstra, goal);
+        let mut sim = if whole { sim.with_whole_scans() } else { sim };
+        let mut poses = Poses::default();
+        sim.run(&mut sim::FixedGoal, &mut [&mut poses]);
+        poses.0
+    };
+    let (near, whole) = (poses(false), poses(true));
+    assert!(near.len() > 10_000, "{} ticks", near.len());
+    assert!(
+        near == whole,
+        "the runs part at tick {:?}",
+        near.iter().zip(&whole).position(|(a, b)| a != b)
+    );
+}

@@ -517,6 +517,11 @@ impl<'p> CoverageMeter<'p> {
 }
 
 impl Observer for CoverageMeter<'_> {
+    fn scan_reach(&self, sim: &Sim<'_>) -> f64 {
+        // What the map update traces (`update_area`).
+        sim.scenario.mapping.max_range
+    }
+
     fn map_updating(&mut self, sim: &Sim<'_>, scan: &Scan) {
         // Only cells in the box of the traced beams and the footprint change: recount those.
         self.before = sim.map.count_free_in(&self.reach, sim.update_area(scan));
@@ -544,6 +549,10 @@ pub struct TrackRecorder {
 }
 
 impl Observer for TrackRecorder {
+    fn scan_reach(&self, _sim: &Sim<'_>) -> f64 {
+        0.0
+    }
+
     fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
         if info.controlled {
             self.track.push((info.t, sim.pose()));
@@ -571,6 +580,10 @@ impl FrameRecorder {
 }
 
 impl Observer for FrameRecorder {
+    fn scan_reach(&self, _sim: &Sim<'_>) -> f64 {
+        0.0
+    }
+
     fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
         if self.every.is_some_and(|k| info.tick.is_multiple_of(k)) {
             self.frames.push(info.t, sim.pose(), &sim.map.ros_values());
@@ -665,6 +678,10 @@ pub struct ContactCounter {
 }
 
 impl Observer for ContactCounter {
+    fn scan_reach(&self, _sim: &Sim<'_>) -> f64 {
+        0.0
+    }
+
     fn ticked(&mut self, sim: &Sim<'_>, info: &TickInfo<'_>) {
         if info.sensed {
             let here = sim.here();
