@@ -264,9 +264,15 @@ impl LaserModel {
         // map's after the shapes'), and how many of them are the map's.
         let picked = near.map(|near| near.within(origin, limit));
         let map_segments = picked.map_or(world.grid_segments.len(), |p| {
-            p.len() - p.partition_point(|&i| (i as usize) < world.segments.len())
+            p.iter()
+                .filter(|&&i| i as usize >= world.segments.len())
+                .count()
         });
-        let march = (2 * map_segments > 3 * n)
+        // Past 1.5 map segments a beam a whole cast marches over the cells; within a
+        // horizon, past 3 (measured on the real maps: sweeping up to 3 a beam, or always,
+        // took 0.85 of the time of sweeping up to 1.5 on the Osnabrück floor, 0.97-0.99
+        // on the others).
+        let march = (2 * map_segments > if picked.is_some() { 6 } else { 3 } * n)
             .then(|| world.grid_rays())
             .flatten();
         let grid_segments: &[crate::world::Segment] = if march.is_some() {
@@ -588,13 +594,12 @@ impl NearSegments {
     }
 
     /// The indices of the segments within `reach` of `p` (a superset: their boxes are),
-    /// ascending.
+    /// in the buckets' order (a cast's ranges are minima: the order does not change them).
     fn within(&mut self, p: Point2, reach: f64) -> &[u32] {
         self.picked.clear();
         let picked = &mut self.picked;
         self.grid
             .near(p, reach, &mut self.marks, |k| picked.push(k));
-        self.picked.sort_unstable();
         &self.picked
     }
 }
