@@ -17,11 +17,15 @@
 //! name carries its simulated time, and the costs compare per simulated second.
 //!
 //! `laser-cast/explore-22m`: one full scan (720 beams, exact) from each of 400 poses on a
-//! grid over the free space of the 22 m exploration world, the hot path of every run.
+//! grid over the free space of the 22 m exploration world, the hot path of every run;
+//! `laser-cast/explore-uos_avz5floor_open` the same on a real floor's SLAM map. Each also
+//! times the scans with the range noise (`-noisy-scans`), and cast only to the 4 m a run
+//! reads them (`-noisy-scans-to-4.01m`, `LaserModel::scan_within`): what a run casts.
 
 use std::path::Path;
 
 use criterion::{Criterion, criterion_main};
+use rand::SeedableRng;
 use sim::{GlobalPlanner, Scenario};
 
 fn scenario3(c: &mut Criterion) {
@@ -179,6 +183,42 @@ fn laser_cast(c: &mut Criterion) {
                 }
             });
         });
+        // The same scans with the range noise, whole, then to the horizon a run reads them
+        // (the map update's 4 m, plus the 1 cm a run adds): what `Sim` casts.
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+        c.bench_function(
+            &format!("laser-cast/{name}/{}-noisy-scans", poses.len()),
+            |bch| {
+                bch.iter(|| {
+                    for &(o, h) in &poses {
+                        let mut scan = laser.cast(&world.statics, &[], o, h);
+                        laser.add_noise(&mut scan, &mut rng);
+                        std::hint::black_box(scan);
+                    }
+                });
+            },
+        );
+        let mut near = sim::NearSegments::new(&world.statics);
+        let need = scenario.mapping.max_range + 0.01;
+        c.bench_function(
+            &format!("laser-cast/{name}/{}-noisy-scans-to-{need}m", poses.len()),
+            |bch| {
+                bch.iter(|| {
+                    for &(o, h) in &poses {
+                        std::hint::black_box(laser.scan_within(
+                            &world.statics,
+                            &[],
+                            o,
+                            h,
+                            need,
+                            false,
+                            &mut near,
+                            &mut rng,
+                        ));
+                    }
+                });
+            },
+        );
     }
 }
 
