@@ -272,7 +272,8 @@ impl LaserModel {
         // horizon, past 3 (measured on the real maps: sweeping up to 3 a beam, or always,
         // took 0.85 of the time of sweeping up to 1.5 on the Osnabrück floor, 0.97-0.99
         // on the others).
-        let march = (2 * map_segments > if picked.is_some() { 6 } else { 3 } * n)
+        let swept_per_two_beams = if picked.is_some() { 6 } else { 3 };
+        let march = (2 * map_segments > swept_per_two_beams * n)
             .then(|| world.grid_rays())
             .flatten();
         let grid_segments: &[crate::world::Segment] = if march.is_some() {
@@ -406,14 +407,23 @@ impl LaserModel {
     /// do not depend on what the beams met (a scan cast only to a horizon,
     /// [`LaserModel::scan_within`], draws the same).
     pub fn add_noise<R: Rng + ?Sized>(&self, scan: &mut Scan, rng: &mut R) {
-        let Some(noise) = &self.noise else {
-            return;
-        };
+        if let Some(draws) = self.draws(scan.ranges.len(), rng) {
+            self.apply_noise(&mut scan.ranges, &draws);
+        }
+    }
+
+    /// One noise draw per beam of a scan of `n` beams; none without noise.
+    fn draws<R: Rng + ?Sized>(&self, n: usize, rng: &mut R) -> Option<Vec<f64>> {
+        let noise = self.noise.as_ref()?;
+        Some((0..n).map(|_| noise.sample(rng)).collect())
+    }
+
+    /// Adds `draws` to the valid ranges, clamped to the valid range.
+    fn apply_noise(&self, ranges: &mut [f64], draws: &[f64]) {
         let (lo, hi) = (self.laser.range_min, self.laser.range_max);
-        for r in &mut scan.ranges {
-            let n = noise.sample(rng);
+        for (r, d) in ranges.iter_mut().zip(draws) {
             if r.is_finite() {
-                *r = (*r + n).clamp(lo, hi);
+                *r = (*r + d).clamp(lo, hi);
             }
         }
     }
@@ -501,19 +511,16 @@ impl LaserModel {
             return scan;
         }
         let mut scan = self.cast_to(world, people, origin, heading, limit, Some(near));
-        let n = scan.ranges.len();
-        let draws: Vec<f64> = match &self.noise {
-            Some(noise) => (0..n).map(|_| noise.sample(rng)).collect(),
-            None => vec![0.0; n],
-        };
+        let draws = self.draws(scan.ranges.len(), rng);
         // A beam that met nothing before `limit` has a true range of at least `limit`
         // (to rounding): with a draw above `-margin / 2` its noisy range is beyond `need`.
         let beyond = |r: f64| r >= limit && r.is_finite();
-        let unsure = scan
-            .ranges
-            .iter()
-            .zip(&draws)
-            .any(|(&r, &d)| beyond(r) && d <= -0.5 * margin);
+        let unsure = draws.as_ref().is_some_and(|draws| {
+            scan.ranges
+                .iter()
+                .zip(draws)
+                .any(|(&r, &d)| beyond(r) && d <= -0.5 * margin)
+        });
         if whole || unsure {
             let all = self.cast(world, people, origin, heading);
             for (r, a) in scan.ranges.iter_mut().zip(all.ranges) {
@@ -528,13 +535,8 @@ impl LaserModel {
                 }
             }
         }
-        if self.noise.is_some() {
-            let (lo, hi) = (self.laser.range_min, self.laser.range_max);
-            for (r, d) in scan.ranges.iter_mut().zip(draws) {
-                if r.is_finite() {
-                    *r = (*r + d).clamp(lo, hi);
-                }
-            }
+        if let Some(draws) = draws {
+            self.apply_noise(&mut scan.ranges, &draws);
         }
         scan
     }
