@@ -114,6 +114,17 @@ pub struct PlanScratch {
 struct Prepared {
     search: GridSearch,
     zones: Vec<Zone>,
+    /// The last query on these zones and its answer: a robot held where it stands (a
+    /// path blocked at once, a retry after a failure) asks the same again, and a plan is
+    /// a function of the zones, the start cell and the goal.
+    last: Option<Answer>,
+}
+
+/// A plan's query and its shortened path from the start cell's centre (`None`: no path).
+struct Answer {
+    start: (usize, usize),
+    goal: [u64; 2],
+    path: Option<Vec<Point2>>,
 }
 
 impl std::fmt::Debug for PlanScratch {
@@ -134,10 +145,15 @@ fn prepared<'s>(slot: &'s mut Option<Prepared>, map: &GridMap) -> Option<&'s mut
     if !fits {
         let search = GridSearch::new(map, GridOptions::default()).ok()?;
         let zones = map.zones().to_vec();
-        return Some(slot.insert(Prepared { search, zones }));
+        return Some(slot.insert(Prepared {
+            search,
+            zones,
+            last: None,
+        }));
     }
     let p = slot.as_mut()?;
     if let Some((columns, rows)) = changed_window(&p.zones, map.zones(), map.width()) {
+        p.last = None;
         p.search
             .update_window(map, columns.clone(), rows.clone())
             .ok()?;
@@ -179,9 +195,36 @@ fn dijkstra(
         return None;
     }
     let prepared = prepared(slot, map)?;
+    let goal_bits = [goal.x.to_bits(), goal.y.to_bits()];
+    let pruned = match &prepared.last {
+        Some(a) if a.start == s && a.goal == goal_bits => a.path.clone(),
+        _ => {
+            let path = shortest(&mut prepared.search, map, s, g, goal);
+            prepared.last = Some(Answer {
+                start: s,
+                goal: goal_bits,
+                path: path.clone(),
+            });
+            path
+        }
+    }?;
+    let mut path = Vec::with_capacity(pruned.len() + 1);
+    path.push(start);
+    path.extend(pruned.into_iter().filter(|&p| p != start));
+    Some(path)
+}
+
+/// Algorithm 3's path from cell `s` to cell `g` (ending at `goal`, in that cell),
+/// shortened.
+fn shortest(
+    search: &mut GridSearch,
+    map: &GridMap,
+    s: (usize, usize),
+    g: (usize, usize),
+    goal: Point2,
+) -> Option<Vec<Point2>> {
     // A plan that fails floods every cell the start reaches, and a navigator retries
     // failed plans: the two-sided test costs at most the smaller region, and no costs.
-    let search = &mut prepared.search;
     if !search.connected(s, g).ok()? {
         return None;
     }
@@ -199,11 +242,9 @@ fn dijkstra(
     if let Some(last) = cells.last_mut() {
         *last = goal;
     }
-    let pruned = postproc::shortcut_greedy(&cells, |a, b| map.segment_free(a, b));
-    let mut path = Vec::with_capacity(pruned.len() + 1);
-    path.push(start);
-    path.extend(pruned.into_iter().filter(|&p| p != start));
-    Some(path)
+    Some(postproc::shortcut_greedy(&cells, |a, b| {
+        map.segment_free(a, b)
+    }))
 }
 
 fn other(

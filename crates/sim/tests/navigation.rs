@@ -433,3 +433,40 @@ fn scans_cast_to_the_runs_horizon_give_the_whole_casts_run() {
         near.iter().zip(&whole).position(|(a, b)| a != b)
     );
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+    /// A navigator's plans, which keep their search and last answer between calls, are
+    /// the plans of a fresh search, whatever cells change between them and whichever
+    /// queries repeat (a robot held in place asks the same again).
+    #[test]
+    fn kept_plans_are_fresh_plans(
+        flips in proptest::collection::vec(proptest::collection::vec((0usize..12, 0usize..8), 0..3), 12),
+        queries in proptest::collection::vec((0usize..3, 0usize..3), 12),
+    ) {
+        use rand::SeedableRng;
+        let mut blocked = [[false; 12]; 8];
+        for (i, j) in [(5, 0), (5, 1), (5, 2), (5, 3), (5, 4), (5, 5)] {
+            blocked[j][i] = true;
+        }
+        let starts = [Point2::new(0.5, 0.5), Point2::new(0.55, 0.52), Point2::new(2.5, 6.5)];
+        let goals = [Point2::new(11.5, 0.5), Point2::new(11.3, 0.7), Point2::new(9.5, 6.5)];
+        let mut scratch = sim::PlanScratch::default();
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
+        for (cells, (s, g)) in flips.iter().zip(&queries) {
+            for &(i, j) in cells {
+                blocked[j][i] ^= true;
+            }
+            let rows: Vec<String> = blocked
+                .iter()
+                .rev()
+                .map(|r| r.iter().map(|&b| if b { '#' } else { '.' }).collect())
+                .collect();
+            let map = envmap::GridMap::from_ascii(&rows.join("\n")).unwrap();
+            let (s, g) = (starts[*s], goals[*g]);
+            let kept = GlobalPlanner::Dijkstra.plan_with(&mut scratch, &map, s, g, 0.1, &mut rng);
+            let fresh = GlobalPlanner::Dijkstra.plan(&map, s, g, 0.1, &mut rng);
+            proptest::prop_assert_eq!(kept, fresh);
+        }
+    }
+}
