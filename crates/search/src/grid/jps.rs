@@ -10,6 +10,7 @@ use std::time::Instant;
 
 use envmap::GridMap;
 
+use super::bits::{BitGrid, Lines, PAD};
 use super::{
     CLOSED, Connectivity, DIRS, Fixed, GridKey, GridOptions, GridPath, GridSearchError, Limit, NONE,
 };
@@ -496,92 +497,6 @@ fn octile(fx: Fixed, dx: usize, dy: usize) -> u64 {
     hi as u64 * fx.unit + lo as u64 * (fx.diag - fx.unit)
 }
 
-/// Which padded cells are free, one bit per cell: rows (line `y`, bit `PAD + x`) and
-/// columns (line `x`, bit `PAD + y`).
-#[derive(Debug, Clone)]
-struct BitGrid {
-    rows: Lines,
-    cols: Lines,
-}
-
-/// Bits before cell 0 of a bit line: one word, so that a window ending at a cell near the
-/// low end of the line starts at a non-negative bit.
-const PAD: usize = 64;
-
-/// Bit lines of equal length, each padded with zero words so that a 64-bit window may
-/// start or end at any cell of it.
-#[derive(Debug, Clone)]
-struct Lines {
-    /// Words per line.
-    words: usize,
-    bits: Vec<u64>,
-}
-
-impl Lines {
-    /// `count` all-blocked lines of `len` cells.
-    fn new(count: usize, len: usize) -> Self {
-        // A window at the line's last cell reads the word after it.
-        let words = (PAD + len) / 64 + 2;
-        Self {
-            words,
-            bits: vec![0; words * count],
-        }
-    }
-
-    fn set(&mut self, l: usize, at: usize) {
-        let b = PAD + at;
-        self.bits[l * self.words + b / 64] |= 1 << (b % 64);
-    }
-
-    /// The 64 cells of line `l` from cell `at` on (bit 0: cell `at`).
-    #[inline(always)]
-    fn window(&self, l: usize, at: usize) -> u64 {
-        self.bits_from(l, PAD + at)
-    }
-
-    /// The 64 bits of line `l` from bit `b` on.
-    #[inline(always)]
-    fn bits_from(&self, l: usize, b: usize) -> u64 {
-        let (w, s) = (l * self.words + b / 64, b % 64);
-        let pair = &self.bits[w..w + 2];
-        // `<< 1 << (63 - s)`: a shift by 64 - s without the overflow at s = 0.
-        (pair[0] >> s) | ((pair[1] << 1) << (63 - s))
-    }
-
-    /// Whether cells `lo` to `hi` of line `l` are all free, 64 at a time.
-    fn run_free(&self, l: usize, lo: usize, hi: usize) -> bool {
-        let mut at = lo;
-        while at <= hi {
-            let n = (hi - at + 1).min(64);
-            let mask = u64::MAX >> (64 - n);
-            if self.window(l, at) & mask != mask {
-                return false;
-            }
-            at += 64;
-        }
-        true
-    }
-
-    /// The window of a jump at cell `at` of line `l`: the 64 cells from `at` on when
-    /// `FWD`, else the 64 ending at `at` (bit 63: cell `at`).
-    #[inline(always)]
-    fn window_at<const FWD: bool>(&self, l: usize, at: usize) -> u64 {
-        self.bits_from(l, if FWD { PAD + at } else { PAD + at - 63 })
-    }
-
-    /// The windows from bit `b` on of line `l` and of the lines below and above it.
-    #[inline(always)]
-    fn windows(&self, l: usize, b: usize) -> (u64, u64, u64) {
-        let words = self.words;
-        let (w, s) = (b / 64, b % 64);
-        let start = (l - 1) * words + w;
-        // The three lines' words in one slice: one bounds check.
-        let span = &self.bits[start..start + 2 * words + 2];
-        let at = |i: usize| (span[i] >> s) | ((span[i + 1] << 1) << (63 - s));
-        (at(words), at(0), at(2 * words))
-    }
-}
-
 /// The cells a jump's window still knows past the jump's cell, as bits of a forward
 /// window: bits 1 to 61 when carried (shifted up to twice since it was read, its top two
 /// bits lost), bits 1 to 63 when just read. A backward window's are these reversed.
@@ -699,24 +614,6 @@ fn carried_scan<const FWD: bool>(
 }
 
 impl BitGrid {
-    /// An all-blocked `pw x ph` grid.
-    fn new(pw: usize, ph: usize) -> Self {
-        Self {
-            rows: Lines::new(ph, pw),
-            cols: Lines::new(pw, ph),
-        }
-    }
-
-    fn set_free(&mut self, x: usize, y: usize) {
-        self.rows.set(y, x);
-        self.cols.set(x, y);
-    }
-
-    #[inline]
-    fn free(&self, x: usize, y: usize) -> bool {
-        self.rows.window(y, x) & 1 != 0
-    }
-
     /// The directions (bits in the order of [`DIRS`]) to jump along from jump point
     /// `(x, y)`, reached from jump point `from` (`None`: the start, every direction) by
     /// diagonal moves, then straight ones.

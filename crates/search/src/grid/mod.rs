@@ -18,6 +18,7 @@ use crate::SearchStats;
 use crate::heap::{HeapKey, MinHeap, Upper};
 
 mod astar;
+mod bits;
 mod connected;
 mod cost_field;
 mod dijkstra;
@@ -262,8 +263,13 @@ pub struct GridSearch {
     generation: u32,
     /// Per-cell state of Theta* (allocated by its first query).
     theta_nodes: Vec<Node>,
+    /// Theta*'s cost so far of each cell, `f64` bits (valid where `theta_nodes` is).
+    theta_g: Vec<u64>,
     /// Query counter of `theta_nodes`.
     theta_generation: u32,
+    /// The passable cells as bit lines, which Theta*'s lines of sight read (built by its
+    /// first query after the passable cells were last read).
+    theta_bits: Option<bits::BitGrid>,
     /// The fixed-point cost scale of this grid's size.
     fixed: Fixed,
     /// `u64::MAX / pw + 1`: divides a padded index by `pw` with one multiplication.
@@ -371,7 +377,9 @@ impl GridSearch {
             words: vec![0; n],
             generation: 0,
             theta_nodes: Vec::new(),
+            theta_g: Vec::new(),
             theta_generation: 0,
+            theta_bits: None,
             fixed: Fixed::new(pw, height + 2),
             magic: u64::MAX / pw as u64 + 1,
             heap: MinHeap::default(),
@@ -462,6 +470,7 @@ impl GridSearch {
         if columns.is_empty() || rows.is_empty() {
             return Ok(());
         }
+        self.theta_bits = None;
         // The clock is read every 64 rows (a grid being built for a deadline).
         let deadline = self.limit.deadline;
         let late = |j: usize| j.is_multiple_of(64) && deadline.is_some_and(|d| Instant::now() >= d);

@@ -1,7 +1,13 @@
 //! Theta*: any-angle paths between cell centres (line-of-sight parents).
 
+use super::bits::{BitGrid, Lines};
 use super::engine::*;
 use super::*;
+
+/// Lines of sight whose shorter side spans at most this many cells are read from the bit
+/// lines, one run of cells per line crossed; longer ones cross the open stretches of the
+/// stride table first.
+const RUNS_UP_TO: u32 = 64;
 
 impl GridSearch {
     /// Any-angle path from `start` to `goal` by Theta* (Nash, Daniel, Koenig and Felner,
@@ -55,11 +61,11 @@ impl GridSearch {
     pub(super) fn begin_theta(&mut self, s: u32, stats: &mut SearchStats) {
         if self.theta_nodes.len() != self.words.len() {
             let unset = Node {
-                g: 0,
                 parent: NONE,
                 stamp: 0,
             };
             self.theta_nodes = vec![unset; self.words.len()];
+            self.theta_g = vec![0; self.words.len()];
             self.theta_generation = 0;
         }
         self.theta_generation += 1;
@@ -70,8 +76,8 @@ impl GridSearch {
             self.theta_generation = 1;
         }
         self.theta_heap.clear();
+        self.theta_g[s as usize] = 0f64.to_bits();
         self.theta_nodes[s as usize] = Node {
-            g: 0f64.to_bits(),
             parent: NONE,
             stamp: self.theta_generation,
         };
@@ -105,6 +111,9 @@ impl GridSearch {
         };
         let (sx, sy) = self.xy(s0);
         self.begin_theta(s0, &mut stats);
+        if self.theta_bits.is_none() {
+            self.theta_bits = Some(self.bit_grid());
+        }
         self.theta_heap.push(float_key(euclid(sx, sy), 0.0, s0));
         let closed = self.theta_generation | CLOSED;
         let limit = self.limit;
@@ -118,7 +127,7 @@ impl GridSearch {
             if lazy {
                 self.lazy_set_parent(p, sight);
             }
-            let g = f64::from_bits(self.theta_nodes[p as usize].g);
+            let g = f64::from_bits(self.theta_g[p as usize]);
             if p == t0 {
                 return Ok(self.trace(t0, g, stats));
             }
@@ -143,28 +152,34 @@ impl GridSearch {
             return;
         }
         let closed = self.theta_generation | CLOSED;
-        let (moves, k) = self.theta_moves(p);
+        let mask = self.theta_moves(p);
         let mut best = (f64::INFINITY, NONE);
-        for &(q, c) in &moves[..k] {
-            let node = &self.theta_nodes[q as usize];
-            if node.stamp == closed {
-                let via = f64::from_bits(node.g) + c;
+        for (d, &(dx, dy, c)) in DIRS.iter().enumerate() {
+            if mask & (1 << d) == 0 {
+                continue;
+            }
+            let q = self.moved(p, (dx, dy));
+            if self.theta_nodes[q as usize].stamp == closed {
+                let via = f64::from_bits(self.theta_g[q as usize]) + c;
                 if via < best.0 {
                     best = (via, q);
                 }
             }
         }
-        let node = &mut self.theta_nodes[p as usize];
-        node.g = best.0.to_bits();
-        node.parent = best.1;
+        self.theta_g[p as usize] = best.0.to_bits();
+        self.theta_nodes[p as usize].parent = best.1;
     }
 
-    /// The legal grid moves from `p` and their costs: the same as A*'s, except that a
-    /// diagonal never cuts a corner (Theta*'s segments are checked exactly, so a diagonal
-    /// must not touch a blocked corner).
-    fn theta_moves(&self, p: u32) -> ([(u32, f64); 8], usize) {
-        let pw = self.pw as u32;
+    /// The legal grid moves from `p`, one bit per direction of [`DIRS`]: the same as
+    /// A*'s, except that a diagonal never cuts a corner (Theta*'s segments are checked
+    /// exactly, so a diagonal must not touch a blocked corner).
+    #[inline(always)]
+    fn theta_moves(&self, p: u32) -> u8 {
         let pu = p as usize;
+        if !self.options.corner_cutting {
+            // The search's own moves follow the same rule (and its border is blocked).
+            return self.moves[pu];
+        }
         let pass = &self.passable;
         let (e, w, n, s) = (
             pass[pu + 1],
@@ -172,28 +187,28 @@ impl GridSearch {
             pass[pu + self.pw],
             pass[pu - self.pw],
         );
-        let mut moves = [(0u32, 0.0f64); 8];
-        let mut k = 0;
-        for (ok, q) in [(e, p + 1), (w, p - 1), (n, p + pw), (s, p - pw)] {
-            if ok {
-                moves[k] = (q, 1.0);
-                k += 1;
-            }
-        }
+        let mut mask = u8::from(e) | u8::from(w) << 1 | u8::from(n) << 2 | u8::from(s) << 3;
         if self.options.connectivity == Connectivity::Eight {
-            for (a, b, q) in [
-                (n, e, p + pw + 1),
-                (n, w, p + pw - 1),
-                (s, e, p - pw + 1),
-                (s, w, p - pw - 1),
-            ] {
-                if a && b && pass[q as usize] {
-                    moves[k] = (q, SQRT2);
-                    k += 1;
-                }
+            let pw = self.pw;
+            for (d, (a, b, q)) in [
+                (n, e, pu + pw + 1),
+                (n, w, pu + pw - 1),
+                (s, e, pu - pw + 1),
+                (s, w, pu - pw - 1),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                mask |= u8::from(a && b && pass[q]) << (4 + d);
             }
         }
-        (moves, k)
+        mask
+    }
+
+    /// The cell one move `(dx, dy)` from padded index `p`.
+    #[inline(always)]
+    fn moved(&self, p: u32, (dx, dy): (i32, i32)) -> u32 {
+        (i64::from(p) + i64::from(dy) * self.pw as i64 + i64::from(dx)) as u32
     }
 
     /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
@@ -208,36 +223,54 @@ impl GridSearch {
         (h, sight): (impl Fn(u32, u32) -> f64, &[u8]),
         lazy: bool,
     ) {
-        let (moves, k) = self.theta_moves(p);
+        let mask = self.theta_moves(p);
         let pu = p as usize;
         let open = self.theta_generation;
         let pp = self.theta_nodes[pu].parent;
-        for &(q, c) in &moves[..k] {
+        let (px, py) = self.xy(p);
+        // The parent's place and cost, read once for the eight moves.
+        let (ppx, ppy, gpp) = if pp == NONE {
+            (0.0, 0.0, 0.0)
+        } else {
+            let (x, y) = self.xy(pp);
+            (
+                f64::from(x),
+                f64::from(y),
+                f64::from_bits(self.theta_g[pp as usize]),
+            )
+        };
+        for (d, &(dx, dy, c)) in DIRS.iter().enumerate() {
+            if mask & (1 << d) == 0 {
+                continue;
+            }
+            let q = self.moved(p, (dx, dy));
+            let (qx, qy) = (px.wrapping_add_signed(dx), py.wrapping_add_signed(dy));
             let qu = q as usize;
             let st = self.theta_nodes[qu].stamp;
             if st == open | CLOSED {
                 continue;
             }
+            // Lazy: q would get p's parent at the cost it already has through it.
+            if lazy && st == open && pp != NONE && self.theta_nodes[qu].parent == pp {
+                continue;
+            }
             let (mut ng, mut parent) = (g + c, p);
             if pp != NONE && (lazy || self.line_of_sight(pp, q, sight)) {
-                let (a, b) = (self.cell(pp), self.cell(q));
-                let (dx, dy) = (a.0 as f64 - b.0 as f64, a.1 as f64 - b.1 as f64);
-                let d = (dx * dx + dy * dy).sqrt();
-                let via = f64::from_bits(self.theta_nodes[pp as usize].g) + d;
+                let (ex, ey) = (ppx - f64::from(qx), ppy - f64::from(qy));
+                let via = gpp + (ex * ex + ey * ey).sqrt();
                 if via <= ng {
                     ng = via;
                     parent = pp;
                 }
             }
-            if st == open && f64::from_bits(self.theta_nodes[qu].g) <= ng {
+            if st == open && f64::from_bits(self.theta_g[qu]) <= ng {
                 continue;
             }
             stats.reached += u64::from(st != open);
             self.theta_nodes[qu].stamp = open;
-            self.theta_nodes[qu].g = ng.to_bits();
+            self.theta_g[qu] = ng.to_bits();
             self.theta_nodes[qu].parent = parent;
-            let (x, y) = self.xy(q);
-            self.theta_heap.push(float_key(ng + h(x, y), ng, q));
+            self.theta_heap.push(float_key(ng + h(qx, qy), ng, q));
             stats.pushes += 1;
         }
     }
@@ -265,6 +298,11 @@ impl GridSearch {
     /// bounds test is needed.
     pub(super) fn line_of_sight(&self, a: u32, b: u32, sight: &[u8]) -> bool {
         let ((ax, ay), (bx, by)) = (self.xy(a), self.xy(b));
+        if let Some(bits) = &self.theta_bits
+            && ax.abs_diff(bx).min(ay.abs_diff(by)) <= RUNS_UP_TO
+        {
+            return runs_free(bits, (ax, ay), (bx, by));
+        }
         let (dx, dy) = (i64::from(bx) - i64::from(ax), i64::from(by) - i64::from(ay));
         if dx == 0 && dy == 0 {
             return self.passable[a as usize];
@@ -340,6 +378,16 @@ impl GridSearch {
         true
     }
 
+    /// The passable cells as bit lines.
+    fn bit_grid(&self) -> BitGrid {
+        let ph = self.passable.len() / self.pw;
+        let mut bits = BitGrid::new(self.pw, ph);
+        for (p, _) in self.passable.iter().enumerate().filter(|(_, free)| **free) {
+            bits.set_free(p % self.pw, p / self.pw);
+        }
+        bits
+    }
+
     /// How far, in cells along the unit direction `e`, the segment from the centre of
     /// padded cell `c` is known to touch no blocked square ([`envmap::open_stretch`] on
     /// the map's `sight` table; empty: not known at all).
@@ -353,6 +401,69 @@ impl GridSearch {
         let centre = (f64::from(cx) - 0.5, f64::from(cy) - 0.5);
         envmap::open_stretch(sight, (self.width, self.height), centre, e, len)
     }
+}
+
+/// Whether the closed segment between the centres of padded cells `a` and `b` touches
+/// only free cells: along the lines of the segment's longer side (rows when it is at
+/// least as wide as tall, else columns), the cells it touches in each line it crosses
+/// form one run, read from the bit lines.
+fn runs_free(bits: &BitGrid, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> bool {
+    if ax.abs_diff(bx) >= ay.abs_diff(by) {
+        runs_along(&bits.rows, (ax, ay), (bx, by))
+    } else {
+        runs_along(&bits.cols, (ay, ax), (by, bx))
+    }
+}
+
+/// [`runs_free`] on `lines` for a segment from `(au, av)` to `(bu, bv)` (cell centres;
+/// `u` along the lines, `v` the line), at most one line crossed per cell along `u`.
+///
+/// In cells from `au`'s left edge (mirrored so that the segment goes toward larger `u`)
+/// and units of `1 / (2 dv)`, the segment crosses the line boundary `v = m` at the integer
+/// `dv + (2 (m - av) - 1) du`, each boundary `2 du` after the one before. Line `m` holds the
+/// part between its two boundaries (or the ends), and the cells whose closed span `[k, k +
+/// 1]` meets that part's span `[lo, hi]` are `ceil(lo) - 1` to `floor(hi)`: the floors are
+/// kept as a quotient and a remainder, so no line costs a division.
+fn runs_along(lines: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool {
+    let ((au, av), (bu, bv)) = if av <= bv {
+        ((au, av), (bu, bv))
+    } else {
+        ((bu, bv), (au, av))
+    };
+    if av == bv {
+        return lines.run_free(av as usize, au.min(bu) as usize, au.max(bu) as usize);
+    }
+    let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
+    let d = 2 * dv;
+    let (step_q, step_r) = ((2 * du) / d, (2 * du) % d);
+    let (au, forward) = (au as usize, bu >= au);
+    // The run of cells `k_lo..=k_hi` from `au`'s cell, toward `bu`.
+    let free = |m: u32, k_lo: u64, k_hi: u64| {
+        let (lo, hi) = if forward {
+            (au + k_lo as usize, au + k_hi as usize)
+        } else {
+            (au - k_hi as usize, au - k_lo as usize)
+        };
+        lines.run_free(m as usize, lo, hi)
+    };
+    // The first line's part starts at the centre, 1/2: its cells from 0.
+    let mut k_lo = 0;
+    // The boundary above line `m`, `dv + du` for the first, as quotient and remainder.
+    let (mut q, mut r) = ((dv + du) / d, (dv + du) % d);
+    for m in av..bv {
+        if !free(m, k_lo, q) {
+            return false;
+        }
+        k_lo = q + u64::from(r != 0) - 1;
+        q += step_q;
+        r += step_r;
+        if r >= d {
+            r -= d;
+            q += 1;
+        }
+    }
+    // The last line's part ends at the centre of `bu`'s cell.
+    free(bv, k_lo, du)
 }
 
 #[cfg(test)]
@@ -384,17 +495,25 @@ mod tests {
         /// the segment is free.
         #[test]
         fn line_of_sight_is_segment_free_between_centres((map, pairs) in maps()) {
-            let search = GridSearch::new(&map, GridOptions::default()).unwrap();
+            let mut search = GridSearch::new(&map, GridOptions::default()).unwrap();
             let sight = search.sight(&map);
             prop_assert!(!sight.is_empty());
+            let bits = search.bit_grid();
             for (a, b) in pairs {
                 let (pa, pb) = (search.index(a.0, a.1), search.index(b.0, b.1));
                 let expected = map.segment_free_cells(
                     map.cell_center(a.0, a.1),
                     map.cell_center(b.0, b.1),
                 );
+                // The stride table and the sweep, then the bit lines' runs too.
+                search.theta_bits = None;
                 prop_assert_eq!(search.line_of_sight(pa, pb, sight), expected, "{:?} -> {:?}", a, b);
                 prop_assert_eq!(search.line_of_sight(pb, pa, sight), expected, "{:?} -> {:?}", b, a);
+                search.theta_bits = Some(bits.clone());
+                prop_assert_eq!(search.line_of_sight(pa, pb, sight), expected, "{:?} -> {:?}", a, b);
+                prop_assert_eq!(search.line_of_sight(pb, pa, sight), expected, "{:?} -> {:?}", b, a);
+                let (ca, cb) = (search.xy(pa), search.xy(pb));
+                prop_assert_eq!(runs_free(&bits, ca, cb), expected, "{:?} -> {:?}", a, b);
             }
         }
     }
