@@ -3,8 +3,11 @@
 //! 512 x 512 maps and seed 000's room (its risk band blocking).
 //!
 //! ```sh
-//! cargo run --release -p hyplan-benches --example any_angle_rounds [-- ROUNDS]
+//! cargo run --release -p hyplan-benches --example any_angle_rounds [-- ROUNDS [WEIGHT]]
 //! ```
+//!
+//! `WEIGHT` (default 1) runs Lazy Theta* with Optimizations, its heuristic weighted
+//! ([`GridSearch::lazy_theta_star_weighted`]), in place of plain Lazy Theta*.
 //!
 //! Each map's one-time preparation (the grid search's cells and the map's stride table,
 //! `GridMap::blocked_strides`) is timed apart and printed. Every lazy and eager Theta*
@@ -29,6 +32,10 @@ fn main() {
         .and_then(|a| a.parse().ok())
         .unwrap_or(5)
         .max(1);
+    let weight: f64 = std::env::args()
+        .nth(2)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(1.0);
     let mut suites: Vec<Suite> = movingai().into_iter().collect();
     suites.extend(generated());
     suites.push(room());
@@ -44,7 +51,9 @@ fn main() {
         // Lengths, and every segment checked, outside the timed rounds.
         let mut lengths = Vec::new();
         for &(a, b, _) in &s.queries {
-            let lazy = search.lazy_theta_star(&s.map, a, b).expect("lazy Theta*");
+            let lazy = search
+                .lazy_theta_star_weighted(&s.map, a, b, weight)
+                .expect("lazy Theta*");
             let eager = search.theta_star(&s.map, a, b).expect("Theta*");
             check(&s.map, &lazy);
             check(&s.map, &eager);
@@ -62,7 +71,10 @@ fn main() {
             t
         };
         let astar = best(&mut |g, a, b| g.astar(a, b).map_or(0.0, |p| p.cost));
-        let lazy = best(&mut |g, a, b| g.lazy_theta_star(&s.map, a, b).map_or(0.0, |p| p.cost));
+        let lazy = best(&mut |g, a, b| {
+            g.lazy_theta_star_weighted(&s.map, a, b, weight)
+                .map_or(0.0, |p| p.cost)
+        });
         let theta = best(&mut |g, a, b| g.theta_star(&s.map, a, b).map_or(0.0, |p| p.cost));
         let length = median(lengths).unwrap_or(f64::NAN);
         println!(

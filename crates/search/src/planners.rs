@@ -16,7 +16,8 @@ enum Algo {
     Astar,
     Dijkstra,
     ThetaStar,
-    LazyThetaStar,
+    /// With the heuristic's weight.
+    LazyThetaStar(f64),
     Jps,
 }
 
@@ -38,7 +39,7 @@ macro_rules! grid_planner {
         }
     ) => {
         $(#[$doc])*
-        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        #[derive(Debug, Clone, Copy, PartialEq)]
         #[cfg_attr(
             feature = "serde",
             derive(serde::Serialize, serde::Deserialize),
@@ -135,14 +136,14 @@ impl Jps {
 
 impl LazyThetaStar {
     fn algo(&self) -> Algo {
-        Algo::LazyThetaStar
+        Algo::LazyThetaStar(self.weight)
     }
 }
 
 impl ThetaStar {
     fn algo(&self) -> Algo {
         if self.lazy {
-            Algo::LazyThetaStar
+            Algo::LazyThetaStar(1.0)
         } else {
             Algo::ThetaStar
         }
@@ -265,6 +266,11 @@ grid_planner! {
     LazyThetaStar, "lazy-theta-star" {
         /// Connectivity of the underlying grid moves (corner cutting is never used).
         options: GridOptions = GridOptions::default(),
+        /// The heuristic's weight, at least 1 (default 1: Lazy Theta*). Above 1, Lazy
+        /// Theta* with Optimizations from the same paper: the straight-line distance to the
+        /// goal times `weight`, as weighted A*, so fewer cells are expanded and paths may
+        /// be longer ([`GridSearch::lazy_theta_star_weighted`]).
+        weight: f64 = 1.0,
     }
 }
 
@@ -277,6 +283,15 @@ fn plan_on_grid(
 ) -> Result<Plan, PlanError> {
     let started = Instant::now();
     budget.validate()?;
+    if let Algo::LazyThetaStar(weight) = algo
+        && !(weight.is_finite() && weight >= 1.0)
+    {
+        return Err(PlanError::InvalidParameter {
+            name: "weight",
+            value: weight.to_string(),
+            reason: "the heuristic's weight must be a number of at least 1 (1: Lazy Theta*)",
+        });
+    }
     query.validate(map)?;
     // A flood fill proves "no path", with its cause, faster than exhausting the search.
     if let Some(cause) = envmap::disconnection(map, query, moves(algo, options)) {
@@ -471,8 +486,11 @@ fn search_cells(
                 Algo::Astar => search.astar(start, goal),
                 Algo::Dijkstra => search.dijkstra(start, goal),
                 Algo::ThetaStar => search.theta_star(map, start, goal),
+                Algo::LazyThetaStar(weight) => {
+                    search.lazy_theta_star_weighted(map, start, goal, weight)
+                }
                 // (Jump point search has its own search, run above.)
-                Algo::LazyThetaStar | Algo::Jps => search.lazy_theta_star(map, start, goal),
+                Algo::Jps => search.lazy_theta_star(map, start, goal),
             }
         },
     )

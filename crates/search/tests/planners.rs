@@ -151,3 +151,26 @@ fn non_grid_workspace_is_refused() {
         assert!(p.info().grid_only && p.info().proves_no_path);
     }
 }
+
+#[test]
+fn a_lazy_theta_star_weight_below_one_is_refused() {
+    let q = Query::new(
+        Point2::new(-0.75, 2.25),
+        Goal::Point(Point2::new(3.75, 4.75)),
+    );
+    for weight in [0.5, f64::NAN, f64::INFINITY] {
+        let p = search::LazyThetaStar {
+            weight,
+            ..Default::default()
+        };
+        match p.plan(&room(), &q, &mut rand::rng()) {
+            Err(PlanError::InvalidParameter { name: "weight", .. }) => {}
+            other => panic!("{weight}: {other:?}"),
+        }
+    }
+    let weighted = search::LazyThetaStar {
+        weight: 1.5,
+        ..Default::default()
+    };
+    assert!(weighted.plan(&room(), &q, &mut rand::rng()).is_ok());
+}

@@ -91,8 +91,12 @@ proptest! {
         let a = search.astar(s, g).ok().map(|p| p.cost);
         // Both variants must find a path exactly when A* does; Theta* is also held to be
         // no longer than A*, Lazy Theta* is not.
-        for (name, lazy) in [("Theta*", false), ("Lazy Theta*", true)] {
-            let t = if lazy { search.lazy_theta_star(&map, s, g) } else { search.theta_star(&map, s, g) };
+        for (name, lazy, weight) in [("Theta*", false, 1.0), ("Lazy Theta*", true, 1.0), ("weighted Lazy Theta*", true, 1.3)] {
+            let t = match (lazy, weight) {
+                (false, _) => search.theta_star(&map, s, g),
+                (true, 1.0) => search.lazy_theta_star(&map, s, g),
+                (true, w) => search.lazy_theta_star_weighted(&map, s, g, w),
+            };
             let (t, a) = match (t, a) {
                 (Ok(t), Some(a)) => (t, a),
                 (Err(_), None) => continue,
@@ -109,6 +113,10 @@ proptest! {
             prop_assert!((length - t.cost).abs() < 1e-6, "{} length {} cost {}", name, length, t.cost);
             prop_assert!(lazy || t.cost <= a + 1e-9, "{} {} > A* {}", name, t.cost, a);
         }
+        // Weight 1 is Lazy Theta* itself.
+        let plain = search.lazy_theta_star(&map, s, g).ok().map(|p| p.cells);
+        let one = search.lazy_theta_star_weighted(&map, s, g, 1.0).ok().map(|p| p.cells);
+        prop_assert_eq!(plain, one);
     }
 
     #[test]

@@ -129,8 +129,10 @@ impl GridSearch {
             (Kind::Dijkstra, _) | (Kind::ThetaStar | Kind::LazyThetaStar, None) => {
                 self.grid_search(s0, t0, false)
             }
-            (Kind::ThetaStar, Some(map)) => self.theta_search(s0, t0, false, self.sight(map)),
-            (Kind::LazyThetaStar, Some(map)) => self.theta_search(s0, t0, true, self.sight(map)),
+            (Kind::ThetaStar, Some(map)) => self.theta_search(s0, t0, false, self.sight(map), 1.0),
+            (Kind::LazyThetaStar, Some(map)) => {
+                self.theta_search(s0, t0, true, self.sight(map), 1.0)
+            }
         }
     }
 }
