@@ -129,7 +129,7 @@ impl<K: HeapKey> MinHeap<K> {
 
     /// Replaces the smallest key by `key` (see
     /// [`replace_top_placed`](MinHeap::replace_top_placed)).
-    #[cfg(test)]
+    #[inline]
     pub fn replace_top(&mut self, key: K) {
         self.replace_top_placed(key, &mut |_, _| {});
     }

@@ -163,7 +163,18 @@ impl GridSearch {
         let closed = self.theta_generation | CLOSED;
         let limit = self.limit;
         let mut check_at = limit.next_check(0);
-        while let Some(k) = self.theta_heap.pop() {
+        // The heap's root is the cell being expanded, taken but left in place: the first
+        // cell it pushes replaces it (one sift instead of a pop and a push; the keys are
+        // distinct, so the cells come out in the same order).
+        let mut taken = false;
+        loop {
+            if taken {
+                self.theta_heap.pop();
+            }
+            let Some(k) = self.theta_heap.peek() else {
+                break;
+            };
+            taken = true;
             let p = k as u32;
             if self.theta_nodes[p as usize].stamp == closed {
                 continue;
@@ -183,7 +194,7 @@ impl GridSearch {
                 check_at = limit.next_check(stats.expansions);
             }
             stats.expansions += 1;
-            self.theta_expand(p, g, &mut stats, (euclid, sight), lazy);
+            self.theta_expand(p, g, &mut stats, (euclid, sight), lazy, &mut taken);
         }
         Err(GridSearchError::NoPath { stats })
     }
@@ -259,7 +270,8 @@ impl GridSearch {
     /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
     /// parent when it sees q (path 2 of the paper), else p (path 1). With `lazy`, p's
     /// parent is taken without the test, which q's own expansion makes
-    /// ([`lazy_set_parent`](Self::lazy_set_parent)).
+    /// ([`lazy_set_parent`](Self::lazy_set_parent)). `taken`: the heap's root is `p`'s
+    /// own entry, which the first push replaces.
     pub(super) fn theta_expand(
         &mut self,
         p: u32,
@@ -267,6 +279,7 @@ impl GridSearch {
         stats: &mut SearchStats,
         (h, sight): (impl Fn(u32, u32) -> f64, &[u8]),
         lazy: bool,
+        taken: &mut bool,
     ) {
         let mask = self.theta_moves(p);
         let pu = p as usize;
@@ -324,7 +337,12 @@ impl GridSearch {
             self.theta_nodes[qu].stamp = open;
             self.theta_g[qu] = ng.to_bits();
             self.theta_nodes[qu].parent = parent;
-            self.theta_heap.push(float_key(ng + h(qx, qy), ng, q));
+            let key = float_key(ng + h(qx, qy), ng, q);
+            if std::mem::take(taken) {
+                self.theta_heap.replace_top(key);
+            } else {
+                self.theta_heap.push(key);
+            }
             stats.pushes += 1;
         }
     }
