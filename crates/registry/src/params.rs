@@ -55,6 +55,10 @@ const DOCS: &[(&str, &str)] = &[
         "Lazy Theta* (line of sight tested once, at expansion); false: Theta*",
     ),
     (
+        "weight",
+        "heuristic weight, at least 1; above 1: Lazy Theta* with Optimizations (fewer expansions, paths possibly longer)",
+    ),
+    (
         "rewire",
         "neighbourhood of choose-parent and rewiring: Auto, Gamma(g) or K(k)",
     ),
