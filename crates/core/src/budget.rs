@@ -222,10 +222,36 @@ impl Budget {
     /// ([`for_search`](Self::for_search), [`for_sampling`](Self::for_sampling)); this keeps one that does not from running forever.
     #[must_use]
     pub fn exhausted(&self, iterations: u64, started: Instant) -> bool {
+        self.iterations_spent(iterations) || self.time_spent(started)
+    }
+
+    /// The iteration half of [`exhausted`](Self::exhausted): whether `iterations` reach
+    /// the cap (an unset cap counting as [`MIN_SAMPLES`](Self::MIN_SAMPLES)).
+    ///
+    /// ```
+    /// use hyplan_core::Budget;
+    /// assert!(Budget::iterations(10).iterations_spent(10));
+    /// assert!(!Budget::iterations(10).iterations_spent(9));
+    /// ```
+    #[must_use]
+    pub fn iterations_spent(&self, iterations: u64) -> bool {
         iterations >= self.max_iterations.unwrap_or(Self::MIN_SAMPLES)
-            || self
-                .max_time
-                .is_some_and(|limit| started.elapsed() >= limit)
+    }
+
+    /// The time half of [`exhausted`](Self::exhausted): whether the time limit, if any,
+    /// has passed since `started` (the clock is read only when one is set).
+    ///
+    /// ```
+    /// use std::time::{Duration, Instant};
+    /// use hyplan_core::Budget;
+    /// let long = Budget::iterations(10).with_time(Duration::from_secs(60));
+    /// assert!(!long.time_spent(Instant::now()));
+    /// assert!(!Budget::iterations(10).time_spent(Instant::now()));
+    /// ```
+    #[must_use]
+    pub fn time_spent(&self, started: Instant) -> bool {
+        self.max_time
+            .is_some_and(|limit| started.elapsed() >= limit)
     }
 
     /// Checks that the budget allows at least one iteration and a non-zero time.

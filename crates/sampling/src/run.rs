@@ -12,6 +12,11 @@ use crate::toolkit;
 /// How often (in iterations) a run calls its observer.
 pub const OBSERVE_EVERY: u64 = 64;
 
+/// How often (in iterations) a run with a time limit reads the clock. A reading costs about
+/// 20 ns, a tenth of a short RRT iteration; iterations take 0.1-10 us, so the limit is
+/// still kept to within a third of a millisecond.
+const CLOCK_EVERY: u64 = 32;
+
 /// What one call of a tree planner's `plan_with` (or a hybrid's `plan_detailed`) plans in
 /// and with: the workspace, the query, the RNG every random number is drawn from and the
 /// observer of the run's progress. [`impl_planner!`](crate::impl_planner) writes the
@@ -114,8 +119,11 @@ impl Run {
     }
 
     /// Begins the next iteration if the budget allows it (counts it and returns `true`).
+    /// The time limit is read every [`CLOCK_EVERY`] iterations, from the first one on.
     pub fn next_iteration(&mut self) -> bool {
-        if self.budget.exhausted(self.iterations, self.started) {
+        if self.budget.iterations_spent(self.iterations)
+            || (self.iterations.is_multiple_of(CLOCK_EVERY) && self.budget.time_spent(self.started))
+        {
             return false;
         }
         self.iterations += 1;
