@@ -3,11 +3,13 @@
 //! One small type, [`NearestIndex`], hides the k-d tree (kiddo 5's mutable `KdTree`), so
 //! swapping it for another index touches this file only.
 
+use std::hash::BuildHasher;
+
 use hyplan_core::Point2;
 use kiddo::SquaredEuclidean;
 // Fx, not SipHash: the keys are the bits of sampled coordinates, hashed at every
 // insertion (a few per cent of a short RRT's time with SipHash), and no one chooses them.
-use rustc_hash::FxHashMap as HashMap;
+use rustc_hash::{FxBuildHasher, FxHashMap as HashMap};
 
 /// kiddo's mutable tree: `f64` coordinates, `u64` items (our point ids), 2 axes, buckets of
 /// `B` points, `u32` node indices.
@@ -57,8 +59,10 @@ type KdTree<const B: usize> = kiddo::float::kdtree::KdTree<f64, u64, 2, B, u32>;
 pub struct NearestIndex<const B: usize = 64> {
     tree: KdTree<B>,
     points: Vec<Point2>,
-    /// Ids present in the k-d tree, by exact coordinates (bit patterns).
-    first_at: HashMap<[u64; 2], u64>,
+    /// Ids present in the k-d tree, found by their exact coordinates (bit patterns), which
+    /// are read from `points`: 8 bytes an entry where a map from the coordinates took 24,
+    /// for trees that grow for hours (an exploration's global detector).
+    first_at: hashbrown::HashTable<u64>,
     /// Ids of exact duplicates, keyed by the id of the twin that is in the tree.
     twins: HashMap<u64, Vec<u64>>,
 }
@@ -100,7 +104,7 @@ impl<const B: usize> NearestIndex<B> {
         Self {
             tree: KdTree::default(),
             points: Vec::with_capacity(n),
-            first_at: HashMap::with_capacity_and_hasher(n, Default::default()),
+            first_at: hashbrown::HashTable::with_capacity(n),
             twins: HashMap::default(),
         }
     }
@@ -147,12 +151,18 @@ impl<const B: usize> NearestIndex<B> {
         let id = self.points.len();
         self.points.push(p);
         if p.x.is_finite() && p.y.is_finite() {
-            // -0.0 and 0.0 are the same position: normalise before taking the bits.
-            let key = [(p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()];
-            match self.first_at.get(&key) {
+            let key = position(p);
+            let hash = FxBuildHasher.hash_one(key);
+            let points = &self.points;
+            match self
+                .first_at
+                .find(hash, |&i| position(points[i as usize]) == key)
+            {
                 Some(&twin) => self.twins.entry(twin).or_default().push(id as u64),
                 None => {
-                    self.first_at.insert(key, id as u64);
+                    self.first_at.insert_unique(hash, id as u64, |&i| {
+                        FxBuildHasher.hash_one(position(points[i as usize]))
+                    });
                     self.tree.add(&[p.x, p.y], id as u64);
                 }
             }
@@ -224,6 +234,11 @@ impl<const B: usize> NearestIndex<B> {
             out.extend(twins.iter().map(|&t| (t as usize, d)));
         }
     }
+}
+
+/// A point's exact position as bits, -0.0 and 0.0 being the same position.
+fn position(p: Point2) -> [u64; 2] {
+    [(p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()]
 }
 
 #[cfg(test)]
