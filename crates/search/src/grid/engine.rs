@@ -126,12 +126,12 @@ impl GridSearch {
         let t0 = self.check(goal, false)?;
         match (kind, map) {
             (Kind::Astar, _) => self.grid_search(s0, t0, true),
-            (Kind::Dijkstra, _) | (Kind::ThetaStar | Kind::LazyThetaStar, None) => {
+            (Kind::Dijkstra, _) | (Kind::ThetaStar | Kind::LazyThetaStar(_), None) => {
                 self.grid_search(s0, t0, false)
             }
             (Kind::ThetaStar, Some(map)) => self.theta_search(s0, t0, false, self.sight(map), 1.0),
-            (Kind::LazyThetaStar, Some(map)) => {
-                self.theta_search(s0, t0, true, self.sight(map), 1.0)
+            (Kind::LazyThetaStar(weight), Some(map)) => {
+                self.theta_search(s0, t0, true, self.sight(map), weight)
             }
         }
     }

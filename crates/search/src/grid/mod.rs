@@ -173,12 +173,13 @@ pub enum GridSearchError {
 }
 
 /// Which search [`GridSearch::run`] performs.
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq)]
 enum Kind {
     Astar,
     Dijkstra,
     ThetaStar,
-    LazyThetaStar,
+    /// With the heuristic's weight (1: Lazy Theta* itself).
+    LazyThetaStar(f64),
 }
 
 /// Flat-array grid searches on one [`GridMap`], with scratch memory reused across queries.

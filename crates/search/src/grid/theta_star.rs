@@ -53,7 +53,7 @@ impl GridSearch {
         start: (usize, usize),
         goal: (usize, usize),
     ) -> Result<GridPath, GridSearchError> {
-        self.run(Some(map), start, goal, Kind::LazyThetaStar)
+        self.run(Some(map), start, goal, Kind::LazyThetaStar(1.0))
     }
 
     /// Lazy Theta* with Optimizations (Nash, Koenig and Tovey 2010): Lazy Theta* whose
@@ -89,14 +89,12 @@ impl GridSearch {
         goal: (usize, usize),
         weight: f64,
     ) -> Result<GridPath, GridSearchError> {
-        let s0 = self.check(start, true)?;
-        let t0 = self.check(goal, false)?;
         let weight = if weight.is_finite() {
             weight.max(1.0)
         } else {
             1.0
         };
-        self.theta_search(s0, t0, true, self.sight(map), weight)
+        self.run(Some(map), start, goal, Kind::LazyThetaStar(weight))
     }
 
     /// Starts a Theta* query from `s` on its own nodes (allocated by the first query),
