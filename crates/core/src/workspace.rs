@@ -20,6 +20,18 @@ pub enum Zone {
     Forbidden = 2,
 }
 
+/// The zone's number: 0 free, 1 risk, 2 forbidden.
+///
+/// ```
+/// use hyplan_core::Zone;
+/// assert_eq!(u8::from(Zone::Risk), 1);
+/// ```
+impl From<Zone> for u8 {
+    fn from(zone: Zone) -> Self {
+        zone as Self
+    }
+}
+
 /// The queries a planner asks of its world.
 ///
 /// Required: [`bounds`](Workspace::bounds), [`is_free`](Workspace::is_free) and

@@ -70,6 +70,13 @@ pub struct OrcaParams {
     /// exactly symmetric encounters toward passing on the right, where ORCA alone only
     /// slows down (see [`Orca`]).
     pub keep_right: f64,
+    /// How often people choose a new velocity, s (0.04: 25 Hz, as [`crate::STEP`] for social
+    /// forces). Between steps people walk on at their velocities. From 0.005 (the engine's
+    /// tick) to 1. Coarser steps are cheaper but let people who see the robot walk into it:
+    /// at 0.1 s (ir-sim's `step_time`; CrowdNav and RVO2's examples step ORCA every 0.25 s)
+    /// a quarter of the crowd table's runs in the doors hall and the crossing flow had a
+    /// contact that none had at 0.04 s (none of them the robot's fault).
+    pub step: f64,
 }
 
 impl Default for OrcaParams {
@@ -85,6 +92,7 @@ impl Default for OrcaParams {
             arrival_time: 1.0,
             safety_space: 0.01,
             keep_right: KEEP_RIGHT,
+            step: crate::STEP,
         }
     }
 }
@@ -111,9 +119,20 @@ impl OrcaParams {
             ("safety_space", self.safety_space),
             ("keep_right", self.keep_right),
         ];
-        crate::validate::first_out_of_range(&positive, &non_negative)
+        crate::validate::first_out_of_range(&positive, &non_negative).or_else(|| {
+            (!(MIN_STEP..=MAX_STEP).contains(&self.step)).then_some((
+                "step",
+                self.step,
+                "must be from 0.005 to 1",
+            ))
+        })
     }
 }
+
+/// The range of [`OrcaParams::step`], s: not below the engine's tick (finer steps are
+/// never taken), and a step a second at most.
+const MIN_STEP: f64 = 0.005;
+const MAX_STEP: f64 = 1.0;
 
 /// One person's state.
 #[derive(Debug, Clone, Copy)]
@@ -352,8 +371,8 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 /// (`cost_of_twenty_people`, release), one call takes about 40 us in an open room (1.5x
 /// [`crate::SocialForce`]) but about 3 ms among a loaded map's 3600 cell edges of
 /// pillars (about 25x, each person handed hundreds of edges). That is once per
-/// [`crate::STEP`] of simulated time (25 Hz, as [`crate::SocialForce`]); a call between
-/// steps extrapolates the positions.
+/// [`OrcaParams::step`] of simulated time (25 Hz by default); a call between steps
+/// extrapolates the positions.
 ///
 /// # Use
 ///
@@ -605,6 +624,10 @@ impl Stepped for Orca<'_> {
 
     fn clock(&mut self) -> &mut Stepper {
         &mut self.clock
+    }
+
+    fn step_length(&self) -> f64 {
+        self.params.step
     }
 
     fn discs(&self, ahead: f64) -> Vec<Disc> {

@@ -54,11 +54,13 @@ impl PeopleModel for Scripted<'_> {
     }
 }
 
-/// A people model that moves its people in fixed steps of [`crate::STEP`] on its own
-/// clock ([`Stepper`] drives it).
+/// A people model that moves its people in fixed steps on its own clock ([`Stepper`]
+/// drives it).
 pub(crate) trait Stepped {
     /// The model's clock.
     fn clock(&mut self) -> &mut Stepper;
+    /// The length of a step, s.
+    fn step_length(&self) -> f64;
     /// Everyone back at their first way-point (or off stage), standing.
     fn reset(&mut self);
     /// One step of `h` seconds from time `t`, the robot at `robot` moving at
@@ -93,7 +95,7 @@ pub(crate) fn discs_ahead(
         .collect()
 }
 
-/// The clock of a [`Stepped`] model: steps of [`crate::STEP`] from its first call, the
+/// The clock of a [`Stepped`] model: steps of its length from its first call, the
 /// robot's velocity from its displacement between calls, a restart when time goes back.
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Stepper {
@@ -123,7 +125,7 @@ impl Stepper {
         let (t0, steps) = self.clock;
         // Steps up to `t` (one ending within a fraction of a microsecond of `t` counts:
         // the engine's times are sums of 5 ms ticks).
-        let h = crate::social_force::STEP;
+        let h = model.step_length();
         let due = ((t - t0) / h + 1e-7).floor().max(0.0) as u64;
         for k in steps..due {
             model.step(t0 + k as f64 * h, h, here, robot_velocity);

@@ -664,6 +664,10 @@ impl Stepped for SocialForce<'_> {
         &mut self.clock
     }
 
+    fn step_length(&self) -> f64 {
+        STEP
+    }
+
     fn discs(&self, ahead: f64) -> Vec<Disc> {
         discs_ahead(
             self.people,

@@ -185,6 +185,7 @@ fn chosen_by_the_scenario() {
     );
     drives_among(&sc, &world);
     bad_parameter_is_named("Orca((time_horizon: -1.0))", "time_horizon", "time_horizn");
+    bad_parameter_is_named("Orca((step: -1.0))", "step", "stepp");
 }
 
 /// The cost of one `people` call (one 5 ms tick) with 20 people crossing an open 10 m
