@@ -1,6 +1,7 @@
-//! Nearest-neighbour queries: `sampling::NearestIndex` (kiddo k-d tree) against a linear
-//! scan, in one group so the ratio comes from one run. Sizes in the benchmark id; 1000
-//! queries per iteration (`Throughput::Elements`).
+//! Nearest-neighbour queries: `sampling::NearestIndex` (the workspace's k-d tree) against
+//! its peer, kiddo 5's mutable k-d tree (which it replaced; leaves of 64 points, as ours),
+//! and a linear scan, in one group so the ratios come from one run. Sizes in the benchmark
+//! id; 1000 queries per iteration (`Throughput::Elements`).
 
 use std::hint::black_box;
 
@@ -9,6 +10,9 @@ use hyplan_core::Point2;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use sampling::NearestIndex;
+
+/// kiddo's mutable tree with our leaf size.
+type Kiddo = kiddo::float::kdtree::KdTree<f64, u64, 2, 64, u32>;
 
 const QUERIES: usize = 1000;
 
@@ -49,11 +53,27 @@ fn bench_nearest(c: &mut Criterion) {
                 "index {id} vs scan {lin}"
             );
         }
-        group.bench_with_input(BenchmarkId::new("kiddo_index", n), &n, |b, _| {
+        let mut kiddo = Kiddo::new();
+        for (i, p) in pts.iter().enumerate() {
+            kiddo.add(&[p.x, p.y], i as u64);
+        }
+        group.bench_with_input(BenchmarkId::new("nearest_index", n), &n, |b, _| {
             b.iter(|| {
                 let mut acc = 0;
                 for &q in &queries {
                     acc += index.nearest(black_box(q)).unwrap().0;
+                }
+                acc
+            });
+        });
+        group.bench_with_input(BenchmarkId::new("kiddo", n), &n, |b, _| {
+            b.iter(|| {
+                let mut acc = 0;
+                for &q in &queries {
+                    let q = black_box(q);
+                    acc += kiddo
+                        .nearest_one::<kiddo::SquaredEuclidean>(&[q.x, q.y])
+                        .item;
                 }
                 acc
             });
@@ -76,13 +96,23 @@ fn bench_nearest(c: &mut Criterion) {
     let mut group = c.benchmark_group("nearest_insert");
     group.throughput(Throughput::Elements(QUERIES as u64));
     let pts = points(QUERIES, 3);
-    group.bench_function(BenchmarkId::new("kiddo_index", QUERIES), |b| {
+    group.bench_function(BenchmarkId::new("nearest_index", QUERIES), |b| {
         b.iter(|| {
             let mut index = NearestIndex::with_capacity(QUERIES);
             for &p in &pts {
                 index.insert(black_box(p));
             }
             index.len()
+        });
+    });
+    group.bench_function(BenchmarkId::new("kiddo", QUERIES), |b| {
+        b.iter(|| {
+            let mut tree = Kiddo::with_capacity(QUERIES);
+            for (i, &p) in pts.iter().enumerate() {
+                let p = black_box(p);
+                tree.add(&[p.x, p.y], i as u64);
+            }
+            tree.size()
         });
     });
     group.finish();

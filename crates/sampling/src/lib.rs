@@ -13,7 +13,8 @@
 //!   the whole budget.
 //! - [`BiRrt`]: two trees grown in turn, joined by one free step.
 //! - [`RrtConnect`]: two trees, greedy connect.
-//! - [`NearestIndex`]: the k-d tree (kiddo) behind one small type, plain distances.
+//! - [`NearestIndex`]: the crate's k-d tree (leaves scanned in vector registers) behind one
+//!   small type, plain distances.
 //! - [`GrowTree`]: the one tree of the family (node ids, parent links, optional
 //!   costs-to-come, the nearest index) with its operations: [`extend`](GrowTree::extend)
 //!   (one RRT step, an [`Extension`]), [`step_towards`](GrowTree::step_towards) (a
@@ -96,6 +97,7 @@
 
 mod bi_rrt;
 mod common;
+mod kdtree;
 mod macros;
 mod nearest;
 mod rrt;

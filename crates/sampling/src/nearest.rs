@@ -1,30 +1,24 @@
 //! Nearest-neighbour queries over a growing point set.
 //!
-//! One small type, [`NearestIndex`], hides the k-d tree (kiddo 5's mutable `KdTree`), so
-//! swapping it for another index touches this file only.
-
-use std::hash::BuildHasher;
+//! One small type, [`NearestIndex`], hides the k-d tree (the crate's own two-axis tree,
+//! whose leaves are scanned in vector registers), so swapping it for another index
+//! touches this file only.
 
 use hyplan_core::Point2;
-use kiddo::SquaredEuclidean;
-// Fx, not SipHash: the keys are the bits of sampled coordinates, hashed at every
-// insertion (a few per cent of a short RRT's time with SipHash), and no one chooses them.
-use rustc_hash::{FxBuildHasher, FxHashMap as HashMap};
+// Fx, not SipHash: the keys are ids, which no one chooses.
+use rustc_hash::FxHashMap as HashMap;
 
-/// kiddo's mutable tree: `f64` coordinates, `u64` items (our point ids), 2 axes, buckets of
-/// `B` points, `u32` node indices.
-type KdTree<const B: usize> = kiddo::float::kdtree::KdTree<f64, u64, 2, B, u32>;
+use crate::kdtree::KdTree;
 
 /// A growing set of 2-D points with nearest and within-radius queries, in plain (not
 /// squared) world-unit distances, in a k-d tree whose leaves hold `B` points.
 ///
-/// The default `B`, 64 rather than kiddo's 32, suits planners: an RRT's samples land far
-/// from a tree that fills a maze slowly, and such a query visits many leaves. On the
-/// maze of `cargo xtask bench-peers` RRT took 0.80x and RRT-Connect 0.92x the time with
-/// 64 (the same paths); 16 was no faster on open maps and 128 or more slower on both. A
-/// tree that grows for hours over a whole building, queried from anywhere in it (an
-/// exploration's global frontier detector), is faster with 256
-/// ([`with_bucket_capacity`](Self::with_bucket_capacity)).
+/// The default `B`, 64, suits planners: an RRT on the maze of `cargo xtask bench-peers`
+/// took 1.05x its time with 32 and 1.2x with 128 (and a leaf of 64 is still one scan on
+/// open maps, where a query reads 1.3 leaves). A tree that grows for hours over a whole
+/// building, queried from anywhere in it (an exploration's global frontier detector), is
+/// faster with 256 ([`with_bucket_capacity`](Self::with_bucket_capacity)). `B` must be a
+/// multiple of 8 (the scan's lanes).
 ///
 /// Points get consecutive ids `0, 1, 2, ...` in insertion order, so callers keep their own
 /// per-node data (parents, costs) in plain vectors indexed by the id.
@@ -35,14 +29,11 @@ type KdTree<const B: usize> = kiddo::float::kdtree::KdTree<f64, u64, 2, B, u32>;
 ///
 /// # Duplicates and degenerate inputs
 ///
-/// kiddo 5's mutable tree panics when one of its buckets fills with points that are
-/// identical on every axis ("Cannot insert another item ... at exactly the same point", and in
-/// releases before 5.3 already when more than a bucket's worth share one coordinate on one
-/// axis).
-/// Nodes snapped to integer cells (step 1) make that reachable, so the index never gives kiddo
-/// a point it already holds: an exact duplicate is kept in a side table and reported with its
-/// twin by every query. Points with a NaN or infinite coordinate get an id but are never
-/// reported by a query (kiddo cannot order them).
+/// A leaf full of equal points could not be split, and nodes snapped to integer cells
+/// (step 1) make such points common, so the tree holds each position once: an exact
+/// duplicate (found in the leaf its position leads to) is kept in a side table and reported
+/// with its twin by every query. Points with a NaN or infinite coordinate get an id but
+/// are never reported by a query (they cannot be ordered).
 ///
 /// ```
 /// use hyplan_core::Point2;
@@ -59,10 +50,6 @@ type KdTree<const B: usize> = kiddo::float::kdtree::KdTree<f64, u64, 2, B, u32>;
 pub struct NearestIndex<const B: usize = 64> {
     tree: KdTree<B>,
     points: Vec<Point2>,
-    /// Ids present in the k-d tree, found by their exact coordinates (bit patterns), which
-    /// are read from `points`: 8 bytes an entry where a map from the coordinates took 24,
-    /// for trees that grow for hours (an exploration's global detector).
-    first_at: hashbrown::HashTable<u64>,
     /// Ids of exact duplicates, keyed by the id of the twin that is in the tree.
     twins: HashMap<u64, Vec<u64>>,
 }
@@ -102,9 +89,8 @@ impl<const B: usize> NearestIndex<B> {
     #[must_use]
     pub fn with_bucket_capacity(n: usize) -> Self {
         Self {
-            tree: KdTree::default(),
+            tree: KdTree::with_capacity(n),
             points: Vec::with_capacity(n),
-            first_at: hashbrown::HashTable::with_capacity(n),
             twins: HashMap::default(),
         }
     }
@@ -150,22 +136,11 @@ impl<const B: usize> NearestIndex<B> {
     pub fn insert(&mut self, p: Point2) -> usize {
         let id = self.points.len();
         self.points.push(p);
-        if p.x.is_finite() && p.y.is_finite() {
-            let key = position(p);
-            let hash = FxBuildHasher.hash_one(key);
-            let points = &self.points;
-            match self
-                .first_at
-                .find(hash, |&i| position(points[i as usize]) == key)
-            {
-                Some(&twin) => self.twins.entry(twin).or_default().push(id as u64),
-                None => {
-                    self.first_at.insert_unique(hash, id as u64, |&i| {
-                        FxBuildHasher.hash_one(position(points[i as usize]))
-                    });
-                    self.tree.add(&[p.x, p.y], id as u64);
-                }
-            }
+        if p.x.is_finite()
+            && p.y.is_finite()
+            && let Some(twin) = self.tree.add([p.x, p.y], id as u64)
+        {
+            self.twins.entry(twin).or_default().push(id as u64);
         }
         id
     }
@@ -174,11 +149,11 @@ impl<const B: usize> NearestIndex<B> {
     /// index holds no finite point or `p` is not finite. Ties go to any of the nearest.
     #[must_use]
     pub fn nearest(&self, p: Point2) -> Option<(usize, f64)> {
-        if self.first_at.is_empty() || !(p.x.is_finite() && p.y.is_finite()) {
+        if self.tree.len() == 0 || !(p.x.is_finite() && p.y.is_finite()) {
             return None;
         }
-        let n = self.tree.nearest_one::<SquaredEuclidean>(&[p.x, p.y]);
-        Some((n.item as usize, n.distance.sqrt()))
+        let (item, d2) = self.tree.nearest_one([p.x, p.y])?;
+        Some((item as usize, d2.sqrt()))
     }
 
     /// Every point within distance `radius` of `p` (closed ball), as `(id, distance)`, in no
@@ -193,19 +168,18 @@ impl<const B: usize> NearestIndex<B> {
     /// [`within`](Self::within) into a caller's buffer (cleared first), to reuse its memory.
     pub fn within_into(&self, p: Point2, radius: f64, out: &mut Vec<(usize, f64)>) {
         out.clear();
-        if self.first_at.is_empty() || !(p.x.is_finite() && p.y.is_finite() && radius >= 0.0) {
+        if self.tree.len() == 0 || !(p.x.is_finite() && p.y.is_finite() && radius >= 0.0) {
             return;
         }
-        let found = self
-            .tree
-            .within_unsorted::<SquaredEuclidean>(&[p.x, p.y], radius * radius);
-        for n in found {
-            // kiddo compares squared distances: keep exactly the closed ball in plain units.
-            let d = n.distance.sqrt();
-            if d <= radius {
-                self.push_with_twins(n.item, d, out);
-            }
-        }
+        self.tree
+            .within([p.x, p.y], radius * radius, &mut |item, d2| {
+                // The tree compares squared distances: keep exactly the closed ball in plain
+                // units.
+                let d = d2.sqrt();
+                if d <= radius {
+                    self.push_with_twins(item, d, out);
+                }
+            });
     }
 
     /// The `k` points nearest to `p` as `(id, distance)`, nearest first (fewer when the index
@@ -213,11 +187,11 @@ impl<const B: usize> NearestIndex<B> {
     #[must_use]
     pub fn nearest_k(&self, p: Point2, k: usize) -> Vec<(usize, f64)> {
         let mut out = Vec::new();
-        if k == 0 || self.first_at.is_empty() || !(p.x.is_finite() && p.y.is_finite()) {
+        if k == 0 || self.tree.len() == 0 || !(p.x.is_finite() && p.y.is_finite()) {
             return out;
         }
-        for n in self.tree.nearest_n::<SquaredEuclidean>(&[p.x, p.y], k) {
-            self.push_with_twins(n.item, n.distance.sqrt(), &mut out);
+        for (item, d2) in self.tree.nearest_n([p.x, p.y], k) {
+            self.push_with_twins(item, d2.sqrt(), &mut out);
             if out.len() >= k {
                 break;
             }
@@ -234,11 +208,6 @@ impl<const B: usize> NearestIndex<B> {
             out.extend(twins.iter().map(|&t| (t as usize, d)));
         }
     }
-}
-
-/// A point's exact position as bits, -0.0 and 0.0 being the same position.
-fn position(p: Point2) -> [u64; 2] {
-    [(p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()]
 }
 
 #[cfg(test)]

@@ -17,8 +17,10 @@ fn linear_within(points: &[Point2], q: Point2, r: f64) -> Vec<usize> {
         .collect()
 }
 
-/// The planners' index (leaves of 64 points) and the exploration detectors' (256).
+/// The planners' index (leaves of 64 points) and the exploration detectors' (256), and
+/// leaves of 8, the smallest, for deep trees.
 fn check_against_scan(points: &[Point2], queries: &[(Point2, f64)]) {
+    check_in_buckets::<8>(points, queries);
     check_in_buckets::<64>(points, queries);
     check_in_buckets::<256>(points, queries);
 }
@@ -54,8 +56,8 @@ fn check_in_buckets<const B: usize>(points: &[Point2], queries: &[(Point2, f64)]
 }
 
 /// Nodes on integer cells with step 1: hundreds of points share x (and y) coordinates.
-/// kiddo 5's mutable tree used to panic here ("Too many items with the same position on one
-/// axis").
+/// (kiddo 5's mutable tree, used before, panicked here: "Too many items with the same
+/// position on one axis".)
 #[test]
 fn many_points_on_one_axis() {
     let mut points = Vec::new();
@@ -72,8 +74,8 @@ fn many_points_on_one_axis() {
     check_against_scan(&points, &queries);
 }
 
-/// More than a bucket (32) of identical points: kiddo 5.3 still panics on this; the index
-/// keeps the duplicates aside and reports all of them.
+/// More than a leaf of identical points, which no split separates: the index keeps the
+/// duplicates aside and reports all of them.
 #[test]
 fn many_identical_points() {
     let mut points = vec![Point2::new(3.0, 3.0); 100];

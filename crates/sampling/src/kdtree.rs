@@ -1,0 +1,380 @@
+//! The k-d tree behind [`crate::NearestIndex`]: two axes, leaves of `B` points stored by
+//! axis (all x, then all y), so that a leaf's squared distances are computed a vector
+//! register at a time and its nearest point found without a branch per point.
+//!
+//! Why not kiddo's mutable tree, which this replaced: its leaves keep each point's axes
+//! together and its scan takes a branch per point; on an RRT's queries (samples far from a
+//! tree that fills a maze slowly visit many leaves) the scan was most of the planner's time.
+//! The structure is the usual one (Friedman, Bentley and Finkel 1977; kiddo's search keeps
+//! the same per-axis offsets to bound a subtree's distance); what differs is the leaf.
+//!
+//! Only finite points are inserted, and never two equal ones: [`KdTree::add`] finds an
+//! equal point in the leaf it descends to (equal points take the same way down) and
+//! reports it instead. A full leaf therefore always has two points that differ on some
+//! axis, and can be split.
+
+/// A node: a stem's index, or a leaf's with [`LEAF`] set.
+type NodeRef = u32;
+
+/// Marks a [`NodeRef`] as a leaf's.
+const LEAF: NodeRef = 1 << 31;
+
+/// How many running minima a leaf scan keeps (a leaf's size is a multiple of it).
+const LANES: usize = 8;
+
+/// An inner node: points below `split` on `axis` are on the `below` side.
+#[derive(Debug, Clone, Copy)]
+struct Stem {
+    split: f64,
+    axis: usize,
+    below: NodeRef,
+    above: NodeRef,
+}
+
+/// Up to `B` points, by axis; the unused slots hold infinite coordinates, whose distance to
+/// any query is infinite, so that a scan reads whole leaves.
+#[derive(Debug, Clone)]
+struct Leaf<const B: usize> {
+    axes: [[f64; B]; 2],
+    ids: [u64; B],
+    len: usize,
+}
+
+impl<const B: usize> Leaf<B> {
+    fn empty() -> Self {
+        Self {
+            axes: [[f64::INFINITY; B]; 2],
+            ids: [0; B],
+            len: 0,
+        }
+    }
+
+    fn push(&mut self, p: [f64; 2], id: u64) {
+        self.axes[0][self.len] = p[0];
+        self.axes[1][self.len] = p[1];
+        self.ids[self.len] = id;
+        self.len += 1;
+    }
+
+    /// The slot nearest `q` and its squared distance (infinite when the leaf is empty).
+    ///
+    /// The scan keeps [`LANES`] running minima, one per slot modulo `LANES`, which are
+    /// independent and so fill vector registers; one minimum would be a chain of dependent
+    /// comparisons, one slot after another.
+    #[inline(always)]
+    fn nearest(&self, q: [f64; 2]) -> (f64, usize) {
+        let mut min = [f64::INFINITY; LANES];
+        let mut at = [0usize; LANES];
+        let chunks = self.axes[0]
+            .chunks_exact(LANES)
+            .zip(self.axes[1].chunks_exact(LANES));
+        for (c, (xs, ys)) in chunks.enumerate() {
+            for l in 0..LANES {
+                let (dx, dy) = (xs[l] - q[0], ys[l] - q[1]);
+                let d = dx * dx + dy * dy;
+                let nearer = d < min[l];
+                min[l] = if nearer { d } else { min[l] };
+                at[l] = if nearer { c * LANES + l } else { at[l] };
+            }
+        }
+        (0..LANES).fold((f64::INFINITY, 0), |best, l| {
+            if min[l] < best.0 {
+                (min[l], at[l])
+            } else {
+                best
+            }
+        })
+    }
+
+    /// Squared distances from `q` to every slot (infinite for the unused ones).
+    #[inline(always)]
+    fn squared_distances(&self, q: [f64; 2]) -> [f64; B] {
+        let mut d = [0.0; B];
+        for ((d, &x), &y) in d.iter_mut().zip(&self.axes[0]).zip(&self.axes[1]) {
+            let (dx, dy) = (x - q[0], y - q[1]);
+            *d = dx * dx + dy * dy;
+        }
+        d
+    }
+}
+
+/// A 2-D k-d tree over finite, pairwise distinct points, each with a `u64` item; distances
+/// are squared Euclidean.
+#[derive(Debug, Clone)]
+pub(crate) struct KdTree<const B: usize> {
+    stems: Vec<Stem>,
+    leaves: Vec<Leaf<B>>,
+    root: NodeRef,
+    len: usize,
+}
+
+impl<const B: usize> Default for KdTree<B> {
+    fn default() -> Self {
+        Self {
+            stems: Vec::new(),
+            leaves: vec![Leaf::empty()],
+            root: LEAF,
+            len: 0,
+        }
+    }
+}
+
+impl<const B: usize> KdTree<B> {
+    /// An empty tree with room for about `n` points (leaves half full) before reallocating.
+    pub(crate) fn with_capacity(n: usize) -> Self {
+        let mut tree = Self::default();
+        tree.leaves.reserve(n / (B / 2).max(1));
+        tree.stems.reserve(n / (B / 2).max(1));
+        tree
+    }
+
+    /// How many points the tree holds.
+    pub(crate) const fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Adds `p` (finite) with item `id`, unless a point equal to it (`==` on both axes, so
+    /// -0.0 and 0.0 are one) is in the tree already: then nothing is added and that point's
+    /// item is returned.
+    pub(crate) fn add(&mut self, p: [f64; 2], id: u64) -> Option<u64> {
+        const {
+            assert!(
+                B >= 2 && B.is_multiple_of(LANES),
+                "a leaf splits into two, and scans in lanes"
+            )
+        };
+        // Down to the leaf, remembering the link to it.
+        let mut parent: Option<(usize, bool)> = None;
+        let mut node = self.root;
+        while node & LEAF == 0 {
+            let stem = self.stems[node as usize];
+            let above = p[stem.axis] >= stem.split;
+            parent = Some((node as usize, above));
+            node = if above { stem.above } else { stem.below };
+        }
+        let at = (node & !LEAF) as usize;
+        let leaf = &self.leaves[at];
+        // The whole leaf without an early exit (vector registers; the unused slots are
+        // infinite, never equal), then the slot only when there is one.
+        let equal = |(&x, &y): (&f64, &f64)| (x == p[0]) & (y == p[1]);
+        if leaf.axes[0]
+            .iter()
+            .zip(&leaf.axes[1])
+            .fold(false, |any, xy| any | equal(xy))
+            && let Some(k) = leaf.axes[0].iter().zip(&leaf.axes[1]).position(equal)
+        {
+            return Some(leaf.ids[k]);
+        }
+        self.len += 1;
+        if leaf.len < B {
+            self.leaves[at].push(p, id);
+            return None;
+        }
+        // A full leaf: split its points and `p` at the middle of their wider axis. Both
+        // sides get at least one (the points differ on that axis), so neither overflows.
+        let spread = |axis: usize| {
+            // In lanes, as the scans (a single running minimum is a chain of dependent
+            // comparisons).
+            let (mut lo, mut hi) = ([p[axis]; LANES], [p[axis]; LANES]);
+            for c in leaf.axes[axis].chunks_exact(LANES) {
+                for l in 0..LANES {
+                    lo[l] = if c[l] < lo[l] { c[l] } else { lo[l] };
+                    hi[l] = if c[l] > hi[l] { c[l] } else { hi[l] };
+                }
+            }
+            let lo = lo.iter().fold(p[axis], |m, &x| if x < m { x } else { m });
+            let hi = hi.iter().fold(p[axis], |m, &x| if x > m { x } else { m });
+            (lo, hi)
+        };
+        let (x, y) = (spread(0), spread(1));
+        let (axis, (lo, hi)) = if x.1 - x.0 >= y.1 - y.0 {
+            (0, x)
+        } else {
+            (1, y)
+        };
+        let mid = lo + (hi - lo) / 2.0;
+        // Rounding can put the middle on the lowest value: the highest then splits.
+        let split = if mid > lo { mid } else { hi };
+        // The points above the split move to a new leaf; the others close up in place.
+        let mut above = Leaf::empty();
+        let leaf = &mut self.leaves[at];
+        let mut kept = 0;
+        for k in 0..B {
+            let (q, item) = ([leaf.axes[0][k], leaf.axes[1][k]], leaf.ids[k]);
+            if q[axis] >= split {
+                above.push(q, item);
+            } else {
+                leaf.axes[0][kept] = q[0];
+                leaf.axes[1][kept] = q[1];
+                leaf.ids[kept] = item;
+                kept += 1;
+            }
+        }
+        leaf.axes[0][kept..].fill(f64::INFINITY);
+        leaf.axes[1][kept..].fill(f64::INFINITY);
+        leaf.len = kept;
+        if p[axis] >= split {
+            above.push(p, id);
+        } else {
+            leaf.push(p, id);
+        }
+        let new_leaf = self.leaves.len() as NodeRef | LEAF;
+        self.leaves.push(above);
+        let stem = self.stems.len() as NodeRef;
+        self.stems.push(Stem {
+            split,
+            axis,
+            below: node,
+            above: new_leaf,
+        });
+        match parent {
+            None => self.root = stem,
+            Some((s, true)) => self.stems[s].above = stem,
+            Some((s, false)) => self.stems[s].below = stem,
+        }
+        None
+    }
+
+    /// The item nearest `q` and its squared distance (`None` when empty). Ties go to any
+    /// of the nearest.
+    pub(crate) fn nearest_one(&self, q: [f64; 2]) -> Option<(u64, f64)> {
+        if self.len == 0 {
+            return None;
+        }
+        let mut best = (0, f64::INFINITY);
+        self.nearest_in(self.root, q, [0.0; 2], 0.0, &mut best);
+        Some(best)
+    }
+
+    /// [`nearest_one`](Self::nearest_one) below `node`, whose region lies at squared distance
+    /// at least `rd` from `q`, `off` being `q`'s offset from it on each axis.
+    fn nearest_in(
+        &self,
+        node: NodeRef,
+        q: [f64; 2],
+        off: [f64; 2],
+        rd: f64,
+        best: &mut (u64, f64),
+    ) {
+        if node & LEAF != 0 {
+            let leaf = &self.leaves[(node & !LEAF) as usize];
+            let (min, k) = leaf.nearest(q);
+            if min < best.1 {
+                *best = (leaf.ids[k], min);
+            }
+            return;
+        }
+        let stem = self.stems[node as usize];
+        let gap = q[stem.axis] - stem.split;
+        let (near, far) = if gap < 0.0 {
+            (stem.below, stem.above)
+        } else {
+            (stem.above, stem.below)
+        };
+        self.nearest_in(near, q, off, rd, best);
+        let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
+        if far_rd <= best.1 {
+            let mut far_off = off;
+            far_off[stem.axis] = gap;
+            self.nearest_in(far, q, far_off, far_rd, best);
+        }
+    }
+
+    /// Every item within squared distance `r2` of `q`, with its squared distance, in no
+    /// particular order.
+    pub(crate) fn within(&self, q: [f64; 2], r2: f64, out: &mut impl FnMut(u64, f64)) {
+        if self.len > 0 {
+            self.within_in(self.root, q, [0.0; 2], 0.0, r2, out);
+        }
+    }
+
+    fn within_in(
+        &self,
+        node: NodeRef,
+        q: [f64; 2],
+        off: [f64; 2],
+        rd: f64,
+        r2: f64,
+        out: &mut impl FnMut(u64, f64),
+    ) {
+        if node & LEAF != 0 {
+            let leaf = &self.leaves[(node & !LEAF) as usize];
+            let d = leaf.squared_distances(q);
+            for (k, &dk) in d.iter().enumerate().take(leaf.len) {
+                if dk <= r2 {
+                    out(leaf.ids[k], dk);
+                }
+            }
+            return;
+        }
+        let stem = self.stems[node as usize];
+        let gap = q[stem.axis] - stem.split;
+        let (near, far) = if gap < 0.0 {
+            (stem.below, stem.above)
+        } else {
+            (stem.above, stem.below)
+        };
+        self.within_in(near, q, off, rd, r2, out);
+        let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
+        if far_rd <= r2 {
+            let mut far_off = off;
+            far_off[stem.axis] = gap;
+            self.within_in(far, q, far_off, far_rd, r2, out);
+        }
+    }
+
+    /// The `k` items nearest `q` with their squared distances, nearest first (fewer when
+    /// the tree holds fewer).
+    pub(crate) fn nearest_n(&self, q: [f64; 2], k: usize) -> Vec<(u64, f64)> {
+        let mut found: Vec<(u64, f64)> = Vec::with_capacity(k + 1);
+        if k > 0 && self.len > 0 {
+            self.nearest_n_in(self.root, q, [0.0; 2], 0.0, k, &mut found);
+        }
+        found
+    }
+
+    /// `found` is kept sorted, nearest first, at most `k` long.
+    fn nearest_n_in(
+        &self,
+        node: NodeRef,
+        q: [f64; 2],
+        off: [f64; 2],
+        rd: f64,
+        k: usize,
+        found: &mut Vec<(u64, f64)>,
+    ) {
+        let bound = |found: &Vec<(u64, f64)>| {
+            if found.len() < k {
+                f64::INFINITY
+            } else {
+                found[k - 1].1
+            }
+        };
+        if node & LEAF != 0 {
+            let leaf = &self.leaves[(node & !LEAF) as usize];
+            let d = leaf.squared_distances(q);
+            for (j, &dj) in d.iter().enumerate().take(leaf.len) {
+                if dj < bound(found) {
+                    let at = found.partition_point(|&(_, x)| x <= dj);
+                    found.insert(at, (leaf.ids[j], dj));
+                    found.truncate(k);
+                }
+            }
+            return;
+        }
+        let stem = self.stems[node as usize];
+        let gap = q[stem.axis] - stem.split;
+        let (near, far) = if gap < 0.0 {
+            (stem.below, stem.above)
+        } else {
+            (stem.above, stem.below)
+        };
+        self.nearest_n_in(near, q, off, rd, k, found);
+        let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
+        if far_rd <= bound(found) {
+            let mut far_off = off;
+            far_off[stem.axis] = gap;
+            self.nearest_n_in(far, q, far_off, far_rd, k, found);
+        }
+    }
+}
