@@ -65,9 +65,12 @@ impl<const B: usize> Leaf<B> {
     fn nearest(&self, q: [f64; 2]) -> (f64, usize) {
         let mut min = [f64::INFINITY; LANES];
         let mut at = [0usize; LANES];
+        // Only the chunks that hold points (the rest are infinite).
+        let used = self.len.div_ceil(LANES);
         let chunks = self.axes[0]
             .chunks_exact(LANES)
-            .zip(self.axes[1].chunks_exact(LANES));
+            .zip(self.axes[1].chunks_exact(LANES))
+            .take(used);
         for (c, (xs, ys)) in chunks.enumerate() {
             for l in 0..LANES {
                 let (dx, dy) = (xs[l] - q[0], ys[l] - q[1]);
