@@ -307,7 +307,11 @@ fn bad_input_is_exit_2_with_a_message() {
     let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
         (
             vec!["--start", "-3,2.5"],
-            vec!["--start", "outside the map"],
+            vec![
+                "--start",
+                "outside the map",
+                "x from 0 to 20 and y from 0 to 10, in cells",
+            ],
         ),
         (vec!["--start", "25,2.5"], vec!["outside the map"]),
         (vec!["--start", "10.5,2.5"], vec!["--start", "obstacle"]),

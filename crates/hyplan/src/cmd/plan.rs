@@ -309,15 +309,27 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
         Goal::disc(goal_center, args.goal_radius * scale)
     };
     let query = Query::new(start, goal);
-    query.validate(&map).map_err(|e| match e {
-        PlanError::InvalidStart { reason, .. } => {
-            anyhow::anyhow!("--start {},{}: {reason}", args.start.0, args.start.1)
+    // A point outside says where the map is, in the coordinates the user gives.
+    let whereabouts = |reason: &str| {
+        if reason == "outside the map" {
+            format!("{reason} ({})", extent(&frame, &map))
+        } else {
+            reason.to_string()
         }
+    };
+    query.validate(&map).map_err(|e| match e {
+        PlanError::InvalidStart { reason, .. } => anyhow::anyhow!(
+            "--start {},{}: {}",
+            args.start.0,
+            args.start.1,
+            whereabouts(reason)
+        ),
         PlanError::InvalidGoal { reason, .. } => anyhow::anyhow!(
-            "--goal {},{} (radius {}): {reason}",
+            "--goal {},{} (radius {}): {}",
             args.goal.0,
             args.goal.1,
-            args.goal_radius
+            args.goal_radius,
+            whereabouts(reason)
         ),
         other => anyhow::Error::new(other),
     })?;
@@ -564,4 +576,31 @@ fn write_bag(
     }
     out.finish()?;
     Ok(())
+}
+
+/// Where `map` lies in the coordinates of `frame`: "x from A to B, y from C to D (unit)",
+/// the box around its corners.
+fn extent(frame: &InputFrame, map: &GridMap) -> String {
+    let b = map.bounds();
+    let corners = [
+        (b.min.x, b.min.y),
+        (b.max.x, b.min.y),
+        (b.min.x, b.max.y),
+        (b.max.x, b.max.y),
+    ]
+    .map(|(x, y)| frame.from_world(Point2::new(x, y)));
+    let range = |k: usize| {
+        let v = corners.map(|c| if k == 0 { c.0 } else { c.1 });
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (lo, hi)
+    };
+    // Millimetres (or thousandths of a cell) are enough to place a point.
+    let round = |v: f64| (v * 1000.0).round() / 1000.0;
+    let ((x0, x1), (y0, y1)) = (range(0), range(1));
+    let (x0, x1, y0, y1) = (round(x0), round(x1), round(y0), round(y1));
+    format!(
+        "the map spans x from {x0} to {x1} and y from {y0} to {y1}, in {}",
+        frame.describe()
+    )
 }
