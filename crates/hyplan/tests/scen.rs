@@ -48,6 +48,28 @@ fn arena_all_scenarios_match() {
     }
 }
 
+/// The `.scen` alone, as an argument: the map it names is found beside it (the MovingAI
+/// downloads' layout); a map found nowhere is an error that names the paths tried.
+#[test]
+fn the_map_is_found_beside_the_scen() {
+    let o = hyplan(&[
+        "scen",
+        &repo_file("data/movingai/arena.map.scen"),
+        "--limit",
+        "5",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("scenarios 5, mismatches 0"),
+        "{}",
+        stderr(&o)
+    );
+    let scen_text = std::fs::read(repo_file("data/movingai/arena.map.scen")).unwrap();
+    let lonely = SCRATCH.file("lonely.scen", scen_text);
+    let o = hyplan(&["scen", &lonely]);
+    assert_exit(&o, 2, &["maps/dao/arena.map", "give --map"]);
+}
+
 /// The `cost` column of `hyplan scen` on the arena with `--planner planner`.
 fn arena_costs(planner: &str) -> Vec<f64> {
     let o = scen(

@@ -1,7 +1,7 @@
 //! `hyplan scen`: run a MovingAI scenario file and compare with its optimal lengths.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -24,12 +24,17 @@ pub enum Algo {
 /// Options of `hyplan scen`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The MovingAI `.map` file (its file name must match the `.scen`'s map column).
-    #[arg(long)]
-    pub map: PathBuf,
     /// The MovingAI `.scen` file (version 1; x = column, y = row from the top).
+    #[arg(value_name = "SCEN", required_unless_present = "scen")]
+    pub scen_file: Option<PathBuf>,
+    /// The `.scen` file, as a flag (the same as the argument).
+    #[arg(long, conflicts_with = "scen_file")]
+    pub scen: Option<PathBuf>,
+    /// The MovingAI `.map` file (its file name must match the `.scen`'s map column).
+    /// Default: the map the `.scen` names, found next to the `.scen` file (by its file
+    /// name, then by the path it gives).
     #[arg(long)]
-    pub scen: PathBuf,
+    pub map: Option<PathBuf>,
     /// The grid planner to run (`--algo` is the old name of this flag); all three find the
     /// optimal lengths. Use jps on game maps, city streets, rooms and mazes, astar where
     /// about a fifth of the cells are blocked at random: total search time over the
@@ -45,6 +50,33 @@ pub struct Args {
     pub limit: Option<usize>,
 }
 
+/// The map a `.scen` file names, next to it: its file name in the `.scen`'s directory (the
+/// layout of the MovingAI downloads, `arena.map` beside `arena.map.scen`), else the path
+/// it gives, from that directory.
+fn map_beside(scen_path: &Path, scen: &[ScenEntry]) -> anyhow::Result<PathBuf> {
+    let Some(first) = scen.first() else {
+        bail!(
+            "{} has no scenario, so it names no map: give --map",
+            scen_path.display()
+        );
+    };
+    let dir = scen_path.parent().unwrap_or(Path::new(""));
+    let tried = [dir.join(first.map_file_name()), dir.join(&first.map)];
+    tried
+        .iter()
+        .find(|p| p.is_file())
+        .cloned()
+        .with_context(|| {
+            format!(
+                "{}: the map it names, {:?}, is neither {} nor {}: give --map",
+                scen_path.display(),
+                first.map,
+                tried[0].display(),
+                tried[1].display()
+            )
+        })
+}
+
 /// Tolerance on the `.scen` length: the files print about 6 significant digits (old ones)
 /// or 8 decimals, so `max(1e-3, 1e-5 * length)`.
 fn tolerance(expected: f64) -> f64 {
@@ -54,19 +86,27 @@ fn tolerance(expected: f64) -> f64 {
 /// Runs `hyplan scen`: CSV `id,expected,cost,time_us,expanded` on stdout, a summary on
 /// stderr. Every scenario is checked before any search runs, so bad input prints no CSV.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let map = envmap::read_movingai(&args.map)
-        .with_context(|| format!("cannot load the map {}", args.map.display()))?;
-    let mut scen = search::read_scen(&args.scen)?;
+    let scen_path = args
+        .scen_file
+        .as_ref()
+        .or(args.scen.as_ref())
+        .context("give the .scen file")?;
+    let mut scen = search::read_scen(scen_path)?;
+    let map_path = match &args.map {
+        Some(m) => m.clone(),
+        None => map_beside(scen_path, &scen)?,
+    };
+    let map = envmap::read_movingai(&map_path)
+        .with_context(|| format!("cannot load the map {}", map_path.display()))?;
     if let Some(n) = args.limit {
         scen.truncate(n);
     }
-    let map_name = args
-        .map
+    let map_name = map_path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     let (w, h) = (map.width(), map.height());
-    let at = |s: &ScenEntry| format!("{}:{}", args.scen.display(), s.line);
+    let at = |s: &ScenEntry| format!("{}:{}", scen_path.display(), s.line);
     let mut queries = Vec::with_capacity(scen.len());
     for s in &scen {
         if s.map_file_name() != map_name {
@@ -74,7 +114,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                 "{}: scenario map {:?} does not match --map {}",
                 at(s),
                 s.map,
-                args.map.display()
+                map_path.display()
             );
         }
         if (s.width, s.height) != (w, h) {
@@ -83,7 +123,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
                 at(s),
                 s.width,
                 s.height,
-                args.map.display()
+                map_path.display()
             );
         }
         let cell = |(x, y): (usize, usize), what: &str| -> anyhow::Result<(usize, usize)> {
