@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use crate::common::{Scratch, assert_exit, hyplan, nav2_counts, stderr, stdout};
+use crate::common::{Scratch, assert_exit, hyplan, nav2_counts, repo_file, stderr, stdout};
 
 const SCRATCH: Scratch = Scratch("hyplan_sim");
 
@@ -280,6 +280,35 @@ fn check_animation(file: &Path) {
         seen, [true; 5],
         "last frame: white, black, grey, track, robot"
     );
+}
+
+/// A ROS map given in place of a scenario is explored with the defaults, from a start
+/// chosen on the map (said on stderr) or from `--start`; a start in a wall names the flag.
+#[test]
+fn explore_takes_a_ros_map() {
+    let map = repo_file("data/ros_maps/turtlebot3_world/map.yaml");
+    let o = hyplan(&["explore", &map]);
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("on map.yaml (--start X,Y to choose)"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(
+        out.contains("explore-map: explored, no frontier left"),
+        "{out}"
+    );
+    assert!(out.contains("coverage 100.00 %"), "{out}");
+    let o = hyplan(&["explore", &map, "--start", "0.5,0.5", "--time-limit", "5"]);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "stopped by the time limit: {}",
+        stderr(&o)
+    );
+    let o = hyplan(&["explore", &map, "--start", "-1.1,-1.1"]);
+    assert_exit(&o, 2, &["--start (-1.1, -1.1): inside an obstacle"]);
 }
 
 #[test]

@@ -2,16 +2,27 @@
 //! RRT frontier detectors (or the nearest-frontier baseline) and builds its map (crate
 //! `sim`, module `explore`).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::{Context, bail};
+use hyplan_core::Point2;
 
 /// Options of `hyplan explore`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The scenario file (RON, see `scenarios/sim/explore-*.ron`).
+    /// The scenario file (RON, see `scenarios/sim/explore-*.ron`), or a ROS map
+    /// (`map_server` `.yaml`) to explore with the defaults, nothing known in advance.
     pub scenario: PathBuf,
+    /// Where the robot starts on a ROS map, `X,Y` in metres. Default: the map frame's
+    /// origin when the robot fits there (a SLAM map's origin is where its robot started),
+    /// else the most open spot of the map.
+    #[arg(long, value_parser = super::parse_xy, allow_hyphen_values = true)]
+    pub start: Option<(f64, f64)>,
+    /// Simulated seconds before the run is stopped. Default: the scenario's, 4000 on a
+    /// ROS map.
+    #[arg(long)]
+    pub time_limit: Option<f64>,
     /// Frontier detector: `local` (Algorithm 1), `global` (Algorithm 2), `both` (the
     /// reference's launch) or `frontier` (the nearest-frontier baseline). Default: the
     /// scenario's (`both` when it says nothing).
@@ -68,8 +79,28 @@ pub struct Args {
 /// exploration ended by itself (no frontier left), 1 when the time limit stopped it,
 /// 2 on bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let (mut scenario, _) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
-        .map_err(super::sim_scenario_error)?;
+    let ros_map = args
+        .scenario
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
+    // A map's scenario takes the map's path: its file name resolves against the map's
+    // folder, and errors name the file the user gave.
+    let (mut scenario, scenario_path) = if ros_map {
+        (
+            scenario_of_map(args, &args.scenario)?,
+            args.scenario.clone(),
+        )
+    } else {
+        let (scenario, _) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
+            .map_err(super::sim_scenario_error)?;
+        (scenario, args.scenario.clone())
+    };
+    if let Some(limit) = args.time_limit {
+        if !(limit.is_finite() && limit > 0.0) {
+            bail!("--time-limit = {limit}: must be finite and > 0 (seconds)");
+        }
+        scenario.time_limit = limit;
+    }
     if let Some(name) = &args.profile {
         super::sim::apply_profile(&mut scenario, name)?;
     }
@@ -99,8 +130,17 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     }
     // The overrides are checked with the rest of the scenario.
     let world = scenario
-        .build_world_limited(&args.scenario, args.max_cells)
-        .map_err(super::sim_scenario_error)?;
+        .build_world_limited(&scenario_path, args.max_cells)
+        .map_err(|e| match e {
+            // On a map, the start is the flag's (or ours).
+            sim::ScenarioError::Field {
+                field,
+                value,
+                reason,
+                ..
+            } if ros_map && field == "start" => anyhow::anyhow!("--start {value}: {reason}"),
+            e => super::sim_scenario_error(e),
+        })?;
     let strategy = scenario.exploration.strategy;
     let mut next_line = 0.0;
     let mut progress = |c: &sim::Coverage| {
@@ -255,4 +295,76 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     } else {
         ExitCode::from(crate::EXIT_NO_PATH)
     })
+}
+
+/// The exploration of the ROS map `args.scenario` with the defaults, nothing known in
+/// advance, from `--start` or a start chosen on the map (see [`Args::start`]); `path`
+/// names it in errors and resolves the map's file name.
+fn scenario_of_map(args: &Args, path: &Path) -> anyhow::Result<sim::Scenario> {
+    let file = args
+        .scenario
+        .file_name()
+        .context("the map's file name")?
+        .to_string_lossy()
+        .into_owned();
+    let stem = file.split('.').next().unwrap_or("map").to_string();
+    let ron = |start: (f64, f64)| {
+        format!(
+            "SimScenario(name: {name:?}, description: {what:?}, \
+             world: (map: Some(Ros({file:?}))), start: ({x:?}, {y:?}), goal: ({x:?}, {y:?}), \
+             known_map: false, time_limit: 4000.0)",
+            name = format!("explore-{stem}"),
+            what = format!("Exploration of {file}, nothing known in advance"),
+            x = start.0,
+            y = start.1,
+        )
+    };
+    let start = match args.start {
+        Some(s) => s,
+        None => {
+            // The robot's radius with a margin, from the scenario's own defaults.
+            let robot = sim::Scenario::parse(&ron((0.0, 0.0)), path)
+                .map_err(super::sim_scenario_error)?
+                .robot
+                .body_radius;
+            let opts = envmap::LoadOptions {
+                max_cells: args.max_cells,
+                ..envmap::LoadOptions::default()
+            };
+            let map = super::load_map(&args.scenario, &opts)?.map;
+            let start = open_start(&map, robot + 0.2).with_context(|| {
+                format!(
+                    "{}: no free spot {:.2} m from every obstacle to start from",
+                    args.scenario.display(),
+                    robot + 0.2
+                )
+            })?;
+            eprintln!(
+                "explore: starting at ({:.2}, {:.2}) on {file} (--start X,Y to choose)",
+                start.0, start.1
+            );
+            start
+        }
+    };
+    sim::Scenario::parse(&ron(start), path).map_err(super::sim_scenario_error)
+}
+
+/// The map frame's origin when it is at least `clearance` from every blocked cell, else
+/// the cell centre farthest from them (the first found among equals); `None` when no
+/// cell is that far.
+fn open_start(map: &envmap::GridMap, clearance: f64) -> Option<(f64, f64)> {
+    if map.clearance_at(Point2::origin()) >= clearance {
+        return Some((0.0, 0.0));
+    }
+    let mut best: Option<(f64, Point2)> = None;
+    for j in 0..map.height() {
+        for i in 0..map.width() {
+            let c = map.cell_center(i, j);
+            let d = map.clearance_at(c);
+            if d >= clearance && best.is_none_or(|(b, _)| d > b) {
+                best = Some((d, c));
+            }
+        }
+    }
+    best.map(|(_, c)| (c.x, c.y))
 }

@@ -65,13 +65,14 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let rects: Vec<CellRect> = loaded.components.iter().map(|c| c.rect).collect();
     if let Some(out) = &args.out {
         let shown: &[CellRect] = if args.rectangles { &rects } else { &[] };
-        envmap::write_picture(&envmap::render_zones(&loaded.map, shown), out)
-            .with_context(|| {
+        envmap::write_picture(&envmap::render_zones(&loaded.map, shown), out).with_context(
+            || {
                 format!(
                     "writing --out {} (a picture, by its extension: .png, .pgm or .ppm)",
                     out.display()
                 )
-            })?;
+            },
+        )?;
     }
     if let Some(yaml) = &args.yaml {
         envmap::write_ros(&loaded.map, yaml)
