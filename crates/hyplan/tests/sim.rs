@@ -311,6 +311,24 @@ fn explore_takes_a_ros_map() {
     assert_exit(&o, 2, &["--start (-1.1, -1.1): inside an obstacle"]);
 }
 
+/// A ROS map given in place of a scenario is driven across, known in advance, from
+/// `--start` to `--goal`, which it requires; a goal in a wall names the flag.
+#[test]
+fn sim_takes_a_ros_map() {
+    let map = repo_file("data/ros_maps/turtlebot3_world/map.yaml");
+    let o = hyplan(&["sim", &map, "--start", "-0.5,-0.5", "--goal", "0.5,0.5"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stdout(&o).starts_with("nav-map: goal reached in"),
+        "{}",
+        stdout(&o)
+    );
+    let o = hyplan(&["sim", &map, "--start", "-0.5,-0.5"]);
+    assert_exit(&o, 2, &["a map needs --start X,Y and --goal X,Y"]);
+    let o = hyplan(&["sim", &map, "--start", "-0.5,-0.5", "--goal", "-1.1,-1.1"]);
+    assert_exit(&o, 2, &["--goal (-1.1, -1.1): inside an obstacle"]);
+}
+
 #[test]
 fn explore_bad_input_exits_2_naming_the_field() {
     let f = SCRATCH.file("room2.ron", room(""));

@@ -79,10 +79,7 @@ pub struct Args {
 /// exploration ended by itself (no frontier left), 1 when the time limit stopped it,
 /// 2 on bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let ros_map = args
-        .scenario
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
+    let ros_map = super::is_ros_map(&args.scenario);
     // A map's scenario takes the map's path: its file name resolves against the map's
     // folder, and errors name the file the user gave.
     let (mut scenario, scenario_path) = if ros_map {
@@ -131,16 +128,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     // The overrides are checked with the rest of the scenario.
     let world = scenario
         .build_world_limited(&scenario_path, args.max_cells)
-        .map_err(|e| match e {
-            // On a map, the start is the flag's (or ours).
-            sim::ScenarioError::Field {
-                field,
-                value,
-                reason,
-                ..
-            } if ros_map && field == "start" => anyhow::anyhow!("--start {value}: {reason}"),
-            e => super::sim_scenario_error(e),
-        })?;
+        .map_err(|e| super::map_point_error(e, ros_map))?;
     let strategy = scenario.exploration.strategy;
     let mut next_line = 0.0;
     let mut progress = |c: &sim::Coverage| {
@@ -301,12 +289,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
 /// advance, from `--start` or a start chosen on the map (see [`Args::start`]); `path`
 /// names it in errors and resolves the map's file name.
 fn scenario_of_map(args: &Args, path: &Path) -> anyhow::Result<sim::Scenario> {
-    let file = args
-        .scenario
-        .file_name()
-        .context("the map's file name")?
-        .to_string_lossy()
-        .into_owned();
+    let file = super::file_name(&args.scenario)?;
     let stem = file.split('.').next().unwrap_or("map").to_string();
     let ron = |start: (f64, f64)| {
         format!(

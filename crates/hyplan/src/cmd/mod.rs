@@ -75,6 +75,39 @@ pub fn parse_xy(s: &str) -> anyhow::Result<(f64, f64)> {
     Ok((parse(x)?, parse(y)?))
 }
 
+/// Whether `path` is a ROS map (`map_server` `.yaml`), which `hyplan sim` and `hyplan
+/// explore` take in place of a scenario.
+pub fn is_ros_map(path: &std::path::Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"))
+}
+
+/// The file name of `path`, for a scenario that names it beside itself.
+pub fn file_name(path: &std::path::Path) -> anyhow::Result<String> {
+    use anyhow::Context as _;
+    Ok(path
+        .file_name()
+        .with_context(|| format!("{}: not a file", path.display()))?
+        .to_string_lossy()
+        .into_owned())
+}
+
+/// A scenario's error; for a scenario made from a map (`on_map`), a bad start or goal is
+/// the flag's (`--start`, `--goal`).
+pub fn map_point_error(e: ::sim::ScenarioError, on_map: bool) -> anyhow::Error {
+    match e {
+        ::sim::ScenarioError::Field {
+            field,
+            value,
+            reason,
+            ..
+        } if on_map && (field == "start" || field == "goal") => {
+            anyhow::anyhow!("--{field} {value}: {reason}")
+        }
+        e => sim_scenario_error(e),
+    }
+}
+
 pub mod bench;
 pub mod explore;
 pub mod map;

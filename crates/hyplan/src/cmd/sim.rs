@@ -11,8 +11,19 @@ use crate::planners::SpecParser;
 /// Options of `hyplan sim`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The scenario file (RON, see `scenarios/sim/`).
+    /// The scenario file (RON, see `scenarios/sim/`), or a ROS map (`map_server` `.yaml`)
+    /// to drive across, known in advance, from `--start` to `--goal`.
     pub scenario: PathBuf,
+    /// Where the robot starts on a ROS map, `X,Y` in metres (required with a map).
+    #[arg(long, value_parser = super::parse_xy, allow_hyphen_values = true)]
+    pub start: Option<(f64, f64)>,
+    /// The goal on a ROS map, `X,Y` in metres (required with a map).
+    #[arg(long, value_parser = super::parse_xy, allow_hyphen_values = true)]
+    pub goal: Option<(f64, f64)>,
+    /// Simulated seconds before the run is stopped. Default: the scenario's, 600 on a ROS
+    /// map.
+    #[arg(long)]
+    pub time_limit: Option<f64>,
     /// Seed of the run's random streams (laser noise, sampling planners).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
@@ -128,8 +139,23 @@ fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
 
 /// Runs `hyplan sim`: a summary on stdout; exit 0 goal reached, 1 not reached, 2 bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let (mut scenario, world) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
-        .map_err(super::sim_scenario_error)?;
+    let ros_map = super::is_ros_map(&args.scenario);
+    let (mut scenario, world) = if ros_map {
+        let scenario = scenario_of_map(args)?;
+        let world = scenario
+            .build_world_limited(&args.scenario, args.max_cells)
+            .map_err(|e| super::map_point_error(e, true))?;
+        (scenario, world)
+    } else {
+        sim::Scenario::load_limited(&args.scenario, args.max_cells)
+            .map_err(super::sim_scenario_error)?
+    };
+    if let Some(limit) = args.time_limit {
+        if !(limit.is_finite() && limit > 0.0) {
+            anyhow::bail!("--time-limit = {limit}: must be finite and > 0 (seconds)");
+        }
+        scenario.time_limit = limit;
+    }
     if let Some(name) = &args.profile {
         super::sim::apply_profile(&mut scenario, name)?;
     }
@@ -247,6 +273,29 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     } else {
         ExitCode::from(crate::EXIT_NO_PATH)
     })
+}
+
+/// The drive across the ROS map `args.scenario`, known in advance, from `--start` to
+/// `--goal`, with the defaults.
+fn scenario_of_map(args: &Args) -> anyhow::Result<sim::Scenario> {
+    let (Some(start), Some(goal)) = (args.start, args.goal) else {
+        anyhow::bail!(
+            "{}: a map needs --start X,Y and --goal X,Y (metres in the map frame)",
+            args.scenario.display()
+        );
+    };
+    let file = super::file_name(&args.scenario)?;
+    let text = format!(
+        "SimScenario(name: {name:?}, description: {what:?}, world: (map: Some(Ros({file:?}))), \
+         start: ({:?}, {:?}), goal: ({:?}, {:?}), known_map: true, time_limit: 600.0)",
+        start.0,
+        start.1,
+        goal.0,
+        goal.1,
+        name = format!("nav-{}", file.split('.').next().unwrap_or("map")),
+        what = format!("Navigation on the known map {file}"),
+    );
+    sim::Scenario::parse(&text, &args.scenario).map_err(super::sim_scenario_error)
 }
 
 #[cfg(test)]
