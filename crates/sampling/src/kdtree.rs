@@ -244,125 +244,45 @@ impl<const B: usize> KdTree<B> {
         if self.len == 0 {
             return None;
         }
-        let mut best = (0, f64::INFINITY);
-        self.nearest_in(self.root, q, [0.0; 2], 0.0, &mut best);
-        Some(best)
-    }
-
-    /// [`nearest_one`](Self::nearest_one) below `node`, whose region lies at squared distance
-    /// at least `rd` from `q`, `off` being `q`'s offset from it on each axis.
-    fn nearest_in(
-        &self,
-        node: NodeRef,
-        q: [f64; 2],
-        off: [f64; 2],
-        rd: f64,
-        best: &mut (u64, f64),
-    ) {
-        if node & LEAF != 0 {
-            let leaf = &self.leaves[(node & !LEAF) as usize];
-            let (min, k) = leaf.nearest(q);
-            if min < best.1 {
-                *best = (leaf.ids[k], min);
-            }
-            return;
-        }
-        let stem = self.stems[node as usize];
-        let gap = q[stem.axis] - stem.split;
-        let (near, far) = if gap < 0.0 {
-            (stem.below, stem.above)
-        } else {
-            (stem.above, stem.below)
-        };
-        self.nearest_in(near, q, off, rd, best);
-        let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
-        if far_rd <= best.1 {
-            let mut far_off = off;
-            far_off[stem.axis] = gap;
-            self.nearest_in(far, q, far_off, far_rd, best);
-        }
+        let mut nearest = Nearest((0, f64::INFINITY));
+        self.search(self.root, q, [0.0; 2], 0.0, &mut nearest);
+        Some(nearest.0)
     }
 
     /// Every item within squared distance `r2` of `q`, with its squared distance, in no
     /// particular order.
     pub(crate) fn within(&self, q: [f64; 2], r2: f64, out: &mut impl FnMut(u64, f64)) {
         if self.len > 0 {
-            self.within_in(self.root, q, [0.0; 2], 0.0, r2, out);
-        }
-    }
-
-    fn within_in(
-        &self,
-        node: NodeRef,
-        q: [f64; 2],
-        off: [f64; 2],
-        rd: f64,
-        r2: f64,
-        out: &mut impl FnMut(u64, f64),
-    ) {
-        if node & LEAF != 0 {
-            let leaf = &self.leaves[(node & !LEAF) as usize];
-            let d = leaf.squared_distances(q);
-            for (k, &dk) in d.iter().enumerate().take(leaf.len) {
-                if dk <= r2 {
-                    out(leaf.ids[k], dk);
-                }
-            }
-            return;
-        }
-        let stem = self.stems[node as usize];
-        let gap = q[stem.axis] - stem.split;
-        let (near, far) = if gap < 0.0 {
-            (stem.below, stem.above)
-        } else {
-            (stem.above, stem.below)
-        };
-        self.within_in(near, q, off, rd, r2, out);
-        let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
-        if far_rd <= r2 {
-            let mut far_off = off;
-            far_off[stem.axis] = gap;
-            self.within_in(far, q, far_off, far_rd, r2, out);
+            self.search(self.root, q, [0.0; 2], 0.0, &mut Within { r2, out });
         }
     }
 
     /// The `k` items nearest `q` with their squared distances, nearest first (fewer when
     /// the tree holds fewer).
     pub(crate) fn nearest_n(&self, q: [f64; 2], k: usize) -> Vec<(u64, f64)> {
-        let mut found: Vec<(u64, f64)> = Vec::with_capacity(k + 1);
+        let mut nearest = NearestN {
+            k,
+            found: Vec::with_capacity(k + 1),
+        };
         if k > 0 && self.len > 0 {
-            self.nearest_n_in(self.root, q, [0.0; 2], 0.0, k, &mut found);
+            self.search(self.root, q, [0.0; 2], 0.0, &mut nearest);
         }
-        found
+        nearest.found
     }
 
-    /// `found` is kept sorted, nearest first, at most `k` long.
-    fn nearest_n_in(
+    /// Hands `visit` the leaves below `node` that may hold a point within its bound of
+    /// `q`, the nearer side of each split first; `node`'s region lies at squared distance
+    /// at least `rd` from `q`, `off` being `q`'s offset from it on each axis.
+    fn search(
         &self,
         node: NodeRef,
         q: [f64; 2],
         off: [f64; 2],
         rd: f64,
-        k: usize,
-        found: &mut Vec<(u64, f64)>,
+        visit: &mut impl Visit<B>,
     ) {
-        let bound = |found: &Vec<(u64, f64)>| {
-            if found.len() < k {
-                f64::INFINITY
-            } else {
-                found[k - 1].1
-            }
-        };
         if node & LEAF != 0 {
-            let leaf = &self.leaves[(node & !LEAF) as usize];
-            let d = leaf.squared_distances(q);
-            for (j, &dj) in d.iter().enumerate().take(leaf.len) {
-                if dj < bound(found) {
-                    let at = found.partition_point(|&(_, x)| x <= dj);
-                    found.insert(at, (leaf.ids[j], dj));
-                    found.truncate(k);
-                }
-            }
+            visit.leaf(&self.leaves[(node & !LEAF) as usize], q);
             return;
         }
         let stem = self.stems[node as usize];
@@ -372,12 +292,84 @@ impl<const B: usize> KdTree<B> {
         } else {
             (stem.above, stem.below)
         };
-        self.nearest_n_in(near, q, off, rd, k, found);
+        self.search(near, q, off, rd, visit);
         let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
-        if far_rd <= bound(found) {
+        if far_rd <= visit.bound() {
             let mut far_off = off;
             far_off[stem.axis] = gap;
-            self.nearest_n_in(far, q, far_off, far_rd, k, found);
+            self.search(far, q, far_off, far_rd, visit);
+        }
+    }
+}
+
+/// What a [`KdTree::search`] collects from the leaves it reads, and the squared distance
+/// beyond which it needs no more.
+trait Visit<const B: usize> {
+    fn bound(&self) -> f64;
+    fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]);
+}
+
+/// The nearest item and its squared distance so far.
+struct Nearest((u64, f64));
+
+impl<const B: usize> Visit<B> for Nearest {
+    fn bound(&self) -> f64 {
+        self.0.1
+    }
+
+    #[inline(always)]
+    fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
+        let (min, k) = leaf.nearest(q);
+        if min < self.0.1 {
+            self.0 = (leaf.ids[k], min);
+        }
+    }
+}
+
+/// Every item within squared distance `r2`, handed to `out`.
+struct Within<'a, F> {
+    r2: f64,
+    out: &'a mut F,
+}
+
+impl<const B: usize, F: FnMut(u64, f64)> Visit<B> for Within<'_, F> {
+    fn bound(&self) -> f64 {
+        self.r2
+    }
+
+    fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
+        let d = leaf.squared_distances(q);
+        for (k, &dk) in d.iter().enumerate().take(leaf.len) {
+            if dk <= self.r2 {
+                (self.out)(leaf.ids[k], dk);
+            }
+        }
+    }
+}
+
+/// The `k` nearest items so far, sorted, nearest first.
+struct NearestN {
+    k: usize,
+    found: Vec<(u64, f64)>,
+}
+
+impl<const B: usize> Visit<B> for NearestN {
+    fn bound(&self) -> f64 {
+        if self.found.len() < self.k {
+            f64::INFINITY
+        } else {
+            self.found[self.k - 1].1
+        }
+    }
+
+    fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
+        let d = leaf.squared_distances(q);
+        for (j, &dj) in d.iter().enumerate().take(leaf.len) {
+            if dj < Visit::<B>::bound(self) {
+                let at = self.found.partition_point(|&(_, x)| x <= dj);
+                self.found.insert(at, (leaf.ids[j], dj));
+                self.found.truncate(self.k);
+            }
         }
     }
 }
