@@ -332,7 +332,8 @@ impl GridMap {
         if !(u >= 0.0 && v >= 0.0) {
             return None;
         }
-        let (i, j) = (u.floor() as usize, v.floor() as usize);
+        // Truncation is the floor here (u and v are not negative), without libm's call.
+        let (i, j) = (u as usize, v as usize);
         // A point on the upper or right border belongs to the last cell.
         let i = if i == self.width && u == self.width as f64 {
             i - 1

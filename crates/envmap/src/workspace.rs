@@ -304,9 +304,10 @@ impl GridMap {
         if !(u >= 0.0 && v >= 0.0 && u < self.width() as f64 && v < self.height() as f64) {
             return None;
         }
-        let (i, j) = (u.floor(), v.floor());
-        let inside = |t: f64, k: f64| t - k > 1e-6 && k + 1.0 - t > 1e-6;
-        (inside(u, i) && inside(v, j)).then_some((i as usize, j as usize))
+        // Truncation is the floor here (u and v are not negative), without libm's call.
+        let (i, j) = (u as usize, v as usize);
+        let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && k as f64 + 1.0 - t > 1e-6;
+        (inside(u, i) && inside(v, j)).then_some((i, j))
     }
 }
 
@@ -527,6 +528,44 @@ mod tests {
         ) {
             prop_assert_eq!(floor_index(x, k, n), reference(x.floor() + k as f64, n));
             prop_assert_eq!(ceil_index(x, k, n), reference(x.ceil() + k as f64, n));
+        }
+
+        /// A point's cell, found by truncation, is the one found with libm's floor: on
+        /// cell edges, on the map's borders, off the map, and for non-finite points.
+        #[test]
+        fn truncation_finds_the_floors_cell(
+            x in prop_oneof![
+                -3.0..12.0f64,
+                (-3i64..13).prop_map(|k| k as f64 * 0.5),
+                any::<f64>(),
+                Just(f64::INFINITY),
+                Just(f64::NAN),
+                Just(-0.0),
+            ],
+            y in -3.0..9.0f64,
+        ) {
+            let map = GridMap::from_ascii("....#\n.#...\n.....")
+                .unwrap()
+                .with_frame(2.0, Point2::new(-1.0, 0.5))
+                .unwrap();
+            let p = Point2::new(x, y);
+            let u = (p.x - map.origin().x) / map.resolution();
+            let v = (p.y - map.origin().y) / map.resolution();
+            let (w, h) = (map.width() as f64, map.height() as f64);
+            let floor = (u >= 0.0 && v >= 0.0).then(|| {
+                let i = if u == w { w - 1.0 } else { u.floor() };
+                let j = if v == h { h - 1.0 } else { v.floor() };
+                (i < w && j < h).then_some((i as usize, j as usize))
+            });
+            prop_assert_eq!(map.world_to_cell(p), floor.flatten());
+            let interior = (u >= 0.0 && v >= 0.0 && u < w && v < h)
+                .then(|| {
+                    let (i, j) = (u.floor(), v.floor());
+                    let inside = |t: f64, k: f64| t - k > 1e-6 && k + 1.0 - t > 1e-6;
+                    (inside(u, i) && inside(v, j)).then_some((i as usize, j as usize))
+                })
+                .flatten();
+            prop_assert_eq!(map.interior_cell(p), interior);
         }
     }
 
