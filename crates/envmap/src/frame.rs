@@ -1,6 +1,6 @@
 //! `InputFrame`: how users give coordinates for a map they loaded.
 
-use hyplan_core::Point2;
+use hyplan_core::{Bounds, Point2};
 
 /// The coordinates a user gives for a loaded map, and their conversion to world
 /// coordinates (x right, y up, [`GridMap`](crate::GridMap) convention).
@@ -93,6 +93,43 @@ impl InputFrame {
                 (q.x, q.y)
             }
         }
+    }
+
+    /// Where the world box `bounds` lies in this frame, for messages: "x from A to B and y
+    /// from C to D, in (unit)", the box around its corners, to a thousandth.
+    ///
+    /// ```
+    /// use envmap::InputFrame;
+    /// use hyplan_core::{Bounds, Point2};
+    /// let b = Bounds::new(Point2::new(-26.0, -11.0), Point2::new(8.65, 21.4));
+    /// assert_eq!(
+    ///     InputFrame::World.span(b),
+    ///     "x from -26 to 8.65 and y from -11 to 21.4, in world units (metres for ROS maps), y up"
+    /// );
+    /// ```
+    #[must_use]
+    pub fn span(&self, bounds: Bounds) -> String {
+        let corners = [
+            (bounds.min.x, bounds.min.y),
+            (bounds.max.x, bounds.min.y),
+            (bounds.min.x, bounds.max.y),
+            (bounds.max.x, bounds.max.y),
+        ]
+        .map(|(x, y)| self.from_world(Point2::new(x, y)));
+        // A thousandth of a metre (or of a cell) places a point well enough.
+        let range = |axis: fn(&(f64, f64)) -> f64| {
+            let lo = corners.iter().map(axis).fold(f64::INFINITY, f64::min);
+            let hi = corners.iter().map(axis).fold(f64::NEG_INFINITY, f64::max);
+            (
+                (lo * 1000.0).round() / 1000.0,
+                (hi * 1000.0).round() / 1000.0,
+            )
+        };
+        let ((x0, x1), (y0, y1)) = (range(|c| c.0), range(|c| c.1));
+        format!(
+            "x from {x0} to {x1} and y from {y0} to {y1}, in {}",
+            self.describe()
+        )
     }
 
     /// A short description of the frame's unit for messages.

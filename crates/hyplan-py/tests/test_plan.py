@@ -147,6 +147,9 @@ def test_bad_input_raises_value_error():
         hyplan.plan(m, (5, 75), (74, 6), planner="rrt", max_iterations="oops")
     with pytest.raises(ValueError, match="start"):
         hyplan.plan(m, (0.5, 0.5), (74, 6))  # on the wall
+    # Off the map: the message says where the map is.
+    with pytest.raises(ValueError, match=r"outside the map \(the map spans x from 0 to 80 and y"):
+        hyplan.plan(m, (500, 75), (74, 6))
     with pytest.raises(ValueError, match="goal_bias"):
         hyplan.plan(m, (5, 75), (74, 6), goal_bias=1.5)
     with pytest.raises(ValueError):

@@ -312,7 +312,7 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
     // A point outside says where the map is, in the coordinates the user gives.
     let whereabouts = |reason: &str| {
         if reason == "outside the map" {
-            format!("{reason} ({})", extent(&frame, &map))
+            format!("{reason} (the map spans {})", frame.span(map.bounds()))
         } else {
             reason.to_string()
         }
@@ -576,31 +576,4 @@ fn write_bag(
     }
     out.finish()?;
     Ok(())
-}
-
-/// Where `map` lies in the coordinates of `frame`: "x from A to B, y from C to D (unit)",
-/// the box around its corners.
-fn extent(frame: &InputFrame, map: &GridMap) -> String {
-    let b = map.bounds();
-    let corners = [
-        (b.min.x, b.min.y),
-        (b.max.x, b.min.y),
-        (b.min.x, b.max.y),
-        (b.max.x, b.max.y),
-    ]
-    .map(|(x, y)| frame.from_world(Point2::new(x, y)));
-    let range = |k: usize| {
-        let v = corners.map(|c| if k == 0 { c.0 } else { c.1 });
-        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        (lo, hi)
-    };
-    // Millimetres (or thousandths of a cell) are enough to place a point.
-    let round = |v: f64| (v * 1000.0).round() / 1000.0;
-    let ((x0, x1), (y0, y1)) = (range(0), range(1));
-    let (x0, x1, y0, y1) = (round(x0), round(x1), round(y0), round(y1));
-    format!(
-        "the map spans x from {x0} to {x1} and y from {y0} to {y1}, in {}",
-        frame.describe()
-    )
 }
