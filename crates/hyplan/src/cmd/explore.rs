@@ -2,7 +2,7 @@
 //! RRT frontier detectors (or the nearest-frontier baseline) and builds its map (crate
 //! `sim`, module `explore`).
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::{Context, bail};
@@ -80,17 +80,12 @@ pub struct Args {
 /// 2 on bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let ros_map = super::is_ros_map(&args.scenario);
-    // A map's scenario takes the map's path: its file name resolves against the map's
-    // folder, and errors name the file the user gave.
-    let (mut scenario, scenario_path) = if ros_map {
-        (
-            scenario_of_map(args, &args.scenario)?,
-            args.scenario.clone(),
-        )
+    let mut scenario = if ros_map {
+        scenario_of_map(args)?
     } else {
-        let (scenario, _) = sim::Scenario::load_limited(&args.scenario, args.max_cells)
-            .map_err(super::sim_scenario_error)?;
-        (scenario, args.scenario.clone())
+        sim::Scenario::load_limited(&args.scenario, args.max_cells)
+            .map_err(super::sim_scenario_error)?
+            .0
     };
     if let Some(limit) = args.time_limit {
         if !(limit.is_finite() && limit > 0.0) {
@@ -127,7 +122,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     }
     // The overrides are checked with the rest of the scenario.
     let world = scenario
-        .build_world_limited(&scenario_path, args.max_cells)
+        .build_world_limited(&args.scenario, args.max_cells)
         .map_err(|e| super::map_point_error(e, ros_map))?;
     let strategy = scenario.exploration.strategy;
     let mut next_line = 0.0;
@@ -286,50 +281,44 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
 }
 
 /// The exploration of the ROS map `args.scenario` with the defaults, nothing known in
-/// advance, from `--start` or a start chosen on the map (see [`Args::start`]); `path`
-/// names it in errors and resolves the map's file name.
-fn scenario_of_map(args: &Args, path: &Path) -> anyhow::Result<sim::Scenario> {
-    let file = super::file_name(&args.scenario)?;
-    let stem = file.split('.').next().unwrap_or("map").to_string();
-    let ron = |start: (f64, f64)| {
-        format!(
-            "SimScenario(name: {name:?}, description: {what:?}, \
-             world: (map: Some(Ros({file:?}))), start: ({x:?}, {y:?}), goal: ({x:?}, {y:?}), \
-             known_map: false, time_limit: 4000.0)",
-            name = format!("explore-{stem}"),
-            what = format!("Exploration of {file}, nothing known in advance"),
-            x = start.0,
-            y = start.1,
-        )
-    };
+/// advance, from `--start` or a start chosen on the map (see [`Args::start`]).
+fn scenario_of_map(args: &Args) -> anyhow::Result<sim::Scenario> {
     let start = match args.start {
         Some(s) => s,
         None => {
-            // The robot's radius with a margin, from the scenario's own defaults.
-            let robot = sim::Scenario::parse(&ron((0.0, 0.0)), path)
-                .map_err(super::sim_scenario_error)?
-                .robot
-                .body_radius;
+            // The robot's radius with a margin.
+            let clearance = sim::Robot::default().body_radius + 0.2;
             let opts = envmap::LoadOptions {
                 max_cells: args.max_cells,
                 ..envmap::LoadOptions::default()
             };
             let map = super::load_map(&args.scenario, &opts)?.map;
-            let start = open_start(&map, robot + 0.2).with_context(|| {
+            let start = open_start(&map, clearance).with_context(|| {
                 format!(
-                    "{}: no free spot {:.2} m from every obstacle to start from",
-                    args.scenario.display(),
-                    robot + 0.2
+                    "{}: no free spot {clearance:.2} m from every obstacle to start from",
+                    args.scenario.display()
                 )
             })?;
             eprintln!(
-                "explore: starting at ({:.2}, {:.2}) on {file} (--start X,Y to choose)",
-                start.0, start.1
+                "explore: starting at ({:.2}, {:.2}) on {} (--start X,Y to choose)",
+                start.0,
+                start.1,
+                args.scenario
+                    .file_name()
+                    .unwrap_or_default()
+                    .to_string_lossy()
             );
             start
         }
     };
-    sim::Scenario::parse(&ron(start), path).map_err(super::sim_scenario_error)
+    let on = super::OnMap {
+        kind: "explore",
+        start,
+        goal: start,
+        known_map: false,
+        time_limit: 4000.0,
+    };
+    super::scenario_on_map(&args.scenario, &on)
 }
 
 /// The map frame's origin when it is at least `clearance` from every blocked cell, else

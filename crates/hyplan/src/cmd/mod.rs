@@ -82,14 +82,48 @@ pub fn is_ros_map(path: &std::path::Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"))
 }
 
-/// The file name of `path`, for a scenario that names it beside itself.
-pub fn file_name(path: &std::path::Path) -> anyhow::Result<String> {
+/// What a scenario made from a ROS map says besides the map: the robot's start and goal,
+/// whether the map is known in advance, and the time limit.
+pub struct OnMap {
+    /// `explore` or `nav`, the start of the scenario's name.
+    pub kind: &'static str,
+    /// Start, metres in the map frame.
+    pub start: (f64, f64),
+    /// Goal, metres in the map frame.
+    pub goal: (f64, f64),
+    /// Whether the robot knows the map in advance.
+    pub known_map: bool,
+    /// Simulated seconds before the run is stopped.
+    pub time_limit: f64,
+}
+
+/// The scenario of the ROS map `map` (its `.yaml`) with `on` and the defaults: the
+/// scenario takes the map's path, so that its file name resolves beside it and errors
+/// name the file given.
+pub fn scenario_on_map(map: &std::path::Path, on: &OnMap) -> anyhow::Result<::sim::Scenario> {
     use anyhow::Context as _;
-    Ok(path
+    let file = map
         .file_name()
-        .with_context(|| format!("{}: not a file", path.display()))?
+        .with_context(|| format!("{}: not a file", map.display()))?
         .to_string_lossy()
-        .into_owned())
+        .into_owned();
+    let stem = file.split('.').next().unwrap_or("map");
+    let text = format!(
+        "SimScenario(name: {name:?}, description: {what:?}, world: (map: Some(Ros({file:?}))), \
+         start: ({:?}, {:?}), goal: ({:?}, {:?}), known_map: {}, time_limit: {:?})",
+        on.start.0,
+        on.start.1,
+        on.goal.0,
+        on.goal.1,
+        on.known_map,
+        on.time_limit,
+        name = format!("{}-{stem}", on.kind),
+        what = format!(
+            "{file} with the defaults ({} scenario made from the map)",
+            on.kind
+        ),
+    );
+    ::sim::Scenario::parse(&text, map).map_err(sim_scenario_error)
 }
 
 /// A scenario's error; for a scenario made from a map (`on_map`), a bad start or goal is

@@ -284,18 +284,14 @@ fn scenario_of_map(args: &Args) -> anyhow::Result<sim::Scenario> {
             args.scenario.display()
         );
     };
-    let file = super::file_name(&args.scenario)?;
-    let text = format!(
-        "SimScenario(name: {name:?}, description: {what:?}, world: (map: Some(Ros({file:?}))), \
-         start: ({:?}, {:?}), goal: ({:?}, {:?}), known_map: true, time_limit: 600.0)",
-        start.0,
-        start.1,
-        goal.0,
-        goal.1,
-        name = format!("nav-{}", file.split('.').next().unwrap_or("map")),
-        what = format!("Navigation on the known map {file}"),
-    );
-    sim::Scenario::parse(&text, &args.scenario).map_err(super::sim_scenario_error)
+    let on = super::OnMap {
+        kind: "nav",
+        start,
+        goal,
+        known_map: true,
+        time_limit: 600.0,
+    };
+    super::scenario_on_map(&args.scenario, &on)
 }
 
 #[cfg(test)]
