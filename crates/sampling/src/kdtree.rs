@@ -244,9 +244,9 @@ impl<const B: usize> KdTree<B> {
         if self.len == 0 {
             return None;
         }
-        let mut nearest = Nearest((0, f64::INFINITY));
+        let mut nearest = Nearest(None);
         self.search(self.root, q, [0.0; 2], 0.0, &mut nearest);
-        Some(nearest.0)
+        nearest.0
     }
 
     /// Every item within squared distance `r2` of `q`, with its squared distance, in no
@@ -294,7 +294,8 @@ impl<const B: usize> KdTree<B> {
         };
         self.search(near, q, off, rd, visit);
         let far_rd = rd - off[stem.axis] * off[stem.axis] + gap * gap;
-        if far_rd <= visit.bound() {
+        // Visited unless provably beyond the bound (overflowing offsets give NaN).
+        if far_rd <= visit.bound() || far_rd.is_nan() {
             let mut far_off = off;
             far_off[stem.axis] = gap;
             self.search(far, q, far_off, far_rd, visit);
@@ -309,19 +310,20 @@ trait Visit<const B: usize> {
     fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]);
 }
 
-/// The nearest item and its squared distance so far.
-struct Nearest((u64, f64));
+/// The nearest item and its squared distance so far (`None` before the first point: a
+/// squared distance may overflow to infinity, and a point must still be found).
+struct Nearest(Option<(u64, f64)>);
 
 impl<const B: usize> Visit<B> for Nearest {
     fn bound(&self) -> f64 {
-        self.0.1
+        self.0.map_or(f64::INFINITY, |b| b.1)
     }
 
     #[inline(always)]
     fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
         let (min, k) = leaf.nearest(q);
-        if min < self.0.1 {
-            self.0 = (leaf.ids[k], min);
+        if leaf.len > 0 && self.0.is_none_or(|b| min < b.1) {
+            self.0 = Some((leaf.ids[k], min));
         }
     }
 }
@@ -365,7 +367,7 @@ impl<const B: usize> Visit<B> for NearestN {
     fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
         let d = leaf.squared_distances(q);
         for (j, &dj) in d.iter().enumerate().take(leaf.len) {
-            if dj < Visit::<B>::bound(self) {
+            if self.found.len() < self.k || dj < self.found[self.k - 1].1 {
                 let at = self.found.partition_point(|&(_, x)| x <= dj);
                 self.found.insert(at, (leaf.ids[j], dj));
                 self.found.truncate(self.k);

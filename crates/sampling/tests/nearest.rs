@@ -95,6 +95,21 @@ fn many_identical_points() {
     assert_eq!(index.within(Point2::new(3.0, 3.0), 0.0).len(), 100);
 }
 
+/// Coordinates so large that squared distances overflow to infinity: the queries still
+/// report points (every distance ties at infinity).
+#[test]
+fn overflowing_distances_still_answer() {
+    let mut index = NearestIndex::<8>::with_bucket_capacity(0);
+    for k in 0..20 {
+        index.insert(Point2::new(1e200 * f64::from(k), -1e200));
+    }
+    let q = Point2::new(-1e200, 1e200);
+    let (id, d) = index.nearest(q).unwrap();
+    assert!(id < 20 && d.is_infinite(), "{id} {d}");
+    assert_eq!(index.nearest_k(q, 5).len(), 5);
+    assert_eq!(index.within(q, f64::INFINITY).len(), 20);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
