@@ -132,6 +132,28 @@ impl InputFrame {
         )
     }
 
+    /// `reason`, why world point `p` was refused, followed by where the map of `bounds`
+    /// lies ([`span`](Self::span)) when `p` is a point off it: a user who gave it learns
+    /// where to look.
+    ///
+    /// ```
+    /// use envmap::InputFrame;
+    /// use hyplan_core::{Bounds, Point2};
+    /// let b = Bounds::new(Point2::new(0.0, 0.0), Point2::new(4.0, 2.0));
+    /// let off = InputFrame::World.refusal(b, Point2::new(9.0, 1.0), "outside the map");
+    /// assert!(off.starts_with("outside the map (the map spans x from 0 to 4"));
+    /// let on = InputFrame::World.refusal(b, Point2::new(1.0, 1.0), "inside an obstacle");
+    /// assert_eq!(on, "inside an obstacle");
+    /// ```
+    #[must_use]
+    pub fn refusal(&self, bounds: Bounds, p: Point2, reason: &str) -> String {
+        if p.x.is_finite() && p.y.is_finite() && !bounds.contains(p) {
+            format!("{reason} (the map spans {})", self.span(bounds))
+        } else {
+            reason.to_string()
+        }
+    }
+
     /// A short description of the frame's unit for messages.
     #[must_use]
     pub const fn describe(&self) -> &'static str {

@@ -438,29 +438,18 @@ fn query_of(
         Goal::disc(goal_c, goal_radius * scale)
     };
     let query = Query::new(start_w, goal_region);
-    // A point outside says where the map is, in the coordinates the caller gives.
-    let whereabouts = |reason: &str| {
-        if reason == "outside the map" {
-            format!(
-                "{reason} (the map spans {})",
-                map.frame.span(map.map.bounds())
-            )
-        } else {
-            reason.to_string()
-        }
-    };
     query.validate(&*map.map).map_err(|e| match e {
         PlanError::InvalidStart { reason, .. } => PyValueError::new_err(format!(
             "start {},{}: {}",
             start.0,
             start.1,
-            whereabouts(reason)
+            map.frame.refusal(map.map.bounds(), start_w, reason)
         )),
         PlanError::InvalidGoal { reason, .. } => PyValueError::new_err(format!(
             "goal {},{} (radius {goal_radius}): {}",
             goal.0,
             goal.1,
-            whereabouts(reason)
+            map.frame.refusal(map.map.bounds(), goal_c, reason)
         )),
         other => value_err(other),
     })?;

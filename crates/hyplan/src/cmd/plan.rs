@@ -309,27 +309,19 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
         Goal::disc(goal_center, args.goal_radius * scale)
     };
     let query = Query::new(start, goal);
-    // A point outside says where the map is, in the coordinates the user gives.
-    let whereabouts = |reason: &str| {
-        if reason == "outside the map" {
-            format!("{reason} (the map spans {})", frame.span(map.bounds()))
-        } else {
-            reason.to_string()
-        }
-    };
     query.validate(&map).map_err(|e| match e {
         PlanError::InvalidStart { reason, .. } => anyhow::anyhow!(
             "--start {},{}: {}",
             args.start.0,
             args.start.1,
-            whereabouts(reason)
+            frame.refusal(map.bounds(), start, reason)
         ),
         PlanError::InvalidGoal { reason, .. } => anyhow::anyhow!(
             "--goal {},{} (radius {}): {}",
             args.goal.0,
             args.goal.1,
             args.goal_radius,
-            whereabouts(reason)
+            frame.refusal(map.bounds(), goal_center, reason)
         ),
         other => anyhow::Error::new(other),
     })?;
