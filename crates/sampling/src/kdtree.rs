@@ -89,15 +89,12 @@ impl<const B: usize> Leaf<B> {
         })
     }
 
-    /// Squared distances from `q` to every slot (infinite for the unused ones).
-    #[inline(always)]
-    fn squared_distances(&self, q: [f64; 2]) -> [f64; B] {
-        let mut d = [0.0; B];
-        for ((d, &x), &y) in d.iter_mut().zip(&self.axes[0]).zip(&self.axes[1]) {
-            let (dx, dy) = (x - q[0], y - q[1]);
-            *d = dx * dx + dy * dy;
-        }
-        d
+    /// Each point's item and squared distance from `q`.
+    fn squared_distances(&self, q: [f64; 2]) -> impl Iterator<Item = (u64, f64)> + '_ {
+        (0..self.len).map(move |k| {
+            let (dx, dy) = (self.axes[0][k] - q[0], self.axes[1][k] - q[1]);
+            (self.ids[k], dx * dx + dy * dy)
+        })
     }
 }
 
@@ -340,10 +337,9 @@ impl<const B: usize, F: FnMut(u64, f64)> Visit<B> for Within<'_, F> {
     }
 
     fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
-        let d = leaf.squared_distances(q);
-        for (k, &dk) in d.iter().enumerate().take(leaf.len) {
-            if dk <= self.r2 {
-                (self.out)(leaf.ids[k], dk);
+        for (item, d) in leaf.squared_distances(q) {
+            if d <= self.r2 {
+                (self.out)(item, d);
             }
         }
     }
@@ -365,11 +361,10 @@ impl<const B: usize> Visit<B> for NearestN {
     }
 
     fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
-        let d = leaf.squared_distances(q);
-        for (j, &dj) in d.iter().enumerate().take(leaf.len) {
-            if self.found.len() < self.k || dj < self.found[self.k - 1].1 {
-                let at = self.found.partition_point(|&(_, x)| x <= dj);
-                self.found.insert(at, (leaf.ids[j], dj));
+        for (item, d) in leaf.squared_distances(q) {
+            if self.found.len() < self.k || d < self.found[self.k - 1].1 {
+                let at = self.found.partition_point(|&(_, x)| x <= d);
+                self.found.insert(at, (item, d));
                 self.found.truncate(self.k);
             }
         }
