@@ -87,12 +87,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             .map_err(super::sim_scenario_error)?
             .0
     };
-    if let Some(limit) = args.time_limit {
-        if !(limit.is_finite() && limit > 0.0) {
-            bail!("--time-limit = {limit}: must be finite and > 0 (seconds)");
-        }
-        scenario.time_limit = limit;
-    }
+    super::set_time_limit(&mut scenario, args.time_limit)?;
     if let Some(name) = &args.profile {
         super::sim::apply_profile(&mut scenario, name)?;
     }

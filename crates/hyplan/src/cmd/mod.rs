@@ -126,6 +126,17 @@ pub fn scenario_on_map(map: &std::path::Path, on: &OnMap) -> anyhow::Result<::si
     ::sim::Scenario::parse(&text, map).map_err(sim_scenario_error)
 }
 
+/// `--time-limit`, when given, in place of the scenario's.
+pub fn set_time_limit(scenario: &mut ::sim::Scenario, limit: Option<f64>) -> anyhow::Result<()> {
+    if let Some(limit) = limit {
+        if !(limit.is_finite() && limit > 0.0) {
+            anyhow::bail!("--time-limit = {limit}: must be finite and > 0 (seconds)");
+        }
+        scenario.time_limit = limit;
+    }
+    Ok(())
+}
+
 /// A scenario's error; for a scenario made from a map (`on_map`), a bad start or goal is
 /// the flag's (`--start`, `--goal`).
 pub fn map_point_error(e: ::sim::ScenarioError, on_map: bool) -> anyhow::Error {

@@ -150,12 +150,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         sim::Scenario::load_limited(&args.scenario, args.max_cells)
             .map_err(super::sim_scenario_error)?
     };
-    if let Some(limit) = args.time_limit {
-        if !(limit.is_finite() && limit > 0.0) {
-            anyhow::bail!("--time-limit = {limit}: must be finite and > 0 (seconds)");
-        }
-        scenario.time_limit = limit;
-    }
+    super::set_time_limit(&mut scenario, args.time_limit)?;
     if let Some(name) = &args.profile {
         super::sim::apply_profile(&mut scenario, name)?;
     }
