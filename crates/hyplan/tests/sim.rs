@@ -327,6 +327,16 @@ fn sim_takes_a_ros_map() {
     assert_exit(&o, 2, &["a map needs --start X,Y and --goal X,Y"]);
     let o = hyplan(&["sim", &map, "--start", "-0.5,-0.5", "--goal", "-1.1,-1.1"]);
     assert_exit(&o, 2, &["--goal (-1.1, -1.1): inside an obstacle"]);
+    let o = hyplan(&[
+        "sim",
+        &map,
+        "--start=-0.5,-0.5",
+        "--goal",
+        "0.5,0.5",
+        "--time-limit",
+        "0",
+    ]);
+    assert_exit(&o, 2, &["--time-limit = 0: must be finite and > 0"]);
 }
 
 #[test]
