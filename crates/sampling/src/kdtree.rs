@@ -6,7 +6,8 @@
 //! together and its scan takes a branch per point; on an RRT's queries (samples far from a
 //! tree that fills a maze slowly visit many leaves) the scan was most of the planner's time.
 //! The structure is the usual one (Friedman, Bentley and Finkel 1977; kiddo's search keeps
-//! the same per-axis offsets to bound a subtree's distance); what differs is the leaf.
+//! the same per-axis offsets to bound a subtree's distance); what differs is the leaf, and
+//! that a leaf is read only when the bounding box of its points is within reach.
 //!
 //! Only finite points are inserted, and never two equal ones: [`KdTree::add`] finds an
 //! equal point in the leaf it descends to (equal points take the same way down) and
@@ -31,6 +32,41 @@ struct Stem {
     above: NodeRef,
 }
 
+/// A leaf's bounding box, lowest and highest on each axis (inverted when empty). A leaf's
+/// region reaches far beyond its points at the edge of a growing tree, which is where an
+/// RRT's samples fall: the box, not the region, tells whether its points may be near.
+#[derive(Debug, Clone, Copy)]
+struct Bounds {
+    lo: [f64; 2],
+    hi: [f64; 2],
+}
+
+impl Bounds {
+    const EMPTY: Self = Self {
+        lo: [f64::INFINITY; 2],
+        hi: [f64::NEG_INFINITY; 2],
+    };
+
+    fn grow(&mut self, p: [f64; 2]) {
+        for ((lo, hi), x) in self.lo.iter_mut().zip(&mut self.hi).zip(p) {
+            *lo = lo.min(x);
+            *hi = hi.max(x);
+        }
+    }
+
+    /// The squared distance from `q` to the box (infinite when empty).
+    #[inline(always)]
+    fn distance(&self, q: [f64; 2]) -> f64 {
+        let gap = |axis: usize| {
+            (self.lo[axis] - q[axis])
+                .max(q[axis] - self.hi[axis])
+                .max(0.0)
+        };
+        let (dx, dy) = (gap(0), gap(1));
+        dx * dx + dy * dy
+    }
+}
+
 /// Up to `B` points, by axis; the unused slots hold infinite coordinates, whose distance to
 /// any query is infinite, so that a scan reads whole leaves.
 #[derive(Debug, Clone)]
@@ -38,6 +74,7 @@ struct Leaf<const B: usize> {
     axes: [[f64; B]; 2],
     ids: [u64; B],
     len: usize,
+    bounds: Bounds,
 }
 
 impl<const B: usize> Leaf<B> {
@@ -46,6 +83,7 @@ impl<const B: usize> Leaf<B> {
             axes: [[f64::INFINITY; B]; 2],
             ids: [0; B],
             len: 0,
+            bounds: Bounds::EMPTY,
         }
     }
 
@@ -54,6 +92,7 @@ impl<const B: usize> Leaf<B> {
         self.axes[1][self.len] = p[1];
         self.ids[self.len] = id;
         self.len += 1;
+        self.bounds.grow(p);
     }
 
     /// The slot nearest `q` and its squared distance (infinite when the leaf is empty).
@@ -195,24 +234,19 @@ impl<const B: usize> KdTree<B> {
         let mid = lo + (hi - lo) / 2.0;
         // Rounding can put the middle on the lowest value: the highest then splits.
         let split = if mid > lo { mid } else { hi };
-        // The points above the split move to a new leaf; the others close up in place.
+        // The points above the split move to a new leaf; the others stay.
         let mut above = Leaf::empty();
         let leaf = &mut self.leaves[at];
-        let mut kept = 0;
+        let mut below = Leaf::empty();
         for k in 0..B {
             let (q, item) = ([leaf.axes[0][k], leaf.axes[1][k]], leaf.ids[k]);
             if q[axis] >= split {
                 above.push(q, item);
             } else {
-                leaf.axes[0][kept] = q[0];
-                leaf.axes[1][kept] = q[1];
-                leaf.ids[kept] = item;
-                kept += 1;
+                below.push(q, item);
             }
         }
-        leaf.axes[0][kept..].fill(f64::INFINITY);
-        leaf.axes[1][kept..].fill(f64::INFINITY);
-        leaf.len = kept;
+        *leaf = below;
         if p[axis] >= split {
             above.push(p, id);
         } else {
@@ -279,7 +313,12 @@ impl<const B: usize> KdTree<B> {
         visit: &mut impl Visit<B>,
     ) {
         if node & LEAF != 0 {
-            visit.leaf(&self.leaves[(node & !LEAF) as usize], q);
+            let leaf = &self.leaves[(node & !LEAF) as usize];
+            // Read unless its points are provably beyond the bound.
+            let beyond = leaf.bounds.distance(q) > visit.bound();
+            if !beyond {
+                visit.leaf(leaf, q);
+            }
             return;
         }
         let stem = self.stems[node as usize];
