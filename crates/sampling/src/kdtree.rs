@@ -47,6 +47,7 @@ impl Bounds {
         hi: [f64::NEG_INFINITY; 2],
     };
 
+    #[inline(always)]
     fn grow(&mut self, p: [f64; 2]) {
         for ((lo, hi), x) in self.lo.iter_mut().zip(&mut self.hi).zip(p) {
             *lo = lo.min(x);
@@ -234,19 +235,25 @@ impl<const B: usize> KdTree<B> {
         let mid = lo + (hi - lo) / 2.0;
         // Rounding can put the middle on the lowest value: the highest then splits.
         let split = if mid > lo { mid } else { hi };
-        // The points above the split move to a new leaf; the others stay.
+        // The points above the split move to a new leaf; the others close up in place.
         let mut above = Leaf::empty();
         let leaf = &mut self.leaves[at];
-        let mut below = Leaf::empty();
+        let (mut kept, mut bounds) = (0, Bounds::EMPTY);
         for k in 0..B {
             let (q, item) = ([leaf.axes[0][k], leaf.axes[1][k]], leaf.ids[k]);
             if q[axis] >= split {
                 above.push(q, item);
             } else {
-                below.push(q, item);
+                leaf.axes[0][kept] = q[0];
+                leaf.axes[1][kept] = q[1];
+                leaf.ids[kept] = item;
+                bounds.grow(q);
+                kept += 1;
             }
         }
-        *leaf = below;
+        leaf.axes[0][kept..].fill(f64::INFINITY);
+        leaf.axes[1][kept..].fill(f64::INFINITY);
+        (leaf.len, leaf.bounds) = (kept, bounds);
         if p[axis] >= split {
             above.push(p, id);
         } else {
