@@ -109,6 +109,8 @@ pub struct JumpPointSearch {
     wide_heap: MinHeap<Upper>,
     /// The successors of the jump point being expanded (kept for its capacity).
     found: Vec<(usize, usize)>,
+    /// Jump points whose f equals the f being expanded (kept for its capacity).
+    stack: Vec<u32>,
     limit: Limit,
 }
 
@@ -174,6 +176,7 @@ impl JumpPointSearch {
             heap: MinHeap::default(),
             wide_heap: MinHeap::default(),
             found: Vec::new(),
+            stack: Vec::new(),
             limit: Limit {
                 max_expansions: u64::MAX,
                 deadline,
@@ -278,11 +281,27 @@ impl JumpPointSearch {
         let mut check_at = self.limit.next_check(0);
         // Taken out for the loop (and put back after) so that it can borrow the rest.
         let mut found = std::mem::take(&mut self.found);
+        // As A*'s loop ([`GridSearch::grid_search`](super::GridSearch)): successors whose
+        // f equals the f being expanded would come out of the heap next anyway, so they
+        // go on a stack; and the heap's root, the jump point being expanded, is taken but
+        // left in place, so that the first successor to go to the heap replaces it.
+        let mut stack = std::mem::take(&mut self.stack);
+        stack.clear();
+        let (mut taken, mut f_cur) = (false, 0);
         let outcome = loop {
-            let Some(k) = heap.pop() else {
-                break Err(GridSearchError::NoPath { stats });
+            let p = if let Some(p) = stack.pop() {
+                p as usize
+            } else {
+                if std::mem::take(&mut taken) {
+                    heap.pop();
+                }
+                let Some(k) = heap.peek() else {
+                    break Err(GridSearchError::NoPath { stats });
+                };
+                taken = true;
+                f_cur = k.order(fx) >> fx.tie_bits;
+                k.cell(fx) as usize
             };
-            let p = k.cell(fx) as usize;
             // Closed: a stale entry (the cell was pushed again with a lower g, and that
             // entry, whose f is lower, came out first).
             let state = self.states[p];
@@ -355,11 +374,19 @@ impl JumpPointSearch {
                 }
                 stats.reached += u64::from(!seen);
                 self.states[q] = State::pack(ng, p as u32, generation);
-                heap.push(key(ng, h(qx, qy), q));
+                let hq = h(qx, qy);
+                if (ng + hq) >> fx.f_shift <= f_cur {
+                    stack.push(q as u32);
+                } else if std::mem::take(&mut taken) {
+                    heap.replace_top(key(ng, hq, q));
+                } else {
+                    heap.push(key(ng, hq, q));
+                }
                 stats.pushes += 1;
             }
         };
         self.found = found;
+        self.stack = stack;
         *K::heap(&mut self.heap, &mut self.wide_heap) = heap;
         outcome.map(|()| self.trace(sp, tp, stats))
     }
