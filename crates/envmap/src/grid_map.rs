@@ -494,8 +494,19 @@ impl GridMap {
     }
 
     /// The blocked cells' stride table if it is made already
-    /// ([`blocked_strides`](Self::blocked_strides) makes it).
-    pub(crate) fn made_blocked_strides(&self) -> Option<&[u8]> {
+    /// ([`blocked_strides`](Self::blocked_strides) makes it, in time that grows with the
+    /// map): for a caller with a deadline, which may not spend that time.
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// let map = GridMap::from_ascii("..#\n...")?;
+    /// assert!(map.made_blocked_strides().is_none());
+    /// let made = map.blocked_strides().map(<[u8]>::to_vec);
+    /// assert_eq!(map.made_blocked_strides().map(<[u8]>::to_vec), made);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn made_blocked_strides(&self) -> Option<&[u8]> {
         self.stride_tables[cache_slot(self.blocked_from)?]
             .get()
             .map(Vec::as_slice)

@@ -149,18 +149,6 @@ pub(super) const DIRS: [(i32, i32, f64); 8] = [
     (-1, -1, SQRT2),
 ];
 
-/// Theta*'s search state of one cell, valid in the current query only if `stamp`
-/// (without the closed bit) is the current generation; its cost so far is kept apart
-/// (`GridSearch::theta_g`), so that the eight neighbours' states an expansion reads first
-/// take half the memory.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Node {
-    /// The cell it was reached from ([`NONE`] for the start).
-    pub(super) parent: u32,
-    /// Generation of the last query that reached it, plus the [`CLOSED`] bit.
-    pub(super) stamp: u32,
-}
-
 /// Theta*'s open-list key: one `u128` compared as an integer, smallest first. From the
 /// top: the bits of `f` (non-negative `f64` bits sort as the numbers do), the complement of
 /// `g` as `f32` bits (ties on `f` go to the larger `g`; `f32` is only a tie-breaker, the
