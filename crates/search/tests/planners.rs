@@ -1,7 +1,9 @@
 //! The `Planner` implementations on world points.
 
 use envmap::GridMap;
-use hyplan_core::{Goal, PlanError, Planner, Point2, Query, Workspace};
+use std::time::Duration;
+
+use hyplan_core::{Budget, Goal, PlanError, Planner, Point2, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use search::{GridAstar, GridDijkstra, ThetaStar};
@@ -173,4 +175,37 @@ fn a_lazy_theta_star_weight_below_one_is_refused() {
         ..Default::default()
     };
     assert!(weighted.plan(&room(), &q, &mut rand::rng()).is_ok());
+}
+
+/// Theta* with a time limit does not make the map's stride table, whose cost grows with
+/// the map outside the limit's checks (60 ms on 2,000 x 2,000 cells); without a limit it
+/// does, and `prepare` makes it ahead of timed plans. The paths are the same either way.
+#[test]
+fn theta_star_under_a_time_limit_leaves_the_stride_table_to_prepare() {
+    let query = Query::new(
+        Point2::new(-0.75, 2.25),
+        Goal::Point(Point2::new(3.75, 4.75)),
+    );
+    let limited = ThetaStar {
+        budget: Budget::iterations(u64::MAX).with_time(Duration::from_secs(60)),
+        ..ThetaStar::default()
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(SEED);
+
+    let map = room();
+    let timed = limited.plan(&map, &query, &mut rng).unwrap();
+    assert!(map.made_blocked_strides().is_none());
+
+    let map = room();
+    let untimed = ThetaStar::default().plan(&map, &query, &mut rng).unwrap();
+    assert!(map.made_blocked_strides().is_some());
+    assert_eq!(timed.path, untimed.path);
+
+    let map = room();
+    limited.prepare(&map).unwrap();
+    assert!(map.made_blocked_strides().is_some());
+    assert_eq!(
+        limited.plan(&map, &query, &mut rng).unwrap().path,
+        untimed.path
+    );
 }
