@@ -191,6 +191,19 @@ impl Navigator {
         &self.path
     }
 
+    /// The length of the path still ahead of the robot at `here` (from the point of the
+    /// path nearest it, as the controller follows it), while following one; `None` while
+    /// planning, stopping or done.
+    #[must_use]
+    pub fn remaining(&self, here: Point2) -> Option<f64> {
+        if self.state != NavState::Following || self.path.len() < 2 {
+            return None;
+        }
+        let (k, q) = project(&self.path, self.progress, here);
+        let k = k.min(self.path.len() - 2);
+        Some((self.path[k + 1] - q).norm() + hyplan_core::path_length(&self.path[k + 1..]))
+    }
+
     /// How many times a plan replaced the path by a different one: a caller that saw
     /// another value before a step knows the path changed in it.
     #[must_use]

@@ -39,6 +39,7 @@ struct Clock {
     detector: u64,
     cycle: u64,
     stuck: u64,
+    progress: u64,
     finish: u64,
     snapshots: Vec<u64>,
 }
@@ -82,6 +83,9 @@ pub(crate) struct Explorer {
     final_costmap: CostmapCache,
     /// Where the robot was when it last moved 0.2 m, and when.
     anchor: (Point2, u64),
+    /// The least length of path the robot had still ahead to the goal, and when it got
+    /// there.
+    progress: (f64, u64),
     pub finished: bool,
     /// Heading turned so far in the initial turn; `None` once it is over.
     turned: Option<f64>,
@@ -144,6 +148,7 @@ impl Explorer {
                 detector: every(ex.detector_rate_hz),
                 cycle: every(1.0 / ex.cycle),
                 stuck: at(ex.stuck_after),
+                progress: at(ex.progress_timeout),
                 finish: at(ex.finish_after),
                 snapshots: ex.snapshots.iter().map(|&t| at(t)).collect(),
             },
@@ -191,6 +196,7 @@ impl Explorer {
             flood: None,
             final_costmap: CostmapCache::default(),
             anchor: (crate::world::pt(scenario.start), 0),
+            progress: (f64::INFINITY, 0),
             finished: false,
             turned: ex.initial_turn.then_some(0.0),
             given_up: Vec::new(),
@@ -349,6 +355,11 @@ impl Explorer {
         if (here - self.anchor.0).norm() >= 0.2 || self.look.is_some() {
             self.anchor = (here, tick);
         }
+        match sim.nav.remaining(here) {
+            Some(left) if left < self.progress.0 => self.progress = (left, tick),
+            _ if self.look.is_some() => self.progress.1 = tick,
+            _ => {}
+        }
         let version = sim.map_version();
         let looked = self
             .look
@@ -357,6 +368,8 @@ impl Explorer {
             Some(GoalEnd::GaveUp)
         } else if tick - self.anchor.1 >= self.clock.stuck {
             Some(GoalEnd::Stuck)
+        } else if tick - self.progress.1 >= self.clock.progress {
+            Some(GoalEnd::NoProgress)
         } else if self.recovering {
             (state == NavState::Reached).then_some(GoalEnd::Reached)
         } else if too_costly {
@@ -372,7 +385,7 @@ impl Explorer {
             self.look = Some(Look::default());
         }
         let Some(end) = end else { return };
-        let given_up = matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck);
+        let given_up = matches!(end, GoalEnd::GaveUp | GoalEnd::Stuck | GoalEnd::NoProgress);
         let pinned = given_up && self.goal_log.last().is_some_and(|r| r.driven < 0.2);
         if self.recovering {
             self.recovering = false;
@@ -539,6 +552,7 @@ impl Explorer {
         self.last_goal = f;
         self.target = (self.ex.view_points && !self.recovering).then_some(f);
         self.anchor = (here, tick);
+        self.progress = (f64::INFINITY, tick);
         sim.nav.set_goal(g);
         self.goals.push((t, g));
         self.goal_log.push(GoalRecord {

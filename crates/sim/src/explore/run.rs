@@ -83,6 +83,9 @@ pub enum GoalEnd {
     GaveUp,
     /// The robot did not move 0.2 m for `stuck_after` seconds.
     Stuck,
+    /// The robot came no nearer to it along the navigator's paths for
+    /// `progress_timeout` seconds.
+    NoProgress,
     /// The filter's costmap test failed on it (an obstacle came near).
     Cost,
     /// The filter's gain test failed on it (its unknown area was seen).
