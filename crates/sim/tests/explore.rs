@@ -274,8 +274,8 @@ fn turtlebot3_world_is_explored_without_contact() {
 /// explore_lite's progress timeout: a goal the robot comes no nearer to along its paths
 /// for `progress_timeout` seconds is given up, and its frontier blacklisted (unless it
 /// was the step into the open after a goal given up on the spot, which is never
-/// blacklisted). At the default (30 s) no goal of the TurtleBot3 world ends so; at 1 s,
-/// shorter than the robot's turns on the spot, some do.
+/// blacklisted). Without one (the default) no goal of the TurtleBot3 world ends so; at
+/// 1 s, shorter than the robot's turns on the spot, some do.
 #[test]
 fn goals_the_robot_comes_no_nearer_to_are_given_up() {
     let path = tb3_path();
@@ -290,7 +290,7 @@ fn goals_the_robot_comes_no_nearer_to_are_given_up() {
     };
     let out = sim::explore(&scenario, &world, 1, Strategy::Both).unwrap();
     assert_eq!(no_progress(&out), []);
-    scenario.exploration.progress_timeout = 1.0;
+    scenario.exploration.progress_timeout = Some(1.0);
     let out = sim::explore(&scenario, &world, 1, Strategy::Both).unwrap();
     let ended = no_progress(&out);
     assert!(ended.iter().all(|g| g.ended - g.t >= 1.0), "{ended:?}");

@@ -39,7 +39,7 @@ struct Clock {
     detector: u64,
     cycle: u64,
     stuck: u64,
-    progress: u64,
+    progress: Option<u64>,
     finish: u64,
     snapshots: Vec<u64>,
 }
@@ -148,7 +148,7 @@ impl Explorer {
                 detector: every(ex.detector_rate_hz),
                 cycle: every(1.0 / ex.cycle),
                 stuck: at(ex.stuck_after),
-                progress: at(ex.progress_timeout),
+                progress: ex.progress_timeout.map(at),
                 finish: at(ex.finish_after),
                 snapshots: ex.snapshots.iter().map(|&t| at(t)).collect(),
             },
@@ -355,10 +355,12 @@ impl Explorer {
         if (here - self.anchor.0).norm() >= 0.2 || self.look.is_some() {
             self.anchor = (here, tick);
         }
-        match sim.nav.remaining(here) {
-            Some(left) if left < self.progress.0 => self.progress = (left, tick),
-            _ if self.look.is_some() => self.progress.1 = tick,
-            _ => {}
+        if self.clock.progress.is_some() {
+            match sim.nav.remaining(here) {
+                Some(left) if left < self.progress.0 => self.progress = (left, tick),
+                _ if self.look.is_some() => self.progress.1 = tick,
+                _ => {}
+            }
         }
         let version = sim.map_version();
         let looked = self
@@ -368,7 +370,11 @@ impl Explorer {
             Some(GoalEnd::GaveUp)
         } else if tick - self.anchor.1 >= self.clock.stuck {
             Some(GoalEnd::Stuck)
-        } else if tick - self.progress.1 >= self.clock.progress {
+        } else if self
+            .clock
+            .progress
+            .is_some_and(|p| tick - self.progress.1 >= p)
+        {
             Some(GoalEnd::NoProgress)
         } else if self.recovering {
             (state == NavState::Reached).then_some(GoalEnd::Reached)
