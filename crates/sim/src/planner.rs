@@ -75,12 +75,7 @@ impl GlobalPlanner {
         for (level, blocked) in [Zone::Risk, Zone::Forbidden].into_iter().enumerate() {
             m.blocked_from = blocked;
             let found = match self {
-                Self::Dijkstra => {
-                    // The goal may move within the tolerance on the last level only, so
-                    // a goal in the inflation band is still reached through the band.
-                    let tolerance = if level == 1 { tolerance } else { 0.0 };
-                    dijkstra(&mut scratch.levels[level], &m, start, goal, tolerance)
-                }
+                Self::Dijkstra => dijkstra(&mut scratch.levels[level], &m, start, goal),
                 Self::Other(p) => other(p.as_ref(), &m, start, goal, tolerance, rng),
             };
             if let Some(path) = found {
@@ -121,15 +116,14 @@ struct Prepared {
     zones: Vec<Zone>,
     /// The last query on these zones and its answer: a robot held where it stands (a
     /// path blocked at once, a retry after a failure) asks the same again, and a plan is
-    /// a function of the zones, the start cell, the goal and its tolerance.
+    /// a function of the zones, the start cell and the goal.
     last: Option<Answer>,
 }
 
-/// A plan's query (the goal and its tolerance) and its shortened path from the start
-/// cell's centre (`None`: no path).
+/// A plan's query and its shortened path from the start cell's centre (`None`: no path).
 struct Answer {
     start: (usize, usize),
-    goal: [u64; 3],
+    goal: [u64; 2],
     path: Option<Vec<Point2>>,
 }
 
@@ -189,42 +183,23 @@ fn nearest_passable(map: &GridMap, cell: (usize, usize)) -> Option<(usize, usize
     envmap::nearest_passable(size, cell, rings, |i, j| map.cell_free(i, j))
 }
 
-/// The cell a plan to `goal` ends in: the goal's own when passable, else the passable
-/// cell nearest it (by rings, as [`envmap::nearest_passable`]) whose centre is within
-/// `tolerance` of it, and that centre as the path's end.
-///
-/// This is NavFn's tolerance (`default_tolerance`; Nav2's `NavfnPlanner` sets 0.5 m):
-/// a goal inside the inflation (a frontier point next to a wall) is reached at the
-/// nearest point the robot fits, which is within the navigator's goal tolerance, and so
-/// counts as the goal reached.
-fn goal_cell(map: &GridMap, goal: Point2, tolerance: f64) -> Option<((usize, usize), Point2)> {
-    let g = map.world_to_cell(goal)?;
-    if map.cell_free(g.0, g.1) {
-        return Some((g, goal));
-    }
-    let rings = (tolerance.max(0.0) / map.resolution()).floor() as usize;
-    let near = |i: usize, j: usize| {
-        map.cell_free(i, j) && (map.cell_center(i, j) - goal).norm() <= tolerance
-    };
-    let cell = envmap::nearest_passable((map.width(), map.height()), g, rings, near)?;
-    Some((cell, map.cell_center(cell.0, cell.1)))
-}
-
 fn dijkstra(
     slot: &mut Option<Prepared>,
     map: &GridMap,
     start: Point2,
     goal: Point2,
-    tolerance: f64,
 ) -> Option<Vec<Point2>> {
     let s = nearest_passable(map, map.world_to_cell(start)?)?;
-    let (g, end) = goal_cell(map, goal, tolerance)?;
+    let g = map.world_to_cell(goal)?;
+    if !map.cell_free(g.0, g.1) {
+        return None;
+    }
     let prepared = prepared(slot, map)?;
-    let goal_bits = [goal.x.to_bits(), goal.y.to_bits(), tolerance.to_bits()];
+    let goal_bits = [goal.x.to_bits(), goal.y.to_bits()];
     let pruned = match &prepared.last {
         Some(a) if a.start == s && a.goal == goal_bits => a.path.clone(),
         _ => {
-            let path = shortest(&mut prepared.search, map, s, g, end);
+            let path = shortest(&mut prepared.search, map, s, g, goal);
             prepared.last = Some(Answer {
                 start: s,
                 goal: goal_bits,
@@ -239,7 +214,7 @@ fn dijkstra(
     Some(path)
 }
 
-/// Algorithm 3's path from cell `s` to cell `g` (ending at `goal`, a point of that cell),
+/// Algorithm 3's path from cell `s` to cell `g` (ending at `goal`, in that cell),
 /// shortened.
 fn shortest(
     search: &mut GridSearch,

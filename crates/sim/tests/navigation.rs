@@ -282,40 +282,6 @@ fn narrowest_door_passed() {
     assert_eq!(through(0.50), (false, 0));
 }
 
-/// NavFn's tolerance: a goal inside the inflation (a forbidden cell) is planned to the
-/// nearest passable cell whose centre is within the tolerance, and that centre ends the
-/// path; with no such cell there is no plan. A goal in the inflation band (a risk cell)
-/// is still reached itself, through the band.
-#[test]
-fn a_goal_inside_the_inflation_is_planned_to_within_the_tolerance() {
-    use rand::SeedableRng;
-    // Cells of 1 m, top row first: the goal cells are in the bottom row.
-    let map = envmap::GridMap::from_ascii("......\n......\n...~.#").unwrap();
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
-    let start = Point2::new(0.5, 2.5);
-    let plan = |goal: Point2, tolerance: f64, rng: &mut rand_chacha::ChaCha8Rng| {
-        GlobalPlanner::Dijkstra.plan(&map, start, goal, tolerance, rng)
-    };
-    let walled = Point2::new(5.5, 0.5);
-    let path = plan(walled, 1.0, &mut rng).expect("a free cell 1 m from the goal");
-    assert_eq!(path.first(), Some(&start));
-    // Two free cells 1 m away: the first in the bottom row wins the tie.
-    assert_eq!(path.last(), Some(&Point2::new(4.5, 0.5)));
-    assert!(
-        path.windows(2)
-            .all(|w| hyplan_core::Workspace::segment_free(&map, w[0], w[1]))
-    );
-    assert_eq!(
-        plan(walled, 0.9, &mut rng),
-        None,
-        "no free centre within 0.9 m"
-    );
-    assert_eq!(plan(walled, 0.0, &mut rng), None);
-    let banded = Point2::new(3.5, 0.5);
-    let path = plan(banded, 1.0, &mut rng).expect("through the band");
-    assert_eq!(path.last(), Some(&banded));
-}
-
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
 
