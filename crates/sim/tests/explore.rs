@@ -790,6 +790,70 @@ mod properties {
     }
 }
 
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+
+    /// The baseline's goal from a flood grown only as far as the nearest frontier is the
+    /// goal of the whole flood (the least steps, the first cell of the first cluster on
+    /// ties), on random rooms of walls and unknown cells, with some cells skipped.
+    #[test]
+    fn the_nearest_frontier_of_a_lazy_flood_is_the_whole_floods(
+        walls in proptest::collection::vec((0usize..80, 0usize..80, 1usize..30, proptest::prelude::any::<bool>()), 0..8),
+        unknown in proptest::collection::vec((0usize..80, 0usize..80, 1usize..20), 1..5),
+        robot in (0.2..3.8f64, 0.2..3.8f64),
+        min_cells in 1usize..8,
+        skip_every in 2usize..9,
+    ) {
+        let bounds = Bounds::new(p(0.0, 0.0), p(4.0, 4.0));
+        let mut map = OccupancyGrid::new(bounds, Mapping::default());
+        for j in 0..map.height() {
+            for i in 0..map.width() {
+                map.set_value(i, j, FREE);
+            }
+        }
+        for (i, j, len, across) in walls {
+            for k in 0..len {
+                let (a, b) = if across { (i + k, j) } else { (i, j + k) };
+                if a < map.width() && b < map.height() {
+                    map.set_value(a, b, OCCUPIED);
+                }
+            }
+        }
+        for (i, j, side) in unknown {
+            for b in j..(j + side).min(map.height()) {
+                for a in i..(i + side).min(map.width()) {
+                    map.set_value(a, b, UNKNOWN);
+                }
+            }
+        }
+        let costmap = sim::CostmapBuilder::new(
+            bounds,
+            &sim::StaticWorld::default(),
+            sim::CostmapParams::default(),
+            0.18,
+        )
+        .build(Some(&map), &[]);
+        let robot = p(robot.0, robot.1);
+        // Skips every `skip_every`-th cell column, as a blacklist would some frontiers.
+        let skip = |q: Point2| ((q.x / 0.05) as usize).is_multiple_of(skip_every);
+        // The whole flood, scanned in the clusters' order.
+        let steps = sim::costmap_steps(&costmap, robot);
+        let frame = costmap.map.frame();
+        let mut whole: Option<(u32, Point2)> = None;
+        for cluster in frontier_clusters(&map).into_iter().filter(|c| c.len() >= min_cells) {
+            for (i, j) in cluster {
+                let q = map.cell_center(i, j);
+                let Some(k) = frame.index_of(q) else { continue };
+                if steps[k] != u32::MAX && whole.is_none_or(|(b, _)| steps[k] < b) && !skip(q) {
+                    whole = Some((steps[k], q));
+                }
+            }
+        }
+        let lazy = sim::nearest_frontier(&map, &costmap, robot, min_cells, skip);
+        proptest::prop_assert_eq!(lazy, whole.map(|(_, q)| q));
+    }
+}
+
 /// Reads whole scans, as a ROS bag writer does, and counts the beams that read farther
 /// than the run itself reads (its map update, costmap and tracker stop at about 4 m).
 #[derive(Default)]

@@ -219,6 +219,29 @@ pub fn travel(costmap: &Costmap, steps: &[u32], target: Point2, radius: f64) -> 
 /// The goal of nearest-frontier exploration: the centre of the reachable frontier cell
 /// closest to `robot` (in costmap steps) among clusters of at least `min_cells` cells,
 /// skipping cells for which `skip` holds (blacklisted goals); `None` when there is none.
+/// On equal steps, the first cell of the first cluster ([`frontier_clusters`]' order).
+///
+/// The costmap is flooded from the robot only as far as the nearest frontier: the
+/// answer of [`costmap_steps`] over the whole costmap, at the cost of the rooms between.
+///
+/// ```
+/// use hyplan_core::{Bounds, Point2};
+/// use sim::{CostmapBuilder, CostmapParams, FREE, Mapping, OccupancyGrid, StaticWorld};
+/// let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(4.0, 4.0));
+/// // Known free below y = 3 m, unknown above: the frontier is the row under y = 3 m.
+/// let mut map = OccupancyGrid::new(bounds, Mapping::default());
+/// for j in 0..map.height() {
+///     for i in 0..map.width() {
+///         if map.cell_center(i, j).y < 3.0 {
+///             map.set_value(i, j, FREE);
+///         }
+///     }
+/// }
+/// let builder = CostmapBuilder::new(bounds, &StaticWorld::default(), CostmapParams::default(), 0.18);
+/// let costmap = builder.build(None, &[]);
+/// let goal = sim::nearest_frontier(&map, &costmap, Point2::new(1.0, 1.0), 5, |_| false).unwrap();
+/// assert!((goal.y - 2.975).abs() < 1e-9 && goal.x < 3.0);
+/// ```
 #[must_use]
 pub fn nearest_frontier(
     map: &OccupancyGrid,
@@ -227,22 +250,38 @@ pub fn nearest_frontier(
     min_cells: usize,
     skip: impl Fn(Point2) -> bool,
 ) -> Option<Point2> {
-    let steps = costmap_steps(costmap, robot);
     let frame = costmap.map.frame();
-    let mut best: Option<(u32, Point2)> = None;
-    for cluster in frontier_clusters(map) {
-        if cluster.len() < min_cells {
-            continue;
-        }
-        for (i, j) in cluster {
+    // The candidates in the order of the clusters and of their cells: ties go to the first.
+    let candidates: Vec<(usize, Point2)> = frontier_clusters(map)
+        .into_iter()
+        .filter(|cluster| cluster.len() >= min_cells)
+        .flatten()
+        .filter_map(|(i, j)| {
             let p = map.cell_center(i, j);
-            let Some(d) = frame.index_of(p).map(|k| steps[k]) else {
-                continue;
-            };
-            if d != u32::MAX && best.is_none_or(|(bd, _)| d < bd) && !skip(p) {
-                best = Some((d, p));
+            frame.index_of(p).filter(|_| !skip(p)).map(|k| (k, p))
+        })
+        .collect();
+    if candidates.is_empty() {
+        return None;
+    }
+    // A breadth-first flood gives a cell its final steps when it reaches it, and every
+    // cell not yet reached is at least `unreached_from` steps away: a nearest candidate
+    // below that is the nearest of all, ties included.
+    let mut flood = TravelFlood::new(costmap, robot, 0.0, None);
+    loop {
+        let steps = flood.flood.steps();
+        let mut best: Option<(u32, Point2)> = None;
+        for &(k, p) in &candidates {
+            if steps[k] != u32::MAX && best.is_none_or(|(b, _)| steps[k] < b) {
+                best = Some((steps[k], p));
             }
         }
+        match best {
+            Some((s, p)) if flood.finished() || s < flood.flood.unreached_from() => {
+                return Some(p);
+            }
+            None if flood.finished() => return None,
+            _ => flood.grow(),
+        }
     }
-    best.map(|(_, p)| p)
 }
