@@ -252,13 +252,14 @@ pub fn nearest_frontier(
 ) -> Option<Point2> {
     let frame = costmap.map.frame();
     // The candidates in the order of the clusters and of their cells: ties go to the first.
+    // `skip` (a blacklist's scan) is asked only of a cell that would be the best so far.
     let candidates: Vec<(usize, Point2)> = frontier_clusters(map)
         .into_iter()
         .filter(|cluster| cluster.len() >= min_cells)
         .flatten()
         .filter_map(|(i, j)| {
             let p = map.cell_center(i, j);
-            frame.index_of(p).filter(|_| !skip(p)).map(|k| (k, p))
+            frame.index_of(p).map(|k| (k, p))
         })
         .collect();
     if candidates.is_empty() {
@@ -272,7 +273,7 @@ pub fn nearest_frontier(
         let steps = flood.flood.steps();
         let mut best: Option<(u32, Point2)> = None;
         for &(k, p) in &candidates {
-            if steps[k] != u32::MAX && best.is_none_or(|(b, _)| steps[k] < b) {
+            if steps[k] != u32::MAX && best.is_none_or(|(b, _)| steps[k] < b) && !skip(p) {
                 best = Some((steps[k], p));
             }
         }
