@@ -219,6 +219,45 @@ fn baseline_clusters_frontier_cells() {
     assert_eq!(c[1], vec![(35, 10)]);
 }
 
+/// A 4 m square at 5 cm cells, known free but for walls (`(i, j, length, across)`: runs
+/// of occupied cells) and unknown squares (`(i, j, side)`), and its costmap (a 0.18 m
+/// robot): the random rooms of the property tests.
+fn rooms(
+    walls: &[(usize, usize, usize, bool)],
+    unknown: &[(usize, usize, usize)],
+) -> (OccupancyGrid, sim::Costmap) {
+    let bounds = Bounds::new(p(0.0, 0.0), p(4.0, 4.0));
+    let mut map = OccupancyGrid::new(bounds, Mapping::default());
+    for j in 0..map.height() {
+        for i in 0..map.width() {
+            map.set_value(i, j, FREE);
+        }
+    }
+    for &(i, j, len, across) in walls {
+        for k in 0..len {
+            let (a, b) = if across { (i + k, j) } else { (i, j + k) };
+            if a < map.width() && b < map.height() {
+                map.set_value(a, b, OCCUPIED);
+            }
+        }
+    }
+    for &(i, j, side) in unknown {
+        for b in j..(j + side).min(map.height()) {
+            for a in i..(i + side).min(map.width()) {
+                map.set_value(a, b, UNKNOWN);
+            }
+        }
+    }
+    let costmap = sim::CostmapBuilder::new(
+        bounds,
+        &sim::StaticWorld::default(),
+        sim::CostmapParams::default(),
+        0.18,
+    )
+    .build(Some(&map), &[]);
+    (map, costmap)
+}
+
 fn scenario_path() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/explore-22m.ron")
 }
@@ -737,35 +776,7 @@ mod properties {
             hysteresis in (0.0..4.0f64, 0.2..3.0f64),
             blacklist in proptest::collection::vec((0.0..4.0f64, 0.0..4.0f64), 0..2),
         ) {
-            let bounds = Bounds::new(p(0.0, 0.0), p(4.0, 4.0));
-            let mut map = OccupancyGrid::new(bounds, Mapping::default());
-            for j in 0..map.height() {
-                for i in 0..map.width() {
-                    map.set_value(i, j, FREE);
-                }
-            }
-            for (i, j, len, across) in walls {
-                for k in 0..len {
-                    let (a, b) = if across { (i + k, j) } else { (i, j + k) };
-                    if a < map.width() && b < map.height() {
-                        map.set_value(a, b, OCCUPIED);
-                    }
-                }
-            }
-            for (i, j, side) in unknown {
-                for b in j..(j + side).min(map.height()) {
-                    for a in i..(i + side).min(map.width()) {
-                        map.set_value(a, b, UNKNOWN);
-                    }
-                }
-            }
-            let costmap = sim::CostmapBuilder::new(
-                bounds,
-                &sim::StaticWorld::default(),
-                sim::CostmapParams::default(),
-                0.18,
-            )
-            .build(Some(&map), &[]);
+            let (map, costmap) = rooms(&walls, &unknown);
             let assigner = sim::Assigner {
                 info_radius,
                 info_multiplier,
@@ -804,35 +815,7 @@ proptest::proptest! {
         min_cells in 1usize..8,
         skip_every in 2usize..9,
     ) {
-        let bounds = Bounds::new(p(0.0, 0.0), p(4.0, 4.0));
-        let mut map = OccupancyGrid::new(bounds, Mapping::default());
-        for j in 0..map.height() {
-            for i in 0..map.width() {
-                map.set_value(i, j, FREE);
-            }
-        }
-        for (i, j, len, across) in walls {
-            for k in 0..len {
-                let (a, b) = if across { (i + k, j) } else { (i, j + k) };
-                if a < map.width() && b < map.height() {
-                    map.set_value(a, b, OCCUPIED);
-                }
-            }
-        }
-        for (i, j, side) in unknown {
-            for b in j..(j + side).min(map.height()) {
-                for a in i..(i + side).min(map.width()) {
-                    map.set_value(a, b, UNKNOWN);
-                }
-            }
-        }
-        let costmap = sim::CostmapBuilder::new(
-            bounds,
-            &sim::StaticWorld::default(),
-            sim::CostmapParams::default(),
-            0.18,
-        )
-        .build(Some(&map), &[]);
+        let (map, costmap) = rooms(&walls, &unknown);
         let robot = p(robot.0, robot.1);
         // Skips every `skip_every`-th cell column, as a blacklist would some frontiers.
         let skip = |q: Point2| ((q.x / 0.05) as usize).is_multiple_of(skip_every);
