@@ -242,8 +242,31 @@ fn shortest(
     if let Some(last) = cells.last_mut() {
         *last = goal;
     }
-    Some(postproc::shortcut_greedy(&cells, |a, b| {
-        map.segment_free(a, b)
+    // On a straight run of the grid path away from the anchor, the segment to the next
+    // cell is the one just found free and one move of the path (free: no move cuts a
+    // corner), so it is free without a sweep. A corridor costs a sweep per anchor, not
+    // one per cell it runs along.
+    let centre_cell = |p: Point2| {
+        map.world_to_cell(p)
+            .filter(|&(i, j)| map.cell_center(i, j) == p)
+            .map(|(i, j)| (i as i64, j as i64))
+    };
+    let mut last_free: Option<(Point2, Point2)> = None;
+    Some(postproc::shortcut_greedy(&cells, |a, c| {
+        let straight_on = last_free
+            .filter(|&(from, _)| from == a)
+            .and_then(|(_, b)| {
+                let (a, b, c) = (centre_cell(a)?, centre_cell(b)?, centre_cell(c)?);
+                let (run, step) = ((b.0 - a.0, b.1 - a.1), (c.0 - b.0, c.1 - b.1));
+                let one_move = step != (0, 0) && step.0.abs() <= 1 && step.1.abs() <= 1;
+                let onward =
+                    run.0 * step.1 == run.1 * step.0 && run.0 * step.0 + run.1 * step.1 > 0;
+                Some(one_move && onward)
+            })
+            .unwrap_or(false);
+        let free = straight_on || map.segment_free(a, c);
+        last_free = free.then_some((a, c));
+        free
     }))
 }
 

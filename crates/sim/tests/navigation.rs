@@ -285,6 +285,46 @@ fn narrowest_door_passed() {
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
 
+    /// The navigator's Dijkstra plan is Algorithm 3's grid path shortened by the greedy
+    /// shortcut under the map's exact `segment_free`, test for test: the tests it skips
+    /// along straight runs of the path would all have passed. On random maps of free and
+    /// blocked cells, between free cells.
+    #[test]
+    fn a_plan_is_the_grid_path_shortened_as_by_every_test(
+        blocked in proptest::collection::vec(proptest::bool::weighted(0.25), 24 * 16),
+        ends in (0usize..24, 0usize..16, 0usize..24, 0usize..16),
+        walls in proptest::collection::vec((0usize..24, 0usize..16, 1usize..12, proptest::bool::ANY), 0..4),
+    ) {
+        use rand::SeedableRng;
+        let (w, h) = (24, 16);
+        let mut zones: Vec<hyplan_core::Zone> = blocked
+            .iter()
+            .map(|&b| if b { hyplan_core::Zone::Forbidden } else { hyplan_core::Zone::Free })
+            .collect();
+        // Long walls make long straight runs along them.
+        for (i, j, len, across) in walls {
+            for k in 0..len {
+                let (a, b) = if across { (i + k, j) } else { (i, j + k) };
+                if a < w && b < h {
+                    zones[b * w + a] = hyplan_core::Zone::Forbidden;
+                }
+            }
+        }
+        let (si, sj, gi, gj) = ends;
+        zones[sj * w + si] = hyplan_core::Zone::Free;
+        zones[gj * w + gi] = hyplan_core::Zone::Free;
+        let map = envmap::GridMap::from_zones(w, h, 0.05, Point2::new(0.0, 0.0), zones).unwrap();
+        let (start, goal) = (map.cell_center(si, sj), map.cell_center(gi, gj));
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0);
+        let plan = GlobalPlanner::Dijkstra.plan(&map, start, goal, 0.0, &mut rng);
+        let mut search = search::GridSearch::new(&map, search::GridOptions::default()).unwrap();
+        let whole = search.dijkstra((si, sj), (gi, gj)).ok().map(|found| {
+            let cells: Vec<Point2> = found.cells.iter().map(|&(i, j)| map.cell_center(i, j)).collect();
+            postproc::shortcut_greedy(&cells, |a, b| hyplan_core::Workspace::segment_free(&map, a, b))
+        });
+        proptest::prop_assert_eq!(plan, whole);
+    }
+
     /// A costmap kept and inflated again only where its lethal cells changed is the
     /// costmap built afresh (the usual one and the tight one), build after build (hits
     /// appearing and going, walls known beforehand, cells near the edges).
