@@ -179,6 +179,51 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// On maps wider than a word of the connectivity flood's bit rows (runs crossing
+    /// words, from sparse to dense obstacles), `connected` says whether Dijkstra finds a
+    /// path, before and after a change brought in by `update_window`.
+    #[test]
+    fn connected_agrees_with_dijkstra_on_wide_maps(
+        (w, h, density) in (60usize..200, 2usize..14, 0.02f64..0.5),
+        seed in any::<u64>(),
+        (si, sj, gi, gj) in (0usize..200, 0usize..14, 0usize..200, 0usize..14),
+        flips in proptest::collection::vec((0usize..200, 0usize..14), 1..40),
+    ) {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let zones = (0..w * h)
+            .map(|_| if rng.random_bool(density) { Zone::Forbidden } else { Zone::Free })
+            .collect();
+        let mut map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+        let (s, g) = ((si % w, sj % h), (gi % w, gj % h));
+        map.set_cell_zone(s.0, s.1, Zone::Free);
+        map.set_cell_zone(g.0, g.1, Zone::Free);
+        let mut kept = GridSearch::new(&map, GridOptions::default()).unwrap();
+        prop_assert_eq!(kept.connected(s, g).unwrap(), kept.dijkstra(s, g).is_ok());
+        prop_assert_eq!(kept.connected(g, s).unwrap(), kept.dijkstra(s, g).is_ok());
+        let mut changed = map.clone();
+        let (mut lo, mut hi) = ((w, h), (0, 0));
+        for (i, j) in flips {
+            let (i, j) = (i % w, j % h);
+            if (i, j) == s || (i, j) == g {
+                continue;
+            }
+            let z = if changed.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
+            changed.set_cell_zone(i, j, z);
+            lo = (lo.0.min(i), lo.1.min(j));
+            hi = (hi.0.max(i + 1), hi.1.max(j + 1));
+        }
+        if lo.0 < hi.0 {
+            kept.update_window(&changed, lo.0..hi.0, lo.1..hi.1).unwrap();
+        }
+        let mut fresh = GridSearch::new(&changed, GridOptions::default()).unwrap();
+        prop_assert_eq!(kept.connected(s, g).unwrap(), fresh.dijkstra(s, g).is_ok());
+    }
+}
+
 /// One random query on `w x h`: (start, goal) cells from `k`.
 fn cell_query(map: &GridMap, (a, b, c, d): (usize, usize, usize, usize)) -> Query {
     let (w, h) = (map.width(), map.height());

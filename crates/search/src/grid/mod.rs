@@ -496,6 +496,12 @@ impl GridSearch {
             for (cell, &zone) in self.passable[base..base + row.len()].iter_mut().zip(row) {
                 *cell = zone < blocked;
             }
+            self.reach.refresh(
+                &self.passable,
+                self.pw,
+                columns.start + 1..columns.end + 1,
+                j + 1..j + 2,
+            );
         }
         let (pw, pass) = (self.pw, &self.passable);
         let eight = self.options.connectivity == Connectivity::Eight;
