@@ -516,21 +516,36 @@ impl CostmapBuilder {
         hits: &[Point2],
         inflation: &Inflation,
     ) -> &'c Costmap {
-        let lethal = self.lethal(built, hits);
         let f = self.frame;
-        let window = match (&cache.costmap, &cache.lethal) {
-            (Some(c), Some(last))
-                if c.costs.len() == f.cells() && last.cells().len() == f.cells() =>
-            {
-                changed_window(last.cells(), lethal.cells(), f.width)
-            }
-            _ => {
-                cache.costmap = Some(self.costmap_with(&lethal, inflation));
+        let kept = cache
+            .costmap
+            .as_ref()
+            .is_some_and(|c| c.costs.len() == f.cells())
+            && cache
+                .lethal
+                .as_ref()
+                .is_some_and(|l| l.cells().len() == f.cells());
+        let window = match self.update_lethal(cache, built, hits).filter(|_| kept) {
+            Some(window) => window,
+            None => {
+                let (lethal, parts) = self.lethal_parts(built, hits);
+                let window = match &cache.lethal {
+                    Some(last) if kept => changed_window(last.cells(), lethal.cells(), f.width),
+                    _ => {
+                        cache.costmap = Some(self.costmap_with(&lethal, inflation));
+                        cache.lethal = Some(lethal);
+                        cache.parts = parts;
+                        return cache.costmap.as_ref().expect("just built");
+                    }
+                };
                 cache.lethal = Some(lethal);
-                return cache.costmap.as_ref().expect("just built");
+                cache.parts = parts;
+                window
             }
         };
-        let costmap = cache.costmap.as_mut().expect("matched above");
+        let (Some(costmap), Some(lethal)) = (cache.costmap.as_mut(), cache.lethal.as_ref()) else {
+            unreachable!("kept above");
+        };
         let Some((columns, rows)) = window else {
             return costmap;
         };
@@ -568,8 +583,99 @@ impl CostmapBuilder {
                 *z = zone_of(c, risk_from);
             }
         }
-        cache.lethal = Some(lethal);
         costmap
+    }
+
+    /// Brings the cache's lethal cells up to date in place when they came from the same
+    /// built map (`built`, on the costmap's own cells): only the blocks the map changed in
+    /// since, and the cells of the last hits and of `hits`, are read. Returns the window
+    /// of the cells that changed (`None` inside: none did), or `None` when the cache
+    /// cannot be brought up to date so (the caller builds the lethal cells afresh).
+    fn update_lethal(
+        &self,
+        cache: &mut CostmapCache,
+        built: Option<&OccupancyGrid>,
+        hits: &[Point2],
+    ) -> Option<Option<(std::ops::Range<usize>, std::ops::Range<usize>)>> {
+        let g = built?;
+        let parts = cache.parts.as_mut()?;
+        let lethal = cache.lethal.as_mut()?;
+        let f = self.frame;
+        if parts.grid != g.id() || parts.version > g.version() || lethal.cells().len() != f.cells()
+        {
+            return None;
+        }
+        // Each cell whose value this build may change, with its value before (a cell
+        // written twice is listed twice; its first entry holds the value before).
+        let mut touched: Vec<(usize, bool)> = Vec::new();
+        let w = f.width;
+        let (maps, cells) = (parts.maps.cells_mut(), lethal.cells_mut());
+        for (columns, rows) in g.changed_blocks(parts.version) {
+            for j in rows {
+                for i in columns.clone() {
+                    let k = j * w + i;
+                    let now = self.prior[k] || g.is_occupied(i, j);
+                    maps[k] = now;
+                    if cells[k] != now {
+                        touched.push((k, cells[k]));
+                        cells[k] = now;
+                    }
+                }
+            }
+        }
+        parts.version = g.version();
+        for &k in &parts.hits {
+            touched.push((k, cells[k]));
+            cells[k] = maps[k];
+        }
+        parts.hits.clear();
+        for &p in hits {
+            if let Some((i, j)) = f.cell_of(p) {
+                let k = j * w + i;
+                touched.push((k, cells[k]));
+                cells[k] = true;
+                parts.hits.push(k);
+            }
+        }
+        let mut window: Option<(usize, usize, usize, usize)> = None;
+        for &(k, before) in &touched {
+            if cells[k] != before {
+                let (i, j) = (k % w, k / w);
+                window = Some(window.map_or((i, i, j, j), |(i0, i1, j0, j1)| {
+                    (i0.min(i), i1.max(i), j0.min(j), j1.max(j))
+                }));
+            }
+        }
+        Some(window.map(|(i0, i1, j0, j1)| (i0..i1 + 1, j0..j1 + 1)))
+    }
+
+    /// [`lethal`](Self::lethal), and what it was made of when the built map lies on the
+    /// costmap's own cells (see [`LethalParts`]).
+    fn lethal_parts(
+        &self,
+        built: Option<&OccupancyGrid>,
+        hits: &[Point2],
+    ) -> (Mask, Option<LethalParts>) {
+        let f = self.frame;
+        let Some(g) = built.filter(|g| g.frame() == f) else {
+            return (self.lethal(built, hits), None);
+        };
+        let maps = self.lethal(Some(g), &[]);
+        let mut lethal = maps.clone();
+        let mut marked = Vec::with_capacity(hits.len());
+        for &p in hits {
+            if let Some((i, j)) = f.cell_of(p) {
+                lethal.set(i, j, true);
+                marked.push(j * f.width + i);
+            }
+        }
+        let parts = LethalParts {
+            maps,
+            grid: g.id(),
+            version: g.version(),
+            hits: marked,
+        };
+        (lethal, Some(parts))
     }
 
     /// The lethal cells: the prior map's, the built map's occupied ones and the hits'.
@@ -623,6 +729,23 @@ pub struct CostmapCache {
     /// The lethal cells the costmap was built from.
     lethal: Option<Mask>,
     costmap: Option<Costmap>,
+    /// What the lethal cells were made of, when they came from a built map on the
+    /// costmap's own cells.
+    parts: Option<LethalParts>,
+}
+
+/// The lethal cells of the prior map and of a built map's occupied cells, at one of the
+/// built map's versions, and the cells the hits then added: what the next build needs to
+/// read again only where the built map changed since and where the hits were.
+#[derive(Debug, Clone)]
+struct LethalParts {
+    /// Prior and built map, without the hits.
+    maps: Mask,
+    /// The built map's identity and version (`OccupancyGrid::id`, `version`).
+    grid: u64,
+    version: u64,
+    /// The cells the hits marked.
+    hits: Vec<usize>,
 }
 
 impl CostmapCache {

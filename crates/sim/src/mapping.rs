@@ -78,6 +78,26 @@ pub struct OccupancyGrid {
     /// changed one of its cells: lets callers keep what they computed from a part of the
     /// map the robot has not seen again ([`OccupancyGrid::unchanged_near`]).
     touched: Vec<u64>,
+    /// Which grid this is, for callers that keep what they computed from a version of it.
+    id: GridId,
+}
+
+/// An [`OccupancyGrid`]'s identity: drawn anew for every grid, a clone included (a clone
+/// may then be updated apart from the original, so its versions say nothing of it).
+#[derive(Debug, PartialEq, Eq)]
+struct GridId(u64);
+
+impl GridId {
+    fn new() -> Self {
+        static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+        Self(NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+    }
+}
+
+impl Clone for GridId {
+    fn clone(&self) -> Self {
+        Self::new()
+    }
 }
 
 /// Side of a change-tracking block, cells.
@@ -99,7 +119,23 @@ impl OccupancyGrid {
             logodds: vec![-0.0; width * height],
             version: 0,
             touched: vec![0; width.div_ceil(BLOCK) * height.div_ceil(BLOCK)],
+            id: GridId::new(),
         }
+    }
+
+    /// This grid's identity, unique among the grids of the process (a clone has its
+    /// own): with [`version`](Self::version), what a caller's copy of the grid's content
+    /// was taken from.
+    ///
+    /// ```
+    /// use hyplan_core::{Bounds, Point2};
+    /// use sim::{Mapping, OccupancyGrid};
+    /// let map = OccupancyGrid::new(Bounds::new(Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)), Mapping::default());
+    /// assert_ne!(map.id(), map.clone().id());
+    /// ```
+    #[must_use]
+    pub fn id(&self) -> u64 {
+        self.id.0
     }
 
     /// How many updates the grid has had ([`integrate`](Self::integrate),
@@ -214,13 +250,10 @@ impl OccupancyGrid {
             *values = self.ros_values();
             return true;
         }
-        let (w, h) = (self.width, self.height);
-        let bw = w.div_ceil(BLOCK);
+        let w = self.width;
         let mut changed = false;
-        for (b, _) in self.touched.iter().enumerate().filter(|(_, v)| **v > since) {
-            let (i0, j0) = ((b % bw) * BLOCK, (b / bw) * BLOCK);
-            let cols = i0..(i0 + BLOCK).min(w);
-            for j in j0..(j0 + BLOCK).min(h) {
+        for (cols, rows) in self.changed_blocks(since) {
+            for j in rows {
                 let row = j * w + cols.start..j * w + cols.end;
                 // Branch-free per cell: the compiler vectorises it.
                 for (v, &l) in values[row.clone()].iter_mut().zip(&self.logodds[row]) {
@@ -231,6 +264,31 @@ impl OccupancyGrid {
             }
         }
         changed
+    }
+
+    /// The cells (columns, rows) of each block of 16 x 16 that an update after version
+    /// `since` may have changed: every cell that changed lies in one of them.
+    pub(crate) fn changed_blocks(
+        &self,
+        since: u64,
+    ) -> impl Iterator<Item = (std::ops::Range<usize>, std::ops::Range<usize>)> + '_ {
+        let (w, h) = (self.width, self.height);
+        let bw = w.div_ceil(BLOCK);
+        self.touched
+            .iter()
+            .enumerate()
+            .filter(move |(_, v)| **v > since)
+            .map(move |(b, _)| {
+                let (i0, j0) = ((b % bw) * BLOCK, (b / bw) * BLOCK);
+                (i0..(i0 + BLOCK).min(w), j0..(j0 + BLOCK).min(h))
+            })
+    }
+
+    /// Whether cell `(i, j)` is occupied: its [`value`](Self::value) is [`OCCUPIED`], as
+    /// [`occupied_cells`](Self::occupied_cells) lists them.
+    #[must_use]
+    pub fn is_occupied(&self, i: usize, j: usize) -> bool {
+        self.logodds[j * self.width + i] > 0.0
     }
 
     /// Where the cells lie in the world.

@@ -354,6 +354,48 @@ proptest::proptest! {
     }
 }
 
+proptest::proptest! {
+    /// The same with a map being built: a costmap kept between builds and brought up to
+    /// date where the built map changed (its blocks) and where the hits were, then
+    /// inflated again there, is the costmap built afresh, build after build. A clone of
+    /// the map now and then (a grid the cache has not seen) is built afresh.
+    #[test]
+    fn rebuilt_costmaps_on_a_built_map_equal_fresh_ones(
+        rounds in proptest::collection::vec(
+            (
+                proptest::collection::vec((0usize..120, 0usize..80, 0u8..3), 0..12),
+                proptest::collection::vec((0.0f64..6.0, 0.0f64..4.0), 0..6),
+                proptest::bool::weighted(0.15),
+            ),
+            1..8,
+        ),
+    ) {
+        let mut world = sim::StaticWorld::default();
+        world.add_shape(&envmap::Shape::Rect { x: 2.0, y: 1.0, w: 0.2, h: 2.0 });
+        let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(6.0, 4.0));
+        let builder = sim::CostmapBuilder::new(bounds, &world, sim::CostmapParams::default(), 0.178);
+        let mut map = sim::OccupancyGrid::new(bounds, sim::Mapping::default());
+        let (mut cache, mut tight_cache) = (sim::CostmapCache::default(), sim::CostmapCache::default());
+        for (cells, hits, clone) in rounds {
+            for (i, j, v) in cells {
+                map.set_value(i, j, [sim::UNKNOWN, sim::FREE, sim::OCCUPIED][usize::from(v)]);
+            }
+            if clone {
+                map = map.clone();
+            }
+            let hits: Vec<Point2> = hits.into_iter().map(|(x, y)| Point2::new(x, y)).collect();
+            let fresh = builder.build(Some(&map), &hits);
+            let kept = builder.rebuild(&mut cache, Some(&map), &hits);
+            proptest::prop_assert_eq!(&kept.costs, &fresh.costs);
+            proptest::prop_assert_eq!(kept.map.zones(), fresh.map.zones());
+            let fresh = builder.build_tight(Some(&map), &hits);
+            let kept = builder.rebuild_tight(&mut tight_cache, Some(&map), &hits);
+            proptest::prop_assert_eq!(&kept.costs, &fresh.costs);
+            proptest::prop_assert_eq!(kept.map.zones(), fresh.map.zones());
+        }
+    }
+}
+
 #[test]
 fn time_in_personal_space_counts_the_pass_by_a_person() {
     // The robot drives along y = 1.5 past a person standing at (3, 0.7): centres 0.8 m
