@@ -386,6 +386,47 @@ pub(super) struct Buckets {
     at: usize,
     /// The current bucket's number (f >> shift).
     number: u64,
+    /// The buffer the current bucket is sorted into ([`sort_bucket`]).
+    spare: Vec<u64>,
+}
+
+/// Sorts a bucket's entries in place (`spare` is the buffer of the pass): by their byte
+/// just below the bits they all share, then each run of entries with equal bytes. A
+/// bucket is a wavefront, hundreds to thousands of entries spread over its width, and
+/// 256 short sorts cost less than a long one.
+fn sort_bucket(entries: &mut Vec<u64>, spare: &mut Vec<u64>) {
+    const SHORT: usize = 256;
+    if entries.len() <= SHORT {
+        entries.sort_unstable();
+        return;
+    }
+    let (lo, hi) = entries
+        .iter()
+        .fold((u64::MAX, 0), |(lo, hi), &e| (lo.min(e), hi.max(e)));
+    // Every entry lies between `lo` and `hi`, so it has their common high bits, and the
+    // byte below those orders the entries as the entries do.
+    let bits = u64::BITS - (lo ^ hi).leading_zeros();
+    let shift = bits.saturating_sub(8);
+    let byte = |e: u64| ((e >> shift) & 0xff) as usize;
+    let mut starts = [0usize; 257];
+    for &e in entries.iter() {
+        starts[byte(e) + 1] += 1;
+    }
+    for b in 0..256 {
+        starts[b + 1] += starts[b];
+    }
+    spare.clear();
+    spare.resize(entries.len(), 0);
+    let mut at = starts;
+    for &e in entries.iter() {
+        let b = byte(e);
+        spare[at[b]] = e;
+        at[b] += 1;
+    }
+    for b in 0..256 {
+        spare[starts[b]..starts[b + 1]].sort_unstable();
+    }
+    std::mem::swap(entries, spare);
 }
 
 impl Buckets {
@@ -420,7 +461,7 @@ impl Buckets {
                 .find(|&n| !self.ring[(n & 3) as usize].is_empty())?;
             std::mem::swap(&mut self.current, &mut self.ring[(number & 3) as usize]);
             self.ring[(number & 3) as usize].clear();
-            self.current.sort_unstable();
+            sort_bucket(&mut self.current, &mut self.spare);
             self.at = 0;
             self.number = number;
         }
@@ -641,6 +682,36 @@ mod tests {
             )
                 .prop_map(move |(blocked, cells)| (test_map(w, h, blocked), cells))
         })
+    }
+
+    proptest! {
+        /// A bucket sorted byte first, then by runs, is the bucket sorted: entries with a
+        /// common prefix and spread below it (as a wavefront's are), equal ones, all
+        /// lengths about the short sort's limit.
+        #[test]
+        fn a_bucket_sorts_as_a_slice_does(
+            prefix in any::<u64>(),
+            spread in 0u32..64,
+            len in 200usize..700,
+            seed in any::<u64>(),
+            repeats in 0usize..4,
+        ) {
+            let mut x = seed | 1;
+            let mask = if spread == 0 { 0 } else { u64::MAX >> (64 - spread) };
+            let mut entries: Vec<u64> = (0..len)
+                .map(|_| {
+                    x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1442695040888963407);
+                    (prefix & !mask) | (x & mask)
+                })
+                .collect();
+            for k in 0..repeats.min(entries.len()) {
+                entries[k] = entries[entries.len() - 1 - k];
+            }
+            let mut expected = entries.clone();
+            expected.sort_unstable();
+            sort_bucket(&mut entries, &mut Vec::new());
+            prop_assert_eq!(entries, expected);
+        }
     }
 
     /// On a grid of more than 2^19 cells (`u128` keys, whose equal keys the heap takes in
