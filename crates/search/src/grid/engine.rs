@@ -73,10 +73,11 @@ impl GridSearch {
             magic: self.magic,
             fx,
             h,
+            eight: !four,
+            corner_cutting: self.options.corner_cutting,
         };
         let Self {
             words,
-            moves,
             heap,
             wide_heap,
             buckets,
@@ -94,15 +95,11 @@ impl GridSearch {
         {
             buckets.start(first, fx);
             let heap = K::heap(heap, wide_heap);
-            expand::<K, _, true>(
-                &run, words, moves, heap, buckets, stack, slot, &mut stats, *limit,
-            )
+            expand::<K, _, true>(&run, words, heap, buckets, stack, slot, &mut stats, *limit)
         } else {
             let heap = K::heap(heap, wide_heap);
             heap.push(first);
-            expand::<K, _, false>(
-                &run, words, moves, heap, buckets, stack, slot, &mut stats, *limit,
-            )
+            expand::<K, _, false>(&run, words, heap, buckets, stack, slot, &mut stats, *limit)
         };
         match ended {
             Expanded::Target(g) => {
@@ -171,6 +168,9 @@ pub(super) struct Run<H> {
     pub(super) fx: Fixed,
     /// Heuristic at padded coordinates.
     pub(super) h: H,
+    /// The move rules: diagonal moves at all, and through a corner with one side blocked.
+    eight: bool,
+    corner_cutting: bool,
 }
 
 /// How [`expand`] ended.
@@ -195,7 +195,6 @@ pub(super) enum Expanded {
 pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
     run: &Run<H>,
     words: &mut [u64],
-    moves: &[u8],
     heap: &mut MinHeap<K>,
     buckets: &mut Buckets,
     stack: &mut Vec<u32>,
@@ -212,6 +211,8 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
         magic,
         fx,
         ref h,
+        eight,
+        corner_cutting,
     } = *run;
     let (unit, diag) = (fx.unit, fx.diag);
     // Every word above this one belongs to an earlier query.
@@ -277,7 +278,6 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
         stats.expansions += 1;
         let y = ((u128::from(p) * u128::from(magic)) >> 64) as u32;
         let x = p - y * pw as u32;
-        let mask = moves[pu];
         // The 3 x 3 block around p as three rows of three words (south, middle, north),
         // so that the moves below index them with constants.
         let (below, rest) = words.split_at_mut(pu - 1);
@@ -342,16 +342,25 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
         let pw32 = pw as u32;
         // The order of `DIRS`: E, W, N, S, NE, NW, SE, SW.
         // A straight move is legal exactly when its cell is passable, which the blocked
-        // word says; a diagonal also needs the corner rule, which the mask says.
-        let illegal = |bit: u8| u64::from((mask >> bit) & 1 ^ 1).wrapping_neg();
+        // word says. A diagonal also needs the corner rule, on its two side cells: their
+        // words are in the block already (a cell's word is 0 exactly when it is blocked,
+        // whatever the queries wrote: read before the moves write them), so the rule
+        // costs no load of the moves' masks, which on a large map is a cache miss an
+        // expansion.
+        let illegal = |side: u64, other: u64| {
+            let (a, b) = (side != 0, other != 0);
+            let legal = eight && if corner_cutting { a || b } else { a && b };
+            u64::from(!legal).wrapping_neg()
+        };
+        let (east, west, up, down) = (mid[2], mid[0], north[1], south[1]);
         relax!(0, mid[2], 0, p + 1, unit, 1, 0);
         relax!(0, mid[0], 1, p - 1, unit, -1, 0);
         relax!(0, north[1], 2, p + pw32, unit, 0, 1);
         relax!(0, south[1], 3, p - pw32, unit, 0, -1);
-        relax!(illegal(4), north[2], 4, p + pw32 + 1, diag, 1, 1);
-        relax!(illegal(5), north[0], 5, p + pw32 - 1, diag, -1, 1);
-        relax!(illegal(6), south[2], 6, p - pw32 + 1, diag, 1, -1);
-        relax!(illegal(7), south[0], 7, p - pw32 - 1, diag, -1, -1);
+        relax!(illegal(east, up), north[2], 4, p + pw32 + 1, diag, 1, 1);
+        relax!(illegal(west, up), north[0], 5, p + pw32 - 1, diag, -1, 1);
+        relax!(illegal(east, down), south[2], 6, p - pw32 + 1, diag, 1, -1);
+        relax!(illegal(west, down), south[0], 7, p - pw32 - 1, diag, -1, -1);
     }
     Expanded::Exhausted
 }
