@@ -211,7 +211,9 @@ enum Kind {
 /// legal-move mask, 8 bytes word, 4 bytes heap slot (`u32`): **14 bytes**
 /// ([`BYTES_PER_CELL`](GridSearch::BYTES_PER_CELL)), allocated once in
 /// [`new`](GridSearch::new) and reused; plus 8 or 16 bytes per open-list entry (the heap
-/// keeps its capacity across queries too). The first Theta* query adds 16 bytes per cell.
+/// keeps its capacity across queries too). The first Theta* query adds 16 bytes per cell,
+/// the first [`connected`](GridSearch::connected) query 3 bits (the passable cells and
+/// each side's reached cells, a bit each).
 ///
 /// # Costs and heuristics
 ///
