@@ -138,6 +138,7 @@ proptest! {
         let open: Vec<bool> = bits[..w * h].to_vec();
         let mask = Mask::from_cells(w, h, open.clone()).unwrap();
         let whole = envmap::steps_from_cells(&mask, seeds.iter().copied(), conn);
+        prop_assert_eq!(&whole, &breadth_first(w, h, &open, &seeds, eight));
         let mut flood = envmap::StepsFlood::new(w, h, conn);
         flood.restart(first.iter().copied());
         flood.grow_to(u32::MAX, |c| open[c]);
@@ -160,4 +161,43 @@ proptest! {
         prop_assert!(flood.finished());
         prop_assert_eq!(flood.steps(), &whole[..]);
     }
+}
+
+/// Steps by a plain breadth-first search with a double-ended queue and bounds tests, the
+/// reference the flood is checked against: seeds at 0 (inside the grid, open or not),
+/// then open cells only.
+fn breadth_first(
+    w: usize,
+    h: usize,
+    open: &[bool],
+    seeds: &[(usize, usize)],
+    eight: bool,
+) -> Vec<u32> {
+    let mut steps = vec![u32::MAX; w * h];
+    let mut queue = std::collections::VecDeque::new();
+    for &(i, j) in seeds {
+        if i < w && j < h && steps[j * w + i] != 0 {
+            steps[j * w + i] = 0;
+            queue.push_back((i, j));
+        }
+    }
+    while let Some((i, j)) = queue.pop_front() {
+        for dj in -1i64..=1 {
+            for di in -1i64..=1 {
+                if (di, dj) == (0, 0) || (!eight && di != 0 && dj != 0) {
+                    continue;
+                }
+                let (a, b) = (i as i64 + di, j as i64 + dj);
+                if a < 0 || b < 0 || a >= w as i64 || b >= h as i64 {
+                    continue;
+                }
+                let n = b as usize * w + a as usize;
+                if steps[n] == u32::MAX && open[n] {
+                    steps[n] = steps[j * w + i] + 1;
+                    queue.push_back((a as usize, b as usize));
+                }
+            }
+        }
+    }
+    steps
 }
