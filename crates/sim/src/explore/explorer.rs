@@ -11,7 +11,9 @@ use crate::explore::assigner::Assigner;
 use crate::explore::cost::DetectorCost;
 use crate::explore::detector::{Region, RrtDetector};
 use crate::explore::filter::{Filter, built_cost, built_cost_reach, information_gain};
-use crate::explore::frontier::{TravelFlood, costmap_steps, frontier_clusters, nearest_frontier};
+use crate::explore::frontier::{
+    TravelFlood, costmap_steps, frontier_clusters, nearest_frontier_with,
+};
 use crate::explore::params::{AssignerMode, Exploration, RevenueDistance, Strategy};
 use crate::explore::run::{GoalEnd, GoalRecord, Snapshot};
 use crate::explore::viewpoint::ViewPoints;
@@ -325,10 +327,12 @@ impl Explorer {
             .rebuild(&mut self.final_costmap, Some(&sim.map), &hits);
         // A robot hemmed in on its costmap reaches no frontier there; the navigator's
         // last try plans on the tight costmap, so the pass looks there too.
-        let found = nearest_frontier(&sim.map, costmap, here, min_cells, skip).or_else(|| {
-            let tight = sim.nav.costmaps.build_tight(Some(&sim.map), &[]);
-            nearest_frontier(&sim.map, &tight, here, min_cells, skip)
-        });
+        let buffers = &mut self.flood;
+        let found = nearest_frontier_with(&sim.map, costmap, here, min_cells, skip, buffers)
+            .or_else(|| {
+                let tight = sim.nav.costmaps.build_tight(Some(&sim.map), &[]);
+                nearest_frontier_with(&sim.map, &tight, here, min_cells, skip, buffers)
+            });
         let Some(f) = found else {
             return false;
         };
@@ -500,9 +504,14 @@ impl Explorer {
                 .find_map(|f| views.best(map, f).map(|(_, v)| (f, v))),
             (false, None) => costmap
                 .and_then(|costmap| {
-                    nearest_frontier(map, costmap, here, ex.min_frontier_cells, |p| {
-                        assigner.blacklisted(p)
-                    })
+                    nearest_frontier_with(
+                        map,
+                        costmap,
+                        here,
+                        ex.min_frontier_cells,
+                        |p| assigner.blacklisted(p),
+                        &mut self.flood,
+                    )
                 })
                 .map(|f| (f, f)),
             (false, Some(views)) => {
@@ -516,7 +525,9 @@ impl Explorer {
                 views.nearest(map, &cells, |p| assigner.blacklisted(p))
             }
         };
-        self.flood = flood.map(TravelFlood::into_buffers);
+        if let Some(flood) = flood {
+            self.flood = Some(flood.into_buffers());
+        }
         if !rrt {
             self.candidates = next.map(|(f, _)| f).into_iter().collect();
         }

@@ -250,6 +250,20 @@ pub fn nearest_frontier(
     min_cells: usize,
     skip: impl Fn(Point2) -> bool,
 ) -> Option<Point2> {
+    nearest_frontier_with(map, costmap, robot, min_cells, skip, &mut None)
+}
+
+/// [`nearest_frontier`] flooding in the buffers of an earlier flood (`buffers`, of any
+/// grid; this flood's are left there for the next call): the same answer, without a
+/// grid's worth of steps to allocate and fill at every goal choice.
+pub(crate) fn nearest_frontier_with(
+    map: &OccupancyGrid,
+    costmap: &Costmap,
+    robot: Point2,
+    min_cells: usize,
+    skip: impl Fn(Point2) -> bool,
+    buffers: &mut Option<StepsFlood>,
+) -> Option<Point2> {
     let frame = costmap.map.frame();
     // The candidates in the order of the clusters and of their cells: ties go to the first.
     // `skip` (a blacklist's scan) is asked only of a cell that would be the best so far.
@@ -268,8 +282,8 @@ pub fn nearest_frontier(
     // A breadth-first flood gives a cell its final steps when it reaches it, and every
     // cell not yet reached is at least `unreached_from` steps away: a nearest candidate
     // below that is the nearest of all, ties included.
-    let mut flood = TravelFlood::new(costmap, robot, 0.0, None);
-    loop {
+    let mut flood = TravelFlood::new(costmap, robot, 0.0, buffers.take());
+    let found = loop {
         let steps = flood.flood.steps();
         let mut best: Option<(u32, Point2)> = None;
         for &(k, p) in &candidates {
@@ -279,10 +293,12 @@ pub fn nearest_frontier(
         }
         match best {
             Some((s, p)) if flood.finished() || s < flood.flood.unreached_from() => {
-                return Some(p);
+                break Some(p);
             }
-            None if flood.finished() => return None,
+            None if flood.finished() => break None,
             _ => flood.grow(),
         }
-    }
+    };
+    *buffers = Some(flood.into_buffers());
+    found
 }
