@@ -525,19 +525,19 @@ impl CostmapBuilder {
                 .lethal
                 .as_ref()
                 .is_some_and(|l| l.cells().len() == f.cells());
-        let window = match self.update_lethal(cache, built, hits).filter(|_| kept) {
+        if !kept {
+            let (lethal, parts) = self.lethal_parts(built, hits);
+            cache.costmap = Some(self.costmap_with(&lethal, inflation));
+            cache.lethal = Some(lethal);
+            cache.parts = parts;
+            return cache.costmap.as_ref().expect("just built");
+        }
+        let window = match self.update_lethal(cache, built, hits) {
             Some(window) => window,
             None => {
                 let (lethal, parts) = self.lethal_parts(built, hits);
-                let window = match &cache.lethal {
-                    Some(last) if kept => changed_window(last.cells(), lethal.cells(), f.width),
-                    _ => {
-                        cache.costmap = Some(self.costmap_with(&lethal, inflation));
-                        cache.lethal = Some(lethal);
-                        cache.parts = parts;
-                        return cache.costmap.as_ref().expect("just built");
-                    }
-                };
+                let last = cache.lethal.as_ref().expect("kept above");
+                let window = changed_window(last.cells(), lethal.cells(), f.width);
                 cache.lethal = Some(lethal);
                 cache.parts = parts;
                 window
@@ -586,9 +586,10 @@ impl CostmapBuilder {
         costmap
     }
 
-    /// Brings the cache's lethal cells up to date in place when they came from the same
-    /// built map (`built`, on the costmap's own cells): only the blocks the map changed in
-    /// since, and the cells of the last hits and of `hits`, are read. Returns the window
+    /// Brings the cache's lethal cells (of this builder's size) up to date in place when
+    /// they came from the same built map (`built`, on the costmap's own cells): only the
+    /// blocks the map changed in since, and the cells of the last hits and of `hits`,
+    /// are read. Returns the window
     /// of the cells that changed (`None` inside: none did), or `None` when the cache
     /// cannot be brought up to date so (the caller builds the lethal cells afresh).
     fn update_lethal(
@@ -601,8 +602,7 @@ impl CostmapBuilder {
         let parts = cache.parts.as_mut()?;
         let lethal = cache.lethal.as_mut()?;
         let f = self.frame;
-        if parts.grid != g.id() || parts.version > g.version() || lethal.cells().len() != f.cells()
-        {
+        if parts.grid != g.id() || parts.version > g.version() {
             return None;
         }
         // Each cell whose value this build may change, with its value before (a cell

@@ -14,7 +14,7 @@ pub(super) struct Reach {
     row_words: usize,
     /// Per side, the cells its flood reached, as `bits`.
     seen: [Vec<u64>; 2],
-    /// Per side, the runs reached, `(row, first, last)`, and how many were grown from.
+    /// Per side, the runs reached, `(row, first, last)`, in the order reached.
     runs: [Vec<(u32, u32, u32)>; 2],
 }
 
