@@ -282,6 +282,23 @@ impl StepsFlood {
         }
     }
 
+    /// The cells reached so far (row-major indices), in the order they were reached: by
+    /// nondecreasing steps, so that the cells a [`grow_to`](Self::grow_to) added are the
+    /// ones past the length this had before it.
+    ///
+    /// ```
+    /// use envmap::{Connectivity, StepsFlood};
+    /// let mut flood = StepsFlood::new(4, 1, Connectivity::Eight);
+    /// flood.restart([(1, 0)]);
+    /// assert_eq!(flood.reached(), [1]);
+    /// flood.grow_to(1, |_| true);
+    /// assert_eq!(flood.reached()[1..].len(), 2, "cells 0 and 2, one step away");
+    /// ```
+    #[must_use]
+    pub fn reached(&self) -> &[u32] {
+        &self.queue
+    }
+
     /// Steps per cell, row-major from the bottom row: `u32::MAX` where not (yet) reached.
     #[must_use]
     pub fn steps(&self) -> &[u32] {

@@ -38,12 +38,26 @@ pub fn frontier_cells(map: &OccupancyGrid) -> Vec<(usize, usize)> {
     for (n, &u) in near[..w * (h - 1)].iter_mut().zip(&unknown[w..]) {
         *n |= u;
     }
-    v.iter()
-        .zip(&near)
-        .enumerate()
-        .filter(|&(_, (&x, &n))| x == FREE && n != 0)
-        .map(|(k, _)| (k % w, k / w))
-        .collect()
+    for (n, &x) in near.iter_mut().zip(&v) {
+        *n &= u8::from(x == FREE);
+    }
+    // Frontier cells are few: eight cells at a time, passed over when none is one.
+    let mut cells = Vec::new();
+    let mut push = |k: usize| cells.push((k % w, k / w));
+    let words = near.chunks_exact(8);
+    let tail = words.remainder();
+    for (c, word) in words.enumerate() {
+        if word.iter().fold(0, |any, &n| any | n) != 0 {
+            (0..8)
+                .filter(|&o| word[o] != 0)
+                .for_each(|o| push(8 * c + o));
+        }
+    }
+    let base = near.len() - tail.len();
+    (0..tail.len())
+        .filter(|&o| tail[o] != 0)
+        .for_each(|o| push(base + o));
+    cells
 }
 
 /// The frontier cells of `map` in 8-connected clusters (each in discovery order, clusters
@@ -99,18 +113,8 @@ impl<'c> TravelFlood<'c> {
     /// with the buffers of an earlier flood (`reuse`, of any grid) when given.
     #[must_use]
     pub fn new(costmap: &'c Costmap, from: Point2, radius: f64, reuse: Option<StepsFlood>) -> Self {
-        let (w, h) = (costmap.map.width(), costmap.map.height());
-        let mut flood = reuse
-            .filter(|f| f.size() == (w, h))
-            .unwrap_or_else(|| StepsFlood::new(w, h, Connectivity::Eight));
-        let start = costmap.map.world_to_cell(from).map(|cell| {
-            // The start cell is always entered, or, when it is at the inscribed cost or
-            // above, the nearest cell below it within the planner's start slack.
-            let rings = crate::planner::start_rings(costmap.map.resolution());
-            let open = |i: usize, j: usize| costmap.costs[j * w + i] < INSCRIBED_INFLATED_OBSTACLE;
-            nearest_passable((w, h), cell, rings, open).unwrap_or(cell)
-        });
-        flood.restart(start);
+        let mut flood = flood_buffers(costmap, reuse);
+        flood.restart(start_cell(costmap, from));
         Self {
             costmap,
             flood,
@@ -178,6 +182,83 @@ impl<'c> TravelFlood<'c> {
             }
         }
     }
+}
+
+/// `reuse` if it floods a grid of `costmap`'s size, else new buffers.
+fn flood_buffers(costmap: &Costmap, reuse: Option<StepsFlood>) -> StepsFlood {
+    let (w, h) = (costmap.map.width(), costmap.map.height());
+    reuse
+        .filter(|f| f.size() == (w, h))
+        .unwrap_or_else(|| StepsFlood::new(w, h, Connectivity::Eight))
+}
+
+/// Whether costmap cell `k` (row-major) is one the robot's centre may cross.
+fn open(costmap: &Costmap, k: usize) -> bool {
+    costmap.costs[k] < INSCRIBED_INFLATED_OBSTACLE
+}
+
+/// Where a flood from `from` starts on `costmap`: its cell, always entered, or, when it is
+/// at the inscribed cost or above, the nearest cell below it within the planner's start
+/// slack. `None` off the costmap.
+fn start_cell(costmap: &Costmap, from: Point2) -> Option<(usize, usize)> {
+    let (w, h) = (costmap.map.width(), costmap.map.height());
+    costmap.map.world_to_cell(from).map(|cell| {
+        let rings = crate::planner::start_rings(costmap.map.resolution());
+        nearest_passable((w, h), cell, rings, |i, j| open(costmap, j * w + i)).unwrap_or(cell)
+    })
+}
+
+/// Whether none of `candidates` (costmap cells and their points, those `skip` holds for
+/// left out) can be reached from the flood start `start` ([`start_cell`]): each
+/// candidate's pocket of open cells is flooded (once, whatever number of candidates it
+/// holds) and found not to hold the start. `false` as soon as one pocket holds it, or
+/// grows past `budget` cells: the flood from the start then decides. `flood` is lent
+/// buffers.
+///
+/// The flood from the start enters only open cells after the start, and open cells
+/// neighbour each other both ways, so it reaches exactly the start's pocket. A start
+/// that is not open has no open neighbour either (it would have started from that one,
+/// the nearest within the start slack) and reaches nothing but itself. Pockets behind
+/// doorways narrower than the robot are small beside the building a flood from the
+/// robot covers before it can say "none".
+fn cut_off(
+    costmap: &Costmap,
+    start: (usize, usize),
+    candidates: &[(usize, Point2)],
+    skip: impl Fn(Point2) -> bool,
+    flood: &mut StepsFlood,
+    budget: usize,
+) -> bool {
+    let w = costmap.map.width();
+    let s = start.1 * w + start.0;
+    let mut shut = vec![0u64; costmap.costs.len().div_ceil(64)];
+    let is_shut = |shut: &[u64], c: usize| shut[c / 64] >> (c % 64) & 1 != 0;
+    for &(k, p) in candidates {
+        if k == s {
+            return false;
+        }
+        if !open(costmap, k) || is_shut(&shut, k) || skip(p) {
+            continue;
+        }
+        flood.restart([(k % w, k / w)]);
+        let mut read = 0;
+        loop {
+            let reached = flood.reached();
+            if reached[read..].contains(&(s as u32)) || reached.len() > budget {
+                return false;
+            }
+            read = reached.len();
+            if flood.finished() {
+                break;
+            }
+            let level = flood.unreached_from();
+            flood.grow_to(level, |c| open(costmap, c));
+        }
+        for &c in flood.reached() {
+            shut[c as usize / 64] |= 1 << (c % 64);
+        }
+    }
+    true
 }
 
 /// The travel to `target` on `costmap`, m: over the reachable cells within `radius` of
@@ -279,10 +360,22 @@ pub(crate) fn nearest_frontier_with(
     if candidates.is_empty() {
         return None;
     }
+    // When no frontier can be reached (the robot's last rooms explored, the rest behind
+    // doorways too narrow for it), the flood from the robot would cover every cell it
+    // can reach to say so, at every goal choice while the robot waits: the pockets the
+    // candidates lie in say it first.
+    let mut lent = flood_buffers(costmap, buffers.take());
+    let budget = costmap.costs.len() / 16;
+    if let Some(start) = start_cell(costmap, robot)
+        && cut_off(costmap, start, &candidates, &skip, &mut lent, budget)
+    {
+        *buffers = Some(lent);
+        return None;
+    }
     // A breadth-first flood gives a cell its final steps when it reaches it, and every
     // cell not yet reached is at least `unreached_from` steps away: a nearest candidate
     // below that is the nearest of all, ties included.
-    let mut flood = TravelFlood::new(costmap, robot, 0.0, buffers.take());
+    let mut flood = TravelFlood::new(costmap, robot, 0.0, Some(lent));
     let found = loop {
         let steps = flood.flood.steps();
         let mut best: Option<(u32, Point2)> = None;
