@@ -81,6 +81,8 @@ pub(crate) struct Explorer {
     costmap_at: Option<u64>,
     /// The buffers of the assigner's travel flood, kept between goal choices.
     flood: Option<StepsFlood>,
+    /// Whether the baseline's last goal choice found no frontier it could reach.
+    none_reachable: bool,
     /// The costmap of the final pass.
     final_costmap: CostmapCache,
     /// Where the robot was when it last moved 0.2 m, and when.
@@ -196,6 +198,7 @@ impl Explorer {
             costmap: CostmapCache::default(),
             costmap_at: None,
             flood: None,
+            none_reachable: false,
             final_costmap: CostmapCache::default(),
             anchor: (crate::world::pt(scenario.start), 0),
             progress: (f64::INFINITY, 0),
@@ -328,10 +331,10 @@ impl Explorer {
         // A robot hemmed in on its costmap reaches no frontier there; the navigator's
         // last try plans on the tight costmap, so the pass looks there too.
         let buffers = &mut self.flood;
-        let found = nearest_frontier_with(&sim.map, costmap, here, min_cells, skip, buffers)
+        let found = nearest_frontier_with(&sim.map, costmap, here, min_cells, skip, buffers, true)
             .or_else(|| {
                 let tight = sim.nav.costmaps.build_tight(Some(&sim.map), &[]);
-                nearest_frontier_with(&sim.map, &tight, here, min_cells, skip, buffers)
+                nearest_frontier_with(&sim.map, &tight, here, min_cells, skip, buffers, true)
             });
         let Some(f) = found else {
             return false;
@@ -502,8 +505,8 @@ impl Explorer {
                 .ranked(here, &self.candidates, map)
                 .into_iter()
                 .find_map(|f| views.best(map, f).map(|(_, v)| (f, v))),
-            (false, None) => costmap
-                .and_then(|costmap| {
+            (false, None) => {
+                let nearest = costmap.and_then(|costmap| {
                     nearest_frontier_with(
                         map,
                         costmap,
@@ -511,9 +514,12 @@ impl Explorer {
                         ex.min_frontier_cells,
                         |p| assigner.blacklisted(p),
                         &mut self.flood,
+                        self.none_reachable,
                     )
-                })
-                .map(|f| (f, f)),
+                });
+                self.none_reachable = nearest.is_none();
+                nearest.map(|f| (f, f))
+            }
             (false, Some(views)) => {
                 let cells = unknown_beside(
                     map,

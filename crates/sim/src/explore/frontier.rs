@@ -331,12 +331,14 @@ pub fn nearest_frontier(
     min_cells: usize,
     skip: impl Fn(Point2) -> bool,
 ) -> Option<Point2> {
-    nearest_frontier_with(map, costmap, robot, min_cells, skip, &mut None)
+    nearest_frontier_with(map, costmap, robot, min_cells, skip, &mut None, true)
 }
 
 /// [`nearest_frontier`] flooding in the buffers of an earlier flood (`buffers`, of any
 /// grid; this flood's are left there for the next call): the same answer, without a
-/// grid's worth of steps to allocate and fill at every goal choice.
+/// grid's worth of steps to allocate and fill at every goal choice. With `pockets_first`
+/// (worth it where the last answer was "none": such answers come in runs while the robot
+/// waits), the frontiers' pockets are asked first whether any can be reached at all.
 pub(crate) fn nearest_frontier_with(
     map: &OccupancyGrid,
     costmap: &Costmap,
@@ -344,6 +346,7 @@ pub(crate) fn nearest_frontier_with(
     min_cells: usize,
     skip: impl Fn(Point2) -> bool,
     buffers: &mut Option<StepsFlood>,
+    pockets_first: bool,
 ) -> Option<Point2> {
     let frame = costmap.map.frame();
     // The candidates in the order of the clusters and of their cells: ties go to the first.
@@ -366,7 +369,8 @@ pub(crate) fn nearest_frontier_with(
     // candidates lie in say it first.
     let mut lent = flood_buffers(costmap, buffers.take());
     let budget = costmap.costs.len() / 16;
-    if let Some(start) = start_cell(costmap, robot)
+    if pockets_first
+        && let Some(start) = start_cell(costmap, robot)
         && cut_off(costmap, start, &candidates, &skip, &mut lent, budget)
     {
         *buffers = Some(lent);
