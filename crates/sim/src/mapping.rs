@@ -227,6 +227,30 @@ impl OccupancyGrid {
         self.logodds.iter().map(|&l| ros_value(l)).collect()
     }
 
+    /// The unknown cells and the free ones ([`UNKNOWN`] and [`FREE`] of
+    /// [`ros_values`](Self::ros_values)) as rows of bits: cell `(i, j)` is bit `i % 64` of
+    /// word `j * width.div_ceil(64) + i / 64`; the bits past a row's end are clear. For
+    /// tests of whole rows, 64 cells at a time.
+    pub(crate) fn unknown_and_free_bits(&self) -> (Vec<u64>, Vec<u64>) {
+        let words = self.width.div_ceil(64);
+        let (mut unknown, mut free) = (vec![0; words * self.height], vec![0; words * self.height]);
+        for (j, row) in self.logodds.chunks_exact(self.width.max(1)).enumerate() {
+            // On the bits, as `ros_value`: -0.0 is unknown, a positive log-odds occupied.
+            // A byte a cell first (vector compares), then eight bytes to a bit each.
+            for (x, cells) in row.chunks(64).enumerate() {
+                let (mut u, mut f) = ([0u8; 64], [0u8; 64]);
+                for ((u, f), l) in u.iter_mut().zip(&mut f).zip(cells) {
+                    let bits = l.to_bits() as i32;
+                    *u = u8::from(bits == i32::MIN);
+                    *f = u8::from(bits <= 0) & !*u;
+                }
+                unknown[j * words + x] = pack_bytes(&u);
+                free[j * words + x] = pack_bytes(&f);
+            }
+        }
+        (unknown, free)
+    }
+
     /// Brings `values`, the [`OccupancyGrid::ros_values`] of [`version`](Self::version)
     /// `since` (or empty), up to date in place: whether any changed. Only the blocks of
     /// 16 x 16 cells an update touched after `since` are read, for a recorder that
@@ -619,6 +643,19 @@ impl OccupancyGrid {
         self.cell_of(p)
             .is_some_and(|(i, j)| self.value(i, j) == OCCUPIED)
     }
+}
+
+/// 64 bytes of 0 or 1 as the bits of a word, byte `k` to bit `k`: eight bytes at a time,
+/// by a product that moves byte `k`'s bit to bit `56 + k` (the other products of the
+/// eight land below bit 56 or past bit 63, each on a bit of its own, so nothing carries).
+fn pack_bytes(bytes: &[u8; 64]) -> u64 {
+    bytes
+        .chunks_exact(8)
+        .enumerate()
+        .fold(0, |word, (g, eight)| {
+            let x = u64::from_le_bytes(eight.try_into().expect("eight bytes"));
+            word | (x.wrapping_mul(0x0102_0408_1020_4080) >> 56) << (8 * g)
+        })
 }
 
 /// The ROS value of a cell's log-odds: unknown cells hold -0.0 (no update yet), occupied

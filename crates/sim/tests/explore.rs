@@ -857,6 +857,41 @@ proptest::proptest! {
     }
 }
 
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// The frontier cells (read 64 to a word) are the free cells with an unknown cell
+    /// beside them, row by row, on maps of widths on either side of a word.
+    #[test]
+    fn frontier_cells_are_the_free_cells_beside_unknown_ones(
+        (w, h) in (1usize..150, 1usize..12),
+        values in proptest::collection::vec(0u8..3, 150 * 12),
+    ) {
+        let size = |n: usize| n as f64 * 0.05;
+        let mut map = OccupancyGrid::new(Bounds::new(p(0.0, 0.0), p(size(w), size(h))), Mapping::default());
+        proptest::prop_assume!(map.width() == w && map.height() == h);
+        for j in 0..h {
+            for i in 0..w {
+                let v = [FREE, UNKNOWN, OCCUPIED][usize::from(values[j * w + i])];
+                if v != UNKNOWN {
+                    map.set_value(i, j, v);
+                }
+            }
+        }
+        let unknown = |i: usize, j: usize| i < w && j < h && map.value(i, j) == UNKNOWN;
+        let mut expected = Vec::new();
+        for j in 0..h {
+            for i in 0..w {
+                let beside = [(i.wrapping_sub(1), j), (i + 1, j), (i, j.wrapping_sub(1)), (i, j + 1)];
+                if map.value(i, j) == FREE && beside.iter().any(|&(a, b)| unknown(a, b)) {
+                    expected.push((i, j));
+                }
+            }
+        }
+        proptest::prop_assert_eq!(sim::frontier_cells(&map), expected);
+    }
+}
+
 /// The baseline's goal by the costmap flooded whole from `robot`, its cells scanned in the
 /// clusters' order: the least steps, the first cell of the first cluster on ties.
 fn nearest_frontier_of_the_whole_flood(

@@ -14,49 +14,38 @@ use envmap::{
 use hyplan_core::Point2;
 
 use crate::costmap::Costmap;
-use crate::mapping::{FREE, OccupancyGrid, UNKNOWN};
+use crate::mapping::OccupancyGrid;
 
 /// Free cells with an unknown 4-neighbour, row-major order.
 #[must_use]
 pub fn frontier_cells(map: &OccupancyGrid) -> Vec<(usize, usize)> {
     let (w, h) = (map.width(), map.height());
-    let v = map.ros_values();
-    // Whole-row passes (no per-cell branches): whether a cell has an unknown 4-neighbour.
-    let unknown: Vec<u8> = v.iter().map(|&x| u8::from(x == UNKNOWN)).collect();
-    let mut near = vec![0u8; w * h];
-    for (row, unk) in near.chunks_exact_mut(w).zip(unknown.chunks_exact(w)) {
-        for (n, &u) in row[1..].iter_mut().zip(&unk[..w - 1]) {
-            *n |= u;
-        }
-        for (n, &u) in row[..w - 1].iter_mut().zip(&unk[1..]) {
-            *n |= u;
-        }
+    let (unknown, free) = map.unknown_and_free_bits();
+    let words = w.div_ceil(64);
+    // A row's words at a time (no per-cell branches), the cells beside along the row by
+    // shifts carried across words; bits past the row's end are clear.
+    fn row(bits: &[u64], words: usize, j: usize) -> &[u64] {
+        &bits[j * words..(j + 1) * words]
     }
-    for (n, &u) in near[w..].iter_mut().zip(&unknown[..w * (h - 1)]) {
-        *n |= u;
-    }
-    for (n, &u) in near[..w * (h - 1)].iter_mut().zip(&unknown[w..]) {
-        *n |= u;
-    }
-    for (n, &x) in near.iter_mut().zip(&v) {
-        *n &= u8::from(x == FREE);
-    }
-    // Frontier cells are few: eight cells at a time, passed over when none is one.
     let mut cells = Vec::new();
-    let mut push = |k: usize| cells.push((k % w, k / w));
-    let words = near.chunks_exact(8);
-    let tail = words.remainder();
-    for (c, word) in words.enumerate() {
-        if word.iter().fold(0, |any, &n| any | n) != 0 {
-            (0..8)
-                .filter(|&o| word[o] != 0)
-                .for_each(|o| push(8 * c + o));
+    for j in 0..h {
+        let (u, f) = (row(&unknown, words, j), row(&free, words, j));
+        let below = j.checked_sub(1).map(|b| row(&unknown, words, b));
+        let above = (j + 1 < h).then(|| row(&unknown, words, j + 1));
+        for x in 0..words {
+            if f[x] == 0 {
+                continue;
+            }
+            let left = (u[x] << 1) | x.checked_sub(1).map_or(0, |p| u[p] >> 63);
+            let right = (u[x] >> 1) | u.get(x + 1).map_or(0, |n| n << 63);
+            let beside = below.map_or(0, |b| b[x]) | above.map_or(0, |a| a[x]);
+            let mut frontier = f[x] & (left | right | beside);
+            while frontier != 0 {
+                cells.push((64 * x + frontier.trailing_zeros() as usize, j));
+                frontier &= frontier - 1;
+            }
         }
     }
-    let base = near.len() - tail.len();
-    (0..tail.len())
-        .filter(|&o| tail[o] != 0)
-        .for_each(|o| push(base + o));
     cells
 }
 
@@ -368,7 +357,7 @@ pub(crate) fn nearest_frontier_with(
     // can reach to say so, at every goal choice while the robot waits: the pockets the
     // candidates lie in say it first.
     let mut lent = flood_buffers(costmap, buffers.take());
-    let budget = costmap.costs.len() / 16;
+    let budget = costmap.costs.len() / 64;
     if pockets_first
         && let Some(start) = start_cell(costmap, robot)
         && cut_off(costmap, start, &candidates, &skip, &mut lent, budget)
