@@ -528,7 +528,11 @@ impl Stepped for Orca<'_> {
                 avoidance_responsibility: 0.0,
             });
         }
-        let mut candidates: Vec<(f64, usize)> = Vec::with_capacity(agents.len());
+        // Nearest first, ties to the lower index: a squared distance is not negative, so
+        // its bits order as it does, and (bits, index) packed in a `u128` order as both.
+        let mut candidates: Vec<u128> = Vec::with_capacity(agents.len());
+        let mut neighbours: Vec<Cow<'_, Agent>> = Vec::with_capacity(agents.len());
+        let mut obstacles: Vec<Cow<'_, Obstacle>> = Vec::new();
         let mut near = std::mem::take(&mut self.near);
         let reach_sq = self.params.neighbour_distance * self.params.neighbour_distance;
         for k in 0..n {
@@ -573,27 +577,25 @@ impl Stepped for Orca<'_> {
                         );
                         (d.norm_squared(), j)
                     })
-                    .filter(|&(d_sq, _)| d_sq <= reach_sq),
+                    .filter(|&(d_sq, _)| d_sq <= reach_sq)
+                    .map(|(d_sq, j)| u128::from(d_sq.to_bits()) << 64 | j as u128),
             );
-            let nearer =
-                |a: &(f64, usize), b: &(f64, usize)| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1));
-            let keep = self.params.max_neighbours;
-            if keep > 0 && candidates.len() > keep {
-                // Only the nearest `keep` need sorting (a total order: the same ones).
-                candidates.select_nth_unstable_by(keep - 1, nearer);
-            }
-            candidates.truncate(keep);
-            candidates.sort_unstable_by(nearer);
-            let neighbours: Vec<Cow<'_, Agent>> = candidates
-                .iter()
-                .map(|&(_, j)| seen(me, &agents[j], left * keep_right, j > k, h as f32))
-                .collect();
+            candidates.sort_unstable();
+            neighbours.clear();
+            neighbours.extend(
+                candidates
+                    .iter()
+                    .take(self.params.max_neighbours)
+                    .map(|&key| key as u64 as usize)
+                    .map(|j| seen(me, &agents[j], left * keep_right, j > k, h as f32)),
+            );
             self.walls.near(at, self.reach(k), &mut near);
-            let obstacles: Vec<Cow<'_, Obstacle>> = near
-                .indices
-                .iter()
-                .map(|&i| Cow::Borrowed(&self.walls.obstacles[i as usize]))
-                .collect();
+            obstacles.clear();
+            obstacles.extend(
+                near.indices
+                    .iter()
+                    .map(|&i| Cow::Borrowed(&self.walls.obstacles[i as usize])),
+            );
             let options = AvoidanceOptions {
                 obstacle_margin: (p.radius + self.params.safety_space) as f32,
                 time_horizon: self.params.time_horizon as f32,
