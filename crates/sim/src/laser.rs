@@ -289,12 +289,21 @@ impl LaserModel {
         let ahead = Vector2::new(c, s);
         let half_turn = self.fov <= std::f64::consts::PI;
         let wholly_behind = |along: f64| half_turn && along < -1e-6;
+        // A loaded map's edge seen from its occupied side is met only after a nearer edge
+        // of the same cells, unless the scanner is inside them (pressed into a wall).
+        let shapes = world.segments.len();
+        let in_occupied = world.grid.as_ref().is_some_and(|g| {
+            g.world_to_cell(origin)
+                .is_some_and(|(i, j)| g.cell_zone(i, j) == hyplan_core::Zone::Forbidden)
+        });
         let mut consider = |i: usize, seg: &crate::world::Segment| {
             let pa = seg.a - origin;
             // Seen from behind (the scanner inside the half-plane behind an outward
-            // edge of a closed outline): another edge of the same outline is nearer.
+            // edge of a closed outline, or of occupied cells): another edge of the same
+            // outline, or of the same cells, is nearer.
             if let Some(nrm) = seg.outward
                 && nrm.dot(&pa) >= 0.0
+                && (i < shapes || !in_occupied)
             {
                 return;
             }
@@ -306,7 +315,6 @@ impl LaserModel {
         };
         match picked {
             Some(picked) => {
-                let shapes = world.segments.len();
                 for &i in picked {
                     let i = i as usize;
                     if i < shapes {

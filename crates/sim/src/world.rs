@@ -144,7 +144,8 @@ pub struct Segment {
     /// The other end.
     pub b: Point2,
     /// For an edge of a closed outline, its outward normal (the laser skips edges seen
-    /// from behind); `None` for loose edges.
+    /// from behind); for an edge of a loaded map's occupied cells, the normal toward its
+    /// free side when all its occupied cells are on one side; `None` for loose edges.
     pub outward: Option<nalgebra::Vector2<f64>>,
 }
 
@@ -236,12 +237,20 @@ impl StaticWorld {
         let (o, r) = (map.origin(), map.resolution());
         let at = |i: usize, j: usize| Point2::new(o.x + i as f64 * r, o.y + j as f64 * r);
         let segments = &mut self.grid_segments;
-        let mut push = |a, b| {
-            segments.push(Segment {
-                a,
-                b,
-                outward: None,
-            })
+        let mut push = |a, b, outward| segments.push(Segment { a, b, outward });
+        // A run whose occupied cells are all on one side faces the other (the laser skips
+        // it seen from behind); a run with occupied cells on both sides faces neither.
+        let side = |occupied_before: &mut dyn Iterator<Item = bool>,
+                    normal: nalgebra::Vector2<f64>| {
+            let mut all = (true, true);
+            for o in occupied_before {
+                all = (all.0 && o, all.1 && !o);
+            }
+            match all {
+                (true, _) => Some(normal),
+                (_, true) => Some(-normal),
+                _ => None,
+            }
         };
         // Horizontal edges: between rows j-1 and j, for j in 0..=h; then vertical ones.
         edge_runs(
@@ -249,7 +258,12 @@ impl StaticWorld {
             w,
             |j, i| occ(i, j - 1) != occ(i, j),
             |j, s, e| {
-                push(at(s, j), at(e, j));
+                let below = &mut (s..e).map(|i| occ(i as isize, j as isize - 1));
+                push(
+                    at(s, j),
+                    at(e, j),
+                    side(below, nalgebra::Vector2::new(0.0, 1.0)),
+                );
             },
         );
         edge_runs(
@@ -257,7 +271,12 @@ impl StaticWorld {
             h,
             |i, j| occ(i - 1, j) != occ(i, j),
             |i, s, e| {
-                push(at(i, s), at(i, e));
+                let left = &mut (s..e).map(|j| occ(i as isize - 1, j as isize));
+                push(
+                    at(i, s),
+                    at(i, e),
+                    side(left, nalgebra::Vector2::new(1.0, 0.0)),
+                );
             },
         );
         self.grid = Some(map);
@@ -603,5 +622,19 @@ mod tests {
         w.add_grid(map);
         assert_eq!(w.grid_segments.len(), 4);
         assert!(w.inside(Point2::new(1.5, 1.5)));
+        // Each edge faces away from the occupied cells: its normal points from its middle
+        // into a free cell.
+        for s in &w.grid_segments {
+            let n = s.outward.expect("occupied cells on one side");
+            let middle = nalgebra::center(&s.a, &s.b);
+            assert!(
+                !w.inside(middle + n * 0.25) && w.inside(middle - n * 0.25),
+                "{s:?}"
+            );
+        }
+        // Occupied cells on both sides of a run: it faces neither way.
+        let mut w = StaticWorld::default();
+        w.add_grid(GridMap::from_ascii("#.\n.#").unwrap());
+        assert!(w.grid_segments.iter().any(|s| s.outward.is_none()));
     }
 }
