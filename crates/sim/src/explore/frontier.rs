@@ -293,6 +293,9 @@ pub fn travel(costmap: &Costmap, steps: &[u32], target: Point2, radius: f64) -> 
 ///
 /// The costmap is flooded from the robot only as far as the nearest frontier: the
 /// answer of [`costmap_steps`] over the whole costmap, at the cost of the rooms between.
+/// A "none" comes first from the frontiers' own pockets of the costmap, when none of them
+/// holds the robot (frontiers behind doorways narrower than it), without flooding the
+/// building.
 ///
 /// ```
 /// use hyplan_core::{Bounds, Point2};
