@@ -292,10 +292,7 @@ impl LaserModel {
         // A loaded map's edge seen from its occupied side is met only after a nearer edge
         // of the same cells, unless the scanner is inside them (pressed into a wall).
         let shapes = world.segments.len();
-        let in_occupied = world.grid.as_ref().is_some_and(|g| {
-            g.world_to_cell(origin)
-                .is_some_and(|(i, j)| g.cell_zone(i, j) == hyplan_core::Zone::Forbidden)
-        });
+        let in_occupied = world.in_occupied_cell(origin);
         let mut consider = |i: usize, seg: &crate::world::Segment| {
             let pa = seg.a - origin;
             // Seen from behind (the scanner inside the half-plane behind an outward

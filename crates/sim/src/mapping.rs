@@ -235,14 +235,14 @@ impl OccupancyGrid {
         let words = self.width.div_ceil(64);
         let (mut unknown, mut free) = (vec![0; words * self.height], vec![0; words * self.height]);
         for (j, row) in self.logodds.chunks_exact(self.width.max(1)).enumerate() {
-            // On the bits, as `ros_value`: -0.0 is unknown, a positive log-odds occupied.
-            // A byte a cell first (vector compares), then eight bytes to a bit each.
+            // A byte a cell first (`ros_value` has no branch: vector compares), then
+            // eight bytes to a bit each.
             for (x, cells) in row.chunks(64).enumerate() {
                 let (mut u, mut f) = ([0u8; 64], [0u8; 64]);
-                for ((u, f), l) in u.iter_mut().zip(&mut f).zip(cells) {
-                    let bits = l.to_bits() as i32;
-                    *u = u8::from(bits == i32::MIN);
-                    *f = u8::from(bits <= 0) & !*u;
+                for ((u, f), &l) in u.iter_mut().zip(&mut f).zip(cells) {
+                    let v = ros_value(l);
+                    *u = u8::from(v == UNKNOWN);
+                    *f = u8::from(v == FREE);
                 }
                 unknown[j * words + x] = pack_bytes(&u);
                 free[j * words + x] = pack_bytes(&f);
@@ -312,7 +312,7 @@ impl OccupancyGrid {
     /// [`occupied_cells`](Self::occupied_cells) lists them.
     #[must_use]
     pub fn is_occupied(&self, i: usize, j: usize) -> bool {
-        self.logodds[j * self.width + i] > 0.0
+        ros_value(self.logodds[j * self.width + i]) == OCCUPIED
     }
 
     /// Where the cells lie in the world.

@@ -297,12 +297,15 @@ impl StaticWorld {
         if self.polygons.iter().any(|poly| point_in_polygon(p, poly)) {
             return true;
         }
-        if let Some(g) = &self.grid
-            && let Some((i, j)) = g.world_to_cell(p)
-        {
-            return g.cell_zone(i, j) == Zone::Forbidden;
-        }
-        false
+        self.in_occupied_cell(p)
+    }
+
+    /// Whether `p` lies in an occupied cell of the loaded map (if any).
+    pub(crate) fn in_occupied_cell(&self, p: Point2) -> bool {
+        self.grid.as_ref().is_some_and(|g| {
+            g.world_to_cell(p)
+                .is_some_and(|(i, j)| g.cell_zone(i, j) == Zone::Forbidden)
+        })
     }
 
     /// Distance from `p` to the nearest obstacle boundary and the nearest boundary point
