@@ -107,6 +107,36 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// A search brought up to date by `update_window` answers as one built on the
+    /// changed map: cells flipped both ways, in a window that crosses the bit lines'
+    /// words. Fails when a newly blocked cell is left free in the rows or the columns.
+    #[test]
+    fn an_updated_window_answers_as_a_fresh_search(
+        (map, queries) in scenario(60..150, 20..80, 0.15),
+        flips in proptest::collection::vec((0usize..150, 0usize..80), 1..60),
+    ) {
+        let mut kept = JumpPointSearch::new(&map, GridOptions::default()).unwrap();
+        let mut changed = map.clone();
+        let (w, h) = (map.width(), map.height());
+        let (mut lo, mut hi) = ((w, h), (0, 0));
+        for (i, j) in flips {
+            let (i, j) = (i % w, j % h);
+            let z = if changed.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
+            changed.set_cell_zone(i, j, z);
+            lo = (lo.0.min(i), lo.1.min(j));
+            hi = (hi.0.max(i + 1), hi.1.max(j + 1));
+        }
+        kept.update_window(&changed, lo.0..hi.0, lo.1..hi.1).unwrap();
+        let mut fresh = JumpPointSearch::new(&changed, GridOptions::default()).unwrap();
+        for &(s, g) in &queries {
+            prop_assert_eq!(kept.search(s, g), fresh.search(s, g));
+        }
+    }
+}
+
 fn ascii(text: &str) -> GridMap {
     GridMap::from_ascii(text).unwrap()
 }

@@ -182,6 +182,49 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
+    /// Dijkstra bounded by any cost at least the optimum finds Dijkstra's own path, cell
+    /// for cell, under every move rule, on open maps (the most ties between equal
+    /// costs) to cluttered ones; bounded below the optimum it finds none. Fails when a
+    /// cell within the bound is left out, or one beyond it is taken as a path cell.
+    #[test]
+    fn dijkstra_within_a_bound_keeps_dijkstras_path(
+        (w, h, density) in (2usize..40, 2usize..40, 0.0f64..0.4),
+        seed in any::<u64>(),
+        (si, sj, gi, gj) in (0usize..40, 0usize..40, 0usize..40, 0usize..40),
+        (four, corner_cutting) in (any::<bool>(), any::<bool>()),
+        extra in prop_oneof![Just(0.0), 0.0f64..3.0],
+    ) {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let zones = (0..w * h)
+            .map(|_| if rng.random_bool(density) { Zone::Forbidden } else { Zone::Free })
+            .collect();
+        let mut map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
+        let (s, g) = ((si % w, sj % h), (gi % w, gj % h));
+        map.set_cell_zone(s.0, s.1, Zone::Free);
+        map.set_cell_zone(g.0, g.1, Zone::Free);
+        let options = GridOptions {
+            connectivity: if four { Connectivity::Four } else { Connectivity::Eight },
+            corner_cutting,
+        };
+        let mut search = GridSearch::new(&map, options).unwrap();
+        let Ok(full) = search.dijkstra(s, g) else {
+            prop_assert!(search.dijkstra_within(s, g, f64::INFINITY).is_err());
+            return Ok(());
+        };
+        let within = search.dijkstra_within(s, g, full.cost + extra).unwrap();
+        prop_assert_eq!(&within.cells, &full.cells);
+        prop_assert_eq!(within.cost, full.cost);
+        prop_assert!(within.stats.expansions <= full.stats.expansions);
+        if full.cost > 0.0 {
+            prop_assert!(search.dijkstra_within(s, g, full.cost - 0.01).is_err());
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
     /// On maps wider than a word of the connectivity flood's bit rows (runs crossing
     /// words, from sparse to dense obstacles), `connected` says whether Dijkstra finds a
     /// path, before and after a change brought in by `update_window`.

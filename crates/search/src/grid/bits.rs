@@ -39,6 +39,11 @@ impl Lines {
         self.bits[l * self.words + b / 64] |= 1 << (b % 64);
     }
 
+    pub(super) fn clear(&mut self, l: usize, at: usize) {
+        let b = PAD + at;
+        self.bits[l * self.words + b / 64] &= !(1 << (b % 64));
+    }
+
     /// The 64 cells of line `l` from cell `at` on (bit 0: cell `at`).
     #[inline(always)]
     pub(super) fn window(&self, l: usize, at: usize) -> u64 {
@@ -100,6 +105,11 @@ impl BitGrid {
     pub(super) fn set_free(&mut self, x: usize, y: usize) {
         self.rows.set(y, x);
         self.cols.set(x, y);
+    }
+
+    pub(super) fn set_blocked(&mut self, x: usize, y: usize) {
+        self.rows.clear(y, x);
+        self.cols.clear(x, y);
     }
 
     #[inline]

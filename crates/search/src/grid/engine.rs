@@ -27,20 +27,35 @@ impl GridSearch {
         } else {
             OpenKind::Buckets
         };
+        self.grid_search_bounded(s0, t0, heuristic, open, u64::MAX)
+    }
+
+    /// [`grid_search`](GridSearch::grid_search) leaving out every cell whose g plus its
+    /// octile distance to `t0` exceeds `bound` (fixed point; `u64::MAX`: none).
+    pub(super) fn grid_search_bounded(
+        &mut self,
+        s0: u32,
+        t0: u32,
+        heuristic: bool,
+        open: OpenKind,
+        bound: u64,
+    ) -> Result<GridPath, GridSearchError> {
         if self.fixed.narrow {
-            self.grid_search_with::<u64>(s0, t0, heuristic, open)
+            self.grid_search_with::<u64>(s0, t0, heuristic, open, bound)
         } else {
-            self.grid_search_with::<Upper>(s0, t0, heuristic, open)
+            self.grid_search_with::<Upper>(s0, t0, heuristic, open, bound)
         }
     }
 
-    /// [`grid_search`](GridSearch::grid_search) with open-list keys of type `K`.
+    /// [`grid_search_bounded`](GridSearch::grid_search_bounded) with open-list keys of
+    /// type `K`.
     pub(super) fn grid_search_with<K: GridKey>(
         &mut self,
         s0: u32,
         t0: u32,
         heuristic: bool,
         open: OpenKind,
+        bound: u64,
     ) -> Result<GridPath, GridSearchError> {
         let mut stats = SearchStats::default();
         let fx = self.fixed;
@@ -75,6 +90,8 @@ impl GridSearch {
             h,
             eight: !four,
             corner_cutting: self.options.corner_cutting,
+            bound,
+            goal: (gx, gy),
         };
         let Self {
             words,
@@ -95,11 +112,27 @@ impl GridSearch {
         {
             buckets.start(first, fx);
             let heap = K::heap(heap, wide_heap);
-            expand::<K, _, true>(&run, words, heap, buckets, stack, slot, &mut stats, *limit)
+            if bound == u64::MAX {
+                expand::<K, _, true, false>(
+                    &run, words, heap, buckets, stack, slot, &mut stats, *limit,
+                )
+            } else {
+                expand::<K, _, true, true>(
+                    &run, words, heap, buckets, stack, slot, &mut stats, *limit,
+                )
+            }
         } else {
             let heap = K::heap(heap, wide_heap);
             heap.push(first);
-            expand::<K, _, false>(&run, words, heap, buckets, stack, slot, &mut stats, *limit)
+            if bound == u64::MAX {
+                expand::<K, _, false, false>(
+                    &run, words, heap, buckets, stack, slot, &mut stats, *limit,
+                )
+            } else {
+                expand::<K, _, false, true>(
+                    &run, words, heap, buckets, stack, slot, &mut stats, *limit,
+                )
+            }
         };
         match ended {
             Expanded::Target(g) => {
@@ -171,6 +204,11 @@ pub(super) struct Run<H> {
     /// The move rules: diagonal moves at all, and through a corner with one side blocked.
     eight: bool,
     corner_cutting: bool,
+    /// Cells whose g plus octile distance to `goal` exceeds this are left out (when
+    /// `BOUNDED`).
+    bound: u64,
+    /// The target's padded coordinates.
+    goal: (u32, u32),
 }
 
 /// How [`expand`] ended.
@@ -192,7 +230,12 @@ pub(super) enum Expanded {
     clippy::too_many_arguments,
     reason = "the arrays are passed apart, see above"
 )]
-pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
+pub(super) fn expand<
+    K: GridKey,
+    H: Fn(u32, u32) -> u64,
+    const BUCKETS: bool,
+    const BOUNDED: bool,
+>(
     run: &Run<H>,
     words: &mut [u64],
     heap: &mut MinHeap<K>,
@@ -213,8 +256,15 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
         ref h,
         eight,
         corner_cutting,
+        bound,
+        goal: (gx, gy),
     } = *run;
     let (unit, diag) = (fx.unit, fx.diag);
+    // The octile distance to the target, for the bound.
+    let octile = |x: u32, y: u32| {
+        let (dx, dy) = (u64::from(x.abs_diff(gx)), u64::from(y.abs_diff(gy)));
+        dx.max(dy) * unit + dx.min(dy) * (diag - unit)
+    };
     // Every word above this one belongs to an earlier query.
     let last = base | ((1 << GEN_SHIFT) - 1);
     // The f of the cell being expanded, as the key holds it (`f >> f_shift`): every cell
@@ -305,7 +355,14 @@ pub(super) fn expand<K: GridKey, H: Fn(u32, u32) -> u64, const BUCKETS: bool>(
                 // for an illegal move (it exists: the padded border), so that one
                 // branch decides.
                 let test = base | (ng << G_SHIFT) | ((1 << G_SHIFT) - 1) | $illegal;
-                if test < *word {
+                // A cell beyond the bound lies on no path of cost within it: it is
+                // left out, its word untouched.
+                let within = || {
+                    !BOUNDED
+                        || ng + octile(x.wrapping_add_signed($dx), y.wrapping_add_signed($dy))
+                            <= bound
+                };
+                if test < *word && within() {
                     stats.reached += u64::from(*word > last);
                     *word = (test & !((1 << G_SHIFT) - 1)) | ($bit << 1);
                     let q: u32 = $q;
@@ -749,14 +806,22 @@ mod tests {
             .find_map(|c| heap.check((w - 1 - c % w, h - 1 - c / w), false).ok())
             .unwrap();
         let a = heap
-            .grid_search_with::<Upper>(s0, t0, false, OpenKind::Heap)
+            .grid_search_with::<Upper>(s0, t0, false, OpenKind::Heap, u64::MAX)
             .unwrap();
         let b = buckets
-            .grid_search_with::<Upper>(s0, t0, false, OpenKind::Buckets)
+            .grid_search_with::<Upper>(s0, t0, false, OpenKind::Buckets, u64::MAX)
             .unwrap();
         assert_eq!(a.cost, b.cost);
-        let _ = heap.grid_search_with::<Upper>(s0, NONE, false, OpenKind::Heap);
-        let _ = buckets.grid_search_with::<Upper>(s0, NONE, false, OpenKind::Buckets);
+        // Bounded by its own cost, Dijkstra keeps its path with `u128` keys too.
+        let (start, goal) = (heap.xy(s0), heap.xy(t0));
+        let unpad = |(x, y): (u32, u32)| (x as usize - 1, y as usize - 1);
+        let within = buckets
+            .dijkstra_within(unpad(start), unpad(goal), b.cost)
+            .unwrap();
+        assert_eq!(within.cells, b.cells);
+        assert!(within.stats.expansions < b.stats.expansions);
+        let _ = heap.grid_search_with::<Upper>(s0, NONE, false, OpenKind::Heap, u64::MAX);
+        let _ = buckets.grid_search_with::<Upper>(s0, NONE, false, OpenKind::Buckets, u64::MAX);
         let mut reached = 0;
         for p in 0..heap.words.len() as u32 {
             assert_eq!(heap.g_of(p), buckets.g_of(p), "cell {p}");
@@ -782,8 +847,8 @@ mod tests {
             let Ok(s0) = heap.check(cells[0], true) else { return Ok(()) };
             for &goal in &cells[1..] {
                 let t0 = heap.check(goal, false).unwrap_or(NONE);
-                let a = heap.grid_search_with::<u64>(s0, t0, false, OpenKind::Heap);
-                let b = buckets.grid_search_with::<u64>(s0, t0, false, OpenKind::Buckets);
+                let a = heap.grid_search_with::<u64>(s0, t0, false, OpenKind::Heap, u64::MAX);
+                let b = buckets.grid_search_with::<u64>(s0, t0, false, OpenKind::Buckets, u64::MAX);
                 prop_assert_eq!(&a, &b);
                 if t0 == NONE {
                     for p in 0..heap.words.len() as u32 {

@@ -184,6 +184,57 @@ impl JumpPointSearch {
         })
     }
 
+    /// Re-reads which cells of `columns` x `rows` are passable from `map`, which
+    /// differs from the map of [`new`](JumpPointSearch::new) (or the last update) only
+    /// there, at a cost set by the window rather than the map. (A map with another
+    /// `blocked_from` differs everywhere.)
+    ///
+    /// ```
+    /// use envmap::GridMap;
+    /// use search::{GridOptions, JumpPointSearch};
+    /// let mut map = GridMap::from_ascii(".....\n.....\n.....").unwrap();
+    /// let mut jps = JumpPointSearch::new(&map, GridOptions::default()).unwrap();
+    /// // A wall across the middle column leaves no way from left to right.
+    /// for j in 0..3 {
+    ///     map.zones_mut()[j * 5 + 2] = hyplan_core::Zone::Forbidden;
+    /// }
+    /// jps.update_window(&map, 2..3, 0..3).unwrap();
+    /// assert!(jps.search((0, 1), (4, 1)).is_err());
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// [`GridSearchError::SizeMismatch`] if `map` has another size than the one this
+    /// search was built for.
+    pub fn update_window(
+        &mut self,
+        map: &GridMap,
+        columns: std::ops::Range<usize>,
+        rows: std::ops::Range<usize>,
+    ) -> Result<(), GridSearchError> {
+        if map.width() != self.width || map.height() != self.height {
+            return Err(GridSearchError::SizeMismatch {
+                width: self.width,
+                height: self.height,
+                got_width: map.width(),
+                got_height: map.height(),
+            });
+        }
+        let columns = columns.start.min(self.width)..columns.end.min(self.width);
+        let blocked = map.blocked_from;
+        for j in rows.start.min(self.height)..rows.end.min(self.height) {
+            let row = &map.zones()[j * self.width..(j + 1) * self.width];
+            for i in columns.clone() {
+                if row[i] < blocked {
+                    self.bits.set_free(i + 1, j + 1);
+                } else {
+                    self.bits.set_blocked(i + 1, j + 1);
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Whether jump point search applies to the move rules `options`.
     ///
     /// ```
