@@ -118,10 +118,28 @@ impl ViewPoints<'_> {
         }
         let w = self.costmap.map.width();
         let res = self.costmap.map.resolution();
-        let mut order: Vec<usize> = (0..self.steps.len()).filter(|&c| self.usable(c)).collect();
-        order.sort_by_key(|&c| (self.steps[c], c));
+        // By steps, then by cell: counted per step, then placed in cell order (a
+        // flood's steps are dense, from 0 to the farthest cell's).
+        let usable: Vec<u32> = (0..self.steps.len())
+            .filter(|&c| self.usable(c))
+            .map(|c| c as u32)
+            .collect();
+        let most = usable.iter().map(|&c| self.steps[c as usize]).max();
+        let mut starts = vec![0usize; most.map_or(0, |m| m as usize + 2)];
+        for &c in &usable {
+            starts[self.steps[c as usize] as usize + 1] += 1;
+        }
+        for k in 1..starts.len() {
+            starts[k] += starts[k - 1];
+        }
+        let mut order = vec![0u32; usable.len()];
+        for &c in &usable {
+            let at = &mut starts[self.steps[c as usize] as usize];
+            order[*at] = c;
+            *at += 1;
+        }
         let mut best: Option<(f64, Point2, Point2)> = None;
-        for c in order {
+        for c in order.into_iter().map(|c| c as usize) {
             if best.is_some_and(|(bk, _, _)| f64::from(self.steps[c]) * res + self.min_range >= bk)
             {
                 break;
