@@ -8,7 +8,7 @@ use search::{
     JumpPointSearch, ScenEntry, read_scen,
 };
 
-use crate::common::{data_dir, legal_moves, load_movingai, octile_length, peer_maps_dir};
+use crate::common::{data_dir, flipped, legal_moves, load_movingai, octile_length, peer_maps_dir};
 
 /// Start and goal cells.
 type Pair = ((usize, usize), (usize, usize));
@@ -119,17 +119,8 @@ proptest! {
         flips in proptest::collection::vec((0usize..150, 0usize..80), 1..60),
     ) {
         let mut kept = JumpPointSearch::new(&map, GridOptions::default()).unwrap();
-        let mut changed = map.clone();
-        let (w, h) = (map.width(), map.height());
-        let (mut lo, mut hi) = ((w, h), (0, 0));
-        for (i, j) in flips {
-            let (i, j) = (i % w, j % h);
-            let z = if changed.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
-            changed.set_cell_zone(i, j, z);
-            lo = (lo.0.min(i), lo.1.min(j));
-            hi = (hi.0.max(i + 1), hi.1.max(j + 1));
-        }
-        kept.update_window(&changed, lo.0..hi.0, lo.1..hi.1).unwrap();
+        let (changed, columns, rows) = flipped(&map, &flips, &[]);
+        kept.update_window(&changed, columns, rows).unwrap();
         let mut fresh = JumpPointSearch::new(&changed, GridOptions::default()).unwrap();
         for &(s, g) in &queries {
             prop_assert_eq!(kept.search(s, g), fresh.search(s, g));

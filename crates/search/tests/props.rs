@@ -5,7 +5,7 @@ use hyplan_core::{Goal, Point2, Query, Workspace, Zone};
 use proptest::prelude::*;
 use search::{Connectivity, GridAstar, GridOptions, GridSearch, ThetaStar, astar};
 
-use crate::common::{legal_moves, octile_length};
+use crate::common::{flipped, legal_moves, octile_length, random_map};
 
 /// A random map (up to 24 x 24, about a third blocked) and two cells.
 fn scenario() -> impl Strategy<Value = (GridMap, (usize, usize), (usize, usize))> {
@@ -157,17 +157,8 @@ proptest! {
         let mut kept = GridSearch::new(&map, options).unwrap();
         // A first query leaves words of an older generation behind.
         let _ = kept.dijkstra(s, g);
-        let mut changed = map.clone();
-        let (w, h) = (map.width(), map.height());
-        let (mut lo, mut hi) = ((w, h), (0, 0));
-        for (i, j) in flips {
-            let (i, j) = (i % w, j % h);
-            let z = if changed.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
-            changed.set_cell_zone(i, j, z);
-            lo = (lo.0.min(i), lo.1.min(j));
-            hi = (hi.0.max(i + 1), hi.1.max(j + 1));
-        }
-        kept.update_window(&changed, lo.0..hi.0, lo.1..hi.1).unwrap();
+        let (changed, columns, rows) = flipped(&map, &flips, &[]);
+        kept.update_window(&changed, columns, rows).unwrap();
         let mut fresh = GridSearch::new(&changed, options).unwrap();
         let (a, b) = (kept.dijkstra(s, g), fresh.dijkstra(s, g));
         prop_assert_eq!(a.as_ref().ok().map(|p| (&p.cells, p.cost)), b.as_ref().ok().map(|p| (&p.cells, p.cost)));
@@ -194,15 +185,8 @@ proptest! {
         (four, corner_cutting) in (any::<bool>(), any::<bool>()),
         extra in prop_oneof![Just(0.0), 0.0f64..3.0],
     ) {
-        use rand::{Rng, SeedableRng};
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-        let zones = (0..w * h)
-            .map(|_| if rng.random_bool(density) { Zone::Forbidden } else { Zone::Free })
-            .collect();
-        let mut map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
         let (s, g) = ((si % w, sj % h), (gi % w, gj % h));
-        map.set_cell_zone(s.0, s.1, Zone::Free);
-        map.set_cell_zone(g.0, g.1, Zone::Free);
+        let map = random_map(w, h, density, seed, &[s, g]);
         let options = GridOptions {
             connectivity: if four { Connectivity::Four } else { Connectivity::Eight },
             corner_cutting,
@@ -235,32 +219,14 @@ proptest! {
         (si, sj, gi, gj) in (0usize..200, 0usize..14, 0usize..200, 0usize..14),
         flips in proptest::collection::vec((0usize..200, 0usize..14), 1..40),
     ) {
-        use rand::{Rng, SeedableRng};
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-        let zones = (0..w * h)
-            .map(|_| if rng.random_bool(density) { Zone::Forbidden } else { Zone::Free })
-            .collect();
-        let mut map = GridMap::from_zones(w, h, 1.0, Point2::origin(), zones).unwrap();
         let (s, g) = ((si % w, sj % h), (gi % w, gj % h));
-        map.set_cell_zone(s.0, s.1, Zone::Free);
-        map.set_cell_zone(g.0, g.1, Zone::Free);
+        let map = random_map(w, h, density, seed, &[s, g]);
         let mut kept = GridSearch::new(&map, GridOptions::default()).unwrap();
         prop_assert_eq!(kept.connected(s, g).unwrap(), kept.dijkstra(s, g).is_ok());
         prop_assert_eq!(kept.connected(g, s).unwrap(), kept.dijkstra(s, g).is_ok());
-        let mut changed = map.clone();
-        let (mut lo, mut hi) = ((w, h), (0, 0));
-        for (i, j) in flips {
-            let (i, j) = (i % w, j % h);
-            if (i, j) == s || (i, j) == g {
-                continue;
-            }
-            let z = if changed.cell_zone(i, j) == Zone::Free { Zone::Forbidden } else { Zone::Free };
-            changed.set_cell_zone(i, j, z);
-            lo = (lo.0.min(i), lo.1.min(j));
-            hi = (hi.0.max(i + 1), hi.1.max(j + 1));
-        }
-        if lo.0 < hi.0 {
-            kept.update_window(&changed, lo.0..hi.0, lo.1..hi.1).unwrap();
+        let (changed, columns, rows) = flipped(&map, &flips, &[s, g]);
+        if !columns.is_empty() {
+            kept.update_window(&changed, columns, rows).unwrap();
         }
         let mut fresh = GridSearch::new(&changed, GridOptions::default()).unwrap();
         prop_assert_eq!(kept.connected(s, g).unwrap(), fresh.dijkstra(s, g).is_ok());

@@ -212,14 +212,7 @@ impl JumpPointSearch {
         columns: std::ops::Range<usize>,
         rows: std::ops::Range<usize>,
     ) -> Result<(), GridSearchError> {
-        if map.width() != self.width || map.height() != self.height {
-            return Err(GridSearchError::SizeMismatch {
-                width: self.width,
-                height: self.height,
-                got_width: map.width(),
-                got_height: map.height(),
-            });
-        }
+        super::same_size((self.width, self.height), map)?;
         let columns = columns.start.min(self.width)..columns.end.min(self.width);
         let blocked = map.blocked_from;
         for j in rows.start.min(self.height)..rows.end.min(self.height) {

@@ -469,14 +469,7 @@ impl GridSearch {
         columns: std::ops::Range<usize>,
         rows: std::ops::Range<usize>,
     ) -> Result<(), GridSearchError> {
-        if map.width() != self.width || map.height() != self.height {
-            return Err(GridSearchError::SizeMismatch {
-                width: self.width,
-                height: self.height,
-                got_width: map.width(),
-                got_height: map.height(),
-            });
-        }
+        same_size((self.width, self.height), map)?;
         if columns.is_empty() || rows.is_empty() {
             return Ok(());
         }
@@ -699,6 +692,24 @@ impl GridSearch {
 
 /// A test map of `w x h` unit cells, blocked where `blocked` says (row-major from the
 /// bottom row).
+/// [`GridSearchError::SizeMismatch`] unless `map` is `width x height` cells (a search
+/// brought up to date with another map than the one it was built for).
+pub(super) fn same_size(
+    (width, height): (usize, usize),
+    map: &GridMap,
+) -> Result<(), GridSearchError> {
+    if map.width() == width && map.height() == height {
+        Ok(())
+    } else {
+        Err(GridSearchError::SizeMismatch {
+            width,
+            height,
+            got_width: map.width(),
+            got_height: map.height(),
+        })
+    }
+}
+
 #[cfg(test)]
 fn test_map(w: usize, h: usize, blocked: impl IntoIterator<Item = bool>) -> GridMap {
     use hyplan_core::{Point2, Zone};
