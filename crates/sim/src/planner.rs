@@ -239,10 +239,14 @@ fn shortest(
     }
     // Dijkstra's path, among the cells that can lie on a path of the optimal cost: jump
     // point search finds that cost in a fraction of the time, but not Dijkstra's path
-    // (its ties go another way, and the runs would change).
+    // (its ties go another way, and the runs would change). Should the bound fall below
+    // Dijkstra's optimum (the two searches reading the map differently), the unbounded
+    // search still finds the path.
     let optimal = jps.and_then(|jps| jps.search(s, g).ok()).map(|p| p.cost);
     let found = match optimal {
-        Some(cost) => search.dijkstra_within(s, g, cost),
+        Some(cost) => search
+            .dijkstra_within(s, g, cost)
+            .or_else(|_| search.dijkstra(s, g)),
         None => search.dijkstra(s, g),
     };
     let found = match found {
