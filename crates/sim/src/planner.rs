@@ -315,3 +315,53 @@ fn other(
     }
     Some(path)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// The navigator's plan with jump point search's bound is its plan without:
+        /// the same shortened path, on maps of free, risk and forbidden cells, at both
+        /// zone levels. Fails when the bound leaves out a cell of Dijkstra's path (with
+        /// the octile distance doubled, say).
+        #[test]
+        fn the_bound_keeps_the_navigators_plans(
+            (w, h) in (2usize..40, 2usize..40),
+            zones in proptest::collection::vec(0u8..10, 1600),
+            (si, sj, gi, gj) in (0usize..40, 0usize..40, 0usize..40, 0usize..40),
+            risk_blocks in any::<bool>(),
+        ) {
+            let zones = zones[..w * h]
+                .iter()
+                .map(|&z| match z {
+                    0..=5 => Zone::Free,
+                    6..=7 => Zone::Risk,
+                    _ => Zone::Forbidden,
+                })
+                .collect();
+            let mut map = GridMap::from_zones(w, h, 0.05, Point2::origin(), zones).unwrap();
+            map.blocked_from = if risk_blocks { Zone::Risk } else { Zone::Forbidden };
+            let (s, g) = ((si % w, sj % h), (gi % w, gj % h));
+            map.set_cell_zone(s.0, s.1, Zone::Free);
+            map.set_cell_zone(g.0, g.1, Zone::Free);
+            let goal = map.cell_center(g.0, g.1);
+            let mut bounded = GridSearch::new(&map, GridOptions::default()).unwrap();
+            let mut jps = JumpPointSearch::new(&map, GridOptions::default()).unwrap();
+            let mut plain = GridSearch::new(&map, GridOptions::default()).unwrap();
+            prop_assert_eq!(
+                shortest(&mut bounded, Some(&mut jps), &map, s, g, goal),
+                shortest(&mut plain, None, &map, s, g, goal)
+            );
+            // Without the fallback: the two searches read the zones alike, so the bound
+            // is the optimum itself and finds Dijkstra's cells.
+            if let Ok(optimum) = jps.search(s, g) {
+                let within = bounded.dijkstra_within(s, g, optimum.cost).map(|p| p.cells);
+                prop_assert_eq!(within.ok(), plain.dijkstra(s, g).ok().map(|p| p.cells));
+            }
+        }
+    }
+}
