@@ -690,8 +690,6 @@ impl GridSearch {
     }
 }
 
-/// A test map of `w x h` unit cells, blocked where `blocked` says (row-major from the
-/// bottom row).
 /// [`GridSearchError::SizeMismatch`] unless `map` is `width x height` cells (a search
 /// brought up to date with another map than the one it was built for).
 pub(super) fn same_size(
@@ -710,6 +708,8 @@ pub(super) fn same_size(
     }
 }
 
+/// A test map of `w x h` unit cells, blocked where `blocked` says (row-major from the
+/// bottom row).
 #[cfg(test)]
 fn test_map(w: usize, h: usize, blocked: impl IntoIterator<Item = bool>) -> GridMap {
     use hyplan_core::{Point2, Zone};
