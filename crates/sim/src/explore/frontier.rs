@@ -230,13 +230,10 @@ fn cut_off(
             continue;
         }
         flood.restart([(k % w, k / w)]);
-        let mut read = 0;
         loop {
-            let reached = flood.reached();
-            if reached[read..].contains(&(s as u32)) || reached.len() > budget {
+            if flood.steps()[s] != u32::MAX || flood.reached().len() > budget {
                 return false;
             }
-            read = reached.len();
             if flood.finished() {
                 break;
             }
