@@ -226,6 +226,9 @@ impl Tracker {
                     && scan.hit(k).is_some_and(|q| (q - end).norm() <= CLUSTER_GAP))
         };
         let mut out = Vec::new();
+        // The run's points as they are found (kept for the centroid, so that a kept
+        // cluster does not recompute them), one buffer for the whole scan.
+        let mut c: Vec<Point2> = Vec::new();
         let mut k = 0;
         while k < n {
             let Some(p) = point(k) else {
@@ -233,12 +236,15 @@ impl Tracker {
                 continue;
             };
             let first = k;
+            c.clear();
+            c.push(p);
             let (a, mut b) = (p, p);
             k += 1;
             while k < n
                 && let Some(q) = point(k)
                 && (q - b).norm() <= CLUSTER_GAP
             {
+                c.push(q);
                 b = q;
                 k += 1;
             }
@@ -261,9 +267,6 @@ impl Tracker {
             } else {
                 None
             };
-            // Walls make most clusters, and fail the tests above: only a kept one's points
-            // are gathered (again: `point` is a pure function of the beam).
-            let c: Vec<Point2> = (first..k).filter_map(point).collect();
             let mean = c.iter().fold(Vector2::zeros(), |m, p| m + p.coords) / c.len() as f64;
             let centre = Point2::from(mean);
             let radius = c.iter().map(|p| (p - centre).norm()).fold(0.05, f64::max);
