@@ -528,6 +528,16 @@ impl Stepped for Orca<'_> {
                 avoidance_responsibility: 0.0,
             });
         }
+        // Each agent's position as the others measure it (from the `f32` it is handed
+        // to dodgy_2d as), and whether it is anyone's neighbour.
+        let sites: Vec<(f64, f64, bool)> = agents
+            .iter()
+            .enumerate()
+            .map(|(j, a)| {
+                let eligible = self.walkers.get(j).is_none_or(|w| w.on_stage);
+                (f64::from(a.position.x), f64::from(a.position.y), eligible)
+            })
+            .collect();
         // Nearest first, ties to the lower index: a squared distance is not negative, so
         // its bits order as it does, and (bits, index) packed in a `u128` order as both.
         let mut candidates: Vec<u128> = Vec::with_capacity(agents.len());
@@ -566,17 +576,11 @@ impl Stepped for Orca<'_> {
             // The nearest neighbours, ties to the lower index (the robot last).
             candidates.clear();
             candidates.extend(
-                agents
+                sites
                     .iter()
                     .enumerate()
-                    .filter(|&(j, _)| j != k && self.walkers.get(j).is_none_or(|w| w.on_stage))
-                    .map(|(j, a)| {
-                        let d = Vector2::new(
-                            f64::from(a.position.x) - at.x,
-                            f64::from(a.position.y) - at.y,
-                        );
-                        (d.norm_squared(), j)
-                    })
+                    .filter(|&(j, &(_, _, eligible))| j != k && eligible)
+                    .map(|(j, &(x, y, _))| (Vector2::new(x - at.x, y - at.y).norm_squared(), j))
                     .filter(|&(d_sq, _)| d_sq <= reach_sq)
                     .map(|(d_sq, j)| u128::from(d_sq.to_bits()) << 64 | j as u128),
             );
