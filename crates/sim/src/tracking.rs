@@ -171,6 +171,8 @@ pub struct Tracker {
     tracks: Vec<Track>,
     ticks_per_s: f64,
     range: f64,
+    /// A cluster's points while it is read (kept between scans).
+    run: Vec<Point2>,
 }
 
 impl Tracker {
@@ -187,6 +189,7 @@ impl Tracker {
             tracks: Vec::new(),
             ticks_per_s,
             range,
+            run: Vec::new(),
         }
     }
 
@@ -210,7 +213,7 @@ impl Tracker {
     }
 
     /// The clusters of a scan's unexplained hits: (centroid, covering radius).
-    fn clusters(&self, scan: &Scan) -> Vec<Cluster> {
+    fn clusters(&self, scan: &Scan, c: &mut Vec<Point2>) -> Vec<Cluster> {
         let n = scan.ranges.len();
         let point = |k: usize| {
             (scan.ranges[k] <= self.range)
@@ -227,8 +230,7 @@ impl Tracker {
         };
         let mut out = Vec::new();
         // The run's points as they are found (kept for the centroid, so that a kept
-        // cluster does not recompute them), one buffer for the whole scan.
-        let mut c: Vec<Point2> = Vec::new();
+        // cluster does not recompute them), in `c`.
         let mut k = 0;
         while k < n {
             let Some(p) = point(k) else {
@@ -284,7 +286,9 @@ impl Tracker {
         let forget = (FORGET_S * self.ticks_per_s) as u64;
         self.tracks
             .retain(|t| tick.saturating_sub(t.last().0) <= forget);
-        let clusters = self.clusters(scan);
+        let mut run = std::mem::take(&mut self.run);
+        let clusters = self.clusters(scan, &mut run);
+        self.run = run;
         let predicted: Vec<Point2> = self
             .tracks
             .iter()
