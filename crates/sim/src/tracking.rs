@@ -212,7 +212,9 @@ impl Tracker {
         self.range + CLUSTER_GAP
     }
 
-    /// The clusters of a scan's unexplained hits: (centroid, covering radius).
+    /// The clusters of a scan's unexplained hits: (centroid, covering radius). `c` holds
+    /// each run of hits while it is read, so that a kept cluster's centroid is folded over
+    /// the points found, not over points computed again.
     fn clusters(&self, scan: &Scan, c: &mut Vec<Point2>) -> Vec<Cluster> {
         let n = scan.ranges.len();
         let point = |k: usize| {
@@ -229,8 +231,6 @@ impl Tracker {
                     && scan.hit(k).is_some_and(|q| (q - end).norm() <= CLUSTER_GAP))
         };
         let mut out = Vec::new();
-        // The run's points as they are found (kept for the centroid, so that a kept
-        // cluster does not recompute them), in `c`.
         let mut k = 0;
         while k < n {
             let Some(p) = point(k) else {
