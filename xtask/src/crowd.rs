@@ -62,8 +62,9 @@ pub struct Args {
     /// (`navigation.people_patience`; default: `sim::PEOPLE_PATIENCE`, 0 for none).
     #[arg(long, value_name = "S")]
     pub people_patience: Option<f64>,
-    /// The laser's field of view for every run, degrees (default: the scenarios' 180,
-    /// seed 004's scanner), to measure what a wider scanner sees in time.
+    /// The laser's field of view for every run, degrees, at the same angle between beams
+    /// (default: the crowd rooms' 270, `sim::CROWD_FOV_DEG`; the soak rooms' 180, seed
+    /// 004's scanner). `--fov 180` runs the crowd rooms with seed 004's scanner.
     #[arg(long, value_name = "DEG")]
     pub fov: Option<f64>,
     /// People models of the soak, comma-separated.
@@ -77,7 +78,7 @@ fn robot_options(args: &Args, patience: f64, sc: &mut sim::Scenario) {
     sc.navigation.collision_monitor = (!args.no_monitor).then(sim::CollisionMonitor::default);
     sc.navigation.people_patience = patience;
     if let Some(fov) = args.fov {
-        sc.laser.fov_deg = fov;
+        sc.laser = sc.laser.with_fov(fov);
     }
 }
 

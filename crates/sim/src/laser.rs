@@ -68,6 +68,31 @@ impl Default for Laser {
     }
 }
 
+impl Laser {
+    /// The same scanner with a field of `fov_deg` degrees at the same angle between
+    /// beams (seed 004's 720 beams over 180 degrees become 1,080 over 270).
+    ///
+    /// ```
+    /// let wide = sim::Laser::default().with_fov(270.0);
+    /// assert_eq!((wide.fov_deg, wide.beams), (270.0, 1080));
+    /// assert_eq!(wide.with_fov(180.0), sim::Laser::default());
+    /// ```
+    #[must_use]
+    pub fn with_fov(self, fov_deg: f64) -> Self {
+        let beams = (self.beams as f64 * fov_deg / self.fov_deg).round();
+        Self {
+            fov_deg,
+            // At least the two a scan needs; a bad field is the caller's check.
+            beams: if beams.is_finite() {
+                (beams as usize).max(2)
+            } else {
+                self.beams
+            },
+            ..self
+        }
+    }
+}
+
 /// One scan: where it was taken and a range per beam.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scan {

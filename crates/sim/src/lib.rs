@@ -114,8 +114,8 @@ pub use costmap::{
     rasterize,
 };
 pub use crowd::{
-    CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, PEOPLE_PATIENCE, SPEED_LIMITS, TRACK_GATE,
-    WALKING_SPEED, arrivals_alone, crowd, measure,
+    CROWD_FOV_DEG, CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, PEOPLE_PATIENCE, SPEED_LIMITS,
+    TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, measure,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PLANNER_STREAM, Sim,

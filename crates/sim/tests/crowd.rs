@@ -130,13 +130,14 @@ fn orca_crowds_walk_through() {
 }
 
 /// A person who does not look walks into the robot's side from behind it, seen at the
-/// edge of the 180-degree laser's view a moment before contact (the doors crowd 2026 /
-/// 149 of `cargo xtask crowd`, social forces, regulated pure pursuit). Without the
-/// collision monitor the robot still creeps toward them at contact (at fault); with it
-/// (the crowd scenarios' default) it has stopped.
+/// edge of a 180-degree laser's view a moment before contact (the doors crowd 2026 /
+/// 149 of `cargo xtask crowd --fov 180`, social forces, regulated pure pursuit). Without
+/// the collision monitor the robot still creeps toward them at contact (at fault); with
+/// it (the crowd scenarios' default) it has stopped.
 #[test]
 fn the_collision_monitor_stops_before_a_blind_walker_arrives() {
     let mut sc = sim::crowd(CrowdFlow::Doors, 1.0, 2026, 149);
+    sc.laser = sc.laser.with_fov(180.0);
     assert!(sc.navigation.collision_monitor.is_some());
     sc.people_model = PeopleModelKind::from_name("social-force-blind").unwrap();
     let world = sc.build_world(Path::new(&sc.name)).unwrap();
@@ -150,6 +151,32 @@ fn the_collision_monitor_stops_before_a_blind_walker_arrives() {
     sc.navigation.collision_monitor = None;
     let without = sim::run(&sc, &world, 149, GlobalPlanner::Dijkstra);
     assert!(without.trace.summary.contacts_at_fault > 0);
+}
+
+/// A person who does not look comes from behind beside the moving robot (the doors
+/// crowd 2026 / 5, social forces, regulated pure pursuit): seed 004's 180-degree laser
+/// sees them level with the robot, too late to stop, and the contact is the robot's
+/// fault even with the collision monitor; the crowd robot's 270-degree scanner
+/// ([`sim::CROWD_FOV_DEG`]) sees them in time.
+#[test]
+fn the_crowd_robot_sees_a_walker_coming_from_behind() {
+    let mut sc = sim::crowd(CrowdFlow::Doors, 1.0, 2026, 5);
+    sc.people_model = PeopleModelKind::from_name("social-force-blind").unwrap();
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    let wide = sim::run(&sc, &world, 5, GlobalPlanner::Dijkstra);
+    assert!(wide.trace.summary.reached);
+    assert_eq!(
+        wide.trace.summary.contacts_at_fault, 0,
+        "{:?}",
+        wide.trace.contacts
+    );
+    sc.laser = sc.laser.with_fov(180.0);
+    let narrow = sim::run(&sc, &world, 5, GlobalPlanner::Dijkstra);
+    assert!(
+        narrow.trace.summary.contacts_at_fault > 0,
+        "{:?}",
+        narrow.trace.contacts
+    );
 }
 
 /// People who see the robot crowd round it in the corridor (crowd 2026 / 230, social
