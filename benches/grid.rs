@@ -365,6 +365,34 @@ pub fn queries(map: &GridMap, rng: &mut ChaCha8Rng) -> Vec<Scenario> {
     out
 }
 
+/// Queries drawn as MovingAI's benchmark sets spread theirs: between random free cells of
+/// `map` (6,000 draws from a stream seeded 7), ten kept per 4-cell bucket of the optimal
+/// length, short to long, with our A*'s cost as the reference (`check` compares it with
+/// the peer's).
+pub fn bucketed_queries(map: &GridMap) -> Vec<Scenario> {
+    let (w, h) = (map.width(), map.height());
+    let mut search = GridSearch::new(map, GridOptions::default()).expect("grid");
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let mut buckets: Vec<Vec<Scenario>> = Vec::new();
+    for _ in 0..6000 {
+        let a = (rng.random_range(0..w), rng.random_range(0..h));
+        let b = (rng.random_range(0..w), rng.random_range(0..h));
+        if !map.cell_free(a.0, a.1) || !map.cell_free(b.0, b.1) {
+            continue;
+        }
+        if let Ok(p) = search.astar(a, b) {
+            let k = (p.cost / 4.0) as usize;
+            if buckets.len() <= k {
+                buckets.resize(k + 1, Vec::new());
+            }
+            if buckets[k].len() < 10 {
+                buckets[k].push((a, b, p.cost));
+            }
+        }
+    }
+    buckets.into_iter().flatten().collect()
+}
+
 /// A generator of `n x n` maps.
 type MapMaker = fn(usize, &mut ChaCha8Rng) -> GridMap;
 

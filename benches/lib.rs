@@ -1,4 +1,5 @@
 //! Criterion benches of hyplan's hot paths live in this package's `benches/` folder; the
 //! library holds the workloads they share with the examples.
 
+pub mod crowd;
 pub mod grid;

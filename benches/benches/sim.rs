@@ -97,26 +97,9 @@ fn driven_step(c: &mut Criterion) {
 }
 
 fn crowd(c: &mut Criterion) {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/sim/3-person.ron");
-    let (mut empty, _) = Scenario::load(&file).expect("scenario 3 loads");
-    empty.people.clear();
-    let mut crowd = empty.clone();
-    // Ten lanes each way across the hall below the dividing wall, staggered in time.
-    crowd.people = (0..20)
-        .map(|k| {
-            let x = 1.0 + 1.0 * f64::from(k % 10) + 0.5 * f64::from(k / 10);
-            let (a, b) = if k % 2 == 0 { (1.0, 10.0) } else { (10.0, 1.0) };
-            sim::Person {
-                path: vec![(x, a), (x, b)],
-                speed: 1.3,
-                start: 0.3 * f64::from(k),
-                radius: 0.25,
-                walk: sim::Walk::BackAndForth,
-                group: None,
-            }
-        })
-        .collect();
-    crowd.people_model = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
+    let file = hyplan_benches::crowd::hall_file();
+    let social = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
+    let (empty, crowd) = hyplan_benches::crowd::hall(social);
     let mut orca = crowd.clone();
     orca.people_model = sim::PeopleModelKind::Orca(sim::OrcaParams::default());
     for (name, scenario) in [

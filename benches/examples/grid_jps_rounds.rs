@@ -3,12 +3,14 @@
 //! group `grid_search` does), the fastest of a few rounds counting.
 //!
 //! ```sh
-//! cargo run --release -p hyplan-benches --example grid_jps_rounds [-- ROUNDS [--generated] [--only SUITE]]
+//! cargo run --release -p hyplan-benches --example grid_jps_rounds [-- ROUNDS [--generated] [--bucketed] [--only SUITE]]
 //! ```
 //!
 //! Without `--generated`: the MovingAI suites (the arena pair of `data/movingai` and the
-//! peers' maze of `data/generated`); with it, the generated 512 x 512 maps as well. Every
-//! cost is checked against the optimum before timing.
+//! peers' maze of `data/generated`); with it, the generated 512 x 512 maps as well. With
+//! `--bucketed`, the generated maps' queries are drawn as MovingAI spreads a benchmark
+//! set's over their lengths (`grid::bucketed_queries`) instead of their ten long ones.
+//! Every cost is checked against the optimum before timing.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -21,7 +23,13 @@ fn main() {
     let rounds: usize = args.iter().find_map(|a| a.parse().ok()).unwrap_or(5).max(1);
     let mut suites: Vec<Suite> = movingai().into_iter().collect();
     if args.iter().any(|a| a == "--generated") {
-        suites.extend(generated());
+        let bucketed = args.iter().any(|a| a == "--bucketed");
+        suites.extend(generated().into_iter().map(|mut s| {
+            if bucketed {
+                s.queries = grid::bucketed_queries(&s.map);
+            }
+            s
+        }));
     }
     // `--only NAME`: that suite alone.
     if let Some(k) = args.iter().position(|a| a == "--only") {
