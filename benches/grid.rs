@@ -393,6 +393,31 @@ pub fn bucketed_queries(map: &GridMap) -> Vec<Scenario> {
     buckets.into_iter().flatten().collect()
 }
 
+/// The densities of MovingAI's random-obstacle family (`random512-10` to `random512-40`),
+/// one generated 512 x 512 map each (blocked cells drawn from a stream seeded with the
+/// percentage), with [`bucketed_queries`] as that family's benchmark sets spread theirs.
+pub fn random_family() -> Vec<Suite> {
+    const NAMES: [&str; 7] = [
+        "random512-10",
+        "random512-15",
+        "random512-20",
+        "random512-25",
+        "random512-30",
+        "random512-35",
+        "random512-40",
+    ];
+    NAMES
+        .iter()
+        .zip((10_u32..=40).step_by(5))
+        .map(|(&name, percent)| {
+            let mut rng = ChaCha8Rng::seed_from_u64(u64::from(percent));
+            let map = random(512, f64::from(percent) / 100.0, &mut rng);
+            let queries = bucketed_queries(&map);
+            Suite { name, map, queries }
+        })
+        .collect()
+}
+
 /// A generator of `n x n` maps.
 type MapMaker = fn(usize, &mut ChaCha8Rng) -> GridMap;
 

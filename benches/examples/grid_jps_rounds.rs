@@ -4,6 +4,7 @@
 //!
 //! ```sh
 //! cargo run --release -p hyplan-benches --example grid_jps_rounds [-- ROUNDS [--generated] [--bucketed] [--only SUITE]]
+//! cargo run --release -p hyplan-benches --example grid_jps_rounds -- ROUNDS --random-family
 //! ```
 //!
 //! Without `--generated`: the MovingAI suites (the arena pair of `data/movingai` and the
@@ -11,6 +12,12 @@
 //! `--bucketed`, the generated maps' queries are drawn as MovingAI spreads a benchmark
 //! set's over their lengths (`grid::bucketed_queries`) instead of their ten long ones.
 //! Every cost is checked against the optimum before timing.
+//!
+//! `--random-family` runs, instead, the densities of MovingAI's random-obstacle family
+//! (`random512-10` to `random512-40`: 10 to 40 % of the cells blocked, in steps of 5), one
+//! generated 512 x 512 map each ([`grid::random_family`]) with bucketed queries, and adds a
+//! line of the family's totals, the sums over its maps, as the benchmark's family columns
+//! are reported.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -21,8 +28,13 @@ use search::{GridOptions, GridSearch, JumpPointSearch};
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let rounds: usize = args.iter().find_map(|a| a.parse().ok()).unwrap_or(5).max(1);
-    let mut suites: Vec<Suite> = movingai().into_iter().collect();
-    if args.iter().any(|a| a == "--generated") {
+    let family = args.iter().any(|a| a == "--random-family");
+    let mut suites: Vec<Suite> = if family {
+        grid::random_family()
+    } else {
+        movingai().into_iter().collect()
+    };
+    if !family && args.iter().any(|a| a == "--generated") {
         let bucketed = args.iter().any(|a| a == "--bucketed");
         suites.extend(generated().into_iter().map(|mut s| {
             if bucketed {
@@ -39,6 +51,7 @@ fn main() {
     println!(
         "suite,queries,astar_expansions,jps_expansions,jps_ms,astar_ms,peer_ms,jps/peer,astar/peer,jps/astar"
     );
+    let mut totals = (0, 0, 0, 0.0, 0.0, 0.0);
     for s in &suites {
         let mut astar = GridSearch::new(&s.map, GridOptions::default()).expect("grid");
         let mut jps = JumpPointSearch::new(&s.map, GridOptions::default()).expect("jps");
@@ -67,6 +80,24 @@ fn main() {
             s.queries.len(),
             a.expansions,
             j.expansions,
+            tj * 1e3,
+            ta * 1e3,
+            tp * 1e3,
+            tj / tp,
+            ta / tp,
+            tj / ta
+        );
+        totals.0 += s.queries.len();
+        totals.1 += a.expansions;
+        totals.2 += j.expansions;
+        totals.3 += tj;
+        totals.4 += ta;
+        totals.5 += tp;
+    }
+    if family {
+        let (q, ea, ej, tj, ta, tp) = totals;
+        println!(
+            "family,{q},{ea},{ej},{:.3},{:.3},{:.3},{:.4},{:.4},{:.3}",
             tj * 1e3,
             ta * 1e3,
             tp * 1e3,

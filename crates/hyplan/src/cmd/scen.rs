@@ -16,8 +16,8 @@ pub enum Algo {
     Astar,
     /// Dijkstra (no heuristic).
     Dijkstra,
-    /// Jump point search (A*'s costs, only jump points expanded; the fastest except on
-    /// maps with about a fifth of the cells blocked at random).
+    /// Jump point search (A*'s costs, only jump points expanded; the fastest, or as fast
+    /// as A* on maps with about a fifth of the cells blocked at random).
     Jps,
 }
 
@@ -36,13 +36,17 @@ pub struct Args {
     #[arg(long)]
     pub map: Option<PathBuf>,
     /// The grid planner to run (`--algo` is the old name of this flag); all three find the
-    /// optimal lengths. Use jps on game maps, city streets, rooms and mazes, astar where
-    /// about a fifth of the cells are blocked at random: total search time over the
-    /// queries of generated 512 x 512 maps, city streets JPS 0.51 ms against A* 8.3 ms,
-    /// 32-cell rooms 0.54 against 11.0 ms, a maze of 4-cell corridors 3.1 against 49.8 ms,
-    /// 35 % blocked at random 15.6 against 17.2 ms, but 20 % blocked at random 9.5 against
-    /// 8.8 ms; the arena game map's 160 queries 0.045 against 0.25 ms (`cargo run
-    /// --release -p hyplan-benches --example grid_jps_rounds -- 20 --generated`).
+    /// optimal lengths. Use jps: on game maps, city streets and rooms it is 5 to 60 times
+    /// faster than astar, on mazes 1.5 (1-cell corridors) to 120 times, on random
+    /// obstacles up to 1.4 times, but with about a fifth of the cells blocked at random the
+    /// two take the same time. Total search time over the queries of generated 512 x 512
+    /// maps, JPS against A*: city streets 0.25 against 6.3 ms, 32-cell rooms 0.27 against
+    /// 9.4 ms, a maze of 4-cell corridors 2.3 against 42 ms, 35 % blocked at random 11.5
+    /// against 15.6 ms, 20 % blocked 7.5 against 8.0 ms; the arena game map's 160 queries
+    /// 0.033 against 0.163 ms (`cargo run --release -p hyplan-benches --example
+    /// grid_jps_rounds -- 20 --generated`). Over queries of every length on random maps 10
+    /// to 40 % blocked, 1,300-1,550 a map (`-- 3 --random-family`): JPS 0.70-0.98 of A*'s
+    /// time, 0.98 at 20 %.
     #[arg(long = "planner", alias = "algo", value_enum, default_value_t = Algo::Astar)]
     pub planner: Algo,
     /// Only the first N scenarios.
