@@ -7,7 +7,8 @@
 //! ```
 //!
 //! Suites by name as in `grid_jps_rounds` (`arena`, `maze`, and the generated ones such as
-//! `streets512`). Prints `suite us_per_query expansions pushes` per suite.
+//! `streets512`; the random-obstacle family's maps of `--random-family` with a `family:`
+//! prefix, `family:random512-25`). Prints `suite us_per_query expansions pushes` per suite.
 
 use std::time::Instant;
 
@@ -23,8 +24,19 @@ fn main() {
     if names.iter().any(|n| n != "arena" && n != "maze") {
         suites.extend(generated());
     }
+    // The random-obstacle family's maps are named as the generated ones: asked for with a
+    // `family:` prefix (`family:random512-20`).
+    let family = if names.iter().any(|n| n.starts_with("family:")) {
+        grid::random_family()
+    } else {
+        Vec::new()
+    };
     for name in names {
-        let Some(s) = suites.iter().find(|s| s.name == name) else {
+        let found = match name.strip_prefix("family:") {
+            Some(name) => family.iter().find(|s| s.name == name),
+            None => suites.iter().find(|s| s.name == name),
+        };
+        let Some(s) = found else {
             eprintln!("no suite {name}");
             continue;
         };
