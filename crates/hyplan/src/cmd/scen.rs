@@ -37,7 +37,7 @@ pub struct Args {
     pub map: Option<PathBuf>,
     /// The grid planner to run (`--algo` is the old name of this flag); all three find the
     /// optimal lengths. Use jps: on game maps, city streets and rooms it is 5 to 60 times
-    /// faster than astar, on mazes 1.5 (1-cell corridors) to 120 times, on random
+    /// faster than astar, on mazes 1.3 (1-cell corridors) to 120 times, on random
     /// obstacles up to 1.4 times, but with about a fifth of the cells blocked at random the
     /// two take the same time. Total search time over the queries of generated 512 x 512
     /// maps, JPS against A*: city streets 0.25 against 6.3 ms, 32-cell rooms 0.27 against
