@@ -33,8 +33,9 @@ pub struct Args {
     /// Local planners, comma-separated: rpp, trajectory, dwa.
     #[arg(long, value_delimiter = ',', default_values_t = ["rpp".to_string(), "trajectory".to_string()])]
     pub controllers: Vec<String>,
-    /// People models, comma-separated (see `sim::PeopleModelKind::NAMES`).
-    #[arg(long, value_delimiter = ',', default_values_t = ["social-force".to_string(), "social-force-blind".to_string()])]
+    /// People models, comma-separated (see `sim::PeopleModelKind::NAMES`). Default: both
+    /// reacting models, people who see the robot and people who do not.
+    #[arg(long, value_delimiter = ',', default_values_t = ["social-force".to_string(), "social-force-blind".to_string(), "orca".to_string(), "orca-blind".to_string()])]
     pub models: Vec<String>,
     /// Seed of the generated scenarios.
     #[arg(long, default_value_t = 2026)]
@@ -67,8 +68,8 @@ pub struct Args {
     /// 004's scanner). `--fov 180` runs the crowd rooms with seed 004's scanner.
     #[arg(long, value_name = "DEG")]
     pub fov: Option<f64>,
-    /// People models of the soak, comma-separated.
-    #[arg(long, value_delimiter = ',', default_values_t = ["scripted".to_string(), "social-force".to_string(), "social-force-blind".to_string()])]
+    /// People models of the soak, comma-separated. Default: every one.
+    #[arg(long, value_delimiter = ',', default_values_t = ["scripted".to_string(), "social-force".to_string(), "social-force-blind".to_string(), "orca".to_string(), "orca-blind".to_string()])]
     pub soak_models: Vec<String>,
 }
 
