@@ -370,14 +370,10 @@ fn config_for(
     Ok(match CONFIGS.get(&key) {
         Some(c) => c,
         None => {
-            let named: registry::PlannerConfig = planner.parse().map_err(value_err)?;
-            let step = match step {
-                Some(s) => Some(s * scale),
-                None if named.wants_default_step() => Some(0.05 * map.map.bounds().diagonal()),
-                None => None,
-            };
+            let diagonal = map.map.bounds().diagonal();
             let mut config = registry::PlannerConfig::from_spec(planner, |mut c| {
-                if let Some(step) = step {
+                c = c.map_sized(diagonal);
+                if let Some(step) = step.map(|s| s * scale) {
                     c = c.with_step(step);
                 }
                 // No max_iter / time_limit: the planner's own budget rule, as on the CLI.

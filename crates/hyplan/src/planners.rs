@@ -58,8 +58,10 @@ impl TypedValueParser for SpecParser {
 /// The planner flags shared by every planner; each planner takes what it uses.
 #[derive(Debug, Clone, Copy)]
 pub struct PlannerFlags {
-    /// Maximum edge length, world units, when given (or the CLI's default for the plain
-    /// sampling planners).
+    /// The map's diagonal, world units, when the defaults are to follow the map's size
+    /// ([`PlannerConfig::map_sized`], applied before the flags below).
+    pub map_diagonal: Option<f64>,
+    /// Maximum edge length, world units, when given.
     pub step: Option<f64>,
     /// Goal bias, a probability.
     pub goal_bias: f64,
@@ -69,16 +71,6 @@ pub struct PlannerFlags {
     pub max_iterations: Option<u64>,
     /// `--time-limit`, when given.
     pub time_limit: Option<Duration>,
-}
-
-/// The planner `spec` names with its defaults and its own `key=value` pairs, before any
-/// flag: what the command line asks about capabilities.
-///
-/// # Errors
-///
-/// An unknown name (listing the known ones), key or value.
-pub fn named(spec: &str) -> anyhow::Result<PlannerConfig> {
-    spec.parse().map_err(|e| anyhow::anyhow!("--planner: {e}"))
 }
 
 /// The planner `spec` names, configured from `flags` and then from its `key=value` pairs.
@@ -92,6 +84,9 @@ pub fn named(spec: &str) -> anyhow::Result<PlannerConfig> {
 /// An unknown name (listing the known ones), key or value.
 pub fn configure(spec: &str, flags: &PlannerFlags) -> anyhow::Result<PlannerConfig> {
     PlannerConfig::from_spec(spec, |mut c| {
+        if let Some(diagonal) = flags.map_diagonal {
+            c = c.map_sized(diagonal);
+        }
         if let Some(step) = flags.step {
             c = c.with_step(step);
         }
@@ -114,6 +109,7 @@ mod tests {
     #[test]
     fn every_name_builds_and_pairs_beat_flags() {
         let flags = PlannerFlags {
+            map_diagonal: None,
             step: Some(1.0),
             goal_bias: 0.05,
             goal_radius: 1.0,
@@ -138,5 +134,29 @@ mod tests {
         assert_eq!(c.budget(), Some(hyplan_core::Budget::iterations(500)));
         let c = configure("astar:max_iterations=9", &capped).unwrap();
         assert_eq!(c.budget(), Some(hyplan_core::Budget::iterations(9)));
+        // On a map: the map-sized defaults first, then the flags, then the pairs.
+        let on_map = PlannerFlags {
+            map_diagonal: Some(200.0),
+            step: None,
+            goal_radius: 0.0,
+            ..flags
+        };
+        assert_eq!(configure("rrt", &on_map).unwrap().step(), Some(10.0));
+        let bt = |spec: &str, flags: &PlannerFlags| match configure(spec, flags).unwrap() {
+            PlannerConfig::RrtAstarBt(p) => (p.step, p.goal_radius),
+            other => panic!("{other:?}"),
+        };
+        let (step, radius) = bt("rrt-astar-bt", &on_map);
+        assert!(
+            (step / radius - 2.0).abs() < 1e-12 && step < 10.0,
+            "{step} {radius}"
+        );
+        let given = PlannerFlags {
+            step: Some(3.0),
+            goal_radius: 1.0,
+            ..on_map
+        };
+        assert_eq!(bt("rrt-astar-bt", &given), (3.0, 1.0));
+        assert_eq!(bt("rrt-astar-bt:step=7", &given), (7.0, 1.0));
     }
 }

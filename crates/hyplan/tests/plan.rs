@@ -544,3 +544,28 @@ fn a_spent_budget_names_itself_and_the_flag() {
         "{msg}"
     );
 }
+
+/// Every planner with the command line's defaults on a building map in metres that
+/// nobody here drew (the AWS small house, `data/ros_maps`): each finds a path. RRT-A*-BT's
+/// own defaults are seed 000's pixels (a 40-unit step, a 20-unit goal radius); given as
+/// metres on a 20 m house, they left its tree at one or two nodes until the budget ran
+/// out, before the command line scaled them to the map.
+#[test]
+fn every_planner_plans_on_a_building_map_with_the_defaults() {
+    let map = repo_file("data/ros_maps/aws_small_house/map.yaml");
+    for planner in registry::PlannerConfig::names() {
+        let o = plan(&[
+            "--map",
+            &map,
+            "--start",
+            "8.475,2.075",
+            "--goal",
+            "-8.675,-4.475",
+            "--planner",
+            planner,
+            "--json",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{planner}: {}", stderr(&o));
+        assert_eq!(json(&o)["solved"], true, "{planner}");
+    }
+}

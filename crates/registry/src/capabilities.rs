@@ -51,11 +51,14 @@ pub struct Capabilities {
     pub uses_risk: bool,
     /// Has a maximum edge length (`step`).
     pub has_step: bool,
-    /// The library's default step (1 to 3 world units) is a placeholder that the command
-    /// line, `hyplan bench` and the Python bindings replace by 5 % of the map's diagonal
-    /// when the user gives none: few-unit steps need millions of samples to cross a
-    /// building-sized map. RRT-A*-BT keeps its 40 units; scenario files replaying a paper
-    /// give the paper's steps themselves.
+    /// The library's default step fits one size of map, so the command line, `hyplan
+    /// bench` and the Python bindings replace it by one that follows the map's size when
+    /// the user gives none ([`PlannerConfig::map_sized`]). The 1-3 world units of the
+    /// sampling planners and three hybrids are placeholders (few-unit steps need millions
+    /// of samples to cross a building-sized map), replaced by 5 % of the map's diagonal;
+    /// RRT-A*-BT's 40 units (with its goal radius) are seed 000's pixels, kept in their
+    /// proportion to the paper's room. Scenario files replaying a paper give the paper's
+    /// steps themselves.
     pub wants_default_step: bool,
     /// Samples the goal with a probability (`goal_bias`).
     pub goal_bias: bool,
@@ -89,7 +92,10 @@ impl PlannerKind {
             uses_risk: self == K::SafeRrtStar,
             has_step: !search && self != K::GaPchip,
             wants_default_step: matches!(family, Family::Sampling)
-                || matches!(self, K::RrtAstarRefine | K::HybridRrtAstar | K::SafeRrtStar),
+                || matches!(
+                    self,
+                    K::RrtAstarBt | K::RrtAstarRefine | K::HybridRrtAstar | K::SafeRrtStar
+                ),
             goal_bias: matches!(
                 self,
                 K::Rrt | K::RrtStar | K::RrtAstarRefine | K::HybridRrtAstar | K::SafeRrtStar
@@ -131,6 +137,41 @@ impl PlannerConfig {
     #[must_use]
     pub fn wants_default_step(&self) -> bool {
         self.capabilities().wants_default_step
+    }
+
+    /// The planner with the defaults that follow the map's size, for a map whose diagonal
+    /// is `diagonal` world units: the placeholder steps become 5 % of the diagonal
+    /// ([`Capabilities::wants_default_step`]), and RRT-A*-BT's step and goal radius, seed
+    /// 000's 40 and 20 px on its 960 x 640 px room, keep their ratio to the diagonal (so
+    /// they are 40 and 20 on a picture of that size, and 1.2 and 0.6 m on the AWS small
+    /// house's 25 m square map). The command line, `hyplan bench` and the Python bindings
+    /// apply it first, then what the user sets; the other parameters are left as they are.
+    ///
+    /// ```
+    /// use registry::PlannerConfig;
+    /// let rrt: PlannerConfig = "rrt".parse()?;
+    /// assert_eq!(rrt.map_sized(100.0).step(), Some(5.0));
+    /// let bt: PlannerConfig = "rrt-astar-bt".parse()?;
+    /// assert_eq!(bt.clone().map_sized(960_f64.hypot(640.0)), bt);
+    /// let PlannerConfig::RrtAstarBt(p) = bt.map_sized(960_f64.hypot(640.0) / 10.0) else {
+    ///     unreachable!()
+    /// };
+    /// assert!((p.step - 4.0).abs() < 1e-12 && (p.goal_radius - 2.0).abs() < 1e-12);
+    /// # Ok::<(), registry::RegistryError>(())
+    /// ```
+    #[must_use]
+    pub fn map_sized(self, diagonal: f64) -> Self {
+        match self {
+            Self::RrtAstarBt(mut p) => {
+                // Seed 000's room, at one world unit per pixel.
+                let scale = diagonal / 960_f64.hypot(640.0);
+                p.step *= scale;
+                p.goal_radius *= scale;
+                Self::RrtAstarBt(p)
+            }
+            c if c.wants_default_step() => c.with_step(0.05 * diagonal),
+            c => c,
+        }
     }
 
     /// What the run's `explored` figure counts.

@@ -43,7 +43,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         }
     }
     let placeholder: Vec<&str> = PlannerKind::all()
-        .filter(|k| k.capabilities().wants_default_step)
+        .filter(|k| k.capabilities().wants_default_step && *k != PlannerKind::RrtAstarBt)
         .map(PlannerKind::name)
         .collect();
     outln!(
@@ -51,7 +51,8 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
          the path or prove there is none; the others sample max(100000, cells / 4) times \
          (GA-PCHIP: 200 generations). --max-iter N or --time-limit S set a budget.\n\
          A step of a few units ({}) is replaced by 5% of the map's diagonal unless \
-         --step or NAME:step=X is given.",
+         --step or NAME:step=X is given. rrt-astar-bt's step and goal radius (seed 000's \
+         pixels) are scaled to the map as they were to the paper's 960 x 640 px room.",
         placeholder.join(", ")
     )?;
     Ok(ExitCode::SUCCESS)

@@ -116,6 +116,7 @@ const SIM_HELP: &[(PlannerKind, &str)] = &[(
 /// parameters; every other planner runs on the sim's map as `hyplan plan` builds it.
 fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
     let flags = crate::planners::PlannerFlags {
+        map_diagonal: None,
         // World units are metres here: 0.25 m steps, like a few costmap cells.
         step: Some(0.25),
         goal_bias: 0.05,

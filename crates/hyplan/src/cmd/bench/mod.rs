@@ -162,8 +162,11 @@ fn default_smooth() -> String {
 
 /// A planner spec from `NAME[:key=value,...]` (the registry's form, see
 /// [`registry::PlannerConfig::from_spec`]), with the command's defaults for what the user
-/// left out: a step of 5% of the map's diagonal for the plain sampling planners, the time
-/// limit (and no iteration cap) as every planner's budget. The pairs win over both.
+/// left out: the defaults that follow the map's size
+/// ([`registry::PlannerConfig::map_sized`]: a step of 5% of the map's diagonal for the
+/// plain sampling planners, RRT-A*-BT's step and goal radius in seed 000's proportion),
+/// the time limit (and no iteration cap) as every planner's budget. The pairs win over
+/// both.
 ///
 /// # Errors
 ///
@@ -179,12 +182,9 @@ pub fn planner_spec(
                 .map_err(|_| format!("time limit {t}: not a duration"))
         })
         .transpose()?;
-    let config = PlannerConfig::from_spec(text, |mut c| {
-        if c.wants_default_step() {
-            c = c.with_step(0.05 * map_diagonal);
-        }
+    let config = PlannerConfig::from_spec(text, |c| {
         // No time limit: every planner keeps its own budget rule (`hyplan plan`'s too).
-        c.with_limits(None, time_limit)
+        c.map_sized(map_diagonal).with_limits(None, time_limit)
     })
     .map_err(|e| e.to_string())?;
     let planner = config.build();
@@ -656,11 +656,15 @@ mod tests {
         let budget = spec.planner.budget().unwrap();
         assert_eq!(budget.max_time, Some(std::time::Duration::from_millis(500)));
         assert_eq!(budget.max_iterations, Some(u64::MAX));
-        // The map-sized default step for the plain sampling planners only.
+        // The map-sized default step: 5 % of the diagonal for the plain sampling
+        // planners, RRT-A*-BT's seed-000 pixels in proportion (40 on the paper's room).
         let (spec, _) = planner_spec("rrt", 100.0, None).unwrap();
         assert_eq!(spec.planner.step(), Some(5.0));
-        let (spec, _) = planner_spec("rrt-astar-bt", 100.0, None).unwrap();
+        let room = 960_f64.hypot(640.0);
+        let (spec, _) = planner_spec("rrt-astar-bt", room, None).unwrap();
         assert_eq!(spec.planner.step(), Some(40.0));
+        let (spec, _) = planner_spec("rrt-astar-bt", room / 8.0, None).unwrap();
+        assert_eq!(spec.planner.step(), Some(5.0));
         assert!(
             planner_spec("rrt:stpe=2", 1.0, None)
                 .err()
