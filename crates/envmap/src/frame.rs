@@ -154,6 +154,24 @@ impl InputFrame {
         }
     }
 
+    /// The yaw of a ROS map's `origin` (radians counter-clockwise; 0 but for
+    /// [`InputFrame::MapFrame`]): what a ROS map written from the grid must say again for
+    /// its cells to land where the input's did.
+    ///
+    /// ```
+    /// use envmap::InputFrame;
+    /// use hyplan_core::Point2;
+    /// assert_eq!(InputFrame::World.yaw(), 0.0);
+    /// assert_eq!(InputFrame::MapFrame { origin: Point2::origin(), yaw: 3.14 }.yaw(), 3.14);
+    /// ```
+    #[must_use]
+    pub const fn yaw(&self) -> f64 {
+        match self {
+            Self::MapFrame { yaw, .. } => *yaw,
+            Self::Cells { .. } | Self::World => 0.0,
+        }
+    }
+
     /// A short description of the frame's unit for messages.
     #[must_use]
     pub const fn describe(&self) -> &'static str {

@@ -41,8 +41,9 @@
 //!   (`.mcap`) map from a topic other than [`DEFAULT_MAP_TOPIC`] (feature `mcap`).
 //! - [`read_movingai`], [`parse_movingai`]: MovingAI `.map`.
 //! - [`read_ros_yaml`], [`parse_ros_yaml`], [`RosMapMeta`]: ROS map_server; [`write_ros`]
-//!   (a three-zone map, `mode: scale`) and [`write_ros_occupancy`] (free / occupied /
-//!   unknown cells, `mode: trinary`, as map_saver): binary PGM (`P5`) plus YAML.
+//!   (a three-zone map, `mode: scale`; [`write_ros_turned`] with the origin's yaw) and
+//!   [`write_ros_occupancy`] (free / occupied / unknown cells, `mode: trinary`, as
+//!   map_saver): binary PGM (`P5`) plus YAML.
 //! - [`read_picture`], [`decode_picture`], [`write_picture`], [`render_zones`],
 //!   [`render_mask`]: PNG / PGM / PPM and renderings in the paper's colours.
 //! - [`MapError`]: every failure, naming the file, line or field and the value.
@@ -138,7 +139,7 @@ pub use io::movingai::{parse_movingai, read_movingai};
 pub use io::ros::{
     Occupancy, ROS_FREE, ROS_FREE_THRESH, ROS_OCCUPIED, ROS_OCCUPIED_THRESH, ROS_RISK, ROS_UNKNOWN,
     RosCell, RosMapMeta, RosMode, parse_ros_yaml, read_ros_yaml, ros_cell_counts, write_ros,
-    write_ros_occupancy,
+    write_ros_occupancy, write_ros_turned,
 };
 pub use io::{
     DEFAULT_MAP_TOPIC, DEFAULT_MAX_CELLS, LoadOptions, LoadedMap, MapKind, load_map, load_map_topic,

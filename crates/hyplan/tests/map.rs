@@ -297,3 +297,40 @@ fn pgm_outputs_are_p5_and_read_back_by_nav2s_rule() {
         }
     }
 }
+
+/// A ROS map whose origin has a yaw (the MIT Stata basement's, 3.14 rad) comes back out
+/// turned as it went in: `hyplan map --yaml` writes the yaw again and `hyplan plan --mcap`
+/// writes the map's origin pose with it, so a query in the input's map frame plans the
+/// same path on the input and on either output. Written with yaw 0, the same query lay
+/// off both outputs' maps.
+#[test]
+fn a_turned_ros_map_stays_turned() {
+    let input = repo_file("data/ros_maps/mit_stata_basement/stata_basement.yaml");
+    let yaml = SCRATCH.path("stata_again.yaml");
+    let mcap = SCRATCH.path("stata_plan.mcap");
+    let o = hyplan(&["map", &input, "--yaml", yaml.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&yaml).unwrap();
+    assert!(text.contains("origin: [25.9, 48.5, 3.14]"), "{text}");
+    let plan = |map: &str, extra: &[&str]| {
+        let q = [
+            "plan",
+            "--map",
+            map,
+            "--start",
+            "-55.494,34.24",
+            "--goal",
+            "25.291,-1.622",
+            "--planner",
+            "jps",
+            "--json",
+        ];
+        let o = hyplan(&[&q[..], extra].concat());
+        assert_eq!(o.status.code(), Some(0), "{map}: {}", stderr(&o));
+        json(&o)["length"].as_f64().unwrap()
+    };
+    let length = plan(&input, &["--mcap", mcap.to_str().unwrap()]);
+    assert!((length - 113.446).abs() < 1e-3, "{length}");
+    assert_eq!(plan(yaml.to_str().unwrap(), &[]), length);
+    assert_eq!(plan(mcap.to_str().unwrap(), &[]), length);
+}

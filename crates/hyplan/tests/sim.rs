@@ -339,6 +339,25 @@ fn sim_takes_a_ros_map() {
     assert_exit(&o, 2, &["--time-limit = 0: must be finite and > 0"]);
 }
 
+/// On a ROS map whose origin has a yaw (the MIT Stata basement's, 3.14 rad) `--start` and
+/// `--goal` are metres in the map frame, as for `hyplan plan`, and explore's default
+/// start is that frame's origin. Taken as the grid's own frame, these points lay outside
+/// the map.
+#[test]
+fn sim_and_explore_take_map_frame_points_on_a_turned_map() {
+    let map = repo_file("data/ros_maps/mit_stata_basement/stata_basement.yaml");
+    let o = hyplan(&["sim", &map, "--start=-55.494,34.24", "--goal=-52.5,34.2"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("goal reached"), "{}", stdout(&o));
+    let o = hyplan(&["explore", &map, "--time-limit", "2"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("starting at (0.00, 0.00)"),
+        "{}",
+        stderr(&o)
+    );
+}
+
 #[test]
 fn explore_bad_input_exits_2_naming_the_field() {
     let f = SCRATCH.file("room2.ron", room(""));

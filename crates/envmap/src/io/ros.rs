@@ -360,6 +360,31 @@ pub enum Occupancy {
 ///
 /// [`MapError::Write`] on io failures.
 pub fn write_ros(map: &GridMap, yaml_path: &Path) -> Result<(), MapError> {
+    write_ros_turned(map, 0.0, yaml_path)
+}
+
+/// [`write_ros`] with `yaw` (radians) as the origin's third value: the grid turned by
+/// `yaw` about its lower-left corner in the map frame, as a ROS map loaded with that yaw
+/// was ([`InputFrame::yaw`](crate::InputFrame::yaw)), so that its cells land where the
+/// input's did. A yaw that is not finite is written as 0.
+///
+/// ```
+/// use envmap::{GridMap, LoadOptions, load_map, write_ros_turned};
+/// let dir = std::env::temp_dir().join(format!("envmap-turned-{}", std::process::id()));
+/// std::fs::create_dir_all(&dir)?;
+/// let yaml = dir.join("turned.yaml");
+/// let map = GridMap::from_ascii("..#\n...")?.with_frame(0.05, hyplan_core::Point2::new(2.0, 1.0))?;
+/// write_ros_turned(&map, 3.14, &yaml)?;
+/// assert!(std::fs::read_to_string(&yaml)?.contains("origin: [2.0, 1.0, 3.14]"));
+/// let back = load_map(&yaml, &LoadOptions::default())?;
+/// assert_eq!(back.frame.yaw(), 3.14);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+///
+/// [`MapError::Write`] on io failures.
+pub fn write_ros_turned(map: &GridMap, yaw: f64, yaml_path: &Path) -> Result<(), MapError> {
     let (w, h) = (map.width(), map.height());
     let mut data = vec![0u8; w * h];
     for j in 0..h {
@@ -375,7 +400,7 @@ pub fn write_ros(map: &GridMap, yaml_path: &Path) -> Result<(), MapError> {
         yaml_path,
         (w, h, data),
         map.resolution(),
-        map.origin(),
+        (map.origin(), if yaw.is_finite() { yaw } else { 0.0 }),
         RosMode::Scale,
     )
 }
@@ -462,18 +487,18 @@ pub fn write_ros_occupancy(
         yaml_path,
         (width, height, data),
         resolution,
-        origin,
+        (origin, 0.0),
         RosMode::Trinary,
     )
 }
 
 /// Writes the PGM (`P5`, rows top first in `data`) beside `yaml_path` and the YAML naming
-/// it, in `mode` with map_saver's thresholds.
+/// it, in `mode` with map_saver's thresholds, the origin's corner and yaw given.
 fn write_pair(
     yaml_path: &Path,
     (w, h, data): (usize, usize, Vec<u8>),
     resolution: f64,
-    origin: Point2,
+    (origin, yaw): (Point2, f64),
     mode: RosMode,
 ) -> Result<(), MapError> {
     let pgm_path = yaml_path.with_extension("pgm");
@@ -498,12 +523,13 @@ fn write_pair(
         RosMode::Raw => "raw",
     };
     let yaml = format!(
-        "image: {}\nmode: {mode}\nresolution: {:?}\norigin: [{:?}, {:?}, 0.0]\n\
+        "image: {}\nmode: {mode}\nresolution: {:?}\norigin: [{:?}, {:?}, {:?}]\n\
          negate: 0\noccupied_thresh: {ROS_OCCUPIED_THRESH:?}\nfree_thresh: {ROS_FREE_THRESH:?}\n",
         pgm_name.trim(),
         resolution,
         origin.x,
-        origin.y
+        origin.y,
+        yaw
     );
     std::fs::write(yaml_path, yaml).map_err(|source| MapError::Write {
         path: yaml_path.to_path_buf(),

@@ -287,8 +287,8 @@ fn scenario_of_map(args: &Args) -> anyhow::Result<sim::Scenario> {
                 max_cells: args.max_cells,
                 ..envmap::LoadOptions::default()
             };
-            let map = super::load_map(&args.scenario, &opts)?.map;
-            let start = open_start(&map, clearance).with_context(|| {
+            let loaded = super::load_map(&args.scenario, &opts)?;
+            let start = open_start(&loaded.map, loaded.frame, clearance).with_context(|| {
                 format!(
                     "{}: no free spot {clearance:.2} m from every obstacle to start from",
                     args.scenario.display()
@@ -317,10 +317,14 @@ fn scenario_of_map(args: &Args) -> anyhow::Result<sim::Scenario> {
 }
 
 /// The map frame's origin when it is at least `clearance` from every blocked cell, else
-/// the cell centre farthest from them (the first found among equals); `None` when no
-/// cell is that far.
-fn open_start(map: &envmap::GridMap, clearance: f64) -> Option<(f64, f64)> {
-    if map.clearance_at(Point2::origin()) >= clearance {
+/// the cell centre farthest from them (the first found among equals), in the map frame
+/// (`frame`); `None` when no cell is that far.
+fn open_start(
+    map: &envmap::GridMap,
+    frame: envmap::InputFrame,
+    clearance: f64,
+) -> Option<(f64, f64)> {
+    if map.clearance_at(frame.to_world(0.0, 0.0)) >= clearance {
         return Some((0.0, 0.0));
     }
     let mut best: Option<(f64, Point2)> = None;
@@ -333,5 +337,5 @@ fn open_start(map: &envmap::GridMap, clearance: f64) -> Option<(f64, f64)> {
             }
         }
     }
-    best.map(|(_, c)| (c.x, c.y))
+    best.map(|(_, c)| frame.from_world(c))
 }

@@ -75,7 +75,8 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         )?;
     }
     if let Some(yaml) = &args.yaml {
-        envmap::write_ros(&loaded.map, yaml)
+        // The input's yaw again: the grid is the input's, turned as it was.
+        envmap::write_ros_turned(&loaded.map, loaded.frame.yaw(), yaml)
             .with_context(|| format!("writing --yaml {}", yaml.display()))?;
     }
     if args.json {

@@ -102,6 +102,23 @@ pub struct OnMap {
 /// name the file given.
 pub fn scenario_on_map(map: &std::path::Path, on: &OnMap) -> anyhow::Result<::sim::Scenario> {
     use anyhow::Context as _;
+    // The simulator runs in the grid's frame; on a map whose origin has a yaw that is the
+    // map frame turned by it, so the flags' map-frame points are turned into it (as
+    // `hyplan plan` does). A YAML that does not read is the scenario's error below.
+    let frame = envmap::read_ros_yaml(map).map_or(envmap::InputFrame::World, |meta| {
+        if meta.yaw == 0.0 {
+            envmap::InputFrame::World
+        } else {
+            envmap::InputFrame::MapFrame {
+                origin: meta.origin,
+                yaw: meta.yaw,
+            }
+        }
+    });
+    let (start, goal) = (
+        frame.to_world(on.start.0, on.start.1),
+        frame.to_world(on.goal.0, on.goal.1),
+    );
     let file = map
         .file_name()
         .with_context(|| format!("{}: not a file", map.display()))?
@@ -111,10 +128,10 @@ pub fn scenario_on_map(map: &std::path::Path, on: &OnMap) -> anyhow::Result<::si
     let text = format!(
         "SimScenario(name: {name:?}, description: {what:?}, world: (map: Some(Ros({file:?}))), \
          start: ({:?}, {:?}), goal: ({:?}, {:?}), known_map: {}, time_limit: {:?})",
-        on.start.0,
-        on.start.1,
-        on.goal.0,
-        on.goal.1,
+        start.x,
+        start.y,
+        goal.x,
+        goal.y,
         on.known_map,
         on.time_limit,
         name = format!("{}-{stem}", on.kind),

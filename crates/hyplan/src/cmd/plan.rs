@@ -218,7 +218,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     if let Some(path) = &args.mcap {
         let plan = first.as_ref().and_then(|o| o.plan.as_ref());
         let curve = first.as_ref().and_then(|o| o.curve.as_deref());
-        write_bag(path, &setup.map, plan, curve)?;
+        write_bag(path, &setup.map, setup.frame, plan, curve)?;
     }
     if let Some(svg_path) = &args.svg {
         let plan = first.as_ref().and_then(|o| o.plan.as_ref());
@@ -493,11 +493,14 @@ fn print_summary(records: &[RunRecord]) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Writes the map, the plan, its smoothed curve and the trees as a ROS 2 bag (world
-/// frame `map`, every stamp 0).
+/// Writes the map, the plan, its smoothed curve and the trees as a ROS 2 bag (frame `map`,
+/// every stamp 0). A ROS map whose origin has a yaw goes out turned by it, as it came in,
+/// and the paths and trees in its map frame (the frame of the query and of the printed
+/// paths); other maps in their world frame.
 fn write_bag(
     path: &std::path::Path,
     map: &GridMap,
+    frame: InputFrame,
     plan: Option<&Plan>,
     curve: Option<&[Point2]>,
 ) -> anyhow::Result<()> {
@@ -505,13 +508,17 @@ fn write_bag(
     use hyplan_core::Zone;
     let mut out = bag::BagWriter::create(path)?;
     let origin = map.origin();
+    let to_map = |p: &Point2| match frame {
+        InputFrame::MapFrame { .. } => frame.from_world(*p),
+        InputFrame::Cells { .. } | InputFrame::World => (p.x, p.y),
+    };
     let grid = bag::OccupancyGrid {
         header: Header::at(0, "map"),
         info: bag::MapMetaData {
             resolution: map.resolution() as f32,
             width: u32::try_from(map.width())?,
             height: u32::try_from(map.height())?,
-            origin: bag::Pose::planar(origin.x, origin.y, 0.0),
+            origin: bag::Pose::planar(origin.x, origin.y, frame.yaw()),
             ..bag::MapMetaData::default()
         },
         data: map
@@ -525,7 +532,7 @@ fn write_bag(
             .collect(),
     };
     out.write("/map", 0, &grid)?;
-    let xy = |pts: &[Point2]| pts.iter().map(|p| (p.x, p.y)).collect::<Vec<_>>();
+    let xy = |pts: &[Point2]| pts.iter().map(to_map).collect::<Vec<_>>();
     if let Some(plan) = plan {
         out.write("/plan", 0, &bag::Path::planar(0, "map", xy(&plan.path)))?;
         let blue = ColorRGBA {
@@ -544,7 +551,7 @@ fn write_bag(
                         tree.parent.iter().enumerate().filter_map(|(i, p)| {
                             p.map(|p| [tree.points[p as usize], tree.points[i]])
                         });
-                    let points = edges.flatten().map(|p| (p.x, p.y));
+                    let points = edges.flatten().map(|p| to_map(&p));
                     Marker::planar(
                         Header::at(0, "map"),
                         "tree",
