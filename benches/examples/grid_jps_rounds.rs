@@ -51,7 +51,7 @@ fn main() {
     println!(
         "suite,queries,astar_expansions,jps_expansions,jps_ms,astar_ms,peer_ms,jps/peer,astar/peer,jps/astar"
     );
-    let mut totals = (0, 0, 0, 0.0, 0.0, 0.0);
+    let mut totals = Row::default();
     for s in &suites {
         let mut astar = GridSearch::new(&s.map, GridOptions::default()).expect("grid");
         let mut jps = JumpPointSearch::new(&s.map, GridOptions::default()).expect("jps");
@@ -74,36 +74,56 @@ fn main() {
         for _ in 0..rounds {
             tp = tp.min(time(&mut || grid::run_peer(s)));
         }
-        println!(
-            "{},{},{},{},{:.3},{:.3},{:.3},{:.4},{:.4},{:.3}",
-            s.name,
-            s.queries.len(),
-            a.expansions,
-            j.expansions,
-            tj * 1e3,
-            ta * 1e3,
-            tp * 1e3,
-            tj / tp,
-            ta / tp,
-            tj / ta
-        );
-        totals.0 += s.queries.len();
-        totals.1 += a.expansions;
-        totals.2 += j.expansions;
-        totals.3 += tj;
-        totals.4 += ta;
-        totals.5 += tp;
+        let row = Row {
+            queries: s.queries.len(),
+            astar_expansions: a.expansions,
+            jps_expansions: j.expansions,
+            jps: tj,
+            astar: ta,
+            peer: tp,
+        };
+        row.print(s.name);
+        totals.add(&row);
     }
     if family {
-        let (q, ea, ej, tj, ta, tp) = totals;
+        totals.print("family");
+    }
+}
+
+/// One line of the table: a suite's (or the family's summed) queries, expansions and
+/// seconds.
+#[derive(Default)]
+struct Row {
+    queries: usize,
+    astar_expansions: u64,
+    jps_expansions: u64,
+    jps: f64,
+    astar: f64,
+    peer: f64,
+}
+
+impl Row {
+    fn add(&mut self, other: &Row) {
+        self.queries += other.queries;
+        self.astar_expansions += other.astar_expansions;
+        self.jps_expansions += other.jps_expansions;
+        self.jps += other.jps;
+        self.astar += other.astar;
+        self.peer += other.peer;
+    }
+
+    fn print(&self, name: &str) {
         println!(
-            "family,{q},{ea},{ej},{:.3},{:.3},{:.3},{:.4},{:.4},{:.3}",
-            tj * 1e3,
-            ta * 1e3,
-            tp * 1e3,
-            tj / tp,
-            ta / tp,
-            tj / ta
+            "{name},{},{},{},{:.3},{:.3},{:.3},{:.4},{:.4},{:.3}",
+            self.queries,
+            self.astar_expansions,
+            self.jps_expansions,
+            self.jps * 1e3,
+            self.astar * 1e3,
+            self.peer * 1e3,
+            self.jps / self.peer,
+            self.astar / self.peer,
+            self.jps / self.astar
         );
     }
 }
