@@ -357,8 +357,9 @@ impl Explorer {
         // the test had ended such goals within half a second, undoing the pass
         // (measurements/issue-27.md).
         let too_costly = !self.final_goal && self.frontier_cost(map, f) > self.ex.costmap_threshold;
-        let too_little =
-            !too_costly && information_gain(map, f, self.ex.filter_radius) < self.ex.min_gain;
+        let too_little = self.ex.drop_seen_goals
+            && !too_costly
+            && information_gain(map, f, self.ex.filter_radius) < self.ex.min_gain;
         if (here - self.anchor.0).norm() >= 0.2 || self.look.is_some() {
             self.anchor = (here, tick);
         }

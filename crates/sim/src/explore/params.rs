@@ -120,6 +120,13 @@ pub struct Exploration {
     /// Frontiers with less unknown area than this within `filter_radius` are dropped,
     /// m^2 (`filter.py`: 0.2).
     pub min_gain: f64,
+    /// Whether the current goal ends as soon as its frontier fails the filter's gain test
+    /// (its unknown area seen on the way there). `false`, the default, drives on to it, as
+    /// the reference's robot does (its `move_base` goal stays until reached or aborted):
+    /// dropping it at once sent the robot to whatever frontier the detectors had left at
+    /// the far end of a corridor before they saw its near end, and on the MIT Stata
+    /// basement it then shuttled along its corridor (docs/measurements/issue-27.md).
+    pub drop_seen_goals: bool,
     /// Radius of the assigner's information gain, m (`assigner.py`: `info_radius` 1.0).
     pub info_radius: f64,
     /// Weight of the information gain in the revenue (`assigner.py`: 3).
@@ -198,6 +205,7 @@ impl Default for Exploration {
             costmap_threshold: 70,
             filter_radius: 0.5,
             min_gain: 0.2,
+            drop_seen_goals: false,
             info_radius: 1.0,
             info_multiplier: 3.0,
             hysteresis_radius: 3.0,
