@@ -154,6 +154,26 @@ impl InputFrame {
         }
     }
 
+    /// The frame of a ROS map whose `origin` is the grid's lower-left corner at `origin`
+    /// turned by `yaw` (radians): [`InputFrame::World`] without a yaw, else
+    /// [`InputFrame::MapFrame`].
+    ///
+    /// ```
+    /// use envmap::InputFrame;
+    /// use hyplan_core::Point2;
+    /// assert_eq!(InputFrame::ros(Point2::new(1.0, 2.0), 0.0), InputFrame::World);
+    /// let turned = InputFrame::ros(Point2::new(1.0, 2.0), 3.14);
+    /// assert_eq!(turned, InputFrame::MapFrame { origin: Point2::new(1.0, 2.0), yaw: 3.14 });
+    /// ```
+    #[must_use]
+    pub fn ros(origin: Point2, yaw: f64) -> Self {
+        if yaw == 0.0 {
+            Self::World
+        } else {
+            Self::MapFrame { origin, yaw }
+        }
+    }
+
     /// The yaw of a ROS map's `origin` (radians counter-clockwise; 0 but for
     /// [`InputFrame::MapFrame`]): what a ROS map written from the grid must say again for
     /// its cells to land where the input's did.

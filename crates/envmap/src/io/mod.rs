@@ -246,13 +246,8 @@ pub fn load_map_topic(path: &Path, topic: &str, opts: &LoadOptions) -> Result<Lo
             path: path.to_path_buf(),
             source,
         })?;
-    let frame = if frame_kind_world && yaw != 0.0 {
-        InputFrame::MapFrame {
-            origin: map.origin(),
-            yaw,
-        }
-    } else if frame_kind_world {
-        InputFrame::World
+    let frame = if frame_kind_world {
+        InputFrame::ros(map.origin(), yaw)
     } else {
         InputFrame::Cells {
             height: map.height(),

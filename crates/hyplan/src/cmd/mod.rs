@@ -106,14 +106,7 @@ pub fn scenario_on_map(map: &std::path::Path, on: &OnMap) -> anyhow::Result<::si
     // map frame turned by it, so the flags' map-frame points are turned into it (as
     // `hyplan plan` does). A YAML that does not read is the scenario's error below.
     let frame = envmap::read_ros_yaml(map).map_or(envmap::InputFrame::World, |meta| {
-        if meta.yaw == 0.0 {
-            envmap::InputFrame::World
-        } else {
-            envmap::InputFrame::MapFrame {
-                origin: meta.origin,
-                yaw: meta.yaw,
-            }
-        }
+        envmap::InputFrame::ros(meta.origin, meta.yaw)
     });
     let (start, goal) = (
         frame.to_world(on.start.0, on.start.1),

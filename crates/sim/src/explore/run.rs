@@ -88,7 +88,8 @@ pub enum GoalEnd {
     NoProgress,
     /// The filter's costmap test failed on it (an obstacle came near).
     Cost,
-    /// The filter's gain test failed on it (its unknown area was seen).
+    /// The filter's gain test failed on it (its unknown area was seen), with
+    /// [`Exploration::drop_seen_goals`](crate::Exploration::drop_seen_goals) only.
     Gain,
     /// The assigner sent the robot to another frontier on its way
     /// ([`AssignerMode::Reference`](crate::AssignerMode::Reference)); not blacklisted.
