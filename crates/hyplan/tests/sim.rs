@@ -345,6 +345,32 @@ fn sim_takes_a_ros_map() {
     assert_exit(&o, 2, &["--time-limit = 0: must be finite and > 0"]);
 }
 
+/// `--crowd D` places people on the map's floor (who react, under social forces unless
+/// `--people-model` says otherwise) and reports the crowd's figures; a bad density or a
+/// scenario without a map is refused, naming the flag.
+#[test]
+fn sim_places_a_crowd_on_a_map() {
+    let map = repo_file("data/ros_maps/aws_small_house/map.yaml");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["sim", &map, "--start=-5.02,-2.72", "--goal", "8.775,2.475"];
+        args.extend_from_slice(extra);
+        hyplan(&args)
+    };
+    let o = run(&["--crowd", "4", "--seed", "2"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.starts_with("crowd: 4 people on 108 m^2"), "{text}");
+    assert!(text.contains("among people:"), "{text}");
+    assert!(text.contains("0 at fault"), "{text}");
+    // The same seed, the same run.
+    assert_eq!(stdout(&run(&["--crowd", "4", "--seed", "2"])), text);
+    let o = run(&["--crowd", "-1"]);
+    assert_exit(&o, 2, &["--crowd -1", "must be finite and >= 0"]);
+    let f = SCRATCH.file("no-map.ron", hall("", "", "(0.5, 1.5)"));
+    let o = hyplan(&["sim", &f, "--crowd", "1"]);
+    assert_exit(&o, 2, &["--crowd", "has no map"]);
+}
+
 /// On a ROS map whose origin has a yaw (the MIT Stata basement's, 3.14 rad) `--start` and
 /// `--goal` are metres in the map frame, as for `hyplan plan`, and explore's default
 /// start is that frame's origin. Taken as the grid's own frame, these points lay outside

@@ -284,6 +284,18 @@ fn along(path: &[(f64, f64)], mut s: f64) -> ((f64, f64), usize) {
     (path[path.len() - 1], path.len().saturating_sub(2))
 }
 
+/// A walking speed: [`WALKING_SPEED`]'s normal, drawn again until within
+/// [`SPEED_LIMITS`].
+pub(crate) fn walking_speed(rng: &mut impl Rng) -> f64 {
+    let speeds = Normal::new(WALKING_SPEED.0, WALKING_SPEED.1).expect("a valid normal");
+    loop {
+        let v: f64 = speeds.sample(rng);
+        if (SPEED_LIMITS.0..=SPEED_LIMITS.1).contains(&v) {
+            break v;
+        }
+    }
+}
+
 /// The people of a crowd: a Poisson stream over `[-T, time_limit]`, `T` the time a person
 /// takes to cross, each arrival a group; those who set off before 0 start on their way.
 fn people(
@@ -293,13 +305,6 @@ fn people(
     robot: (f64, f64),
     rng: &mut ChaCha8Rng,
 ) -> Vec<Person> {
-    let speeds = Normal::new(WALKING_SPEED.0, WALKING_SPEED.1).expect("a valid normal");
-    let speed = |rng: &mut ChaCha8Rng| loop {
-        let v: f64 = speeds.sample(rng);
-        if (SPEED_LIMITS.0..=SPEED_LIMITS.1).contains(&v) {
-            break v;
-        }
-    };
     // Mean route length and group size, from draws of the same generator's routes.
     let mut probe = ChaCha8Rng::seed_from_u64(0x5eed);
     let samples: Vec<(f64, usize)> = (0..256)
@@ -325,7 +330,7 @@ fn people(
             break;
         }
         let (path, size) = route(flow, rng);
-        let v = speed(rng);
+        let v = walking_speed(rng);
         group += 1;
         for m in 0..size {
             // Members side by side, 0.6 m apart across the walking direction.

@@ -36,6 +36,9 @@ pub const TICKS_PER_SECOND: u64 = 200;
 pub const NOISE_STREAM: u64 = 1;
 /// Planner stream of a run's seed.
 pub const PLANNER_STREAM: u64 = 2;
+/// Stream of a run's seed that people placed on a map are drawn from
+/// ([`crate::people_on_map`]).
+pub const PEOPLE_STREAM: u64 = 3;
 
 /// The ChaCha8 stream `s` of `seed`: each consumer of randomness draws from its own.
 ///

@@ -25,7 +25,9 @@
 //!   [`Walk`] and the [`PeopleModel`] trait ([`Scripted`] walkers; [`SocialForce`],
 //!   Helbing and Molnár's social forces, [`SocialForceParams`]; [`Orca`], van den Berg
 //!   et al.'s reciprocal velocity obstacles, [`OrcaParams`]), chosen by
-//!   [`PeopleModelKind`].
+//!   [`PeopleModelKind`]; [`people_on_map`] ([`MapCrowd`], [`MapCrowdError`]): walkers
+//!   placed on a loaded map's floor at a density ([`PERSON_CLEARANCE`],
+//!   [`MAX_MAP_PEOPLE`], [`PEOPLE_STREAM`]).
 //! - Sensing and mapping: [`Laser`], [`LaserModel`], [`Scan`] (exact ray casts, seeded
 //!   noise); [`Mapping`], [`OccupancyGrid`] (clamped log-odds, ROS values [`FREE`],
 //!   [`OCCUPIED`], [`UNKNOWN`]); [`Tracker`], [`Mover`] (people's velocities).
@@ -87,6 +89,7 @@ mod explore;
 mod grid_cast;
 mod kinematics;
 mod laser;
+mod map_crowd;
 mod mapping;
 mod monitor;
 mod navigator;
@@ -118,8 +121,8 @@ pub use crowd::{
     TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, measure,
 };
 pub use engine::{
-    FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PLANNER_STREAM, Sim,
-    TICKS_PER_SECOND, TickInfo, every, noise_stream, stream, time_of,
+    FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PEOPLE_STREAM, PLANNER_STREAM,
+    Sim, TICKS_PER_SECOND, TickInfo, every, noise_stream, stream, time_of,
 };
 pub use explore::{
     Assigner, AssignerMode, ContactCounter, Coverage, CoverageMeter, DetectorCost, DetectorKind,
@@ -136,6 +139,7 @@ pub use kinematics::{
     twist_of, wheel_speeds, wrap_angle,
 };
 pub use laser::{Laser, LaserModel, NearSegments, Scan};
+pub use map_crowd::{MAX_MAP_PEOPLE, MapCrowd, MapCrowdError, PERSON_CLEARANCE, people_on_map};
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use monitor::CollisionMonitor;
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};

@@ -4,11 +4,13 @@
 use std::borrow::Cow;
 
 use dodgy_2d::{Agent, AvoidanceOptions, Obstacle, Vec2};
+use envmap::GridMap;
 use hyplan_core::{Point2, Zone};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use crate::boxgrid::{BoxGrid, Marks};
+use crate::grid_cast::GridRays;
 use crate::people::{Stepped, Stepper, discs_ahead, on_stage};
 use crate::social_force::{KEEP_RIGHT, heading};
 use crate::world::{Disc, Person, Segment, StaticWorld, pt};
@@ -146,13 +148,78 @@ struct Walker {
     on_stage: bool,
 }
 
-/// The walls as ORCA obstacles, and a coarse grid of buckets to find those near a person
-/// without sweeping them all.
+/// The walls as ORCA obstacles, a coarse grid of buckets to find the drawn ones near a
+/// person without sweeping them all, and a loaded map's cell edges by the grid line they
+/// lie on, to find those a person sees.
 #[derive(Debug, Clone, Default)]
 struct Walls {
     obstacles: Vec<Obstacle>,
-    /// Each obstacle's bounding box, in buckets.
+    /// The bounding box of each obstacle that is not a loaded map's cell edge, in buckets.
     grid: BoxGrid,
+    /// The obstacle of each box of `grid`.
+    boxed: Vec<u32>,
+    /// The bounding box of each of a loaded map's cell edges, in buckets.
+    cell_grid: BoxGrid,
+    /// The obstacle of each box of `cell_grid`.
+    cell_boxed: Vec<u32>,
+    /// A loaded map's cell edges.
+    cell_edges: CellEdges,
+}
+
+/// Within this distance of a person every cell edge of a loaded map is theirs to avoid,
+/// seen or not, m: rays a few degrees apart miss the one-cell steps of a slanted wall's
+/// outline at a few decimetres, and those are the edges a step may reach.
+const CELL_EDGES_ALL_WITHIN: f64 = 1.5;
+
+/// Rays a person casts to find the loaded map's cell edges they see: one every 5 degrees.
+const WALL_RAYS: usize = 72;
+
+/// A loaded map's cell edges (its boundary runs between forbidden and other cells), by
+/// the grid line each lies on, so that the edge a ray hits is found from the hit point.
+#[derive(Debug, Clone, Default)]
+struct CellEdges {
+    origin: Point2,
+    resolution: f64,
+    /// The runs on each horizontal grid line `y = origin.y + j resolution`, by their
+    /// lowest x.
+    rows: Vec<Vec<Run>>,
+    /// The runs on each vertical grid line `x = origin.x + i resolution`, by their lowest y.
+    cols: Vec<Vec<Run>>,
+    /// The rays' unit directions.
+    rays: Vec<Vector2<f64>>,
+}
+
+/// A run of cell edges on a grid line: from `lo` to `hi` along it, m, and its obstacles
+/// (`count` of them from `first`: one per solid side).
+#[derive(Debug, Clone, Copy)]
+struct Run {
+    lo: f64,
+    hi: f64,
+    first: u32,
+    count: u32,
+}
+
+impl CellEdges {
+    /// Calls `f` with the obstacles of each run that `h`, a point on a grid line, lies on.
+    fn at(&self, h: Point2, mut f: impl FnMut(u32)) {
+        // A hit is computed on the line it crosses: on it to rounding.
+        const ON_LINE: f64 = 1e-6;
+        let mut on = |lines: &[Vec<Run>], across: f64, along: f64| {
+            let u = across / self.resolution;
+            let k = u.round();
+            if (u - k).abs() > ON_LINE || k < 0.0 || k as usize >= lines.len() {
+                return;
+            }
+            let runs = &lines[k as usize];
+            let slack = ON_LINE * self.resolution;
+            let from = runs.partition_point(|r| r.hi < along - slack);
+            for r in runs[from..].iter().take_while(|r| r.lo <= along + slack) {
+                (r.first..r.first + r.count).for_each(&mut f);
+            }
+        };
+        on(&self.rows, h.y - self.origin.y, h.x);
+        on(&self.cols, h.x - self.origin.x, h.y);
+    }
 }
 
 /// Vertices of the polygon standing in for a round obstacle.
@@ -173,7 +240,7 @@ impl Walls {
         let open = |a: Point2, b: Point2| Obstacle::Open {
             vertices: vec![vec2(a), vec2(b)],
         };
-        let mut push_edge = |s: &Segment, solid_left: Option<bool>| {
+        let push_edge = |obstacles: &mut Vec<Obstacle>, s: &Segment, solid_left: Option<bool>| {
             if s.a == s.b {
                 return;
             }
@@ -189,8 +256,10 @@ impl Walls {
         for s in &statics.segments {
             let e = s.b - s.a;
             let left = Vector2::new(-e.y, e.x);
-            push_edge(s, s.outward.map(|n| left.dot(&n) < 0.0));
+            push_edge(&mut obstacles, s, s.outward.map(|n| left.dot(&n) < 0.0));
         }
+        let shapes_end = obstacles.len();
+        let mut cell_runs = Vec::with_capacity(statics.grid_segments.len());
         for s in &statics.grid_segments {
             let solid_left = statics.grid.as_ref().map(|g| {
                 let e = s.b - s.a;
@@ -199,8 +268,11 @@ impl Walls {
                 g.world_to_cell(probe)
                     .is_some_and(|(i, j)| g.cell_zone(i, j) == Zone::Forbidden)
             });
-            push_edge(s, solid_left);
+            let first = obstacles.len();
+            push_edge(&mut obstacles, s, solid_left);
+            cell_runs.push((s, first as u32, (obstacles.len() - first) as u32));
         }
+        let cells_end = obstacles.len();
         for d in &statics.discs {
             // Counter-clockwise (solid inside), around the disc.
             let out = d.radius / (std::f64::consts::PI / DISC_SIDES as f64).cos();
@@ -212,44 +284,123 @@ impl Walls {
                 .collect();
             obstacles.push(Obstacle::Closed { vertices });
         }
-        let boxes: Vec<(Point2, Point2)> = obstacles
-            .iter()
-            .map(|o| {
-                let (Obstacle::Open { vertices } | Obstacle::Closed { vertices }) = o;
-                let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
-                let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-                for v in vertices {
-                    let (x, y) = (f64::from(v.x), f64::from(v.y));
-                    lo = Point2::new(lo.x.min(x), lo.y.min(y));
-                    hi = Point2::new(hi.x.max(x), hi.y.max(y));
-                }
-                (lo, hi)
-            })
-            .collect();
+        let cell_edges = statics
+            .grid
+            .as_ref()
+            .map(|g| CellEdges::new(g, &cell_runs))
+            .unwrap_or_default();
+        let (cell_boxed, boxed): (Vec<u32>, Vec<u32>) = (0..obstacles.len() as u32)
+            .partition(|&k| (shapes_end..cells_end).contains(&(k as usize)));
+        let boxes = |of: &[u32]| -> Vec<(Point2, Point2)> {
+            of.iter()
+                .map(|&k| {
+                    let (Obstacle::Open { vertices } | Obstacle::Closed { vertices }) =
+                        &obstacles[k as usize];
+                    let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
+                    let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+                    for v in vertices {
+                        let (x, y) = (f64::from(v.x), f64::from(v.y));
+                        lo = Point2::new(lo.x.min(x), lo.y.min(y));
+                        hi = Point2::new(hi.x.max(x), hi.y.max(y));
+                    }
+                    (lo, hi)
+                })
+                .collect()
+        };
         Self {
+            grid: BoxGrid::new(boxes(&boxed), cell),
+            cell_grid: BoxGrid::new(boxes(&cell_boxed), CELL_EDGES_ALL_WITHIN),
             obstacles,
-            grid: BoxGrid::new(boxes, cell),
+            boxed,
+            cell_boxed,
+            cell_edges,
         }
     }
 
-    /// The indices of the obstacles whose bounding box comes within `reach` of `p`,
-    /// nearest first (ties to the lower index), into `out.indices`, but for single edges
-    /// that `p` is behind ([`back_facing`]).
-    fn near(&self, p: Point2, reach: f64, out: &mut Near) {
+    /// The obstacles near `p`, nearest first (ties to the lower index), into
+    /// `out.indices`, but for single edges that `p` is behind ([`back_facing`]): those
+    /// whose bounding box comes within `reach`; of a loaded map's cell edges, those within
+    /// [`CELL_EDGES_ALL_WITHIN`] and those that one of [`WALL_RAYS`] rays from `p` (cast on
+    /// `cells`, the map's) hits within `reach`.
+    fn near(&self, p: Point2, reach: f64, cells: Option<&GridRays<'_>>, out: &mut Near) {
         out.indices.clear();
         out.keyed.clear();
         let at = vec2(p);
         let (obstacles, keyed) = (&self.obstacles, &mut out.keyed);
-        self.grid.near(p, reach, &mut out.marks, |k| {
+        let mut take = |k: u32| {
             let obstacle = &obstacles[k as usize];
             if !back_facing(obstacle, at) {
                 keyed.push((distance_sq(obstacle, at).to_bits(), k));
             }
-        });
+        };
+        self.grid
+            .near(p, reach, &mut out.marks, |b| take(self.boxed[b as usize]));
+        self.cell_grid.near(
+            p,
+            reach.min(CELL_EDGES_ALL_WITHIN),
+            &mut out.cell_marks,
+            |b| take(self.cell_boxed[b as usize]),
+        );
+        if let Some(cells) = cells
+            && !self.cell_edges.rays.is_empty()
+        {
+            let rays = &self.cell_edges.rays;
+            out.ranges.clear();
+            out.ranges.resize(rays.len(), reach);
+            cells.lower(p, rays, &mut out.ranges, reach);
+            for (d, &t) in rays.iter().zip(&out.ranges) {
+                if t < reach {
+                    self.cell_edges.at(p + d * t, &mut take);
+                }
+            }
+        }
         // Nearest first, as RVO2 orders obstacle neighbours: an edge hidden behind a
-        // nearer one's half-plane is then skipped.
+        // nearer one's half-plane is then skipped. Two rays may hit one edge.
         out.keyed.sort_unstable();
+        out.keyed.dedup();
         out.indices.extend(out.keyed.iter().map(|&(_, k)| k));
+    }
+}
+
+impl CellEdges {
+    /// The runs of `map`'s cell edges, each with its obstacles: `(segment, first,
+    /// count)`.
+    fn new(map: &GridMap, runs: &[(&Segment, u32, u32)]) -> Self {
+        let (o, res) = (map.origin(), map.resolution());
+        let mut rows = vec![Vec::new(); map.height() + 1];
+        let mut cols = vec![Vec::new(); map.width() + 1];
+        for &(s, first, count) in runs {
+            let (lines, across, lo, hi) = if s.a.y == s.b.y {
+                (&mut rows, s.a.y - o.y, s.a.x.min(s.b.x), s.a.x.max(s.b.x))
+            } else {
+                (&mut cols, s.a.x - o.x, s.a.y.min(s.b.y), s.a.y.max(s.b.y))
+            };
+            let k = (across / res).round();
+            if k >= 0.0 && (k as usize) < lines.len() {
+                lines[k as usize].push(Run {
+                    lo,
+                    hi,
+                    first,
+                    count,
+                });
+            }
+        }
+        for line in rows.iter_mut().chain(&mut cols) {
+            line.sort_by(|a, b| a.lo.total_cmp(&b.lo));
+        }
+        let rays = (0..WALL_RAYS)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / WALL_RAYS as f64;
+                Vector2::new(a.cos(), a.sin())
+            })
+            .collect();
+        Self {
+            origin: o,
+            resolution: res,
+            rows,
+            cols,
+            rays,
+        }
     }
 }
 
@@ -261,8 +412,11 @@ struct Near {
     indices: Vec<u32>,
     /// (squared distance's bits, index) of each, before sorting.
     keyed: Vec<(u32, u32)>,
-    /// The bucket query's own.
+    /// The bucket queries' own.
     marks: Marks,
+    cell_marks: Marks,
+    /// The rays' ranges to the loaded map's cells.
+    ranges: Vec<f64>,
 }
 
 /// Whether `obstacle` is a single edge with `p` strictly on its solid side, for
@@ -347,9 +501,15 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 /// - **Walls.** The static world's edges are one-sided open obstacles (solid on the side
 ///   of their outline's inside, or of a loaded map's occupied cell); loose edges are
 ///   obstacles on both sides; discs are circumscribed 12-gons. Each person is given only
-///   the obstacles whose bounding box lies within RVO2's obstacle range
-///   (`obstacle_time_horizon x max speed + radius`), found in a coarse grid built once,
-///   nearest first as in RVO2.
+///   the obstacles within RVO2's obstacle range (`obstacle_time_horizon x max speed +
+///   radius`), nearest first as in RVO2: drawn ones whose bounding box is in range,
+///   found in a coarse grid built once; of a loaded map's cell edges, those within 1.5 m
+///   and those one of 72 rays from the person (one every 5 degrees, cast on the map's
+///   cells) hits in range. RVO2 leaves out an edge hidden behind a nearer one's
+///   half-plane; dodgy_2d does so only within one obstacle, and a real building's map
+///   puts hundreds of edges in range (498 a person on MIT building 31), most behind
+///   other walls, each a half-plane of the linear program: the rays keep those a person
+///   sees.
 /// - **Numbers.** dodgy_2d computes in `f32`: positions are kept in `f64` and sent as
 ///   `f32` (a few micrometres at 100 m from the origin). Two people whose centres
 ///   coincide exactly (where dodgy_2d would draw a random direction) are seen 1 mm apart
@@ -367,10 +527,11 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 /// and solves `n` linear programs of `max_neighbours` + (nearby obstacle edges)
 /// half-planes (incremental, at most quadratic in the half-planes), with a few small
 /// allocations per person (dodgy_2d's half-plane lists), after sorting the obstacles in
-/// reach by distance. Walls dominate where they are dense: measured with 20 people
-/// (`cost_of_twenty_people`, release), one call takes about 40 us in an open room (1.5x
-/// [`crate::SocialForce`]) but about 3 ms among a loaded map's 3600 cell edges of
-/// pillars (about 25x, each person handed hundreds of edges). That is once per
+/// reach by distance, and on a loaded map 72 rays a person. Walls dominate where they
+/// are dense: measured with 20 people (`cost_of_twenty_people`, release), a call costs
+/// on average about 2 us a 5 ms tick in an open room (1.0-1.2x [`crate::SocialForce`])
+/// and about 38 us among a loaded map's 3,600 cell edges of pillars (4.5-5x; 83 us when
+/// every edge in reach was handed to the solver). The new velocities are chosen once per
 /// [`OrcaParams::step`] of simulated time (25 Hz by default); a call between steps
 /// extrapolates the positions.
 ///
@@ -402,6 +563,7 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 pub struct Orca<'w> {
     params: OrcaParams,
     people: &'w [Person],
+    statics: &'w StaticWorld,
     walls: Walls,
     robot_radius: f64,
     walkers: Vec<Walker>,
@@ -452,6 +614,7 @@ impl<'w> Orca<'w> {
         let mut model = Self {
             params,
             people,
+            statics,
             walls: Walls::default(),
             robot_radius,
             walkers: Vec::with_capacity(people.len()),
@@ -572,6 +735,7 @@ impl Stepped for Orca<'_> {
         let mut neighbours: Vec<Cow<'_, Agent>> = Vec::with_capacity(agents.len());
         let mut obstacles: Vec<Cow<'_, Obstacle>> = Vec::new();
         let mut near = std::mem::take(&mut self.near);
+        let cells = self.statics.grid_rays();
         let reach_sq = self.params.neighbour_distance * self.params.neighbour_distance;
         for k in 0..n {
             if !self.walkers[k].on_stage {
@@ -642,7 +806,8 @@ impl Stepped for Orca<'_> {
                     .map(|&key| key as u64 as usize)
                     .map(|j| seen(me, &agents[j], left * keep_right, j > k, h as f32)),
             );
-            self.walls.near(at, self.reach(k), &mut near);
+            self.walls
+                .near(at, self.reach(k), cells.as_ref(), &mut near);
             obstacles.clear();
             obstacles.extend(
                 near.indices
@@ -779,25 +944,25 @@ mod tests {
         );
         // From inside the box and the cell every edge is seen from its solid side.
         let mut near = Near::default();
-        walls.near(Point2::new(6.0, 6.0), 0.6, &mut near);
+        walls.near(Point2::new(6.0, 6.0), 0.6, None, &mut near);
         assert!(near.indices.is_empty(), "{:?}", near.indices);
-        walls.near(Point2::new(1.5, 1.5), 0.6, &mut near);
+        walls.near(Point2::new(1.5, 1.5), 0.6, None, &mut near);
         assert!(near.indices.is_empty(), "{:?}", near.indices);
         // Below the box: its bottom edge; its sides are within reach but seen from behind.
-        walls.near(Point2::new(6.0, 5.2), 0.6, &mut near);
+        walls.near(Point2::new(6.0, 5.2), 0.6, None, &mut near);
         assert_eq!(near.indices.len(), 1);
         let Obstacle::Open { vertices } = &walls.obstacles[near.indices[0] as usize] else {
             panic!()
         };
         assert!(vertices.iter().all(|v| v.y == 5.5), "{vertices:?}");
         // One side of the loose edge, the one facing the point.
-        walls.near(Point2::new(20.5, 0.5), 0.6, &mut near);
+        walls.near(Point2::new(20.5, 0.5), 0.6, None, &mut near);
         assert_eq!(near.indices.len(), 1);
         assert!(!solid_left_at(
             near.indices[0] as usize,
             Point2::new(20.5, 0.5)
         ));
-        walls.near(Point2::new(10.0, 10.0), 1.0, &mut near);
+        walls.near(Point2::new(10.0, 10.0), 1.0, None, &mut near);
         assert!(near.indices.is_empty());
     }
 
@@ -860,5 +1025,52 @@ mod tests {
                 .chunks(15)
                 .any(|row| row.windows(2).any(|w| w[0] > w[1]))
         );
+    }
+
+    /// On a real house's map, a person is handed every front-facing cell edge within
+    /// [`CELL_EDGES_ALL_WITHIN`], and of the farther ones within reach only those their
+    /// rays hit: a fraction of them, the rest being hidden behind nearer walls.
+    #[test]
+    fn people_on_a_map_avoid_the_cell_edges_near_and_seen() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../scenarios/sim/nav-aws_small_house.ron");
+        let (_, world) = crate::Scenario::load(&path).unwrap();
+        let statics = &world.statics;
+        let walls = Walls::new(statics, 7.0);
+        let rays = statics.grid_rays().unwrap();
+        let grid = statics.grid.as_ref().unwrap();
+        let mut near = Near::default();
+        let (mut handed, mut in_reach, mut places) = (0, 0, 0);
+        for j in (0..grid.height()).step_by(7) {
+            for i in (0..grid.width()).step_by(7) {
+                let p = grid.cell_center(i, j);
+                if grid.cell_zone(i, j) == Zone::Forbidden || statics.nearest(p).0 < 0.3 {
+                    continue;
+                }
+                places += 1;
+                walls.near(p, 7.0, Some(&rays), &mut near);
+                let at = vec2(p);
+                let mut last = 0.0;
+                for &k in &near.indices {
+                    let d = distance_sq(&walls.obstacles[k as usize], at);
+                    assert!(d >= last, "nearest first");
+                    last = d;
+                }
+                handed += near.indices.len();
+                for (k, o) in walls.obstacles.iter().enumerate() {
+                    let d = f64::from(distance_sq(o, at)).sqrt();
+                    if back_facing(o, at) || d > 7.0 {
+                        continue;
+                    }
+                    in_reach += 1;
+                    if d <= CELL_EDGES_ALL_WITHIN - 0.01 {
+                        assert!(near.indices.contains(&(k as u32)), "{p}: {o:?} at {d:.3} m");
+                    }
+                }
+            }
+        }
+        assert!(places > 500, "{places}");
+        // Measured: about 28 of 117 edges a place.
+        assert!(handed * 3 < in_reach, "{handed} of {in_reach}");
     }
 }

@@ -5,6 +5,7 @@ mod crowd;
 mod explore;
 mod kinematics;
 mod laser;
+mod map_crowd;
 mod navigation;
 mod orca;
 mod profile;

@@ -50,6 +50,13 @@ pub struct Args {
     /// scenario's `people_model`.
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(sim::PeopleModelKind::NAMES))]
     pub people_model: Option<String>,
+    /// Add people to the map: `D` per 100 m^2 of the floor the robot can reach (1 is a
+    /// busy office corridor's crowd), each walking back and forth at about 1.3 m/s between
+    /// two points of the floor drawn from `--seed` (`sim::people_on_map`). They see the
+    /// robot under social forces unless `--people-model` says otherwise. Needs a map (a
+    /// ROS map, or a scenario on a map file).
+    #[arg(long, value_name = "D", allow_negative_numbers = true)]
+    pub crowd: Option<f64>,
     /// The collision monitor between the navigation stack and the wheels (Nav2's
     /// `collision_monitor`; `sim::CollisionMonitor`): `on` slows and stops the robot before
     /// someone walking straight at it could reach it, `off` drives the bare stack. Default:
@@ -138,10 +145,51 @@ fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
     Ok(sim::GlobalPlanner::Other(config.build()))
 }
 
+/// `--crowd`: people at `density` on the scenario's map, who see the robot under social
+/// forces (the scenario's model if it already has people who react).
+fn add_crowd(
+    scenario: &mut sim::Scenario,
+    world: &mut sim::World,
+    density: f64,
+    seed: u64,
+) -> anyhow::Result<()> {
+    let map = world.statics.grid.as_ref().with_context(|| {
+        format!(
+            "--crowd: the scenario {:?} has no map to place people on (use a ROS map, or              a scenario whose world is a map file)",
+            scenario.name
+        )
+    })?;
+    let start = hyplan_core::Point2::new(scenario.start.0, scenario.start.1);
+    let crowd = sim::people_on_map(
+        map,
+        density,
+        start,
+        &mut sim::stream(seed, sim::PEOPLE_STREAM),
+    )
+    .map_err(|e| anyhow::anyhow!("--crowd {density}: {e}"))?;
+    outln!(
+        "crowd: {} people on {:.0} m^2 of floor reachable from the start ({density} per 100 m^2{})",
+        crowd.people.len(),
+        crowd.floor_m2,
+        if crowd.people.len() == sim::MAX_MAP_PEOPLE {
+            format!(", at most {}", sim::MAX_MAP_PEOPLE)
+        } else {
+            String::new()
+        }
+    )?;
+    if scenario.people_model == sim::PeopleModelKind::Scripted {
+        scenario.people_model =
+            sim::PeopleModelKind::from_name("social-force").expect("a known model");
+    }
+    scenario.people.extend(crowd.people.iter().cloned());
+    world.people.extend(crowd.people);
+    Ok(())
+}
+
 /// Runs `hyplan sim`: a summary on stdout; exit 0 goal reached, 1 not reached, 2 bad input.
 pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     let ros_map = super::is_ros_map(&args.scenario);
-    let (mut scenario, world) = if ros_map {
+    let (mut scenario, mut world) = if ros_map {
         let scenario = scenario_of_map(args)?;
         let world = scenario
             .build_world_limited(&args.scenario, args.max_cells)
@@ -157,6 +205,9 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     }
     if let Some(name) = &args.controller {
         set_local_planner(&mut scenario, name)?;
+    }
+    if let Some(density) = args.crowd {
+        add_crowd(&mut scenario, &mut world, density, args.seed)?;
     }
     if let Some(name) = &args.people_model {
         scenario.people_model =

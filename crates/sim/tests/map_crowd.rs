@@ -1,0 +1,141 @@
+//! People placed on a loaded map, and people models walking on one.
+
+use std::path::Path;
+
+use hyplan_core::{Point2, Zone};
+use sim::{MapCrowdError, PERSON_CLEARANCE, PeopleModelKind, Pose, Walk, people_on_map};
+
+/// The AWS small house (a ROS map of a real house) as a navigation scenario's world.
+fn house() -> (sim::Scenario, sim::World) {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/sim/nav-aws_small_house.ron");
+    sim::Scenario::load(&path).unwrap()
+}
+
+fn robot(sc: &sim::Scenario) -> Point2 {
+    Point2::new(sc.start.0, sc.start.1)
+}
+
+/// Every walker keeps to the floor a person fits on: their way-points are on it, each
+/// leg between them is free of every cell off it (so of every wall by the clearance),
+/// they start apart and away from the robot, and the count follows the density.
+#[test]
+fn walkers_keep_to_the_floor_a_person_fits_on() {
+    let (sc, world) = house();
+    let map = world.statics.grid.as_ref().unwrap();
+    let walls = map.blocked_distance().unwrap();
+    let res = map.resolution();
+    for (seed, density) in [(1, 1.0), (2, 5.0), (3, 20.0)] {
+        let mut rng = sim::stream(seed, sim::PEOPLE_STREAM);
+        let crowd = people_on_map(map, density, robot(&sc), &mut rng).unwrap();
+        let want = (density * crowd.floor_m2 / 100.0).round() as usize;
+        assert!(crowd.floor_m2 > 50.0, "{}", crowd.floor_m2);
+        // The rules (apart, away from the robot) may leave a full floor short.
+        assert!(
+            crowd.people.len() <= want,
+            "{} > {want}",
+            crowd.people.len()
+        );
+        assert!(
+            crowd.people.len() * 10 >= want * 9,
+            "{} of {want}",
+            crowd.people.len()
+        );
+        for p in &crowd.people {
+            assert_eq!(p.walk, Walk::BackAndForth);
+            assert!((0.8..=1.8).contains(&p.speed), "{}", p.speed);
+            assert!(p.path.len() >= 2);
+            for w in p.path.windows(2) {
+                let (a, b) = (Point2::new(w[0].0, w[0].1), Point2::new(w[1].0, w[1].1));
+                map.segment_cells(a, b, |i, j| {
+                    let clear = walls.cell_dist(i, j) * res;
+                    assert!(
+                        map.cell_zone(i, j) != Zone::Forbidden && clear >= PERSON_CLEARANCE,
+                        "seed {seed}: leg {a} -> {b} crosses cell ({i}, {j}), {clear:.3} m from a wall"
+                    );
+                    true
+                });
+            }
+            let first = Point2::new(p.path[0].0, p.path[0].1);
+            assert!((first - robot(&sc)).norm() >= 1.5);
+            for q in &crowd.people {
+                let other = Point2::new(q.path[0].0, q.path[0].1);
+                assert!(std::ptr::eq(p, q) || (first - other).norm() >= 0.6);
+            }
+        }
+        // The same stream state, the same people.
+        let again = people_on_map(
+            map,
+            density,
+            robot(&sc),
+            &mut sim::stream(seed, sim::PEOPLE_STREAM),
+        )
+        .unwrap();
+        assert_eq!(again.people, crowd.people);
+    }
+}
+
+#[test]
+fn bad_densities_and_robots_in_walls_are_refused() {
+    let (sc, world) = house();
+    let map = world.statics.grid.as_ref().unwrap();
+    let mut rng = sim::stream(0, sim::PEOPLE_STREAM);
+    for d in [-1.0, f64::NAN, f64::INFINITY] {
+        let e = people_on_map(map, d, robot(&sc), &mut rng).unwrap_err();
+        assert!(matches!(e, MapCrowdError::Density(_)), "{e}");
+        assert!(e.to_string().contains("density"), "{e}");
+    }
+    let none = people_on_map(map, 0.0, robot(&sc), &mut rng).unwrap();
+    assert!(none.people.is_empty() && none.floor_m2 > 50.0);
+    // Far outside the map: no floor to reach.
+    let e = people_on_map(map, 1.0, Point2::new(1e4, 1e4), &mut rng).unwrap_err();
+    assert!(matches!(e, MapCrowdError::NoFloor { .. }), "{e}");
+}
+
+/// People under ORCA on a real house's map keep their bodies out of its walls (the loaded
+/// map's cell edges they avoid are those near them and those their rays find): at every
+/// tenth of a second over two minutes each person is at least their radius, less 2 cm,
+/// from every wall.
+#[test]
+fn orca_people_on_a_map_keep_out_of_its_walls() {
+    let (sc, mut world) = house();
+    let map = world.statics.grid.clone().unwrap();
+    let crowd = people_on_map(
+        &map,
+        5.0,
+        robot(&sc),
+        &mut sim::stream(4, sim::PEOPLE_STREAM),
+    )
+    .unwrap();
+    assert!(crowd.people.len() >= 4, "{}", crowd.people.len());
+    world.people = crowd.people;
+    let mut model = PeopleModelKind::from_name("orca")
+        .unwrap()
+        .build(&world, 0.2);
+    let far = Pose {
+        x: -100.0,
+        y: -100.0,
+        phi: 0.0,
+    };
+    let mut closest = f64::INFINITY;
+    let mut walked = 0.0;
+
+    let mut last = model.people(0.0, far);
+    for tick in 1..=24_000 {
+        let t = tick as f64 * 0.005;
+        let now = model.people(t, far);
+        if tick % 20 == 0 {
+            for (d, before) in now.iter().zip(&last) {
+                let (gap, _) = world.statics.nearest(d.center);
+                closest = closest.min(gap - d.radius);
+                walked += (d.center - before.center).norm();
+            }
+            last = now;
+        }
+    }
+    assert!(closest >= -0.02, "a person {closest:.3} m into a wall");
+    // They walked, not stood: a fifth of the way they would go alone, at least (ORCA
+    // people meeting head-on in the house's narrow passages hold each other up).
+    let alone: f64 = world.people.iter().map(|p| p.speed * 120.0).sum();
+    assert!(walked > 0.2 * alone, "{walked:.1} m of {alone:.1} m");
+}
