@@ -30,9 +30,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::engine::{Observer, TICKS_PER_SECOND, time_of};
 use crate::kinematics::{Pose, Robot};
-use crate::laser::{Laser, Scan};
-use crate::monitor::CollisionMonitor;
-use crate::navigator::Navigation;
+use crate::laser::Scan;
 use crate::planner::GlobalPlanner;
 use crate::scenario::Scenario;
 use crate::social_force::{PeopleModelKind, SocialForceParams};
@@ -151,14 +149,8 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
     } else {
         Vec::new()
     };
-    Scenario {
+    let mut scenario = Scenario {
         people_model: PeopleModelKind::SocialForce(SocialForceParams::default()),
-        navigation: Navigation {
-            collision_monitor: Some(CollisionMonitor::default()),
-            people_patience: PEOPLE_PATIENCE,
-            ..Navigation::default()
-        },
-        laser: Laser::default().with_fov(CROWD_FOV_DEG),
         ..Scenario::generated(
             (
                 format!("crowd-{flow}-{density}-{seed}-{index}"),
@@ -169,7 +161,29 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
             (start, 0.0, goal),
             time_limit,
         )
-    }
+    };
+    crowd_robot(&mut scenario);
+    scenario
+}
+
+/// Sets `scenario`'s robot up as the crowd scenarios' ([`crowd`]): its collision monitor
+/// on ([`CollisionMonitor`]'s defaults, unless it has one), waiting up to
+/// [`PEOPLE_PATIENCE`] for people before their blocks count as failures, and a
+/// 270-degree scanner ([`CROWD_FOV_DEG`]) at its angle between beams.
+///
+/// ```
+/// let mut sc = sim::crowd(sim::CrowdFlow::Doors, 0.0, 1, 0);
+/// sc.navigation = Default::default();
+/// sim::crowd_robot(&mut sc);
+/// assert_eq!(sc.navigation.people_patience, sim::PEOPLE_PATIENCE);
+/// assert!(sc.navigation.collision_monitor.is_some());
+/// assert_eq!(sc.laser.fov_deg, sim::CROWD_FOV_DEG);
+/// ```
+pub fn crowd_robot(scenario: &mut Scenario) {
+    let nav = &mut scenario.navigation;
+    nav.collision_monitor = Some(nav.collision_monitor.unwrap_or_default());
+    nav.people_patience = PEOPLE_PATIENCE;
+    scenario.laser = scenario.laser.with_fov(CROWD_FOV_DEG);
 }
 
 type Layout = ((f64, f64), Vec<Shape>, (f64, f64), (f64, f64));

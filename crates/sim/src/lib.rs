@@ -118,7 +118,7 @@ pub use costmap::{
 };
 pub use crowd::{
     CROWD_FOV_DEG, CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, PEOPLE_PATIENCE, SPEED_LIMITS,
-    TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, measure,
+    TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, crowd_robot, measure,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PEOPLE_STREAM, PLANNER_STREAM,

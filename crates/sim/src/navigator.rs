@@ -51,6 +51,13 @@ pub struct Navigation {
     /// The collision monitor between the stack and the wheels (none by default, as in
     /// the paper's `move_base`): `Some(())` for [`CollisionMonitor`]'s defaults.
     pub collision_monitor: Option<CollisionMonitor>,
+    /// How long the robot may follow a path without moving `progress_reset` before the
+    /// path counts as blocked, s (10; 0 for never): Nav2's progress checker
+    /// (`SimpleProgressChecker`: `movement_time_allowance` 10 s,
+    /// `required_movement_radius` 0.5 m). Without it a controller that keeps yielding to a
+    /// person who cannot move (a narrow corridor, people who give way to the robot)
+    /// waits for ever.
+    pub stall_timeout: f64,
 }
 
 impl Default for Navigation {
@@ -63,6 +70,7 @@ impl Default for Navigation {
             progress_reset: 0.5,
             people_patience: 0.0,
             collision_monitor: None,
+            stall_timeout: 10.0,
         }
     }
 }
@@ -131,6 +139,9 @@ pub struct Navigator {
     tight_plans: u32,
     /// Since when the robot has been waiting for people without progress.
     waiting_since: Option<u64>,
+    /// Where, and at which tick, the robot last made `progress_reset` of headway while
+    /// following (the progress checker's).
+    moved: (Point2, u64),
 }
 
 impl Navigator {
@@ -166,6 +177,7 @@ impl Navigator {
             tight_scratch: PlanScratch::default(),
             tight_plans: 0,
             waiting_since: None,
+            moved: (Point2::origin(), 0),
             rng,
         }
     }
@@ -366,6 +378,7 @@ impl Navigator {
                     self.path = path;
                     self.progress = 0;
                     self.planned_at = here;
+                    self.moved = (here, tick);
                     self.state = NavState::Following;
                 }
                 None => {
@@ -378,6 +391,13 @@ impl Navigator {
         if (here - self.planned_at).norm() >= self.params.progress_reset {
             self.failures = 0;
             self.waiting_since = None;
+        }
+        if (here - self.moved.0).norm() >= self.params.progress_reset {
+            self.moved = (here, tick);
+        } else if self.params.stall_timeout > 0.0
+            && (tick - self.moved.1) as f64 > self.params.stall_timeout * ticks_per_s
+        {
+            return self.blocked(here, prev, movers, tick, ticks_per_s, events);
         }
         if self.controller.stops_for_blocked_path() && self.path_blocked(here, memory, tick) {
             return self.blocked(here, prev, movers, tick, ticks_per_s, events);
@@ -418,5 +438,92 @@ impl Navigator {
         }
         self.state = NavState::Stopping;
         self.brake(prev)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::Command;
+    use crate::costmap::CostmapParams;
+    use crate::world::StaticWorld;
+    use hyplan_core::Bounds;
+
+    /// A controller that never moves the robot and never reports an obstruction: one
+    /// that keeps yielding to someone who does not move.
+    #[derive(Debug)]
+    struct Frozen;
+
+    impl LocalController for Frozen {
+        fn limit(&self, _: &Robot, _: Twist, want: Twist) -> Twist {
+            want
+        }
+        fn follow(&self, input: &FollowInput<'_>) -> (Command, usize) {
+            let cmd = Command {
+                twist: Twist::default(),
+                obstructed: false,
+            };
+            (cmd, input.progress)
+        }
+        fn margin(&self) -> f64 {
+            0.1
+        }
+    }
+
+    /// Events of a navigator over `seconds` of a robot that does not move, with the
+    /// progress checker's `stall_timeout`.
+    fn frozen_run(stall_timeout: f64, seconds: u64) -> (Vec<NavEvent>, NavState) {
+        let bounds = Bounds::new(Point2::new(0.0, 0.0), Point2::new(6.0, 3.0));
+        let params = Navigation {
+            stall_timeout,
+            ..Navigation::default()
+        };
+        let world = StaticWorld::default();
+        let mut nav = Navigator::new(
+            params,
+            Box::new(Frozen),
+            GlobalPlanner::Dijkstra,
+            CostmapBuilder::new(bounds, &world, CostmapParams::default(), 0.18),
+            Robot::default(),
+            Point2::new(5.0, 1.5),
+            crate::stream(0, crate::PLANNER_STREAM),
+        );
+        let memory = ObstacleMemory::new(bounds, 100, 2.5);
+        let pose = Pose {
+            x: 1.0,
+            y: 1.5,
+            phi: 0.0,
+        };
+        let mut events = Vec::new();
+        for tick in 0..seconds * 20 {
+            let t = tick * 10;
+            nav.step(
+                pose,
+                Twist::default(),
+                &memory,
+                &[],
+                None,
+                t,
+                200.0,
+                &mut events,
+            );
+        }
+        (events, nav.state())
+    }
+
+    /// Nav2's progress checker: a robot that makes no headway for `stall_timeout` stops
+    /// and plans again, and after `max_failures` such stalls in a row gives up; without
+    /// it, it follows its path for ever.
+    #[test]
+    fn a_robot_that_makes_no_headway_gives_up() {
+        let (events, state) = frozen_run(10.0, 200);
+        assert_eq!(state, NavState::Failed, "{events:?}");
+        let stops = events.iter().filter(|e| **e == NavEvent::Stop).count();
+        // The first stall is not a failure (the first plan's), then eight in a row.
+        assert_eq!(stops, 9, "{events:?}");
+        assert_eq!(events.last(), Some(&NavEvent::GaveUp));
+        let (events, state) = frozen_run(0.0, 200);
+        assert_eq!(state, NavState::Following);
+        assert_eq!(events, [NavEvent::Plan]);
     }
 }

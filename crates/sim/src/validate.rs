@@ -129,6 +129,7 @@ impl Check<'_> {
         self.non_negative("navigation.retry_period", n.retry_period)?;
         self.non_negative("navigation.progress_reset", n.progress_reset)?;
         self.non_negative("navigation.people_patience", n.people_patience)?;
+        self.non_negative("navigation.stall_timeout", n.stall_timeout)?;
         if let Some(m) = &n.collision_monitor {
             self.non_negative("navigation.collision_monitor.person_speed", m.person_speed)?;
             self.non_negative("navigation.collision_monitor.delay", m.delay)?;

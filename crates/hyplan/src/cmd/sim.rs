@@ -53,8 +53,10 @@ pub struct Args {
     /// Add people to the map: `D` per 100 m^2 of the floor the robot can reach (1 is a
     /// busy office corridor's crowd), each walking back and forth at about 1.3 m/s between
     /// two points of the floor drawn from `--seed` (`sim::people_on_map`). They see the
-    /// robot under social forces unless `--people-model` says otherwise. Needs a map (a
-    /// ROS map, or a scenario on a map file).
+    /// robot under social forces unless `--people-model` says otherwise. The robot is set
+    /// up as in `cargo xtask crowd`: collision monitor on (unless `--collision-monitor
+    /// off`), waiting up to 30 s for people before giving up, a 270-degree scanner. Needs
+    /// a map (a ROS map, or a scenario on a map file).
     #[arg(long, value_name = "D", allow_negative_numbers = true)]
     pub crowd: Option<f64>,
     /// The collision monitor between the navigation stack and the wheels (Nav2's
@@ -146,7 +148,8 @@ fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
 }
 
 /// `--crowd`: people at `density` on the scenario's map, who see the robot under social
-/// forces (the scenario's model if it already has people who react).
+/// forces (the scenario's model if it already has people who react), and the robot set
+/// up as the crowd scenarios' ([`sim::crowd_robot`]).
 fn add_crowd(
     scenario: &mut sim::Scenario,
     world: &mut sim::World,
@@ -181,6 +184,12 @@ fn add_crowd(
         scenario.people_model =
             sim::PeopleModelKind::from_name("social-force").expect("a known model");
     }
+    sim::crowd_robot(scenario);
+    outln!(
+        "crowd robot: collision monitor on, waits up to {} s for people, {}-degree scanner (as `cargo xtask crowd`'s)",
+        sim::PEOPLE_PATIENCE,
+        sim::CROWD_FOV_DEG
+    )?;
     scenario.people.extend(crowd.people.iter().cloned());
     world.people.extend(crowd.people);
     Ok(())
