@@ -174,6 +174,12 @@ const CELL_EDGES_ALL_WITHIN: f64 = 1.5;
 /// Rays a person casts to find the loaded map's cell edges they see: one every 5 degrees.
 const WALL_RAYS: usize = 72;
 
+/// Steps between a person's looks for the loaded map's cell edges they see (0.2 s at the
+/// default step: they walk at most 0.36 m in it, well inside the
+/// [`CELL_EDGES_ALL_WITHIN`] they always avoid). The looks of different people fall on
+/// different steps.
+const LOOK_EVERY: u64 = 5;
+
 /// A loaded map's cell edges (its boundary runs between forbidden and other cells), by
 /// the grid line each lies on, so that the edge a ray hits is found from the hit point.
 #[derive(Debug, Clone, Default)]
@@ -320,13 +326,13 @@ impl Walls {
     /// The obstacles near `p`, nearest first (ties to the lower index), into
     /// `out.indices`, but for single edges that `p` is behind ([`back_facing`]): those
     /// whose bounding box comes within `reach`; of a loaded map's cell edges, those within
-    /// [`CELL_EDGES_ALL_WITHIN`] and those that one of [`WALL_RAYS`] rays from `p` (cast on
-    /// `cells`, the map's) hits within `reach`.
-    fn near(&self, p: Point2, reach: f64, cells: Option<&GridRays<'_>>, out: &mut Near) {
+    /// [`CELL_EDGES_ALL_WITHIN`] and those of `seen` ([`Walls::seen`]) within `reach`.
+    fn near(&self, p: Point2, reach: f64, seen: &[u32], out: &mut Near) {
         out.indices.clear();
         out.keyed.clear();
         let at = vec2(p);
         let (obstacles, keyed) = (&self.obstacles, &mut out.keyed);
+        let reach_sq = (reach * reach) as f32;
         let mut take = |k: u32| {
             let obstacle = &obstacles[k as usize];
             if !back_facing(obstacle, at) {
@@ -341,24 +347,45 @@ impl Walls {
             &mut out.cell_marks,
             |b| take(self.cell_boxed[b as usize]),
         );
-        if let Some(cells) = cells
-            && !self.cell_edges.rays.is_empty()
-        {
-            let rays = &self.cell_edges.rays;
-            out.ranges.clear();
-            out.ranges.resize(rays.len(), reach);
-            cells.lower(p, rays, &mut out.ranges, reach);
-            for (d, &t) in rays.iter().zip(&out.ranges) {
-                if t < reach {
-                    self.cell_edges.at(p + d * t, &mut take);
-                }
+        for &k in seen {
+            let obstacle = &obstacles[k as usize];
+            let d = distance_sq(obstacle, at);
+            if d <= reach_sq && !back_facing(obstacle, at) {
+                keyed.push((d.to_bits(), k));
             }
         }
         // Nearest first, as RVO2 orders obstacle neighbours: an edge hidden behind a
-        // nearer one's half-plane is then skipped. Two rays may hit one edge.
+        // nearer one's half-plane is then skipped. An edge may be both near and seen.
         out.keyed.sort_unstable();
         out.keyed.dedup();
         out.indices.extend(out.keyed.iter().map(|&(_, k)| k));
+    }
+
+    /// The loaded map's cell edges that one of [`WALL_RAYS`] rays from `p`, cast on
+    /// `cells` (the map's), hits within `reach`, into `out` (in no order, each once).
+    fn seen(
+        &self,
+        p: Point2,
+        reach: f64,
+        cells: &GridRays<'_>,
+        ranges: &mut Vec<f64>,
+        out: &mut Vec<u32>,
+    ) {
+        out.clear();
+        let rays = &self.cell_edges.rays;
+        if rays.is_empty() {
+            return;
+        }
+        ranges.clear();
+        ranges.resize(rays.len(), reach);
+        cells.lower(p, rays, ranges, reach);
+        for (d, &t) in rays.iter().zip(ranges.iter()) {
+            if t < reach {
+                self.cell_edges.at(p + d * t, |k| out.push(k));
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
     }
 }
 
@@ -505,7 +532,7 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 ///   radius`), nearest first as in RVO2: drawn ones whose bounding box is in range,
 ///   found in a coarse grid built once; of a loaded map's cell edges, those within 1.5 m
 ///   and those one of 72 rays from the person (one every 5 degrees, cast on the map's
-///   cells) hits in range. RVO2 leaves out an edge hidden behind a nearer one's
+///   cells every 0.2 s) hits in range. RVO2 leaves out an edge hidden behind a nearer one's
 ///   half-plane; dodgy_2d does so only within one obstacle, and a real building's map
 ///   puts hundreds of edges in range (498 a person on MIT building 31), most behind
 ///   other walls, each a half-plane of the linear program: the rays keep those a person
@@ -529,9 +556,9 @@ fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
 /// allocations per person (dodgy_2d's half-plane lists), after sorting the obstacles in
 /// reach by distance, and on a loaded map 72 rays a person. Walls dominate where they
 /// are dense: measured with 20 people (`cost_of_twenty_people`, release), a call costs
-/// on average about 2 us a 5 ms tick in an open room (1.0-1.2x [`crate::SocialForce`])
-/// and about 38 us among a loaded map's 3,600 cell edges of pillars (4.5-5x; 83 us when
-/// every edge in reach was handed to the solver). The new velocities are chosen once per
+/// on average about 2 us a 5 ms tick in an open room (1.0-1.4x [`crate::SocialForce`])
+/// and about 24 us among a loaded map's 3,600 cell edges of pillars (about 2.2x; 83 us
+/// when every edge in reach was handed to the solver). The new velocities are chosen once per
 /// [`OrcaParams::step`] of simulated time (25 Hz by default); a call between steps
 /// extrapolates the positions.
 ///
@@ -571,6 +598,10 @@ pub struct Orca<'w> {
     next: Vec<Vector2<f64>>,
     /// The walls near the person being stepped (scratch).
     near: Near,
+    /// The loaded map's cell edges each person's rays hit at their last look
+    /// ([`LOOK_EVERY`] steps apart, staggered), and the steps taken.
+    seen: Vec<Vec<u32>>,
+    steps: u64,
     /// Each person's candidate neighbours in the order of the last step, nearest first
     /// (a row of agent indices per person, when the crowd is at most [`ORDER_CAP`]
     /// agents): a hint that makes their sort nearly free, since people move a few
@@ -621,6 +652,8 @@ impl<'w> Orca<'w> {
             next: vec![Vector2::zeros(); people.len()],
             near: Near::default(),
             order: Vec::new(),
+            seen: vec![Vec::new(); people.len()],
+            steps: 0,
             clock: Stepper::default(),
         };
         let widest = (0..people.len())
@@ -671,6 +704,8 @@ fn seen<'a>(
 impl Stepped for Orca<'_> {
     /// Everyone back at their first way-point, standing.
     fn reset(&mut self) {
+        self.steps = 0;
+        self.seen.iter_mut().for_each(Vec::clear);
         self.walkers.clear();
         self.walkers.extend(self.people.iter().map(|p| {
             let on_stage = p.walk != crate::Walk::Through;
@@ -806,8 +841,14 @@ impl Stepped for Orca<'_> {
                     .map(|&key| key as u64 as usize)
                     .map(|j| seen(me, &agents[j], left * keep_right, j > k, h as f32)),
             );
-            self.walls
-                .near(at, self.reach(k), cells.as_ref(), &mut near);
+            let reach = self.reach(k);
+            if let Some(cells) = &cells
+                && (self.steps + k as u64) % LOOK_EVERY == 0
+            {
+                let (ranges, seen) = (&mut near.ranges, &mut self.seen[k]);
+                self.walls.seen(at, reach, cells, ranges, seen);
+            }
+            self.walls.near(at, reach, &self.seen[k], &mut near);
             obstacles.clear();
             obstacles.extend(
                 near.indices
@@ -834,6 +875,7 @@ impl Stepped for Orca<'_> {
             };
         }
         self.near = near;
+        self.steps += 1;
         for (w, v) in self.walkers.iter_mut().zip(&self.next) {
             if w.on_stage {
                 w.vel = *v;
@@ -944,25 +986,25 @@ mod tests {
         );
         // From inside the box and the cell every edge is seen from its solid side.
         let mut near = Near::default();
-        walls.near(Point2::new(6.0, 6.0), 0.6, None, &mut near);
+        walls.near(Point2::new(6.0, 6.0), 0.6, &[], &mut near);
         assert!(near.indices.is_empty(), "{:?}", near.indices);
-        walls.near(Point2::new(1.5, 1.5), 0.6, None, &mut near);
+        walls.near(Point2::new(1.5, 1.5), 0.6, &[], &mut near);
         assert!(near.indices.is_empty(), "{:?}", near.indices);
         // Below the box: its bottom edge; its sides are within reach but seen from behind.
-        walls.near(Point2::new(6.0, 5.2), 0.6, None, &mut near);
+        walls.near(Point2::new(6.0, 5.2), 0.6, &[], &mut near);
         assert_eq!(near.indices.len(), 1);
         let Obstacle::Open { vertices } = &walls.obstacles[near.indices[0] as usize] else {
             panic!()
         };
         assert!(vertices.iter().all(|v| v.y == 5.5), "{vertices:?}");
         // One side of the loose edge, the one facing the point.
-        walls.near(Point2::new(20.5, 0.5), 0.6, None, &mut near);
+        walls.near(Point2::new(20.5, 0.5), 0.6, &[], &mut near);
         assert_eq!(near.indices.len(), 1);
         assert!(!solid_left_at(
             near.indices[0] as usize,
             Point2::new(20.5, 0.5)
         ));
-        walls.near(Point2::new(10.0, 10.0), 1.0, None, &mut near);
+        walls.near(Point2::new(10.0, 10.0), 1.0, &[], &mut near);
         assert!(near.indices.is_empty());
     }
 
@@ -1040,6 +1082,7 @@ mod tests {
         let rays = statics.grid_rays().unwrap();
         let grid = statics.grid.as_ref().unwrap();
         let mut near = Near::default();
+        let (mut ranges, mut seen) = (Vec::new(), Vec::new());
         let (mut handed, mut in_reach, mut places) = (0, 0, 0);
         for j in (0..grid.height()).step_by(7) {
             for i in (0..grid.width()).step_by(7) {
@@ -1048,7 +1091,8 @@ mod tests {
                     continue;
                 }
                 places += 1;
-                walls.near(p, 7.0, Some(&rays), &mut near);
+                walls.seen(p, 7.0, &rays, &mut ranges, &mut seen);
+                walls.near(p, 7.0, &seen, &mut near);
                 let at = vec2(p);
                 let mut last = 0.0;
                 for &k in &near.indices {
