@@ -843,7 +843,7 @@ impl Stepped for Orca<'_> {
             );
             let reach = self.reach(k);
             if let Some(cells) = &cells
-                && (self.steps + k as u64) % LOOK_EVERY == 0
+                && (self.steps + k as u64).is_multiple_of(LOOK_EVERY)
             {
                 let (ranges, seen) = (&mut near.ranges, &mut self.seen[k]);
                 self.walls.seen(at, reach, cells, ranges, seen);
