@@ -12,7 +12,8 @@
 //! `crowd/004-nav-3-person`: scenario 3's run with nobody in the hall, and with 20 people
 //! walking back and forth across it at 1.3 m/s under social forces, and the same people
 //! under ORCA (who see the robot in both): issue 29 asks the crowd to cost at most twice
-//! the run without people. The runs
+//! the run without people. `crowd/mit_building_31`: the same three on a real floor's
+//! map, 20 people placed as `hyplan sim --crowd` places them. The runs
 //! differ in what the robot does too (it stops and re-plans for people), so each run's
 //! name carries its simulated time, and the costs compare per simulated second.
 //!
@@ -99,34 +100,52 @@ fn driven_step(c: &mut Criterion) {
 fn crowd(c: &mut Criterion) {
     let file = hyplan_benches::crowd::hall_file();
     let social = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
+    let orca_model = sim::PeopleModelKind::Orca(sim::OrcaParams::default());
     let (empty, crowd) = hyplan_benches::crowd::hall(social);
     let mut orca = crowd.clone();
-    orca.people_model = sim::PeopleModelKind::Orca(sim::OrcaParams::default());
+    orca.people_model = orca_model;
     for (name, scenario) in [
         ("nobody", &empty),
         ("20-people", &crowd),
         ("20-people-orca", &orca),
     ] {
         let world = scenario.build_world(&file).expect("the hall builds");
-        let m = sim::run(scenario, &world, 0, GlobalPlanner::Dijkstra)
-            .trace
-            .summary;
-        eprintln!(
-            "crowd/{name}: {:.1} s simulated, reached {}, {} stops, {} at-fault contacts, {:.2} s within {} m of a person",
-            m.end_time,
-            m.reached,
-            m.stops,
-            m.contacts_at_fault,
-            m.personal_space_time,
-            sim::PERSONAL_SPACE
-        );
-        c.bench_function(
-            &format!("crowd/004-nav-3-person/{name}/{:.1}s_simulated", m.end_time),
-            |b| {
-                b.iter(|| sim::run(scenario, &world, 0, GlobalPlanner::Dijkstra));
-            },
-        );
+        crowd_run(c, "004-nav-3-person", name, scenario, &world);
     }
+    let (empty, crowd, mut world) = hyplan_benches::crowd::building(social);
+    let mut orca = crowd.clone();
+    orca.people_model = orca_model;
+    for (name, scenario) in [
+        ("nobody", &empty),
+        ("20-people", &crowd),
+        ("20-people-orca", &orca),
+    ] {
+        world.people.clone_from(&scenario.people);
+        crowd_run(c, "mit_building_31", name, scenario, &world);
+    }
+}
+
+/// One run of the `crowd` group: its figures on stderr, then its bench, named with its
+/// simulated time.
+fn crowd_run(c: &mut Criterion, place: &str, name: &str, scenario: &Scenario, world: &sim::World) {
+    let m = sim::run(scenario, world, 0, GlobalPlanner::Dijkstra)
+        .trace
+        .summary;
+    eprintln!(
+        "crowd/{place}/{name}: {:.1} s simulated, reached {}, {} stops, {} at-fault contacts, {:.2} s within {} m of a person",
+        m.end_time,
+        m.reached,
+        m.stops,
+        m.contacts_at_fault,
+        m.personal_space_time,
+        sim::PERSONAL_SPACE
+    );
+    c.bench_function(
+        &format!("crowd/{place}/{name}/{:.1}s_simulated", m.end_time),
+        |b| {
+            b.iter(|| sim::run(scenario, world, 0, GlobalPlanner::Dijkstra));
+        },
+    );
 }
 
 fn laser_cast(c: &mut Criterion) {
