@@ -112,7 +112,7 @@ pub const PEOPLE_PATIENCE: f64 = 30.0;
 
 /// The field of view of the crowd robot's scanner, degrees: 270, a Hokuyo UTM-30LX's
 /// (mounted over the base, it sees beside and behind the robot's shoulders), at seed
-/// 004's angle between beams (1,080 beams, 40 Hz; [`Laser::with_fov`]). Seed 004's
+/// 004's angle between beams (1,080 beams, 40 Hz; [`crate::Laser::with_fov`]). Seed 004's
 /// 180-degree scanner cannot see a person who comes from behind beside the robot until
 /// they are level with it, too late to stop: people who do not look walked into the
 /// moving robot so in 9 of 4,008 runs at density 1 (docs/measurements/issue-29.md).
@@ -120,7 +120,7 @@ pub const CROWD_FOV_DEG: f64 = 270.0;
 
 /// The crowd scenario `index` of a set seeded `seed`: `flow` at `density` people per
 /// 100 m^2, people under social forces who see the robot (set `people_model` for
-/// others), the robot's defaults with its collision monitor on ([`CollisionMonitor`]), a
+/// others), the robot's defaults with its collision monitor on ([`crate::CollisionMonitor`]), a
 /// 270-degree scanner ([`CROWD_FOV_DEG`]) and a known map.
 ///
 /// ```
@@ -167,7 +167,7 @@ pub fn crowd(flow: CrowdFlow, density: f64, seed: u64, index: u64) -> Scenario {
 }
 
 /// Sets `scenario`'s robot up as the crowd scenarios' ([`crowd`]): its collision monitor
-/// on ([`CollisionMonitor`]'s defaults, unless it has one), waiting up to
+/// on ([`crate::CollisionMonitor`]'s defaults, unless it has one), waiting up to
 /// [`PEOPLE_PATIENCE`] for people before their blocks count as failures, and a
 /// 270-degree scanner ([`CROWD_FOV_DEG`]) at its angle between beams.
 ///
