@@ -100,29 +100,28 @@ fn driven_step(c: &mut Criterion) {
 fn crowd(c: &mut Criterion) {
     let file = hyplan_benches::crowd::hall_file();
     let social = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
-    let orca_model = sim::PeopleModelKind::Orca(sim::OrcaParams::default());
     let (empty, crowd) = hyplan_benches::crowd::hall(social);
-    let mut orca = crowd.clone();
-    orca.people_model = orca_model;
-    for (name, scenario) in [
-        ("nobody", &empty),
-        ("20-people", &crowd),
-        ("20-people-orca", &orca),
-    ] {
+    for (name, scenario) in three_runs(empty, crowd) {
         let world = scenario.build_world(&file).expect("the hall builds");
-        crowd_run(c, "004-nav-3-person", name, scenario, &world);
+        crowd_run(c, "004-nav-3-person", name, &scenario, &world);
     }
     let (empty, crowd, mut world) = hyplan_benches::crowd::building(social);
-    let mut orca = crowd.clone();
-    orca.people_model = orca_model;
-    for (name, scenario) in [
-        ("nobody", &empty),
-        ("20-people", &crowd),
-        ("20-people-orca", &orca),
-    ] {
+    for (name, scenario) in three_runs(empty, crowd) {
         world.people.clone_from(&scenario.people);
-        crowd_run(c, "mit_building_31", name, scenario, &world);
+        crowd_run(c, "mit_building_31", name, &scenario, &world);
     }
+}
+
+/// The `crowd` group's three runs of a place: nobody, the crowd (under social forces),
+/// the same crowd under ORCA.
+fn three_runs(empty: Scenario, crowd: Scenario) -> [(&'static str, Scenario); 3] {
+    let mut orca = crowd.clone();
+    orca.people_model = sim::PeopleModelKind::Orca(sim::OrcaParams::default());
+    [
+        ("nobody", empty),
+        ("20-people", crowd),
+        ("20-people-orca", orca),
+    ]
 }
 
 /// One run of the `crowd` group: its figures on stderr, then its bench, named with its
