@@ -83,6 +83,16 @@ fn load(source: &Bound<'_, PyAny>) -> PyResult<Owned> {
     Ok(Owned { scenario, world })
 }
 
+/// `owned` with `crowd` people per 100 m^2 added to its map, as `hyplan sim --crowd` adds
+/// them (`sim::add_crowd`), drawn from `seed`.
+fn with_crowd(mut owned: Owned, crowd: Option<f64>, seed: u64) -> PyResult<Owned> {
+    if let Some(density) = crowd {
+        sim::add_crowd(&mut owned.scenario, &mut owned.world, density, seed)
+            .map_err(|e| PyValueError::new_err(format!("crowd = {density}: {e}")))?;
+    }
+    Ok(owned)
+}
+
 /// The scenarios that ship inside the module, by name: what `hyplan.gym.NavEnv` drives
 /// by default, with no file beside the installed package.
 const BUILTIN: &[(&str, &str)] = &[(
@@ -247,11 +257,18 @@ impl PySim {
     /// `scenario`: a scenario file of `hyplan sim` (RON) or a dict with its keys (shapes
     /// as `{"Wall": {"from": [x, y], ...}}`); `seed`: the laser noise's seed;
     /// `track_people`: run the people tracker on the scans (`tracked` stays empty
-    /// without it, and a step costs less).
+    /// without it, and a step costs less); `crowd`: people per 100 m^2 to add to the
+    /// scenario's map, placed from `seed` as `hyplan sim --crowd` places them (the robot
+    /// set up as the crowd rooms').
     #[new]
-    #[pyo3(signature = (scenario, seed = 0, track_people = true))]
-    fn new(scenario: &Bound<'_, PyAny>, seed: u64, track_people: bool) -> PyResult<Self> {
-        let owned = load(scenario)?;
+    #[pyo3(signature = (scenario, seed = 0, track_people = true, crowd = None))]
+    fn new(
+        scenario: &Bound<'_, PyAny>,
+        seed: u64,
+        track_people: bool,
+        crowd: Option<f64>,
+    ) -> PyResult<Self> {
+        let owned = with_crowd(load(scenario)?, crowd, seed)?;
         Ok(Self {
             cell: Mutex::new(driven(owned, seed, track_people)),
             seed,
@@ -260,13 +277,14 @@ impl PySim {
 
     /// A scenario from its RON text (map paths relative to the working directory).
     #[staticmethod]
-    #[pyo3(signature = (text, seed = 0, track_people = true))]
-    fn from_ron(text: &str, seed: u64, track_people: bool) -> PyResult<Self> {
+    #[pyo3(signature = (text, seed = 0, track_people = true, crowd = None))]
+    fn from_ron(text: &str, seed: u64, track_people: bool, crowd: Option<f64>) -> PyResult<Self> {
         let path = Path::new("scenario.ron");
         let scenario = Scenario::parse(text, path).map_err(value_err)?;
         let world = scenario.build_world(path).map_err(value_err)?;
+        let owned = with_crowd(Owned { scenario, world }, crowd, seed)?;
         Ok(Self {
-            cell: Mutex::new(driven(Owned { scenario, world }, seed, track_people)),
+            cell: Mutex::new(driven(owned, seed, track_people)),
             seed,
         })
     }

@@ -94,6 +94,22 @@ def test_sim_run_is_the_built_in_stack_and_releases_the_gil():
     assert during > 100, f"the counter thread ran {during} times during the run"
 
 
+def test_sim_places_a_crowd_on_a_map():
+    house = ROOT / "scenarios" / "sim" / "nav-aws_small_house.ron"
+    sim = hyplan.Sim(house, seed=2, crowd=4.0)
+    first = sim.observation()
+    # 4 per 100 m^2 of the 108 m^2 floor a person fits on, as `hyplan sim --crowd 4`.
+    assert first["people"].shape == (4, 3)
+    # The crowd robot's 270-degree scanner, at seed 004's angle between beams.
+    assert sim.laser["angle_min"] == pytest.approx(-math.radians(135.0))
+    again = hyplan.Sim(house, seed=2, crowd=4.0).observation()
+    np.testing.assert_array_equal(first["people"], again["people"])
+    with pytest.raises(ValueError, match="crowd = -1.0: density"):
+        hyplan.Sim(house, crowd=-1.0)
+    with pytest.raises(ValueError, match="no map"):
+        hyplan.Sim(HALL, crowd=1.0)
+
+
 def test_sim_errors_name_the_input():
     with pytest.raises(OSError, match="no-such.ron"):
         hyplan.Sim("no-such.ron")

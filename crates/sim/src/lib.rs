@@ -27,7 +27,7 @@
 //!   et al.'s reciprocal velocity obstacles, [`OrcaParams`]), chosen by
 //!   [`PeopleModelKind`]; [`people_on_map`] ([`MapCrowd`], [`MapCrowdError`]): walkers
 //!   placed on a loaded map's floor at a density ([`PERSON_CLEARANCE`],
-//!   [`MAX_MAP_PEOPLE`], [`PEOPLE_STREAM`]).
+//!   [`MAX_MAP_PEOPLE`], [`PEOPLE_STREAM`]), and [`add_crowd`] to a scenario on a map.
 //! - Sensing and mapping: [`Laser`], [`LaserModel`], [`Scan`] (exact ray casts, seeded
 //!   noise); [`Mapping`], [`OccupancyGrid`] (clamped log-odds, ROS values [`FREE`],
 //!   [`OCCUPIED`], [`UNKNOWN`]); [`Tracker`], [`Mover`] (people's velocities).
@@ -139,7 +139,9 @@ pub use kinematics::{
     twist_of, wheel_speeds, wrap_angle,
 };
 pub use laser::{Laser, LaserModel, NearSegments, Scan};
-pub use map_crowd::{MAX_MAP_PEOPLE, MapCrowd, MapCrowdError, PERSON_CLEARANCE, people_on_map};
+pub use map_crowd::{
+    MAX_MAP_PEOPLE, MapCrowd, MapCrowdError, PERSON_CLEARANCE, add_crowd, people_on_map,
+};
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use monitor::CollisionMonitor;
 pub use navigator::{NavEvent, NavState, Navigation, Navigator};

@@ -7,8 +7,11 @@ use hyplan_core::{Point2, Zone};
 use rand::Rng;
 use search::{GridOptions, GridSearch};
 
-use crate::crowd::walking_speed;
-use crate::world::{Person, Walk};
+use crate::crowd::{crowd_robot, walking_speed};
+use crate::engine::{PEOPLE_STREAM, stream};
+use crate::scenario::Scenario;
+use crate::social_force::{PeopleModelKind, SocialForceParams};
+use crate::world::{Person, Walk, World};
 
 /// How far a cell of a person's floor is from every blocked cell at least, m: a body's
 /// radius (0.25 m) and 10 cm, so that people walk the corridors and doorways a person
@@ -48,6 +51,11 @@ pub enum MapCrowdError {
     /// The density is negative or not finite.
     #[error("density = {0}: must be finite and >= 0 (people per 100 m^2)")]
     Density(f64),
+    /// The scenario's world has no map to place people on.
+    #[error(
+        "the scenario {0:?} has no map to place people on (a ROS map, or a world whose map is a file)"
+    )]
+    NoMap(String),
     /// No floor a person fits on is connected to the robot's start.
     #[error(
         "no floor a person fits on ({PERSON_CLEARANCE} m from every wall) is connected to the \
@@ -207,4 +215,46 @@ pub fn people_on_map<R: Rng>(
         });
     }
     Ok(MapCrowd { people, floor_m2 })
+}
+
+/// Adds `density` people per 100 m^2 to a scenario on a map and its world, as `hyplan sim
+/// --crowd` does: placed by [`people_on_map`] from the robot's start, drawn from
+/// `seed`'s [`PEOPLE_STREAM`]; under social forces who see the robot if the scenario's
+/// people were scripted (else its model); the robot set up as the crowd rooms'
+/// ([`crowd_robot`]). Returns what was placed.
+///
+/// ```
+/// let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+///     .join("../../scenarios/sim/nav-aws_small_house.ron");
+/// let (mut scenario, mut world) = sim::Scenario::load(&path)?;
+/// let crowd = sim::add_crowd(&mut scenario, &mut world, 2.0, 7)?;
+/// assert_eq!(world.people, crowd.people);
+/// assert_eq!(scenario.people, crowd.people);
+/// assert_eq!(scenario.navigation.people_patience, sim::PEOPLE_PATIENCE);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+///
+/// [`MapCrowdError`]: a bad density, a world without a map, no floor at the start.
+pub fn add_crowd(
+    scenario: &mut Scenario,
+    world: &mut World,
+    density: f64,
+    seed: u64,
+) -> Result<MapCrowd, MapCrowdError> {
+    let map = world
+        .statics
+        .grid
+        .as_ref()
+        .ok_or_else(|| MapCrowdError::NoMap(scenario.name.clone()))?;
+    let start = Point2::new(scenario.start.0, scenario.start.1);
+    let crowd = people_on_map(map, density, start, &mut stream(seed, PEOPLE_STREAM))?;
+    if scenario.people_model == PeopleModelKind::Scripted {
+        scenario.people_model = PeopleModelKind::SocialForce(SocialForceParams::default());
+    }
+    crowd_robot(scenario);
+    scenario.people.extend(crowd.people.iter().cloned());
+    world.people.extend(crowd.people.iter().cloned());
+    Ok(crowd)
 }

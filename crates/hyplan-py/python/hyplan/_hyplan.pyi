@@ -119,10 +119,18 @@ class Sim:
     ``timed_out``."""
 
     def __init__(
-        self, scenario: Union[_Path, dict], seed: int = 0, track_people: bool = True
-    ) -> None: ...
+        self,
+        scenario: Union[_Path, dict],
+        seed: int = 0,
+        track_people: bool = True,
+        crowd: Optional[float] = None,
+    ) -> None:
+        """``crowd``: people per 100 m^2 added to the scenario's map, as ``hyplan sim
+        --crowd`` adds them (drawn from ``seed``)."""
     @staticmethod
-    def from_ron(text: str, seed: int = 0, track_people: bool = True) -> "Sim": ...
+    def from_ron(
+        text: str, seed: int = 0, track_people: bool = True, crowd: Optional[float] = None
+    ) -> "Sim": ...
     def reset(self, seed: Optional[int] = None) -> dict:
         """Back to the start (with a new seed if given); the first observation."""
     def step(self, v: float, omega: float) -> dict:

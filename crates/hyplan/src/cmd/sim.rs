@@ -147,29 +147,15 @@ fn global_planner(spec: &str) -> anyhow::Result<sim::GlobalPlanner> {
     Ok(sim::GlobalPlanner::Other(config.build()))
 }
 
-/// `--crowd`: people at `density` on the scenario's map, who see the robot under social
-/// forces (the scenario's model if it already has people who react), and the robot set
-/// up as the crowd scenarios' ([`sim::crowd_robot`]).
+/// `--crowd`: people at `density` on the scenario's map ([`sim::add_crowd`]).
 fn add_crowd(
     scenario: &mut sim::Scenario,
     world: &mut sim::World,
     density: f64,
     seed: u64,
 ) -> anyhow::Result<()> {
-    let map = world.statics.grid.as_ref().with_context(|| {
-        format!(
-            "--crowd: the scenario {:?} has no map to place people on (use a ROS map, or              a scenario whose world is a map file)",
-            scenario.name
-        )
-    })?;
-    let start = hyplan_core::Point2::new(scenario.start.0, scenario.start.1);
-    let crowd = sim::people_on_map(
-        map,
-        density,
-        start,
-        &mut sim::stream(seed, sim::PEOPLE_STREAM),
-    )
-    .map_err(|e| anyhow::anyhow!("--crowd {density}: {e}"))?;
+    let crowd = sim::add_crowd(scenario, world, density, seed)
+        .map_err(|e| anyhow::anyhow!("--crowd {density}: {e}"))?;
     outln!(
         "crowd: {} people on {:.0} m^2 of floor reachable from the start ({density} per 100 m^2{})",
         crowd.people.len(),
@@ -180,18 +166,11 @@ fn add_crowd(
             String::new()
         }
     )?;
-    if scenario.people_model == sim::PeopleModelKind::Scripted {
-        scenario.people_model =
-            sim::PeopleModelKind::from_name("social-force").expect("a known model");
-    }
-    sim::crowd_robot(scenario);
     outln!(
         "crowd robot: collision monitor on, waits up to {} s for people, {}-degree scanner (as `cargo xtask crowd`'s)",
         sim::PEOPLE_PATIENCE,
         sim::CROWD_FOV_DEG
     )?;
-    scenario.people.extend(crowd.people.iter().cloned());
-    world.people.extend(crowd.people);
     Ok(())
 }
 
