@@ -50,9 +50,9 @@ pub struct Args {
     /// scenario's `people_model`.
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(sim::PeopleModelKind::NAMES))]
     pub people_model: Option<String>,
-    /// Add people to the map: `D` per 100 m^2 of the floor the robot can reach (1 is a
-    /// busy office corridor's crowd), each walking back and forth at about 1.3 m/s between
-    /// two points of the floor drawn from `--seed` (`sim::people_on_map`). They see the
+    /// Add people to the map: `D` per 100 m^2 of the floor the robot can reach, each
+    /// walking back and forth at about 1.3 m/s between two points of the floor drawn from
+    /// `--seed` (`sim::people_on_map`). They see the
     /// robot under social forces unless `--people-model` says otherwise. The robot is set
     /// up as in `cargo xtask crowd`: collision monitor on (unless `--collision-monitor
     /// off`), waiting up to 30 s for people before giving up, a 270-degree scanner. Needs
