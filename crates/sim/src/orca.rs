@@ -1069,16 +1069,19 @@ mod tests {
         );
     }
 
-    /// On a real house's map, a person is handed every front-facing cell edge within
-    /// [`CELL_EDGES_ALL_WITHIN`], and of the farther ones within reach only those their
-    /// rays hit: a fraction of them, the rest being hidden behind nearer walls.
-    #[test]
-    fn people_on_a_map_avoid_the_cell_edges_near_and_seen() {
+    /// Over the free places of the world of `scenario` (every 7th cell each way, 0.3 m from
+    /// obstacles, a reach of 7 m: a person at 1.34 m/s): how many places, how many wall
+    /// edges a person there is handed, and how many front-facing ones are in reach.
+    /// Checks on the way that every front-facing edge within [`CELL_EDGES_ALL_WITHIN`] is
+    /// handed, nearest first.
+    fn edges_handed(scenario: &str) -> (usize, usize, usize) {
+        const REACH: f64 = 7.0;
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../scenarios/sim/nav-aws_small_house.ron");
+            .join("../../scenarios/sim")
+            .join(scenario);
         let (_, world) = crate::Scenario::load(&path).unwrap();
         let statics = &world.statics;
-        let walls = Walls::new(statics, 7.0);
+        let walls = Walls::new(statics, REACH);
         let rays = statics.grid_rays().unwrap();
         let grid = statics.grid.as_ref().unwrap();
         let mut near = Near::default();
@@ -1091,8 +1094,8 @@ mod tests {
                     continue;
                 }
                 places += 1;
-                walls.seen(p, 7.0, &rays, &mut ranges, &mut seen);
-                walls.near(p, 7.0, &seen, &mut near);
+                walls.seen(p, REACH, &rays, &mut ranges, &mut seen);
+                walls.near(p, REACH, &seen, &mut near);
                 let at = vec2(p);
                 let mut last = 0.0;
                 for &k in &near.indices {
@@ -1103,7 +1106,7 @@ mod tests {
                 handed += near.indices.len();
                 for (k, o) in walls.obstacles.iter().enumerate() {
                     let d = f64::from(distance_sq(o, at)).sqrt();
-                    if back_facing(o, at) || d > 7.0 {
+                    if back_facing(o, at) || d > REACH {
                         continue;
                     }
                     in_reach += 1;
@@ -1113,8 +1116,39 @@ mod tests {
                 }
             }
         }
+        (places, handed, in_reach)
+    }
+
+    /// On a real house's map, a person is handed every front-facing cell edge within
+    /// [`CELL_EDGES_ALL_WITHIN`], and of the farther ones within reach only those their
+    /// rays hit: a fraction of them, the rest being hidden behind nearer walls.
+    #[test]
+    fn people_on_a_map_avoid_the_cell_edges_near_and_seen() {
+        let (places, handed, in_reach) = edges_handed("nav-aws_small_house.ron");
         assert!(places > 500, "{places}");
         // Measured: about 28 of 117 edges a place.
         assert!(handed * 3 < in_reach, "{handed} of {in_reach}");
+    }
+
+    /// The same count on the building maps of `data/ros_maps/`. Run it with `cargo test
+    /// -p sim --release --lib -- --ignored --nocapture orca::tests::cell_edges_on`.
+    #[test]
+    #[ignore = "a measurement, not a check"]
+    fn cell_edges_on_the_building_maps() {
+        for scenario in [
+            "explore-tb3.ron",
+            "nav-aws_small_house.ron",
+            "explore-yujin_rnd_hokuyo.ron",
+            "explore-uos_avz5floor_open.ron",
+            "explore-mit_building_31.ron",
+            "explore-mit_stata_basement.ron",
+        ] {
+            let (places, handed, in_reach) = edges_handed(scenario);
+            println!(
+                "{scenario}: {places} places, wall edges a person is handed {:.1}, front-facing in reach {:.1}",
+                handed as f64 / places as f64,
+                in_reach as f64 / places as f64
+            );
+        }
     }
 }
