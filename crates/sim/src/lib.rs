@@ -140,7 +140,8 @@ pub use kinematics::{
 };
 pub use laser::{Laser, LaserModel, NearSegments, Scan};
 pub use map_crowd::{
-    MAX_MAP_PEOPLE, MapCrowd, MapCrowdError, PERSON_CLEARANCE, add_crowd, people_on_map,
+    MAX_MAP_PEOPLE, MapCrowd, MapCrowdError, PERSON_CLEARANCE, ROUTE_CLEARANCES, add_crowd,
+    people_on_map,
 };
 pub use mapping::{FREE, Mapping, OCCUPIED, OccupancyGrid, UNKNOWN};
 pub use monitor::CollisionMonitor;

@@ -139,3 +139,168 @@ fn orca_people_on_a_map_keep_out_of_its_walls() {
     let alone: f64 = world.people.iter().map(|p| p.speed * 120.0).sum();
     assert!(walked > 0.2 * alone, "{walked:.1} m of {alone:.1} m");
 }
+
+/// A drawn room, 5 cm cells, top row first: `#` walls, `.` floor.
+fn drawn(rows: &[String]) -> envmap::GridMap {
+    envmap::GridMap::from_ascii(&rows.join("\n"))
+        .and_then(|m| m.with_frame(0.05, Point2::origin()))
+        .unwrap()
+}
+
+/// The least clearance (centre of the nearest blocked cell to the cell's centre) along
+/// every leg of every walker's route, m.
+fn least_clearance(map: &envmap::GridMap, people: &[sim::Person]) -> f64 {
+    let walls = map.blocked_distance().unwrap();
+    let mut least = f64::INFINITY;
+    for p in people {
+        for w in p.path.windows(2) {
+            let (a, b) = (Point2::new(w[0].0, w[0].1), Point2::new(w[1].0, w[1].1));
+            map.segment_cells(a, b, |i, j| {
+                least = least.min(walls.cell_dist(i, j) * map.resolution());
+                true
+            });
+        }
+    }
+    least
+}
+
+/// Routes keep the widest clearance that joins their ends: in a 6 x 4 m room with a
+/// 0.3 m pillar in its middle, every leg stays 0.6 m from the pillar and the walls (a
+/// route planned on the whole floor grazes the pillar at 0.35 m); across a 1 m door
+/// between two such rooms, 0.45 m.
+#[test]
+fn routes_keep_the_widest_clearance_the_floor_offers() {
+    let room = |i: usize, j: usize| {
+        let wall = i == 0 || j == 0 || i == 119 || j == 79;
+        let pillar = (57..63).contains(&i) && (37..43).contains(&j);
+        wall || pillar
+    };
+    let rows: Vec<String> = (0..80)
+        .map(|j| {
+            (0..120)
+                .map(|i| if room(i, j) { '#' } else { '.' })
+                .collect()
+        })
+        .collect();
+    let map = drawn(&rows);
+    let start = Point2::new(0.6, 0.6);
+    let mut people = Vec::new();
+    for seed in 0..10 {
+        let mut rng = sim::stream(seed, sim::PEOPLE_STREAM);
+        people.extend(people_on_map(&map, 30.0, start, &mut rng).unwrap().people);
+    }
+    assert!(people.len() >= 50, "{}", people.len());
+    let least = least_clearance(&map, &people);
+    assert!(least >= sim::ROUTE_CLEARANCES[0], "{least:.3}");
+
+    // Two such rooms side by side, a 1 m door (20 cells) through the walls between them.
+    let rows: Vec<String> = (0..80)
+        .map(|j| {
+            (0..241)
+                .map(|i| {
+                    let door = (119..=120).contains(&i) && (30..50).contains(&j);
+                    let wall = !door && (i == 240 || room(i % 120, j));
+                    if wall { '#' } else { '.' }
+                })
+                .collect()
+        })
+        .collect();
+    let map = drawn(&rows);
+    let mut through = 0;
+    let mut people = Vec::new();
+    for seed in 0..10 {
+        let mut rng = sim::stream(seed, sim::PEOPLE_STREAM);
+        let crowd = people_on_map(&map, 15.0, start, &mut rng).unwrap();
+        through += crowd
+            .people
+            .iter()
+            .filter(|p| (p.path[0].0 - 6.0) * (p.path.last().unwrap().0 - 6.0) < 0.0)
+            .count();
+        people.extend(crowd.people);
+    }
+    assert!(through >= 10, "{through} routes through the door");
+    let least = least_clearance(&map, &people);
+    assert!(
+        (sim::ROUTE_CLEARANCES[1]..sim::ROUTE_CLEARANCES[0]).contains(&least),
+        "{least:.3}"
+    );
+}
+
+/// People held in place by a building's walls, not by the robot: on each building map of
+/// `data/ros_maps`, density 1 (20 on the small TurtleBot3 world), seeds 1 to 3, people
+/// who do not look walking 120 s with the robot standing at its start, the count of
+/// those who stay within 0.3 m of one place for 20 s or more.
+#[test]
+#[ignore = "a measurement, not a check"]
+fn people_held_in_place_on_the_building_maps() {
+    const STEP: f64 = 0.04;
+    let window = (20.0 / STEP) as usize;
+    let (mut held_all, mut people_all) = ([0; 2], 0);
+    for (scenario, density) in [
+        ("explore-tb3.ron", 20.0),
+        ("explore-aws_small_house.ron", 1.0),
+        ("explore-yujin_rnd_hokuyo.ron", 1.0),
+        ("explore-uos_avz5floor_open.ron", 1.0),
+        ("explore-mit_building_31.ron", 1.0),
+        ("explore-mit_stata_basement.ron", 1.0),
+    ] {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../scenarios/sim")
+            .join(scenario);
+        let (sc, mut world) = sim::Scenario::load(&path).unwrap();
+        let map = world.statics.grid.clone().unwrap();
+        let (mut held, mut people) = ([0; 2], 0);
+        for seed in 1..=3 {
+            let mut rng = sim::stream(seed, sim::PEOPLE_STREAM);
+            world.people = people_on_map(&map, density, robot(&sc), &mut rng)
+                .unwrap()
+                .people;
+            people += world.people.len();
+            let models = [
+                PeopleModelKind::SocialForce(sim::SocialForceParams {
+                    sees_robot: false,
+                    ..Default::default()
+                }),
+                PeopleModelKind::Orca(sim::OrcaParams {
+                    sees_robot: false,
+                    ..Default::default()
+                }),
+            ];
+            for (m, kind) in models.iter().enumerate() {
+                let mut model = kind.build(&world, sc.robot.body_radius);
+                let pose = Pose {
+                    x: sc.start.0,
+                    y: sc.start.1,
+                    phi: 0.0,
+                };
+                let track: Vec<Vec<Point2>> = (0..=(120.0 / STEP) as usize)
+                    .map(|k| {
+                        let discs = model.people(k as f64 * STEP, pose);
+                        discs.iter().map(|d| d.center).collect()
+                    })
+                    .collect();
+                held[m] += (0..world.people.len())
+                    .filter(|&p| {
+                        (0..track.len() - window).step_by(5).any(|a| {
+                            let at = track[a][p];
+                            track[a..=a + window]
+                                .iter()
+                                .all(|now| (now[p] - at).norm() < 0.3)
+                        })
+                    })
+                    .count();
+            }
+        }
+        println!(
+            "{scenario}: {people} people, held 20 s or more: social forces {}, ORCA {}",
+            held[0], held[1]
+        );
+        people_all += people;
+        held_all[0] += held[0];
+        held_all[1] += held[1];
+    }
+    println!(
+        "all: {people_all} people, held: social forces {}, ORCA {}",
+        held_all[0], held_all[1]
+    );
+}
