@@ -157,8 +157,13 @@ fn add_crowd(
     let crowd = sim::add_crowd(scenario, world, density, seed)
         .map_err(|e| anyhow::anyhow!("--crowd {density}: {e}"))?;
     outln!(
-        "crowd: {} people on {:.0} m^2 of floor reachable from the start ({density} per 100 m^2{})",
+        "crowd: {} {} on {:.0} m^2 of floor reachable from the start ({density} per 100 m^2{})",
         crowd.people.len(),
+        if crowd.people.len() == 1 {
+            "person"
+        } else {
+            "people"
+        },
         crowd.floor_m2,
         if crowd.people.len() == sim::MAX_MAP_PEOPLE {
             format!(", at most {}", sim::MAX_MAP_PEOPLE)
