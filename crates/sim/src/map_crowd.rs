@@ -26,6 +26,10 @@ pub const PERSON_CLEARANCE: f64 = 0.35;
 /// hold them in place for good.
 pub const ROUTE_CLEARANCES: [f64; 2] = [0.6, 0.45];
 
+/// Way-points of a route are at most this far apart, m: a person pushed off a leg heads
+/// back to it a step ahead, not straight for a corner that may lie behind a wall.
+const ROUTE_STEP: f64 = 1.0;
+
 /// The most people [`people_on_map`] places, whatever the density and the floor (ORCA
 /// and social forces cost the square of the crowd each step).
 pub const MAX_MAP_PEOPLE: usize = 500;
@@ -238,13 +242,11 @@ pub fn people_on_map<R: Rng>(
         if cells.len() < 2 {
             continue;
         }
+        let corners: Vec<Point2> = cells.iter().map(|&c| at(c)).collect();
         people.push(Person {
-            path: cells
+            path: postproc::densify(&corners, ROUTE_STEP)
                 .iter()
-                .map(|&c| {
-                    let p = at(c);
-                    (p.x, p.y)
-                })
+                .map(|p| (p.x, p.y))
                 .collect(),
             speed: walking_speed(rng),
             start: 0.0,
