@@ -86,9 +86,9 @@ pub enum MapCrowdError {
 /// at most [`MAX_MAP_PEOPLE`], each walking back and forth, from time 0, between two
 /// points of that floor drawn at random at least 4 m apart (where the floor is at least
 /// the first of [`ROUTE_CLEARANCES`] from the walls, if it is anywhere): along the map's
-/// Lazy Theta* path between them (straight where the floor allows, way-points at the
-/// corners) on the part of the floor farthest from the walls that joins them, of
-/// [`ROUTE_CLEARANCES`] and [`PERSON_CLEARANCE`].
+/// Lazy Theta* path between them (straight where the floor allows, a way-point at each
+/// corner and at least every metre) on the part of the floor farthest from the walls that
+/// joins them, of [`ROUTE_CLEARANCES`] and [`PERSON_CLEARANCE`].
 /// They start at their first point, none within 1.5 m of the robot nor 0.6 m of each
 /// other, at speeds of [`crate::WALKING_SPEED`] cut to [`crate::SPEED_LIMITS`], with a
 /// body radius of 0.25 m. Drawn from `rng`; the same generator state gives the same
