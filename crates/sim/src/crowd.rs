@@ -421,6 +421,11 @@ pub struct CrowdMetrics {
     /// Their delay caused by the robot: the sum over them of their arrival time with the
     /// robot less without it, s.
     pub people_delay: f64,
+    /// People held in place ([`HELD_WITHIN`], [`HELD_FOR`]) walking without the robot over
+    /// the same time: held by the walls or each other, which the robot's figures then
+    /// include (a person standing in a corridor for good blocks it).
+    #[serde(default)]
+    pub people_held_alone: usize,
     /// Laser scans with people moving in view (at least four hits on them, the tracker's
     /// smallest cluster).
     pub scans_with_people: usize,
@@ -562,10 +567,38 @@ impl Observer for CrowdMeter {
     }
 }
 
-/// When each person leaves the world with no robot in it (the people model stepped
-/// alone, tick by tick, until `until`, s).
+/// A person who stays within this distance of one place for [`HELD_FOR`] is held in
+/// place, m (a person waiting to set off, or standing at the end of a one-way route, is
+/// not).
+pub const HELD_WITHIN: f64 = 0.3;
+
+/// How long a person held in place stays within [`HELD_WITHIN`] of one place, s.
+pub const HELD_FOR: f64 = 20.0;
+
+/// The people of a world walking with no robot in it ([`people_alone`]).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Alone {
+    /// When each person left the world, s.
+    pub arrivals: Vec<Option<f64>>,
+    /// How many were held in place (within [`HELD_WITHIN`] of one place for [`HELD_FOR`]
+    /// or more) on the way: by the walls or by each other, since no robot was there.
+    pub held: usize,
+}
+
+/// The people model of `scenario` stepped alone in `world`, tick by tick, until `until`,
+/// s: when each person leaves the world, and how many are held in place on the way.
+///
+/// ```
+/// use sim::{Person, Walk};
+/// let mut sc = sim::crowd(sim::CrowdFlow::Crossing, 1.0, 1, 0);
+/// let world = sc.build_world(std::path::Path::new(&sc.name))?;
+/// let alone = sim::people_alone(&sc, &world, 30.0);
+/// assert_eq!(alone.arrivals.len(), world.people.len());
+/// assert_eq!(alone.held, 0, "nothing holds people crossing an empty hall");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[must_use]
-pub fn arrivals_alone(scenario: &Scenario, world: &World, until: f64) -> Vec<Option<f64>> {
+pub fn people_alone(scenario: &Scenario, world: &World, until: f64) -> Alone {
     let mut model = scenario
         .people_model
         .build(world, scenario.robot.body_radius);
@@ -574,7 +607,11 @@ pub fn arrivals_alone(scenario: &Scenario, world: &World, until: f64) -> Vec<Opt
         y: -OFFSTAGE.1,
         phi: 0.0,
     };
-    let mut out = vec![None; world.people.len()];
+    let n = world.people.len();
+    let mut out = vec![None; n];
+    // Per person: where they stood since when, and whether they were held.
+    let mut anchors: Vec<Option<(Point2, f64)>> = vec![None; n];
+    let mut held = vec![false; n];
     let mut was: Vec<Point2> = Vec::new();
     let mut tick = 0u64;
     loop {
@@ -586,10 +623,35 @@ pub fn arrivals_alone(scenario: &Scenario, world: &World, until: f64) -> Vec<Opt
         if !was.is_empty() {
             arrivals(&mut out, &was, &now, t);
         }
+        for (k, (p, &here)) in world.people.iter().zip(&now).enumerate() {
+            let done = matches!(p.walk, crate::Walk::Once)
+                && p.path
+                    .last()
+                    .is_some_and(|&(x, y)| (Point2::new(x, y) - here).norm() <= HELD_WITHIN);
+            if t < p.start || offstage(here) || done {
+                anchors[k] = None;
+                continue;
+            }
+            match anchors[k] {
+                Some((at, since)) if (here - at).norm() <= HELD_WITHIN => {
+                    held[k] |= t - since >= HELD_FOR;
+                }
+                _ => anchors[k] = Some((here, t)),
+            }
+        }
         was = now;
         tick += 1;
     }
-    out
+    Alone {
+        arrivals: out,
+        held: held.iter().filter(|&&h| h).count(),
+    }
+}
+
+/// When each person leaves the world with no robot in it ([`people_alone`]'s arrivals).
+#[must_use]
+pub fn arrivals_alone(scenario: &Scenario, world: &World, until: f64) -> Vec<Option<f64>> {
+    people_alone(scenario, world, until).arrivals
 }
 
 /// Runs `scenario` with its people, without them, and the people alone, with `seed` and
@@ -632,9 +694,9 @@ impl CrowdMeter {
         let mut alone_sc = scenario.clone();
         alone_sc.people.clear();
         let alone = crate::run(&alone_sc, &alone_world, seed, planner);
-        let reference = arrivals_alone(scenario, world, s.end_time);
+        let reference = people_alone(scenario, world, s.end_time);
         let (mut arrived, mut delay) = (0, 0.0);
-        for (with, without) in self.arrivals.iter().zip(&reference) {
+        for (with, without) in self.arrivals.iter().zip(&reference.arrivals) {
             if let (Some(a), Some(b)) = (with, without) {
                 arrived += 1;
                 delay += a - b;
@@ -652,6 +714,7 @@ impl CrowdMeter {
             personal_space_time: s.personal_space_time,
             people_arrived: arrived,
             people_delay: delay,
+            people_held_alone: reference.held,
             ..self.metrics
         }
     }

@@ -117,8 +117,9 @@ pub use costmap::{
     rasterize,
 };
 pub use crowd::{
-    CROWD_FOV_DEG, CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, PEOPLE_PATIENCE, SPEED_LIMITS,
-    TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, crowd_robot, measure,
+    Alone, CROWD_FOV_DEG, CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, HELD_FOR, HELD_WITHIN,
+    PEOPLE_PATIENCE, SPEED_LIMITS, TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, crowd_robot,
+    measure, people_alone,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PEOPLE_STREAM, PLANNER_STREAM,

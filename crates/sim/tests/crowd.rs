@@ -67,6 +67,40 @@ fn through_walkers_arrive_and_are_counted() {
     }
 }
 
+/// A person pushing toward a way-point behind a wall is held in place and counted; one
+/// walking the corridor back and forth, or waiting to set off, is not; scripted walkers,
+/// who go through walls, are never held.
+#[test]
+fn people_held_by_the_walls_are_counted() {
+    let mut sc = sim::crowd(CrowdFlow::Corridor, 0.0, 1, 0);
+    let (w, h) = sc.world.size.unwrap();
+    let walker = |from: (f64, f64), to: (f64, f64), start: f64| sim::Person {
+        path: vec![from, to],
+        speed: 1.3,
+        start,
+        radius: 0.25,
+        walk: Walk::BackAndForth,
+        group: None,
+    };
+    sc.people = vec![
+        walker((w - 3.0, h / 2.0), (w + 2.0, h / 2.0), 0.0),
+        walker((2.0, h / 2.0 + 0.8), (w - 4.0, h / 2.0 + 0.8), 0.0),
+        walker((2.0, h / 2.0 - 0.8), (w - 4.0, h / 2.0 - 0.8), 50.0),
+    ];
+    sc.people_model = PeopleModelKind::SocialForce(SocialForceParams {
+        sees_robot: false,
+        ..Default::default()
+    });
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    assert_eq!(world.people.len(), 3);
+    assert_eq!(sim::people_alone(&sc, &world, 60.0).held, 1);
+    // Not for as long as HELD_FOR.
+    assert_eq!(sim::people_alone(&sc, &world, sim::HELD_FOR - 1.0).held, 0);
+    sc.people_model = PeopleModelKind::Scripted;
+    let world = sc.build_world(Path::new(&sc.name)).unwrap();
+    assert_eq!(sim::people_alone(&sc, &world, 60.0).held, 0);
+}
+
 /// A run among people who see the robot: reached, no at-fault contact, the figures
 /// filled in and consistent (the time alone is the time of the empty room).
 #[test]

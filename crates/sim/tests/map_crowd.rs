@@ -228,13 +228,11 @@ fn routes_keep_the_widest_clearance_the_floor_offers() {
 
 /// People held in place by a building's walls, not by the robot: on each building map of
 /// `data/ros_maps`, density 1 (20 on the small TurtleBot3 world), seeds 1 to 3, people
-/// who do not look walking 120 s with the robot standing at its start, the count of
-/// those who stay within 0.3 m of one place for 20 s or more.
+/// who do not look walking 120 s with no robot ([`sim::people_alone`]), the count of those
+/// held in place (within `HELD_WITHIN` of one place for `HELD_FOR` or more).
 #[test]
 #[ignore = "a measurement, not a check"]
 fn people_held_in_place_on_the_building_maps() {
-    const STEP: f64 = 0.04;
-    let window = (20.0 / STEP) as usize;
     let (mut held_all, mut people_all) = ([0; 2], 0);
     for (scenario, density) in [
         ("explore-tb3.ron", 20.0),
@@ -247,7 +245,7 @@ fn people_held_in_place_on_the_building_maps() {
         let path = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("../../scenarios/sim")
             .join(scenario);
-        let (sc, mut world) = sim::Scenario::load(&path).unwrap();
+        let (mut sc, mut world) = sim::Scenario::load(&path).unwrap();
         let map = world.statics.grid.clone().unwrap();
         let (mut held, mut people) = ([0; 2], 0);
         for seed in 1..=3 {
@@ -266,29 +264,9 @@ fn people_held_in_place_on_the_building_maps() {
                     ..Default::default()
                 }),
             ];
-            for (m, kind) in models.iter().enumerate() {
-                let mut model = kind.build(&world, sc.robot.body_radius);
-                let pose = Pose {
-                    x: sc.start.0,
-                    y: sc.start.1,
-                    phi: 0.0,
-                };
-                let track: Vec<Vec<Point2>> = (0..=(120.0 / STEP) as usize)
-                    .map(|k| {
-                        let discs = model.people(k as f64 * STEP, pose);
-                        discs.iter().map(|d| d.center).collect()
-                    })
-                    .collect();
-                held[m] += (0..world.people.len())
-                    .filter(|&p| {
-                        (0..track.len() - window).step_by(5).any(|a| {
-                            let at = track[a][p];
-                            track[a..=a + window]
-                                .iter()
-                                .all(|now| (now[p] - at).norm() < 0.3)
-                        })
-                    })
-                    .count();
+            for (m, kind) in models.into_iter().enumerate() {
+                sc.people_model = kind;
+                held[m] += sim::people_alone(&sc, &world, 120.0).held;
             }
         }
         println!(

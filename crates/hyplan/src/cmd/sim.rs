@@ -271,7 +271,7 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
     };
     if let Some(c) = &crowd {
         outln!(
-            "among people: {}; people's delay {:.2} s over {} who left; tracker: {} error, {} of {} sightings missed, {} false tracks",
+            "among people: {}; people's delay {:.2} s over {} who left; held in place without the robot: {} of {}; tracker: {} error, {} of {} sightings missed, {} false tracks",
             match (c.travel_time_alone, c.time_ratio()) {
                 (Some(t), Some(r)) => format!("{t:.2} s to the goal without them ({r:.2}x)"),
                 (Some(t), None) => format!("{t:.2} s to the goal without them"),
@@ -279,6 +279,8 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
             },
             c.people_delay,
             c.people_arrived,
+            c.people_held_alone,
+            world.people.len(),
             if c.sightings > c.missed {
                 format!(
                     "{:.3} m",
