@@ -362,8 +362,24 @@ fn sim_places_a_crowd_on_a_map() {
     assert!(text.starts_with("crowd: 4 people on 108 m^2"), "{text}");
     assert!(text.contains("among people:"), "{text}");
     assert!(text.contains("0 at fault"), "{text}");
+    assert!(
+        text.contains(
+            "crowd robot: collision monitor on, waits up to 30 s for people, 270-degree scanner"
+        ),
+        "{text}"
+    );
     // The same seed, the same run.
     assert_eq!(stdout(&run(&["--crowd", "4", "--seed", "2"])), text);
+    // The robot's line says what the run does.
+    let off = stdout(&run(&[
+        "--crowd",
+        "4",
+        "--seed",
+        "2",
+        "--collision-monitor",
+        "off",
+    ]));
+    assert!(off.contains("crowd robot: collision monitor off,"), "{off}");
     let o = run(&["--crowd", "-1"]);
     assert_exit(&o, 2, &["--crowd -1", "must be finite and >= 0"]);
     let f = SCRATCH.file("no-map.ron", hall("", "", "(0.5, 1.5)"));

@@ -171,11 +171,6 @@ fn add_crowd(
             String::new()
         }
     )?;
-    outln!(
-        "crowd robot: collision monitor on, waits up to {} s for people, {}-degree scanner (as `cargo xtask crowd`'s)",
-        sim::PEOPLE_PATIENCE,
-        sim::CROWD_FOV_DEG
-    )?;
     Ok(())
 }
 
@@ -213,6 +208,19 @@ pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
         }
         Some(_) => scenario.navigation.collision_monitor = None,
         None => {}
+    }
+    if args.crowd.is_some() {
+        // After the flags, so that it says what the run does.
+        outln!(
+            "crowd robot: collision monitor {}, waits up to {} s for people, {}-degree scanner (as `cargo xtask crowd`'s)",
+            if scenario.navigation.collision_monitor.is_some() {
+                "on"
+            } else {
+                "off"
+            },
+            scenario.navigation.people_patience,
+            scenario.laser.fov_deg
+        )?;
     }
     let planner = global_planner(&args.planner)?;
     let mut meter = sim::CrowdMeter::new(world.people.len());
