@@ -589,8 +589,7 @@ pub struct Alone {
 /// s: when each person leaves the world, and how many are held in place on the way.
 ///
 /// ```
-/// use sim::{Person, Walk};
-/// let mut sc = sim::crowd(sim::CrowdFlow::Crossing, 1.0, 1, 0);
+/// let sc = sim::crowd(sim::CrowdFlow::Crossing, 1.0, 1, 0);
 /// let world = sc.build_world(std::path::Path::new(&sc.name))?;
 /// let alone = sim::people_alone(&sc, &world, 30.0);
 /// assert_eq!(alone.arrivals.len(), world.people.len());
@@ -646,12 +645,6 @@ pub fn people_alone(scenario: &Scenario, world: &World, until: f64) -> Alone {
         arrivals: out,
         held: held.iter().filter(|&&h| h).count(),
     }
-}
-
-/// When each person leaves the world with no robot in it ([`people_alone`]'s arrivals).
-#[must_use]
-pub fn arrivals_alone(scenario: &Scenario, world: &World, until: f64) -> Vec<Option<f64>> {
-    people_alone(scenario, world, until).arrivals
 }
 
 /// Runs `scenario` with its people, without them, and the people alone, with `seed` and

@@ -118,8 +118,8 @@ pub use costmap::{
 };
 pub use crowd::{
     Alone, CROWD_FOV_DEG, CrowdCell, CrowdFlow, CrowdMeter, CrowdMetrics, HELD_FOR, HELD_WITHIN,
-    PEOPLE_PATIENCE, SPEED_LIMITS, TRACK_GATE, WALKING_SPEED, arrivals_alone, crowd, crowd_robot,
-    measure, people_alone,
+    PEOPLE_PATIENCE, SPEED_LIMITS, TRACK_GATE, WALKING_SPEED, crowd, crowd_robot, measure,
+    people_alone,
 };
 pub use engine::{
     FixedGoal, Flow, GoalSource, NOISE_STREAM, NoiseRng, Observer, PEOPLE_STREAM, PLANNER_STREAM,

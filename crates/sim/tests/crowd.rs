@@ -50,7 +50,7 @@ fn rooms_hold_the_density_asked_for() {
 fn through_walkers_arrive_and_are_counted() {
     let sc = sim::crowd(CrowdFlow::Crossing, 1.0, 3, 0);
     let world = sc.build_world(Path::new(&sc.name)).unwrap();
-    let alone = sim::arrivals_alone(&sc, &world, 40.0);
+    let alone = sim::people_alone(&sc, &world, 40.0).arrivals;
     let arrived = alone.iter().flatten().count();
     assert!(arrived >= 3, "{alone:?}");
     // Everyone who set off before 20 s with a clear crossing (about 14 m at >= 0.8 m/s)
