@@ -113,15 +113,21 @@ impl BoxGrid {
                     continue;
                 }
                 *mark = generation;
-                let (lo, hi) = self.boxes[k as usize];
-                let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
-                let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
-                if dx * dx + dy * dy <= reach * reach {
+                if within(self.boxes[k as usize], p, reach) {
                     f(k);
                 }
             }
         }
     }
+}
+
+/// Whether box `(lo, hi)` comes within `reach` of `p` (its nearest point no farther): the
+/// test of [`BoxGrid::near`], for those who keep a box's bounds themselves.
+#[inline]
+pub(crate) fn within((lo, hi): (Point2, Point2), p: Point2, reach: f64) -> bool {
+    let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
+    let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
+    dx * dx + dy * dy <= reach * reach
 }
 
 #[cfg(test)]

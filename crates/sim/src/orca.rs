@@ -9,7 +9,7 @@ use hyplan_core::{Point2, Zone};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use crate::boxgrid::{BoxGrid, Marks};
+use crate::boxgrid::{self, BoxGrid, Marks};
 use crate::grid_cast::GridRays;
 use crate::people::{Stepped, Stepper, discs_ahead, on_stage};
 use crate::social_force::{KEEP_RIGHT, heading};
@@ -154,6 +154,8 @@ struct Walker {
 #[derive(Debug, Clone, Default)]
 struct Walls {
     obstacles: Vec<Obstacle>,
+    /// The bounding box of each obstacle, (min, max).
+    bounds: Vec<(Point2, Point2)>,
     /// The bounding box of each obstacle that is not a loaded map's cell edge, in buckets.
     grid: BoxGrid,
     /// The obstacle of each box of `grid`.
@@ -297,26 +299,26 @@ impl Walls {
             .unwrap_or_default();
         let (cell_boxed, boxed): (Vec<u32>, Vec<u32>) = (0..obstacles.len() as u32)
             .partition(|&k| (shapes_end..cells_end).contains(&(k as usize)));
-        let boxes = |of: &[u32]| -> Vec<(Point2, Point2)> {
-            of.iter()
-                .map(|&k| {
-                    let (Obstacle::Open { vertices } | Obstacle::Closed { vertices }) =
-                        &obstacles[k as usize];
-                    let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
-                    let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-                    for v in vertices {
-                        let (x, y) = (f64::from(v.x), f64::from(v.y));
-                        lo = Point2::new(lo.x.min(x), lo.y.min(y));
-                        hi = Point2::new(hi.x.max(x), hi.y.max(y));
-                    }
-                    (lo, hi)
-                })
-                .collect()
-        };
+        let bounds: Vec<(Point2, Point2)> = obstacles
+            .iter()
+            .map(|o| {
+                let (Obstacle::Open { vertices } | Obstacle::Closed { vertices }) = o;
+                let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
+                let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+                for v in vertices {
+                    let (x, y) = (f64::from(v.x), f64::from(v.y));
+                    lo = Point2::new(lo.x.min(x), lo.y.min(y));
+                    hi = Point2::new(hi.x.max(x), hi.y.max(y));
+                }
+                (lo, hi)
+            })
+            .collect();
+        let boxes = |of: &[u32]| of.iter().map(|&k| bounds[k as usize]).collect();
         Self {
             grid: BoxGrid::new(boxes(&boxed), cell),
             cell_grid: BoxGrid::new(boxes(&cell_boxed), CELL_EDGES_ALL_WITHIN),
             obstacles,
+            bounds,
             boxed,
             cell_boxed,
             cell_edges,
@@ -327,9 +329,15 @@ impl Walls {
     /// `out.indices`, but for single edges that `p` is behind ([`back_facing`]): those
     /// whose bounding box comes within `reach`; of a loaded map's cell edges, those within
     /// [`CELL_EDGES_ALL_WITHIN`] and those of `seen` ([`Walls::seen`]) within `reach`.
-    fn near(&self, p: Point2, reach: f64, seen: &[u32], out: &mut Near) {
+    /// `nearby`: the candidates of the person at `p` (found again when they have moved
+    /// [`Nearby::MOVED`] since, or their reach changed).
+    fn near(&self, p: Point2, reach: f64, seen: &[u32], nearby: &mut Nearby, out: &mut Near) {
         out.indices.clear();
         out.keyed.clear();
+        let cell_reach = reach.min(CELL_EDGES_ALL_WITHIN);
+        if nearby.stale(p, reach) {
+            self.candidates(p, reach, nearby, out);
+        }
         let at = vec2(p);
         let (obstacles, keyed) = (&self.obstacles, &mut out.keyed);
         let reach_sq = (reach * reach) as f32;
@@ -339,14 +347,18 @@ impl Walls {
                 keyed.push((distance_sq(obstacle, at).to_bits(), k));
             }
         };
-        self.grid
-            .near(p, reach, &mut out.marks, |b| take(self.boxed[b as usize]));
-        self.cell_grid.near(
-            p,
-            reach.min(CELL_EDGES_ALL_WITHIN),
-            &mut out.cell_marks,
-            |b| take(self.cell_boxed[b as usize]),
-        );
+        // The buckets' own test, on the same bounds: the same obstacles as a query of
+        // the buckets from `p` would give.
+        for &k in &nearby.drawn {
+            if boxgrid::within(self.bounds[k as usize], p, reach) {
+                take(k);
+            }
+        }
+        for &k in &nearby.cells {
+            if boxgrid::within(self.bounds[k as usize], p, cell_reach) {
+                take(k);
+            }
+        }
         for &k in seen {
             let obstacle = &obstacles[k as usize];
             let d = distance_sq(obstacle, at);
@@ -359,6 +371,50 @@ impl Walls {
         out.keyed.sort_unstable();
         out.keyed.dedup();
         out.indices.extend(out.keyed.iter().map(|&(_, k)| k));
+    }
+
+    /// `nearby` found from `p`: the obstacles whose bounding box comes within `reach` +
+    /// [`Nearby::SLACK`] of `p` (a loaded map's cell edges within
+    /// [`CELL_EDGES_ALL_WITHIN`] + [`Nearby::SLACK`]), but for single edges that `p` is
+    /// behind by more than [`Nearby::SLACK`]: every obstacle [`Walls::near`] may take from
+    /// a point [`Nearby::MOVED`] from `p`.
+    fn candidates(&self, p: Point2, reach: f64, nearby: &mut Nearby, out: &mut Near) {
+        let slack = Nearby::SLACK;
+        let behind = |k: u32| match &self.obstacles[k as usize] {
+            Obstacle::Open { vertices } if vertices.len() == 2 => {
+                let (a, b) = (vertices[0], vertices[1]);
+                let (a, e) = (
+                    Point2::new(f64::from(a.x), f64::from(a.y)),
+                    Vector2::new(f64::from(b.x - a.x), f64::from(b.y - a.y)),
+                );
+                // On the solid (left) side of the edge's line, by more than the slack.
+                let left = e.perp(&(p - a));
+                left > slack * e.norm()
+            }
+            _ => false,
+        };
+        nearby.drawn.clear();
+        nearby.cells.clear();
+        let (drawn, cells) = (&mut nearby.drawn, &mut nearby.cells);
+        self.grid.near(p, reach + slack, &mut out.marks, |b| {
+            let k = self.boxed[b as usize];
+            if !behind(k) {
+                drawn.push(k);
+            }
+        });
+        self.cell_grid.near(
+            p,
+            reach.min(CELL_EDGES_ALL_WITHIN) + slack,
+            &mut out.cell_marks,
+            |b| {
+                let k = self.cell_boxed[b as usize];
+                if !behind(k) {
+                    cells.push(k);
+                }
+            },
+        );
+        nearby.at = Some(p);
+        nearby.reach = reach;
     }
 
     /// The loaded map's cell edges that one of [`WALL_RAYS`] rays from `p`, cast on
@@ -428,6 +484,39 @@ impl CellEdges {
             cols,
             rays,
         }
+    }
+}
+
+/// One person's candidate obstacles for [`Walls::near`], kept between steps: people
+/// move a few centimetres a step, so the buckets are searched again only every
+/// [`Nearby::MOVED`] metres, with a margin. The result does not depend on it.
+#[derive(Debug, Clone, Default)]
+struct Nearby {
+    /// Where the candidates were found (none yet: found at the next query).
+    at: Option<Point2>,
+    /// The reach they were found for.
+    reach: f64,
+    /// The obstacles that are not a loaded map's cell edges.
+    drawn: Vec<u32>,
+    /// A loaded map's cell edges.
+    cells: Vec<u32>,
+}
+
+impl Nearby {
+    /// How much farther than the reach the candidates are taken, m (and how far behind a
+    /// single edge a person must be for it to be left out).
+    const SLACK: f64 = 1.0;
+    /// How far the person may move before the candidates are found again, m: half the
+    /// slack, so that the rounding of the tests never decides (an `f32` test of which
+    /// side of an edge a point is on errs by far less than 0.5 m within 10^5 m of the
+    /// origin).
+    const MOVED: f64 = 0.5 * Self::SLACK;
+
+    /// Whether the candidates must be found again for a person at `p` with `reach`.
+    fn stale(&self, p: Point2, reach: f64) -> bool {
+        self.at.is_none_or(|at| {
+            reach != self.reach || (p - at).norm_squared() > Self::MOVED * Self::MOVED
+        })
     }
 }
 
@@ -598,6 +687,8 @@ pub struct Orca<'w> {
     next: Vec<Vector2<f64>>,
     /// The walls near the person being stepped (scratch).
     near: Near,
+    /// Each person's candidate walls.
+    nearby: Vec<Nearby>,
     /// The loaded map's cell edges each person's rays hit at their last look
     /// ([`LOOK_EVERY`] steps apart, staggered), and the steps taken.
     seen: Vec<Vec<u32>>,
@@ -651,6 +742,7 @@ impl<'w> Orca<'w> {
             walkers: Vec::with_capacity(people.len()),
             next: vec![Vector2::zeros(); people.len()],
             near: Near::default(),
+            nearby: vec![Nearby::default(); people.len()],
             order: Vec::new(),
             seen: vec![Vec::new(); people.len()],
             steps: 0,
@@ -706,6 +798,7 @@ impl Stepped for Orca<'_> {
     fn reset(&mut self) {
         self.steps = 0;
         self.seen.iter_mut().for_each(Vec::clear);
+        self.nearby.iter_mut().for_each(|n| n.at = None);
         self.walkers.clear();
         self.walkers.extend(self.people.iter().map(|p| {
             let on_stage = p.walk != crate::Walk::Through;
@@ -848,7 +941,8 @@ impl Stepped for Orca<'_> {
                 let (ranges, seen) = (&mut near.ranges, &mut self.seen[k]);
                 self.walls.seen(at, reach, cells, ranges, seen);
             }
-            self.walls.near(at, reach, &self.seen[k], &mut near);
+            self.walls
+                .near(at, reach, &self.seen[k], &mut self.nearby[k], &mut near);
             obstacles.clear();
             obstacles.extend(
                 near.indices
@@ -986,25 +1080,55 @@ mod tests {
         );
         // From inside the box and the cell every edge is seen from its solid side.
         let mut near = Near::default();
-        walls.near(Point2::new(6.0, 6.0), 0.6, &[], &mut near);
+        walls.near(
+            Point2::new(6.0, 6.0),
+            0.6,
+            &[],
+            &mut Nearby::default(),
+            &mut near,
+        );
         assert!(near.indices.is_empty(), "{:?}", near.indices);
-        walls.near(Point2::new(1.5, 1.5), 0.6, &[], &mut near);
+        walls.near(
+            Point2::new(1.5, 1.5),
+            0.6,
+            &[],
+            &mut Nearby::default(),
+            &mut near,
+        );
         assert!(near.indices.is_empty(), "{:?}", near.indices);
         // Below the box: its bottom edge; its sides are within reach but seen from behind.
-        walls.near(Point2::new(6.0, 5.2), 0.6, &[], &mut near);
+        walls.near(
+            Point2::new(6.0, 5.2),
+            0.6,
+            &[],
+            &mut Nearby::default(),
+            &mut near,
+        );
         assert_eq!(near.indices.len(), 1);
         let Obstacle::Open { vertices } = &walls.obstacles[near.indices[0] as usize] else {
             panic!()
         };
         assert!(vertices.iter().all(|v| v.y == 5.5), "{vertices:?}");
         // One side of the loose edge, the one facing the point.
-        walls.near(Point2::new(20.5, 0.5), 0.6, &[], &mut near);
+        walls.near(
+            Point2::new(20.5, 0.5),
+            0.6,
+            &[],
+            &mut Nearby::default(),
+            &mut near,
+        );
         assert_eq!(near.indices.len(), 1);
         assert!(!solid_left_at(
             near.indices[0] as usize,
             Point2::new(20.5, 0.5)
         ));
-        walls.near(Point2::new(10.0, 10.0), 1.0, &[], &mut near);
+        walls.near(
+            Point2::new(10.0, 10.0),
+            1.0,
+            &[],
+            &mut Nearby::default(),
+            &mut near,
+        );
         assert!(near.indices.is_empty());
     }
 
@@ -1016,6 +1140,40 @@ mod tests {
             expected.sort_unstable();
             sort_nearly_sorted(&mut keys);
             proptest::prop_assert_eq!(keys, expected);
+        }
+
+        /// A person's candidate walls kept between steps change nothing: along a walk
+        /// among boxes, loose edges and a loaded map's cells, the walls near each place
+        /// are those found with no candidates kept.
+        #[test]
+        fn kept_candidates_give_the_walls_near(
+            boxes in proptest::collection::vec((0.0..12.0_f64, 0.0..12.0_f64, 0.2..3.0_f64, 0.2..3.0_f64, 0.0..90.0_f64), 0..6),
+            loose in proptest::collection::vec((0.0..12.0_f64, 0.0..12.0_f64, 0.0..12.0_f64, 0.0..12.0_f64), 0..4),
+            cells in proptest::collection::vec(proptest::prelude::any::<bool>(), 64),
+            walk in proptest::collection::vec((0.0..std::f64::consts::TAU, 0.0..0.4_f64), 1..120),
+            reach in 0.5..6.0_f64,
+        ) {
+            let mut statics = StaticWorld::default();
+            for &(x, y, w, h, angle_deg) in &boxes {
+                statics.add_shape(&crate::Shape::Box { center: (x, y), size: (w, h), angle_deg });
+            }
+            for &(ax, ay, bx, by) in &loose {
+                statics.segments.push(Segment { a: Point2::new(ax, ay), b: Point2::new(bx, by), outward: None });
+            }
+            let text: String = cells
+                .chunks(8)
+                .map(|row| row.iter().map(|&b| if b { '#' } else { '.' }).collect::<String>() + "\n")
+                .collect();
+            statics.add_grid(envmap::GridMap::from_ascii(&text).unwrap());
+            let walls = Walls::new(&statics, reach);
+            let (mut kept, mut near, mut fresh) = (Nearby::default(), Near::default(), Near::default());
+            let mut p = Point2::new(6.0, 6.0);
+            for &(heading, length) in &walk {
+                p += Vector2::new(heading.cos(), heading.sin()) * length;
+                walls.near(p, reach, &[], &mut kept, &mut near);
+                walls.near(p, reach, &[], &mut Nearby::default(), &mut fresh);
+                proptest::prop_assert_eq!(&near.indices, &fresh.indices, "at {}", p);
+            }
         }
     }
 
@@ -1095,7 +1253,7 @@ mod tests {
                 }
                 places += 1;
                 walls.seen(p, REACH, &rays, &mut ranges, &mut seen);
-                walls.near(p, REACH, &seen, &mut near);
+                walls.near(p, REACH, &seen, &mut Nearby::default(), &mut near);
                 let at = vec2(p);
                 let mut last = 0.0;
                 for &k in &near.indices {
