@@ -150,6 +150,8 @@ impl HybridRrtAstar {
         })?;
         let mut checker = CountingChecker::new(map);
         let mut tree = GrowTree::rooted_at(search.query.start);
+        // The goal-biased samples draw the goal's centre again and again.
+        tree.watch_goal(target);
         let mut starts: Vec<Point2> = Vec::new();
         let (mut visited_total, mut runs, mut failures) = (0_u64, 0_u32, 0_u32);
         // (leaf node, points after it to the goal)

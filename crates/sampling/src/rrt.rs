@@ -78,6 +78,8 @@ impl Rrt {
         let goal = search.query.goal;
         let mut checker = CountingChecker::new(search.ws);
         let mut tree = GrowTree::rooted_at(search.query.start);
+        // The goal-biased samples draw the goal's centre again and again.
+        tree.watch_goal(goal.center());
         let mut reached = goal.contains(search.query.start).then_some(0_usize);
 
         while reached.is_none() && run.next_iteration() {
