@@ -9,6 +9,8 @@
 //! `WEIGHT` (default 1) runs Lazy Theta* with Optimizations, its heuristic weighted
 //! ([`GridSearch::lazy_theta_star_weighted`]), in place of plain Lazy Theta*.
 //!
+//! The cells each search expanded over the suite are printed too (A* and Lazy Theta*).
+//!
 //! Each map's one-time preparation (the grid search's cells and the map's stride table,
 //! `GridMap::blocked_strides`) is timed apart and printed. Every lazy and eager Theta*
 //! path segment is checked with the map's `segment_free` before timing.
@@ -40,7 +42,7 @@ fn main() {
     suites.extend(generated());
     suites.push(room());
     println!(
-        "suite,queries,prep_ms,astar_ms,lazy_ms,theta_ms,lazy/astar,theta/astar,lazy/theta_length_median"
+        "suite,queries,prep_ms,astar_ms,lazy_ms,theta_ms,lazy/astar,theta/astar,lazy/theta_length_median,astar_expanded,lazy_expanded"
     );
     let (mut time_ratios, mut length_ratios) = (Vec::new(), Vec::new());
     for s in &suites {
@@ -49,11 +51,13 @@ fn main() {
         let _ = s.map.blocked_strides();
         let prep_ms = prepared.elapsed().as_secs_f64() * 1e3;
         // Lengths, and every segment checked, outside the timed rounds.
-        let mut lengths = Vec::new();
+        let (mut lengths, mut expanded) = (Vec::new(), (0, 0));
         for &(a, b, _) in &s.queries {
             let lazy = search
                 .lazy_theta_star_weighted(&s.map, a, b, weight)
                 .expect("lazy Theta*");
+            expanded.0 += search.astar(a, b).map_or(0, |p| p.stats.expansions);
+            expanded.1 += lazy.stats.expansions;
             let eager = search.theta_star(&s.map, a, b).expect("Theta*");
             check(&s.map, &lazy);
             check(&s.map, &eager);
@@ -78,7 +82,7 @@ fn main() {
         let theta = best(&mut |g, a, b| g.theta_star(&s.map, a, b).map_or(0.0, |p| p.cost));
         let length = median(lengths).unwrap_or(f64::NAN);
         println!(
-            "{},{},{:.2},{:.3},{:.3},{:.3},{:.3},{:.3},{:.5}",
+            "{},{},{:.2},{:.3},{:.3},{:.3},{:.3},{:.3},{:.5},{},{}",
             s.name,
             s.queries.len(),
             prep_ms,
@@ -87,7 +91,9 @@ fn main() {
             theta,
             lazy / astar,
             theta / astar,
-            length
+            length,
+            expanded.0,
+            expanded.1
         );
         time_ratios.push(lazy / astar);
         length_ratios.push(length);
