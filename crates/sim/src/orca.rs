@@ -1078,58 +1078,27 @@ mod tests {
             solid_left_at(4, Point2::new(21.0, 0.5)),
             solid_left_at(5, Point2::new(21.0, 0.5))
         );
+        // The walls near `p` within `reach`, found afresh.
+        let near = |p: Point2, reach: f64| {
+            let mut out = Near::default();
+            walls.near(p, reach, &[], &mut Nearby::default(), &mut out);
+            out.indices
+        };
         // From inside the box and the cell every edge is seen from its solid side.
-        let mut near = Near::default();
-        walls.near(
-            Point2::new(6.0, 6.0),
-            0.6,
-            &[],
-            &mut Nearby::default(),
-            &mut near,
-        );
-        assert!(near.indices.is_empty(), "{:?}", near.indices);
-        walls.near(
-            Point2::new(1.5, 1.5),
-            0.6,
-            &[],
-            &mut Nearby::default(),
-            &mut near,
-        );
-        assert!(near.indices.is_empty(), "{:?}", near.indices);
+        assert_eq!(near(Point2::new(6.0, 6.0), 0.6), Vec::<u32>::new());
+        assert_eq!(near(Point2::new(1.5, 1.5), 0.6), Vec::<u32>::new());
         // Below the box: its bottom edge; its sides are within reach but seen from behind.
-        walls.near(
-            Point2::new(6.0, 5.2),
-            0.6,
-            &[],
-            &mut Nearby::default(),
-            &mut near,
-        );
-        assert_eq!(near.indices.len(), 1);
-        let Obstacle::Open { vertices } = &walls.obstacles[near.indices[0] as usize] else {
+        let below = near(Point2::new(6.0, 5.2), 0.6);
+        assert_eq!(below.len(), 1);
+        let Obstacle::Open { vertices } = &walls.obstacles[below[0] as usize] else {
             panic!()
         };
         assert!(vertices.iter().all(|v| v.y == 5.5), "{vertices:?}");
         // One side of the loose edge, the one facing the point.
-        walls.near(
-            Point2::new(20.5, 0.5),
-            0.6,
-            &[],
-            &mut Nearby::default(),
-            &mut near,
-        );
-        assert_eq!(near.indices.len(), 1);
-        assert!(!solid_left_at(
-            near.indices[0] as usize,
-            Point2::new(20.5, 0.5)
-        ));
-        walls.near(
-            Point2::new(10.0, 10.0),
-            1.0,
-            &[],
-            &mut Nearby::default(),
-            &mut near,
-        );
-        assert!(near.indices.is_empty());
+        let beside = near(Point2::new(20.5, 0.5), 0.6);
+        assert_eq!(beside.len(), 1);
+        assert!(!solid_left_at(beside[0] as usize, Point2::new(20.5, 0.5)));
+        assert_eq!(near(Point2::new(10.0, 10.0), 1.0), Vec::<u32>::new());
     }
 
     proptest::proptest! {
