@@ -512,10 +512,12 @@ impl Nearby {
     /// origin).
     const MOVED: f64 = 0.5 * Self::SLACK;
 
-    /// Whether the candidates must be found again for a person at `p` with `reach`.
+    /// Whether the candidates must be found again for a person at `p` with `reach` (always
+    /// at a position that is not finite, where the buckets decide as before).
     fn stale(&self, p: Point2, reach: f64) -> bool {
         self.at.is_none_or(|at| {
-            reach != self.reach || (p - at).norm_squared() > Self::MOVED * Self::MOVED
+            let moved = (p - at).norm_squared();
+            reach != self.reach || moved > Self::MOVED * Self::MOVED || moved.is_nan()
         })
     }
 }
