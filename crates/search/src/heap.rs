@@ -50,8 +50,8 @@ pub(crate) trait HeapKey: Copy {
     fn lt(a: Self, b: Self) -> bool;
 }
 
-/// Unsigned integers are keys ordered as integers: `u128` for Theta*, `u64` for the grid
-/// searches on grids where their keys fit 64 bits.
+/// Unsigned integers are keys ordered as integers: `u64` for Theta* and for the grid
+/// searches on grids where their keys fit 64 bits (`u128` too).
 macro_rules! integer_heap_key {
     ($($int:ty),*) => {$(
         #[cfg(feature = "grid")]

@@ -131,7 +131,7 @@ impl GridSearch {
 
     /// Theta*'s loop (Lazy Theta*'s with `lazy`; the heuristic `weight` times the
     /// straight-line distance), on `f64` costs (stored as bits in `g`)
-    /// and keys of `f64` bits.
+    /// and keys of `f32` bits ([`float_key`]).
     pub(super) fn theta_search(
         &mut self,
         s0: u32,
@@ -152,7 +152,7 @@ impl GridSearch {
         if self.theta_bits.is_none() {
             self.theta_bits = Some(self.bit_grid());
         }
-        self.theta_heap.push(float_key(euclid(sx, sy), 0.0, s0));
+        self.theta_heap.push(float_key(euclid(sx, sy), s0));
         let closed = self.theta_generation | CLOSED;
         let limit = self.limit;
         let mut check_at = limit.next_check(0);
@@ -330,7 +330,7 @@ impl GridSearch {
             self.theta_stamps[qu] = open;
             self.theta_g[qu] = ng.to_bits();
             self.theta_parents[qu] = parent;
-            let key = float_key(ng + h(qx, qy), ng, q);
+            let key = float_key(ng + h(qx, qy), q);
             if std::mem::take(taken) {
                 self.theta_heap.replace_top(key);
             } else {
