@@ -258,11 +258,115 @@ impl<K: HeapKey> MinHeap<K> {
     }
 }
 
+#[cfg(feature = "grid")]
+/// A four-ary min-heap of `u64` keys, for Theta*'s open list: half the levels of a binary
+/// heap, each one a cache line's quarter (four adjacent keys) compared without branches.
+/// Slots past the last key hold `u64::MAX`, so a node's four children are always read
+/// whole; `u64::MAX` itself is never a key.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct QuadHeap {
+    /// The keys in `[0, len)`, then `u64::MAX` up to at least `4 len + 5` slots.
+    keys: Vec<u64>,
+    len: usize,
+}
+
+#[cfg(feature = "grid")]
+impl QuadHeap {
+    /// Removes every key, keeping the capacity.
+    #[inline]
+    pub fn clear(&mut self) {
+        self.keys[..self.len].fill(u64::MAX);
+        self.len = 0;
+    }
+
+    /// The smallest key, left in the heap.
+    #[inline]
+    pub fn peek(&self) -> Option<u64> {
+        (self.len > 0).then(|| self.keys[0])
+    }
+
+    /// Adds `key` (below `u64::MAX`).
+    #[inline]
+    pub fn push(&mut self, key: u64) {
+        let mut i = self.len;
+        self.len += 1;
+        if self.keys.len() < 4 * self.len + 5 {
+            let grown = (8 * self.len + 5).max(256);
+            self.keys.resize(grown, u64::MAX);
+        }
+        let keys = &mut self.keys;
+        while i > 0 {
+            let parent = (i - 1) / 4;
+            let up = keys[parent];
+            if key >= up {
+                break;
+            }
+            keys[i] = up;
+            i = parent;
+        }
+        keys[i] = key;
+    }
+
+    /// The smallest of node `i`'s four children and its position.
+    #[inline(always)]
+    fn least_child(keys: &[u64], i: usize) -> (u64, usize) {
+        let c = 4 * i + 1;
+        let four = &keys[c..c + 4];
+        let (a, b) = if four[1] < four[0] {
+            (four[1], c + 1)
+        } else {
+            (four[0], c)
+        };
+        let (x, y) = if four[3] < four[2] {
+            (four[3], c + 3)
+        } else {
+            (four[2], c + 2)
+        };
+        if x < a { (x, y) } else { (a, b) }
+    }
+
+    /// Moves `key` down from the root to where it belongs.
+    #[inline(always)]
+    fn sift_down(&mut self, key: u64) {
+        let (keys, n) = (&mut self.keys, self.len);
+        let mut i = 0;
+        while 4 * i + 1 < n {
+            let (child, j) = Self::least_child(keys, i);
+            if child >= key {
+                break;
+            }
+            keys[i] = child;
+            i = j;
+        }
+        keys[i] = key;
+    }
+
+    /// Replaces the smallest key by `key` (a pop and a push in one sift). The heap must not
+    /// be empty.
+    #[inline]
+    pub fn replace_top(&mut self, key: u64) {
+        self.sift_down(key);
+    }
+
+    /// Removes and returns the smallest key.
+    #[inline]
+    pub fn pop(&mut self) -> Option<u64> {
+        let n = self.len.checked_sub(1)?;
+        self.len = n;
+        let top = self.keys[0];
+        let last = std::mem::replace(&mut self.keys[n], u64::MAX);
+        if n > 0 {
+            self.sift_down(last);
+        }
+        Some(top)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::Entry;
     #[cfg(feature = "grid")]
-    use super::{MinHeap, Upper};
+    use super::{MinHeap, QuadHeap, Upper};
 
     #[cfg(feature = "grid")]
     #[test]
@@ -345,6 +449,41 @@ mod tests {
                 heap.clear();
                 model.clear();
             }
+        }
+        while let Some(Reverse(k)) = model.pop() {
+            assert_eq!(heap.pop(), Some(k));
+        }
+        assert_eq!(heap.pop(), None);
+    }
+
+    #[cfg(feature = "grid")]
+    #[test]
+    fn quad_heap_matches_a_sorted_model_under_mixed_operations() {
+        // Sizes cross many powers of four, keys repeat, and the heap empties and refills.
+        let mut next = xorshift(0x6a09_e667_f3bc_c908_u64);
+        let mut heap = QuadHeap::default();
+        let mut model = BinaryHeap::new();
+        for round in 0..40_000 {
+            let r = next();
+            let key = (r % 251) << 40 | (r >> 50);
+            match r % 9 {
+                0..=3 => {
+                    heap.push(key);
+                    model.push(Reverse(key));
+                }
+                4..=6 => assert_eq!(heap.pop(), model.pop().map(|k| k.0), "round {round}"),
+                7 if !model.is_empty() => {
+                    heap.replace_top(key);
+                    model.pop();
+                    model.push(Reverse(key));
+                }
+                8 if round % 5_000 == 0 => {
+                    heap.clear();
+                    model.clear();
+                }
+                _ => {}
+            }
+            assert_eq!(heap.peek(), model.peek().map(|k| k.0), "round {round}");
         }
         while let Some(Reverse(k)) = model.pop() {
             assert_eq!(heap.pop(), Some(k));

@@ -15,7 +15,7 @@ use std::time::Instant;
 use envmap::GridMap;
 
 use crate::SearchStats;
-use crate::heap::{HeapKey, MinHeap, Upper};
+use crate::heap::{HeapKey, MinHeap, QuadHeap, Upper};
 
 mod astar;
 mod bits;
@@ -290,7 +290,7 @@ pub struct GridSearch {
     /// Dijkstra's open list.
     buckets: Buckets,
     /// Open list of Theta* (ordered by the whole [`float_key`]).
-    theta_heap: MinHeap<u64>,
+    theta_heap: QuadHeap,
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
     /// so they skip the heap (see [`GridSearch::grid_search`]).
     stack: Vec<u32>,
@@ -395,7 +395,7 @@ impl GridSearch {
             heap: MinHeap::default(),
             wide_heap: MinHeap::default(),
             buckets: Buckets::default(),
-            theta_heap: MinHeap::default(),
+            theta_heap: QuadHeap::default(),
             stack: Vec::new(),
             slot: vec![0; n],
             limit: Limit {
