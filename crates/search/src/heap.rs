@@ -1,6 +1,7 @@
 //! The private open lists: [`Entry`] for the generic searches (a min-heap on `f` with ties
-//! broken toward larger `g`) and `MinHeap`, the grid searches' binary heap of packed keys
-//! (feature `grid`).
+//! broken toward larger `g`), and the grid searches' heaps of packed keys (feature `grid`):
+//! `MinHeap`, binary, with an index of where each key sits (A* and Dijkstra's decrease-key),
+//! and `QuadHeap`, four-ary, without (Theta* and jump point search).
 
 use std::cmp::Ordering;
 
@@ -121,15 +122,15 @@ impl<K: HeapKey> MinHeap<K> {
         self.push_placed(key, &mut |_, _| {});
     }
 
-    /// Removes and returns the smallest key.
-    #[inline]
+    /// Removes and returns the smallest key (the tests'; the searches keep an index).
+    #[cfg(test)]
     pub fn pop(&mut self) -> Option<K> {
         self.pop_placed(&mut |_, _| {})
     }
 
     /// Replaces the smallest key by `key` (see
-    /// [`replace_top_placed`](MinHeap::replace_top_placed)).
-    #[inline]
+    /// [`replace_top_placed`](MinHeap::replace_top_placed); the tests').
+    #[cfg(test)]
     pub fn replace_top(&mut self, key: K) {
         self.replace_top_placed(key, &mut |_, _| {});
     }
@@ -259,46 +260,56 @@ impl<K: HeapKey> MinHeap<K> {
 }
 
 #[cfg(feature = "grid")]
-/// A four-ary min-heap of `u64` keys, for Theta*'s open list: half the levels of a binary
-/// heap, each one a cache line's quarter (four adjacent keys) compared without branches.
-/// Slots past the last key hold `u64::MAX`, so a node's four children are always read
-/// whole; `u64::MAX` itself is never a key.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct QuadHeap {
-    /// The keys in `[0, len)`, then `u64::MAX` up to at least `4 len + 5` slots.
-    keys: Vec<u64>,
+/// A four-ary min-heap, for the open lists that need no decrease-key (Theta*'s, jump point
+/// search's): half the levels of a binary heap, a node's four children adjacent in memory
+/// and compared without branches. Slots past the last key hold [`HeapKey::MAX`], so a
+/// node's four children are always read whole.
+#[derive(Debug, Clone)]
+pub(crate) struct QuadHeap<K> {
+    /// The keys in `[0, len)`, then `K::MAX` up to at least `4 len + 5` slots.
+    keys: Vec<K>,
     len: usize,
 }
 
 #[cfg(feature = "grid")]
-impl QuadHeap {
+impl<K: HeapKey> Default for QuadHeap<K> {
+    fn default() -> Self {
+        Self {
+            keys: Vec::new(),
+            len: 0,
+        }
+    }
+}
+
+#[cfg(feature = "grid")]
+impl<K: HeapKey> QuadHeap<K> {
     /// Removes every key, keeping the capacity.
     #[inline]
     pub fn clear(&mut self) {
-        self.keys[..self.len].fill(u64::MAX);
+        self.keys[..self.len].fill(K::MAX);
         self.len = 0;
     }
 
     /// The smallest key, left in the heap.
     #[inline]
-    pub fn peek(&self) -> Option<u64> {
+    pub fn peek(&self) -> Option<K> {
         (self.len > 0).then(|| self.keys[0])
     }
 
-    /// Adds `key` (below `u64::MAX`).
+    /// Adds `key`.
     #[inline]
-    pub fn push(&mut self, key: u64) {
+    pub fn push(&mut self, key: K) {
         let mut i = self.len;
         self.len += 1;
         if self.keys.len() < 4 * self.len + 5 {
             let grown = (8 * self.len + 5).max(256);
-            self.keys.resize(grown, u64::MAX);
+            self.keys.resize(grown, K::MAX);
         }
         let keys = &mut self.keys;
         while i > 0 {
             let parent = (i - 1) / 4;
             let up = keys[parent];
-            if key >= up {
+            if !K::lt(key, up) {
                 break;
             }
             keys[i] = up;
@@ -309,30 +320,30 @@ impl QuadHeap {
 
     /// The smallest of node `i`'s four children and its position.
     #[inline(always)]
-    fn least_child(keys: &[u64], i: usize) -> (u64, usize) {
+    fn least_child(keys: &[K], i: usize) -> (K, usize) {
         let c = 4 * i + 1;
         let four = &keys[c..c + 4];
-        let (a, b) = if four[1] < four[0] {
+        let (a, b) = if K::lt(four[1], four[0]) {
             (four[1], c + 1)
         } else {
             (four[0], c)
         };
-        let (x, y) = if four[3] < four[2] {
+        let (x, y) = if K::lt(four[3], four[2]) {
             (four[3], c + 3)
         } else {
             (four[2], c + 2)
         };
-        if x < a { (x, y) } else { (a, b) }
+        if K::lt(x, a) { (x, y) } else { (a, b) }
     }
 
     /// Moves `key` down from the root to where it belongs.
     #[inline(always)]
-    fn sift_down(&mut self, key: u64) {
+    fn sift_down(&mut self, key: K) {
         let (keys, n) = (&mut self.keys, self.len);
         let mut i = 0;
         while 4 * i + 1 < n {
             let (child, j) = Self::least_child(keys, i);
-            if child >= key {
+            if !K::lt(child, key) {
                 break;
             }
             keys[i] = child;
@@ -341,20 +352,20 @@ impl QuadHeap {
         keys[i] = key;
     }
 
-    /// Replaces the smallest key by `key` (a pop and a push in one sift). The heap must not
-    /// be empty.
+    /// Replaces the smallest key by `key` (a pop and a push in one sift, which stops at
+    /// once when `key` is still the smallest). The heap must not be empty.
     #[inline]
-    pub fn replace_top(&mut self, key: u64) {
+    pub fn replace_top(&mut self, key: K) {
         self.sift_down(key);
     }
 
     /// Removes and returns the smallest key.
     #[inline]
-    pub fn pop(&mut self) -> Option<u64> {
+    pub fn pop(&mut self) -> Option<K> {
         let n = self.len.checked_sub(1)?;
         self.len = n;
         let top = self.keys[0];
-        let last = std::mem::replace(&mut self.keys[n], u64::MAX);
+        let last = std::mem::replace(&mut self.keys[n], K::MAX);
         if n > 0 {
             self.sift_down(last);
         }
@@ -461,7 +472,7 @@ mod tests {
     fn quad_heap_matches_a_sorted_model_under_mixed_operations() {
         // Sizes cross many powers of four, keys repeat, and the heap empties and refills.
         let mut next = xorshift(0x6a09_e667_f3bc_c908_u64);
-        let mut heap = QuadHeap::default();
+        let mut heap = QuadHeap::<u64>::default();
         let mut model = BinaryHeap::new();
         for round in 0..40_000 {
             let r = next();

@@ -566,6 +566,11 @@ pub(super) trait GridKey: HeapKey {
         narrow: &'a mut MinHeap<u64>,
         wide: &'a mut MinHeap<Upper>,
     ) -> &'a mut MinHeap<Self>;
+    /// The four-ary open list of this key type (jump point search's).
+    fn quad_heap<'a>(
+        narrow: &'a mut QuadHeap<u64>,
+        wide: &'a mut QuadHeap<Upper>,
+    ) -> &'a mut QuadHeap<Self>;
 }
 
 impl GridKey for u64 {
@@ -593,6 +598,12 @@ impl GridKey for u64 {
         entry
     }
     fn heap<'a>(narrow: &'a mut MinHeap<u64>, _: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
+        narrow
+    }
+    fn quad_heap<'a>(
+        narrow: &'a mut QuadHeap<u64>,
+        _: &'a mut QuadHeap<Upper>,
+    ) -> &'a mut QuadHeap<Self> {
         narrow
     }
 }
@@ -625,6 +636,12 @@ impl GridKey for Upper {
         Self::pack(fx, f << fx.tie_bits, entry as u32)
     }
     fn heap<'a>(_: &'a mut MinHeap<u64>, wide: &'a mut MinHeap<Upper>) -> &'a mut MinHeap<Self> {
+        wide
+    }
+    fn quad_heap<'a>(
+        _: &'a mut QuadHeap<u64>,
+        wide: &'a mut QuadHeap<Upper>,
+    ) -> &'a mut QuadHeap<Self> {
         wide
     }
 }

@@ -15,7 +15,7 @@ use super::{
     CLOSED, Connectivity, DIRS, Fixed, GridKey, GridOptions, GridPath, GridSearchError, Limit, NONE,
 };
 use crate::SearchStats;
-use crate::heap::{MinHeap, Upper};
+use crate::heap::{QuadHeap, Upper};
 
 /// Why a [`JumpPointSearch`] cannot be prepared.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
@@ -104,9 +104,9 @@ pub struct JumpPointSearch {
     fixed: Fixed,
     /// Open list on grids whose keys fit 64 bits ([`Fixed::narrow`]; as A*'s: f, then h
     /// for ties toward the larger g, then the cell).
-    heap: MinHeap<u64>,
+    heap: QuadHeap<u64>,
     /// Open list on larger grids.
-    wide_heap: MinHeap<Upper>,
+    wide_heap: QuadHeap<Upper>,
     /// The successors of the jump point being expanded (kept for its capacity).
     found: Vec<(usize, usize)>,
     /// Jump points whose f equals the f being expanded (kept for its capacity).
@@ -173,8 +173,8 @@ impl JumpPointSearch {
             states: vec![0; n],
             generation: 0,
             fixed,
-            heap: MinHeap::default(),
-            wide_heap: MinHeap::default(),
+            heap: QuadHeap::default(),
+            wide_heap: QuadHeap::default(),
             found: Vec::new(),
             stack: Vec::new(),
             limit: Limit {
@@ -318,7 +318,7 @@ impl JumpPointSearch {
             (stats.expansions, stats.pushes, stats.reached) = (1, 1, 2);
             return Ok(self.trace(sp, tp, stats));
         }
-        let mut heap = std::mem::take(K::heap(&mut self.heap, &mut self.wide_heap));
+        let mut heap = std::mem::take(K::quad_heap(&mut self.heap, &mut self.wide_heap));
         heap.push(key(0, h(s.0, s.1), sp));
         stats.pushes = 1;
         stats.reached = 1;
@@ -431,7 +431,7 @@ impl JumpPointSearch {
         };
         self.found = found;
         self.stack = stack;
-        *K::heap(&mut self.heap, &mut self.wide_heap) = heap;
+        *K::quad_heap(&mut self.heap, &mut self.wide_heap) = heap;
         outcome.map(|()| self.trace(sp, tp, stats))
     }
 

@@ -290,7 +290,7 @@ pub struct GridSearch {
     /// Dijkstra's open list.
     buckets: Buckets,
     /// Open list of Theta* (ordered by the whole [`float_key`]).
-    theta_heap: QuadHeap,
+    theta_heap: QuadHeap<u64>,
     /// Cells whose f is not above the f of the cell being expanded: they come next anyway,
     /// so they skip the heap (see [`GridSearch::grid_search`]).
     stack: Vec<u32>,
