@@ -14,6 +14,9 @@ pub(super) struct BitGrid {
 /// low end of the line starts at a non-negative bit.
 pub(super) const PAD: usize = 64;
 
+/// Lines per band of [`Lines::bands`].
+pub(super) const BAND: usize = 8;
+
 /// Bit lines of equal length, each padded with zero words so that a 64-bit window may
 /// start or end at any cell of it.
 #[derive(Debug, Clone)]
@@ -24,6 +27,28 @@ pub(super) struct Lines {
 }
 
 impl Lines {
+    /// How many lines.
+    fn count(&self) -> usize {
+        self.bits.len() / self.words
+    }
+
+    /// These lines taken [`BAND`] at a time: bit `c` of band `b` is set when cell `c` is
+    /// free in every line of `b * BAND .. (b + 1) * BAND` (that there is).
+    pub(super) fn bands(&self) -> Self {
+        let count = self.count();
+        let mut bands = Self {
+            words: self.words,
+            bits: vec![u64::MAX; count.div_ceil(BAND) * self.words],
+        };
+        for (l, line) in self.bits.chunks_exact(self.words).enumerate() {
+            let band = &mut bands.bits[(l / BAND) * self.words..][..self.words];
+            for (b, &w) in band.iter_mut().zip(line) {
+                *b &= w;
+            }
+        }
+        bands
+    }
+
     /// `count` all-blocked lines of `len` cells.
     pub(super) fn new(count: usize, len: usize) -> Self {
         // A window at the line's last cell reads the word after it.

@@ -276,9 +276,9 @@ pub struct GridSearch {
     theta_g: Vec<u64>,
     /// Query counter of `theta_stamps`.
     theta_generation: u32,
-    /// The passable cells as bit lines, which Theta*'s lines of sight read (built by its
-    /// first query after the passable cells were last read).
-    theta_bits: Option<bits::BitGrid>,
+    /// The passable cells as bit lines and their bands, which Theta*'s lines of sight read
+    /// (built by its first query after the passable cells were last read).
+    theta_bits: Option<theta_star::SightBits>,
     /// The fixed-point cost scale of this grid's size.
     fixed: Fixed,
     /// `u64::MAX / pw + 1`: divides a padded index by `pw` with one multiplication.

@@ -1,6 +1,6 @@
 //! Theta*: any-angle paths between cell centres (line-of-sight parents).
 
-use super::bits::{BitGrid, Lines};
+use super::bits::{BAND, BitGrid, Lines};
 use super::engine::*;
 use super::*;
 
@@ -8,6 +8,26 @@ use super::*;
 /// lines, one run of cells per line crossed; longer ones cross the open stretches of the
 /// stride table first.
 const RUNS_UP_TO: u32 = 64;
+
+/// The bits Theta*'s lines of sight read: the passable cells' bit lines, and the same
+/// lines [`BAND`] at a time ([`Lines::bands`]), so that a segment crossing eight free lines
+/// reads one run instead of eight.
+#[derive(Debug, Clone)]
+pub(super) struct SightBits {
+    grid: BitGrid,
+    row_bands: Lines,
+    col_bands: Lines,
+}
+
+impl SightBits {
+    fn new(grid: BitGrid) -> Self {
+        Self {
+            row_bands: grid.rows.bands(),
+            col_bands: grid.cols.bands(),
+            grid,
+        }
+    }
+}
 
 impl GridSearch {
     /// Any-angle path from `start` to `goal` by Theta* (Nash, Daniel, Koenig and Felner,
@@ -150,7 +170,7 @@ impl GridSearch {
         let (sx, sy) = self.xy(s0);
         self.begin_theta(s0, &mut stats);
         if self.theta_bits.is_none() {
-            self.theta_bits = Some(self.bit_grid());
+            self.theta_bits = Some(SightBits::new(self.bit_grid()));
         }
         self.theta_heap.push(float_key(euclid(sx, sy), s0));
         let closed = self.theta_generation | CLOSED;
@@ -480,11 +500,11 @@ impl GridSearch {
 /// only free cells: along the lines of the segment's longer side (rows when it is at
 /// least as wide as tall, else columns), the cells it touches in each line it crosses
 /// form one run, read from the bit lines.
-fn runs_free(bits: &BitGrid, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> bool {
+fn runs_free(sight: &SightBits, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> bool {
     if ax.abs_diff(bx) >= ay.abs_diff(by) {
-        runs_along(&bits.rows, (ax, ay), (bx, by))
+        runs_along(&sight.grid.rows, &sight.row_bands, (ax, ay), (bx, by))
     } else {
-        runs_along(&bits.cols, (ay, ax), (by, bx))
+        runs_along(&sight.grid.cols, &sight.col_bands, (ay, ax), (by, bx))
     }
 }
 
@@ -497,7 +517,12 @@ fn runs_free(bits: &BitGrid, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> bool
 /// part between its two boundaries (or the ends), and the cells whose closed span `[k, k +
 /// 1]` meets that part's span `[lo, hi]` are `ceil(lo) - 1` to `floor(hi)`: the floors are
 /// kept as a quotient and a remainder, so no line costs a division.
-fn runs_along(lines: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool {
+///
+/// Where the segment crosses a whole band of `bands` (the [`BAND`] lines from a multiple of
+/// it), the runs of its lines lie within one span of cells, from the first line's start
+/// to the last line's end: if the band is free there, so are they, in one read; if not,
+/// they are read line by line.
+fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool {
     let ((au, av), (bu, bv)) = if av <= bv {
         ((au, av), (bu, bv))
     } else {
@@ -507,6 +532,11 @@ fn runs_along(lines: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool
         return lines.run_free(av as usize, au.min(bu) as usize, au.max(bu) as usize);
     }
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
+    // Bands only where the segment crosses enough lines to hold whole ones: a test per
+    // line would cost the short segments of narrow passages more than the bands save.
+    if dv >= 2 * BAND as u64 {
+        return runs_along_bands(lines, bands, (au, av), (bu, bv));
+    }
     let d = 2 * dv;
     let (step_q, step_r) = ((2 * du) / d, (2 * du) % d);
     let (au, forward) = (au as usize, bu >= au);
@@ -537,6 +567,69 @@ fn runs_along(lines: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool
     }
     // The last line's part ends at the centre of `bu`'s cell.
     free(bv, k_lo, du)
+}
+
+/// [`runs_along`] for a segment that crosses at least two bands (`av < bv`): the same
+/// runs, with the lines of each whole band read at once where the band is free.
+fn runs_along_bands(
+    lines: &Lines,
+    bands: &Lines,
+    (au, av): (u32, u32),
+    (bu, bv): (u32, u32),
+) -> bool {
+    let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
+    let d = 2 * dv;
+    let (step_q, step_r) = ((2 * du) / d, (2 * du) % d);
+    // `BAND - 1` steps at once: from a band's first line's upper boundary to its last's.
+    let band_steps = (BAND - 1) as u64 * (2 * du);
+    let (last_q, last_r) = (band_steps / d, band_steps % d);
+    let (au, forward) = (au as usize, bu >= au);
+    // The cells `k_lo..=k_hi` from `au`'s cell, toward `bu`, as a span of line cells.
+    let span = |k_lo: u64, k_hi: u64| {
+        if forward {
+            (au + k_lo as usize, au + k_hi as usize)
+        } else {
+            (au - k_hi as usize, au - k_lo as usize)
+        }
+    };
+    let mut k_lo = 0;
+    let (mut q, mut r) = ((dv + du) / d, (dv + du) % d);
+    let mut m = av;
+    while m < bv {
+        if (m as usize).is_multiple_of(BAND) && m + (BAND as u32 - 1) < bv {
+            // The band's last line's upper boundary.
+            let (mut bq, mut br) = (q + last_q, r + last_r);
+            if br >= d {
+                br -= d;
+                bq += 1;
+            }
+            let (lo, hi) = span(k_lo, bq);
+            if bands.run_free(m as usize / BAND, lo, hi) {
+                k_lo = bq + u64::from(br != 0) - 1;
+                (q, r) = (bq + step_q, br + step_r);
+                if r >= d {
+                    r -= d;
+                    q += 1;
+                }
+                m += BAND as u32;
+                continue;
+            }
+        }
+        let (lo, hi) = span(k_lo, q);
+        if !lines.run_free(m as usize, lo, hi) {
+            return false;
+        }
+        k_lo = q + u64::from(r != 0) - 1;
+        q += step_q;
+        r += step_r;
+        if r >= d {
+            r -= d;
+            q += 1;
+        }
+        m += 1;
+    }
+    let (lo, hi) = span(k_lo, du);
+    lines.run_free(bv as usize, lo, hi)
 }
 
 #[cfg(test)]
@@ -571,7 +664,7 @@ mod tests {
             let mut search = GridSearch::new(&map, GridOptions::default()).unwrap();
             let sight = search.sight(&map);
             prop_assert!(!sight.is_empty());
-            let bits = search.bit_grid();
+            let bits = SightBits::new(search.bit_grid());
             for (a, b) in pairs {
                 let (pa, pb) = (search.index(a.0, a.1), search.index(b.0, b.1));
                 let expected = map.segment_free_cells(
