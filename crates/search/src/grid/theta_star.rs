@@ -310,16 +310,17 @@ impl GridSearch {
                 f64::from_bits(self.theta_g[pp as usize]),
             )
         };
-        // The costs through the parent, all eight at once: independent square roots,
-        // which the loop's branches would otherwise wait on one at a time.
+        // The cost through the parent, for the moves that get that far only: most of the
+        // eight lead to closed cells or are not legal, and their roots cost more than the
+        // loop's wait on the few taken.
         let (pxf, pyf) = (f64::from(px), f64::from(py));
-        let through: [f64; 8] = std::array::from_fn(|d| {
+        let through = |d: usize| {
             let (ex, ey) = (
                 ppx - (pxf + f64::from(DIRS[d].0)),
                 ppy - (pyf + f64::from(DIRS[d].1)),
             );
             gpp + (ex * ex + ey * ey).sqrt()
-        });
+        };
         for (d, &(dx, dy, c)) in DIRS.iter().enumerate() {
             if mask & (1 << d) == 0 {
                 continue;
@@ -337,7 +338,7 @@ impl GridSearch {
             }
             let (mut ng, mut parent) = (g + c, p);
             if pp != NONE && (lazy || self.line_of_sight(pp, q, sight)) {
-                let via = through[d];
+                let via = through(d);
                 if via <= ng {
                     ng = via;
                     parent = pp;
