@@ -538,8 +538,6 @@ fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32
     if dv >= 2 * BAND as u64 {
         return runs_along_bands(lines, bands, (au, av), (bu, bv));
     }
-    let d = 2 * dv;
-    let (step_q, step_r) = ((2 * du) / d, (2 * du) % d);
     let (au, forward) = (au as usize, bu >= au);
     // The run of cells `k_lo..=k_hi` from `au`'s cell, toward `bu`.
     let free = |m: u32, k_lo: u64, k_hi: u64| {
@@ -550,24 +548,56 @@ fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32
         };
         lines.run_free(m as usize, lo, hi)
     };
-    // The first line's part starts at the centre, 1/2: its cells from 0.
-    let mut k_lo = 0;
-    // The boundary above line `m`, `dv + du` for the first, as quotient and remainder.
-    let (mut q, mut r) = ((dv + du) / d, (dv + du) % d);
+    let mut walk = Crossings::new(du, dv);
     for m in av..bv {
-        if !free(m, k_lo, q) {
+        if !free(m, walk.k_lo, walk.q) {
             return false;
         }
-        k_lo = q + u64::from(r != 0) - 1;
-        q += step_q;
-        r += step_r;
-        if r >= d {
-            r -= d;
-            q += 1;
-        }
+        walk.advance();
     }
     // The last line's part ends at the centre of `bu`'s cell.
-    free(bv, k_lo, du)
+    free(bv, walk.k_lo, du)
+}
+
+/// The part of a segment in each line it crosses, line after line, for [`runs_along`]:
+/// the first cell `k_lo` and the boundary above the line as a quotient `q` (its last
+/// cell) and a remainder `r`, in units of `1 / (2 dv)`.
+struct Crossings {
+    k_lo: u64,
+    q: u64,
+    r: u64,
+    /// One line's step of the boundary, `2 du` as quotient and remainder.
+    step: (u64, u64),
+    /// `2 dv`.
+    d: u64,
+}
+
+impl Crossings {
+    /// The first line's: its part starts at the centre, 1/2 (cells from 0), and its
+    /// upper boundary is at `dv + du`.
+    #[inline(always)]
+    fn new(du: u64, dv: u64) -> Self {
+        let d = 2 * dv;
+        Self {
+            k_lo: 0,
+            q: (dv + du) / d,
+            r: (dv + du) % d,
+            step: ((2 * du) / d, (2 * du) % d),
+            d,
+        }
+    }
+
+    /// On to the next line, whose part starts where the last one's ended.
+    #[inline(always)]
+    fn advance(&mut self) {
+        self.k_lo = self.q + u64::from(self.r != 0) - 1;
+        self.q += self.step.0;
+        self.r += self.step.1;
+        if self.r >= self.d {
+            self.r -= self.d;
+            self.q += 1;
+        }
+    }
 }
 
 /// [`runs_along`] for a segment that crosses at least two bands (`av < bv`): the same
@@ -579,11 +609,10 @@ fn runs_along_bands(
     (bu, bv): (u32, u32),
 ) -> bool {
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
-    let d = 2 * dv;
-    let (step_q, step_r) = ((2 * du) / d, (2 * du) % d);
+    let mut walk = Crossings::new(du, dv);
     // `BAND - 1` steps at once: from a band's first line's upper boundary to its last's.
     let band_steps = (BAND - 1) as u64 * (2 * du);
-    let (last_q, last_r) = (band_steps / d, band_steps % d);
+    let (last_q, last_r) = (band_steps / walk.d, band_steps % walk.d);
     let (au, forward) = (au as usize, bu >= au);
     // The cells `k_lo..=k_hi` from `au`'s cell, toward `bu`, as a span of line cells.
     let span = |k_lo: u64, k_hi: u64| {
@@ -593,43 +622,32 @@ fn runs_along_bands(
             (au - k_hi as usize, au - k_lo as usize)
         }
     };
-    let mut k_lo = 0;
-    let (mut q, mut r) = ((dv + du) / d, (dv + du) % d);
     let mut m = av;
     while m < bv {
         if (m as usize).is_multiple_of(BAND) && m + (BAND as u32 - 1) < bv {
             // The band's last line's upper boundary.
-            let (mut bq, mut br) = (q + last_q, r + last_r);
-            if br >= d {
-                br -= d;
+            let (mut bq, mut br) = (walk.q + last_q, walk.r + last_r);
+            if br >= walk.d {
+                br -= walk.d;
                 bq += 1;
             }
-            let (lo, hi) = span(k_lo, bq);
+            let (lo, hi) = span(walk.k_lo, bq);
             if bands.run_free(m as usize / BAND, lo, hi) {
-                k_lo = bq + u64::from(br != 0) - 1;
-                (q, r) = (bq + step_q, br + step_r);
-                if r >= d {
-                    r -= d;
-                    q += 1;
-                }
+                // As if at the band's last line: on to the line after it.
+                (walk.q, walk.r) = (bq, br);
+                walk.advance();
                 m += BAND as u32;
                 continue;
             }
         }
-        let (lo, hi) = span(k_lo, q);
+        let (lo, hi) = span(walk.k_lo, walk.q);
         if !lines.run_free(m as usize, lo, hi) {
             return false;
         }
-        k_lo = q + u64::from(r != 0) - 1;
-        q += step_q;
-        r += step_r;
-        if r >= d {
-            r -= d;
-            q += 1;
-        }
+        walk.advance();
         m += 1;
     }
-    let (lo, hi) = span(k_lo, du);
+    let (lo, hi) = span(walk.k_lo, du);
     lines.run_free(bv as usize, lo, hi)
 }
 
