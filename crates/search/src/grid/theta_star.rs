@@ -538,31 +538,27 @@ fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32
     if dv >= 2 * BAND as u64 {
         return runs_along_bands(lines, bands, (au, av), (bu, bv));
     }
-    let (au, forward) = (au as usize, bu >= au);
-    // The run of cells `k_lo..=k_hi` from `au`'s cell, toward `bu`.
-    let free = |m: u32, k_lo: u64, k_hi: u64| {
-        let (lo, hi) = if forward {
-            (au + k_lo as usize, au + k_hi as usize)
-        } else {
-            (au - k_hi as usize, au - k_lo as usize)
-        };
-        lines.run_free(m as usize, lo, hi)
-    };
-    let mut walk = Crossings::new(du, dv);
+    let mut walk = Crossings::new((au, bu), du, dv);
     for m in av..bv {
-        if !free(m, walk.k_lo, walk.q) {
+        let (lo, hi) = walk.cells(walk.q);
+        if !lines.run_free(m as usize, lo, hi) {
             return false;
         }
         walk.advance();
     }
     // The last line's part ends at the centre of `bu`'s cell.
-    free(bv, walk.k_lo, du)
+    let (lo, hi) = walk.cells(du);
+    lines.run_free(bv as usize, lo, hi)
 }
 
 /// The part of a segment in each line it crosses, line after line, for [`runs_along`]:
 /// the first cell `k_lo` and the boundary above the line as a quotient `q` (its last
 /// cell) and a remainder `r`, in units of `1 / (2 dv)`.
 struct Crossings {
+    /// The first end's cell along the lines, and whether the segment goes toward larger
+    /// cells from it (`k` counts cells from `au` that way).
+    au: usize,
+    forward: bool,
     k_lo: u64,
     q: u64,
     r: u64,
@@ -576,14 +572,27 @@ impl Crossings {
     /// The first line's: its part starts at the centre, 1/2 (cells from 0), and its
     /// upper boundary is at `dv + du`.
     #[inline(always)]
-    fn new(du: u64, dv: u64) -> Self {
+    fn new((au, bu): (u32, u32), du: u64, dv: u64) -> Self {
         let d = 2 * dv;
         Self {
+            au: au as usize,
+            forward: bu >= au,
             k_lo: 0,
             q: (dv + du) / d,
             r: (dv + du) % d,
             step: ((2 * du) / d, (2 * du) % d),
             d,
+        }
+    }
+
+    /// The line's cells from this part's first to `k_hi` (counted from `au`), lowest
+    /// first.
+    #[inline(always)]
+    fn cells(&self, k_hi: u64) -> (usize, usize) {
+        if self.forward {
+            (self.au + self.k_lo as usize, self.au + k_hi as usize)
+        } else {
+            (self.au - k_hi as usize, self.au - self.k_lo as usize)
         }
     }
 
@@ -609,19 +618,10 @@ fn runs_along_bands(
     (bu, bv): (u32, u32),
 ) -> bool {
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
-    let mut walk = Crossings::new(du, dv);
+    let mut walk = Crossings::new((au, bu), du, dv);
     // `BAND - 1` steps at once: from a band's first line's upper boundary to its last's.
     let band_steps = (BAND - 1) as u64 * (2 * du);
     let (last_q, last_r) = (band_steps / walk.d, band_steps % walk.d);
-    let (au, forward) = (au as usize, bu >= au);
-    // The cells `k_lo..=k_hi` from `au`'s cell, toward `bu`, as a span of line cells.
-    let span = |k_lo: u64, k_hi: u64| {
-        if forward {
-            (au + k_lo as usize, au + k_hi as usize)
-        } else {
-            (au - k_hi as usize, au - k_lo as usize)
-        }
-    };
     let mut m = av;
     while m < bv {
         if (m as usize).is_multiple_of(BAND) && m + (BAND as u32 - 1) < bv {
@@ -631,7 +631,7 @@ fn runs_along_bands(
                 br -= walk.d;
                 bq += 1;
             }
-            let (lo, hi) = span(walk.k_lo, bq);
+            let (lo, hi) = walk.cells(bq);
             if bands.run_free(m as usize / BAND, lo, hi) {
                 // As if at the band's last line: on to the line after it.
                 (walk.q, walk.r) = (bq, br);
@@ -640,14 +640,14 @@ fn runs_along_bands(
                 continue;
             }
         }
-        let (lo, hi) = span(walk.k_lo, walk.q);
+        let (lo, hi) = walk.cells(walk.q);
         if !lines.run_free(m as usize, lo, hi) {
             return false;
         }
         walk.advance();
         m += 1;
     }
-    let (lo, hi) = span(walk.k_lo, du);
+    let (lo, hi) = walk.cells(du);
     lines.run_free(bv as usize, lo, hi)
 }
 
