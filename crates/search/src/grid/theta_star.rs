@@ -533,6 +533,17 @@ fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32
         return lines.run_free(av as usize, au.min(bu) as usize, au.max(bu) as usize);
     }
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
+    if du < SHORT_DU as u64 && dv < SHORT_DV as u64 {
+        // A short segment: its runs from the table, one window each, no walk.
+        let (au, forward) = (au as usize, bu >= au);
+        let runs = &SHORT_RUNS[du as usize][dv as usize][..=dv as usize];
+        return runs.iter().zip(av as usize..).all(|(&(lo, hi), m)| {
+            let (lo, hi) = (usize::from(lo), usize::from(hi));
+            let first = if forward { au + lo } else { au - hi };
+            let mask = u64::MAX >> (63 - (hi - lo));
+            lines.window(m, first) & mask == mask
+        });
+    }
     // Bands only where the segment crosses enough lines to hold whole ones: a test per
     // line would cost the short segments of narrow passages more than the bands save.
     if dv >= 2 * BAND as u64 {
@@ -549,6 +560,42 @@ fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32
     // The last line's part ends at the centre of `bu`'s cell.
     let (lo, hi) = walk.cells(du);
     lines.run_free(bv as usize, lo, hi)
+}
+
+/// Segments shorter than this many cells along the lines take their runs from
+/// [`SHORT_RUNS`] (a run is then at most 64 cells: one window).
+const SHORT_DU: usize = 64;
+
+/// ... and crossing fewer than this many lines.
+const SHORT_DV: usize = 8;
+
+/// The runs of the short segments, as [`Crossings`] finds them: for a segment `du` cells
+/// along the lines and `dv` lines across (`1 <= dv <= du`), the first and last cell of
+/// line `i` from the first end (`0 <= i <= dv`), counted toward the other end. They
+/// depend on nothing else, and a walk costs a branch per line that the table does not
+/// (8 KB).
+static SHORT_RUNS: [[[(u8, u8); SHORT_DV]; SHORT_DV]; SHORT_DU] = short_runs();
+
+const fn short_runs() -> [[[(u8, u8); SHORT_DV]; SHORT_DV]; SHORT_DU] {
+    let mut table = [[[(0, 0); SHORT_DV]; SHORT_DV]; SHORT_DU];
+    let mut du = 1;
+    while du < SHORT_DU {
+        let mut dv = 1;
+        while dv < SHORT_DV && dv <= du {
+            let mut walk = Crossings::new((0, du as u32), du as u64, dv as u64);
+            let mut i = 0;
+            while i < dv {
+                table[du][dv][i] = (walk.k_lo as u8, walk.q as u8);
+                walk.advance();
+                i += 1;
+            }
+            // The last line's part ends at the centre of the other end's cell.
+            table[du][dv][dv] = (walk.k_lo as u8, du as u8);
+            dv += 1;
+        }
+        du += 1;
+    }
+    table
 }
 
 /// The part of a segment in each line it crosses, line after line, for [`runs_along`]:
@@ -572,7 +619,7 @@ impl Crossings {
     /// The first line's: its part starts at the centre, 1/2 (cells from 0), and its
     /// upper boundary is at `dv + du`.
     #[inline(always)]
-    fn new((au, bu): (u32, u32), du: u64, dv: u64) -> Self {
+    const fn new((au, bu): (u32, u32), du: u64, dv: u64) -> Self {
         let d = 2 * dv;
         Self {
             au: au as usize,
@@ -598,8 +645,8 @@ impl Crossings {
 
     /// On to the next line, whose part starts where the last one's ended.
     #[inline(always)]
-    fn advance(&mut self) {
-        self.k_lo = self.q + u64::from(self.r != 0) - 1;
+    const fn advance(&mut self) {
+        self.k_lo = self.q + (self.r != 0) as u64 - 1;
         self.q += self.step.0;
         self.r += self.step.1;
         if self.r >= self.d {
