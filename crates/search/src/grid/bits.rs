@@ -14,7 +14,7 @@ pub(super) struct BitGrid {
 /// low end of the line starts at a non-negative bit.
 pub(super) const PAD: usize = 64;
 
-/// Lines per band of [`Lines::bands`].
+/// Lines per slide of [`Lines::slides`].
 pub(super) const BAND: usize = 8;
 
 /// Bit lines of equal length, each padded with zero words so that a 64-bit window may
@@ -32,21 +32,27 @@ impl Lines {
         self.bits.len() / self.words
     }
 
-    /// These lines taken [`BAND`] at a time: bit `c` of band `b` is set when cell `c` is
-    /// free in every line of `b * BAND .. (b + 1) * BAND` (that there is).
-    pub(super) fn bands(&self) -> Self {
+    /// These lines taken [`BAND`] at a time from every line: bit `c` of slide `l` is set
+    /// when cell `c` is free in every line of `l .. l + BAND` (a slide that runs past the
+    /// last line is blocked). As many words as the lines.
+    pub(super) fn slides(&self) -> Self {
         let count = self.count();
-        let mut bands = Self {
+        let mut slides = Self {
             words: self.words,
-            bits: vec![u64::MAX; count.div_ceil(BAND) * self.words],
+            bits: vec![0; self.bits.len()],
         };
-        for (l, line) in self.bits.chunks_exact(self.words).enumerate() {
-            let band = &mut bands.bits[(l / BAND) * self.words..][..self.words];
-            for (b, &w) in band.iter_mut().zip(line) {
-                *b &= w;
+        for l in 0..count.saturating_sub(BAND - 1) {
+            let slide = &mut slides.bits[l * self.words..][..self.words];
+            slide.copy_from_slice(&self.bits[l * self.words..][..self.words]);
+            for line in
+                self.bits[(l + 1) * self.words..(l + BAND) * self.words].chunks_exact(self.words)
+            {
+                for (s, &w) in slide.iter_mut().zip(line) {
+                    *s &= w;
+                }
             }
         }
-        bands
+        slides
     }
 
     /// `count` all-blocked lines of `len` cells.

@@ -10,20 +10,20 @@ use super::*;
 const RUNS_UP_TO: u32 = 64;
 
 /// The bits Theta*'s lines of sight read: the passable cells' bit lines, and the same
-/// lines [`BAND`] at a time ([`Lines::bands`]), so that a segment crossing eight free lines
-/// reads one run instead of eight.
+/// lines [`BAND`] at a time from each line ([`Lines::slides`]), so that a segment crossing
+/// eight free lines reads one run instead of eight.
 #[derive(Debug, Clone)]
 pub(super) struct SightBits {
     grid: BitGrid,
-    row_bands: Lines,
-    col_bands: Lines,
+    row_slides: Lines,
+    col_slides: Lines,
 }
 
 impl SightBits {
     fn new(grid: BitGrid) -> Self {
         Self {
-            row_bands: grid.rows.bands(),
-            col_bands: grid.cols.bands(),
+            row_slides: grid.rows.slides(),
+            col_slides: grid.cols.slides(),
             grid,
         }
     }
@@ -503,9 +503,9 @@ impl GridSearch {
 /// form one run, read from the bit lines.
 fn runs_free(sight: &SightBits, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> bool {
     if ax.abs_diff(bx) >= ay.abs_diff(by) {
-        runs_along(&sight.grid.rows, &sight.row_bands, (ax, ay), (bx, by))
+        runs_along(&sight.grid.rows, &sight.row_slides, (ax, ay), (bx, by))
     } else {
-        runs_along(&sight.grid.cols, &sight.col_bands, (ay, ax), (by, bx))
+        runs_along(&sight.grid.cols, &sight.col_slides, (ay, ax), (by, bx))
     }
 }
 
@@ -519,11 +519,11 @@ fn runs_free(sight: &SightBits, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> b
 /// 1]` meets that part's span `[lo, hi]` are `ceil(lo) - 1` to `floor(hi)`: the floors are
 /// kept as a quotient and a remainder, so no line costs a division.
 ///
-/// Where the segment crosses a whole band of `bands` (the [`BAND`] lines from a multiple of
-/// it), the runs of its lines lie within one span of cells, from the first line's start
-/// to the last line's end: if the band is free there, so are they, in one read; if not,
-/// they are read line by line.
-fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool {
+/// The runs of [`BAND`] successive lines lie within one span of cells, from the first
+/// line's start to the last line's end: if their slide (of `slides`) is free there, so are
+/// they, in one read; if not, they are read line by line. Short segments take their runs
+/// from a table instead ([`SHORT_RUNS`]).
+fn runs_along(lines: &Lines, slides: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool {
     let ((au, av), (bu, bv)) = if av <= bv {
         ((au, av), (bu, bv))
     } else {
@@ -544,10 +544,8 @@ fn runs_along(lines: &Lines, bands: &Lines, (au, av): (u32, u32), (bu, bv): (u32
             lines.window(m, first) & mask == mask
         });
     }
-    // Bands only where the segment crosses enough lines to hold whole ones: a test per
-    // line would cost the short segments of narrow passages more than the bands save.
-    if dv >= 2 * BAND as u64 {
-        return runs_along_bands(lines, bands, (au, av), (bu, bv));
+    if dv >= BAND as u64 {
+        return runs_along_slides(lines, slides, (au, av), (bu, bv));
     }
     let mut walk = Crossings::new((au, bu), du, dv);
     for m in av..bv {
@@ -657,37 +655,53 @@ impl Crossings {
     }
 }
 
-/// [`runs_along`] for a segment that crosses at least two bands (`av < bv`): the same
-/// runs, with the lines of each whole band read at once where the band is free.
-fn runs_along_bands(
+/// [`runs_along`] for a segment that crosses at least [`BAND`] lines (`av < bv`): the same
+/// runs, [`BAND`] lines at a time where their slide is free over their span.
+fn runs_along_slides(
     lines: &Lines,
-    bands: &Lines,
+    slides: &Lines,
     (au, av): (u32, u32),
     (bu, bv): (u32, u32),
 ) -> bool {
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
     let mut walk = Crossings::new((au, bu), du, dv);
-    // `BAND - 1` steps at once: from a band's first line's upper boundary to its last's.
-    let band_steps = (BAND - 1) as u64 * (2 * du);
-    let (last_q, last_r) = (band_steps / walk.d, band_steps % walk.d);
+    // `BAND - 1` steps at once: from a slide's first line's upper boundary to its last's.
+    let slide_steps = (BAND - 1) as u64 * (2 * du);
+    let (last_q, last_r) = (slide_steps / walk.d, slide_steps % walk.d);
     let mut m = av;
-    while m < bv {
-        if (m as usize).is_multiple_of(BAND) && m + (BAND as u32 - 1) < bv {
-            // The band's last line's upper boundary.
-            let (mut bq, mut br) = (walk.q + last_q, walk.r + last_r);
-            if br >= walk.d {
-                br -= walk.d;
-                bq += 1;
-            }
-            let (lo, hi) = walk.cells(bq);
-            if bands.run_free(m as usize / BAND, lo, hi) {
-                // As if at the band's last line: on to the line after it.
-                (walk.q, walk.r) = (bq, br);
-                walk.advance();
-                m += BAND as u32;
-                continue;
-            }
+    // Whole slides of lines before the last line.
+    while m + (BAND as u32 - 1) < bv {
+        // The slide's last line's upper boundary.
+        let (mut bq, mut br) = (walk.q + last_q, walk.r + last_r);
+        if br >= walk.d {
+            br -= walk.d;
+            bq += 1;
         }
+        let (lo, hi) = walk.cells(bq);
+        if slides.run_free(m as usize, lo, hi) {
+            // As if at the slide's last line: on to the line after it.
+            (walk.q, walk.r) = (bq, br);
+            walk.advance();
+            m += BAND as u32;
+            continue;
+        }
+        // Blocked somewhere in the span: the slide's lines one by one.
+        for _ in 0..BAND {
+            let (lo, hi) = walk.cells(walk.q);
+            if !lines.run_free(m as usize, lo, hi) {
+                return false;
+            }
+            walk.advance();
+            m += 1;
+        }
+    }
+    // The lines left, the last one's part ending at the centre of `bu`'s cell: within the
+    // slide that ends with the last line (it starts at or before `m`).
+    let (lo, hi) = walk.cells(du);
+    if slides.run_free(bv as usize - (BAND - 1), lo, hi) {
+        return true;
+    }
+    while m < bv {
         let (lo, hi) = walk.cells(walk.q);
         if !lines.run_free(m as usize, lo, hi) {
             return false;
