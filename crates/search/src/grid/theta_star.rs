@@ -534,9 +534,26 @@ fn runs_along(lines: &Lines, slides: &Lines, (au, av): (u32, u32), (bu, bv): (u3
     }
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
     if du < SHORT_DU as u64 && dv < SHORT_DV as u64 {
-        // A short segment: its runs from the table, one window each, no walk.
+        // A short segment: its runs from the table, one window each, no walk; from two
+        // slides when it crosses at least [`BAND`] lines, if they are free.
         let (au, forward) = (au as usize, bu >= au);
         let runs = &SHORT_RUNS[du as usize][dv as usize][..=dv as usize];
+        let span = |first: usize, last: usize| {
+            let (lo, hi) = (usize::from(runs[first].0), usize::from(runs[last].1));
+            if forward {
+                (au + lo, au + hi)
+            } else {
+                (au - hi, au - lo)
+            }
+        };
+        if dv >= BAND as u64 {
+            let (dv, (av, bv)) = (dv as usize, (av as usize, bv as usize));
+            let (lo, hi) = span(0, BAND - 1);
+            let (tail_lo, tail_hi) = span(dv + 1 - BAND, dv);
+            if slides.run_free(av, lo, hi) && slides.run_free(bv + 1 - BAND, tail_lo, tail_hi) {
+                return true;
+            }
+        }
         return runs.iter().zip(av as usize..).all(|(&(lo, hi), m)| {
             let (lo, hi) = (usize::from(lo), usize::from(hi));
             let first = if forward { au + lo } else { au - hi };
