@@ -276,7 +276,7 @@ pub struct GridSearch {
     theta_g: Vec<u64>,
     /// Query counter of `theta_stamps`.
     theta_generation: u32,
-    /// The passable cells as bit lines and their bands, which Theta*'s lines of sight read
+    /// The passable cells as bit lines and their slides, which Theta*'s lines of sight read
     /// (built by its first query after the passable cells were last read).
     theta_bits: Option<theta_star::SightBits>,
     /// The fixed-point cost scale of this grid's size.
