@@ -565,12 +565,8 @@ fn runs_along(lines: &Lines, slides: &Lines, (au, av): (u32, u32), (bu, bv): (u3
         return runs_along_slides(lines, slides, (au, av), (bu, bv));
     }
     let mut walk = Crossings::new((au, bu), du, dv);
-    for m in av..bv {
-        let (lo, hi) = walk.cells(walk.q);
-        if !lines.run_free(m as usize, lo, hi) {
-            return false;
-        }
-        walk.advance();
+    if !walk.lines_free(lines, av, bv) {
+        return false;
     }
     // The last line's part ends at the centre of `bu`'s cell.
     let (lo, hi) = walk.cells(du);
@@ -659,6 +655,20 @@ impl Crossings {
         }
     }
 
+    /// Whether the parts of lines `from .. to` are free, read line by line (the walk at
+    /// line `from`; it ends at line `to`, or at the first line blocked).
+    #[inline(always)]
+    fn lines_free(&mut self, lines: &Lines, from: u32, to: u32) -> bool {
+        for m in from..to {
+            let (lo, hi) = self.cells(self.q);
+            if !lines.run_free(m as usize, lo, hi) {
+                return false;
+            }
+            self.advance();
+        }
+        true
+    }
+
     /// On to the next line, whose part starts where the last one's ended.
     #[inline(always)]
     const fn advance(&mut self) {
@@ -703,14 +713,10 @@ fn runs_along_slides(
             continue;
         }
         // Blocked somewhere in the span: the slide's lines one by one.
-        for _ in 0..BAND {
-            let (lo, hi) = walk.cells(walk.q);
-            if !lines.run_free(m as usize, lo, hi) {
-                return false;
-            }
-            walk.advance();
-            m += 1;
+        if !walk.lines_free(lines, m, m + BAND as u32) {
+            return false;
         }
+        m += BAND as u32;
     }
     // The lines left, the last one's part ending at the centre of `bu`'s cell: within the
     // slide that ends with the last line (it starts at or before `m`).
@@ -718,13 +724,8 @@ fn runs_along_slides(
     if slides.run_free(bv as usize - (BAND - 1), lo, hi) {
         return true;
     }
-    while m < bv {
-        let (lo, hi) = walk.cells(walk.q);
-        if !lines.run_free(m as usize, lo, hi) {
-            return false;
-        }
-        walk.advance();
-        m += 1;
+    if !walk.lines_free(lines, m, bv) {
+        return false;
     }
     let (lo, hi) = walk.cells(du);
     lines.run_free(bv as usize, lo, hi)
