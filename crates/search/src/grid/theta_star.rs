@@ -193,6 +193,13 @@ impl GridSearch {
                 continue;
             }
             self.theta_stamps[p as usize] = closed;
+            // The neighbours' stamps, read before the line of sight so that their loads
+            // overlap it (it writes none of them).
+            let mask = self.theta_moves(p);
+            let mut stamps = [0; 8];
+            for (d, &(dx, dy, _)) in DIRS.iter().enumerate() {
+                stamps[d] = self.theta_stamps[self.moved(p, (dx, dy)) as usize];
+            }
             if lazy {
                 self.lazy_set_parent(p, sight);
             }
@@ -207,7 +214,14 @@ impl GridSearch {
                 check_at = limit.next_check(stats.expansions);
             }
             stats.expansions += 1;
-            self.theta_expand(p, g, &mut stats, (euclid, sight), lazy, &mut taken);
+            self.theta_expand(
+                (p, g),
+                (mask, stamps),
+                &mut stats,
+                (euclid, sight),
+                lazy,
+                &mut taken,
+            );
         }
         Err(GridSearchError::NoPath { stats })
     }
@@ -283,18 +297,18 @@ impl GridSearch {
     /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
     /// parent when it sees q (path 2 of the paper), else p (path 1). With `lazy`, p's
     /// parent is taken without the test, which q's own expansion makes
-    /// ([`lazy_set_parent`](Self::lazy_set_parent)). `taken`: the heap's root is `p`'s
-    /// own entry, which the first push replaces.
+    /// ([`lazy_set_parent`](Self::lazy_set_parent)). `g`: p's cost; `mask`: its legal
+    /// moves; `stamps`: its neighbours' stamps, one per direction of [`DIRS`] (read by the
+    /// caller). `taken`: the heap's root is `p`'s own entry, which the first push replaces.
     pub(super) fn theta_expand(
         &mut self,
-        p: u32,
-        g: f64,
+        (p, g): (u32, f64),
+        (mask, stamps): (u8, [u32; 8]),
         stats: &mut SearchStats,
         (h, sight): (impl Fn(u32, u32) -> f64, &[u8]),
         lazy: bool,
         taken: &mut bool,
     ) {
-        let mask = self.theta_moves(p);
         let pu = p as usize;
         let open = self.theta_generation;
         let pp = self.theta_parents[pu];
@@ -328,7 +342,7 @@ impl GridSearch {
             let q = self.moved(p, (dx, dy));
             let (qx, qy) = (px.wrapping_add_signed(dx), py.wrapping_add_signed(dy));
             let qu = q as usize;
-            let st = self.theta_stamps[qu];
+            let st = stamps[d];
             if st == open | CLOSED {
                 continue;
             }
