@@ -15,7 +15,7 @@ pub(super) struct BitGrid {
 pub(super) const PAD: usize = 64;
 
 /// Lines per slide of [`Lines::slides`].
-pub(super) const BAND: usize = 8;
+pub(super) const SLIDE: usize = 8;
 
 /// Bit lines of equal length, each padded with zero words so that a 64-bit window may
 /// start or end at any cell of it.
@@ -32,8 +32,8 @@ impl Lines {
         self.bits.len() / self.words
     }
 
-    /// These lines taken [`BAND`] at a time from every line: bit `c` of slide `l` is set
-    /// when cell `c` is free in every line of `l .. l + BAND` (a slide that runs past the
+    /// These lines taken [`SLIDE`] at a time from every line: bit `c` of slide `l` is set
+    /// when cell `c` is free in every line of `l .. l + SLIDE` (a slide that runs past the
     /// last line is blocked). As many words as the lines.
     pub(super) fn slides(&self) -> Self {
         let count = self.count();
@@ -41,11 +41,11 @@ impl Lines {
             words: self.words,
             bits: vec![0; self.bits.len()],
         };
-        for l in 0..count.saturating_sub(BAND - 1) {
+        for l in 0..count.saturating_sub(SLIDE - 1) {
             let slide = &mut slides.bits[l * self.words..][..self.words];
             slide.copy_from_slice(&self.bits[l * self.words..][..self.words]);
             for line in
-                self.bits[(l + 1) * self.words..(l + BAND) * self.words].chunks_exact(self.words)
+                self.bits[(l + 1) * self.words..(l + SLIDE) * self.words].chunks_exact(self.words)
             {
                 for (s, &w) in slide.iter_mut().zip(line) {
                     *s &= w;
@@ -101,14 +101,20 @@ impl Lines {
     pub(super) fn run_free(&self, l: usize, lo: usize, hi: usize) -> bool {
         let mut at = lo;
         while at <= hi {
-            let n = (hi - at + 1).min(64);
-            let mask = u64::MAX >> (64 - n);
-            if self.window(l, at) & mask != mask {
+            if !self.window_free(l, at, hi.min(at + 63)) {
                 return false;
             }
             at += 64;
         }
         true
+    }
+
+    /// Whether cells `lo` to `hi` of line `l` (`lo <= hi < lo + 64`) are all free: one
+    /// window.
+    #[inline(always)]
+    pub(super) fn window_free(&self, l: usize, lo: usize, hi: usize) -> bool {
+        let mask = u64::MAX >> (63 - (hi - lo));
+        self.window(l, lo) & mask == mask
     }
 
     /// The window of a jump at cell `at` of line `l`: the 64 cells from `at` on when

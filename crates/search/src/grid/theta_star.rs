@@ -1,6 +1,6 @@
 //! Theta*: any-angle paths between cell centres (line-of-sight parents).
 
-use super::bits::{BAND, BitGrid, Lines};
+use super::bits::{BitGrid, Lines, SLIDE};
 use super::engine::*;
 use super::*;
 
@@ -10,7 +10,7 @@ use super::*;
 const RUNS_UP_TO: u32 = 64;
 
 /// The bits Theta*'s lines of sight read: the passable cells' bit lines, and the same
-/// lines [`BAND`] at a time from each line ([`Lines::slides`]), so that a segment crossing
+/// lines [`SLIDE`] at a time from each line ([`Lines::slides`]), so that a segment crossing
 /// eight free lines reads one run instead of eight.
 #[derive(Debug, Clone)]
 pub(super) struct SightBits {
@@ -533,7 +533,7 @@ fn runs_free(sight: &SightBits, (ax, ay): (u32, u32), (bx, by): (u32, u32)) -> b
 /// 1]` meets that part's span `[lo, hi]` are `ceil(lo) - 1` to `floor(hi)`: the floors are
 /// kept as a quotient and a remainder, so no line costs a division.
 ///
-/// The runs of [`BAND`] successive lines lie within one span of cells, from the first
+/// The runs of [`SLIDE`] successive lines lie within one span of cells, from the first
 /// line's start to the last line's end: if their slide (of `slides`) is free there, so are
 /// they, in one read; if not, they are read line by line. Short segments take their runs
 /// from a table instead ([`SHORT_RUNS`]).
@@ -549,42 +549,39 @@ fn runs_along(lines: &Lines, slides: &Lines, (au, av): (u32, u32), (bu, bv): (u3
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
     if du < SHORT_DU as u64 && dv < SHORT_DV as u64 {
         // A short segment: its runs from the table, one window each, no walk; from two
-        // slides when it crosses at least [`BAND`] lines, if they are free.
+        // slides when it crosses at least [`SLIDE`] lines, if they are free.
         let (au, forward) = (au as usize, bu >= au);
-        let runs = &SHORT_RUNS[du as usize][dv as usize][..=dv as usize];
+        let (dv, (av, bv)) = (dv as usize, (av as usize, bv as usize));
+        let runs = &SHORT_RUNS[du as usize][dv];
+        // Lines `first..=last`'s cells.
         let span = |first: usize, last: usize| {
-            let (lo, hi) = (usize::from(runs[first].0), usize::from(runs[last].1));
-            if forward {
-                (au + lo, au + hi)
-            } else {
-                (au - hi, au - lo)
-            }
+            let k = (usize::from(runs[first].0), usize::from(runs[last].1));
+            toward(au, forward, k)
         };
-        if dv >= BAND as u64 {
-            let (dv, (av, bv)) = (dv as usize, (av as usize, bv as usize));
-            let (lo, hi) = span(0, BAND - 1);
-            let (tail_lo, tail_hi) = span(dv + 1 - BAND, dv);
-            if slides.run_free(av, lo, hi) && slides.run_free(bv + 1 - BAND, tail_lo, tail_hi) {
+        if dv >= SLIDE {
+            let (lo, hi) = span(0, SLIDE - 1);
+            let (tail_lo, tail_hi) = span(dv + 1 - SLIDE, dv);
+            if slides.run_free(av, lo, hi) && slides.run_free(bv + 1 - SLIDE, tail_lo, tail_hi) {
                 return true;
             }
         }
-        return runs.iter().zip(av as usize..).all(|(&(lo, hi), m)| {
-            let (lo, hi) = (usize::from(lo), usize::from(hi));
-            let first = if forward { au + lo } else { au - hi };
-            let mask = u64::MAX >> (63 - (hi - lo));
-            lines.window(m, first) & mask == mask
+        return runs[..=dv].iter().zip(av..).all(|(&(lo, hi), m)| {
+            let (lo, hi) = toward(au, forward, (usize::from(lo), usize::from(hi)));
+            lines.window_free(m, lo, hi)
         });
     }
-    if dv >= BAND as u64 {
-        return runs_along_slides(lines, slides, (au, av), (bu, bv));
+    runs_walked(lines, slides, (au, av), (bu, bv))
+}
+
+/// The cells `k.0 ..= k.1` counted from `au` toward the other end of a segment (`forward`:
+/// toward larger cells), lowest first.
+#[inline(always)]
+fn toward(au: usize, forward: bool, (k_lo, k_hi): (usize, usize)) -> (usize, usize) {
+    if forward {
+        (au + k_lo, au + k_hi)
+    } else {
+        (au - k_hi, au - k_lo)
     }
-    let mut walk = Crossings::new((au, bu), du, dv);
-    if !walk.lines_free(lines, av, bv) {
-        return false;
-    }
-    // The last line's part ends at the centre of `bu`'s cell.
-    let (lo, hi) = walk.cells(du);
-    lines.run_free(bv as usize, lo, hi)
 }
 
 /// Segments shorter than this many cells along the lines take their runs from
@@ -662,11 +659,7 @@ impl Crossings {
     /// first.
     #[inline(always)]
     fn cells(&self, k_hi: u64) -> (usize, usize) {
-        if self.forward {
-            (self.au + self.k_lo as usize, self.au + k_hi as usize)
-        } else {
-            (self.au - k_hi as usize, self.au - self.k_lo as usize)
-        }
+        toward(self.au, self.forward, (self.k_lo as usize, k_hi as usize))
     }
 
     /// Whether the parts of lines `from .. to` are free, read line by line (the walk at
@@ -696,22 +689,18 @@ impl Crossings {
     }
 }
 
-/// [`runs_along`] for a segment that crosses at least [`BAND`] lines (`av < bv`): the same
-/// runs, [`BAND`] lines at a time where their slide is free over their span.
-fn runs_along_slides(
-    lines: &Lines,
-    slides: &Lines,
-    (au, av): (u32, u32),
-    (bu, bv): (u32, u32),
-) -> bool {
+/// [`runs_along`] for a segment outside [`SHORT_RUNS`] (`av < bv`): its runs walked line
+/// by line ([`Crossings`]), [`SLIDE`] lines at a time where their slide is free over their
+/// span.
+fn runs_walked(lines: &Lines, slides: &Lines, (au, av): (u32, u32), (bu, bv): (u32, u32)) -> bool {
     let (dv, du) = (u64::from(bv - av), u64::from(au.abs_diff(bu)));
     let mut walk = Crossings::new((au, bu), du, dv);
-    // `BAND - 1` steps at once: from a slide's first line's upper boundary to its last's.
-    let slide_steps = (BAND - 1) as u64 * (2 * du);
+    // `SLIDE - 1` steps at once: from a slide's first line's upper boundary to its last's.
+    let slide_steps = (SLIDE - 1) as u64 * (2 * du);
     let (last_q, last_r) = (slide_steps / walk.d, slide_steps % walk.d);
     let mut m = av;
     // Whole slides of lines before the last line.
-    while m + (BAND as u32 - 1) < bv {
+    while m + (SLIDE as u32 - 1) < bv {
         // The slide's last line's upper boundary.
         let (mut bq, mut br) = (walk.q + last_q, walk.r + last_r);
         if br >= walk.d {
@@ -723,19 +712,21 @@ fn runs_along_slides(
             // As if at the slide's last line: on to the line after it.
             (walk.q, walk.r) = (bq, br);
             walk.advance();
-            m += BAND as u32;
+            m += SLIDE as u32;
             continue;
         }
         // Blocked somewhere in the span: the slide's lines one by one.
-        if !walk.lines_free(lines, m, m + BAND as u32) {
+        if !walk.lines_free(lines, m, m + SLIDE as u32) {
             return false;
         }
-        m += BAND as u32;
+        m += SLIDE as u32;
     }
     // The lines left, the last one's part ending at the centre of `bu`'s cell: within the
-    // slide that ends with the last line (it starts at or before `m`).
+    // slide that ends with the last line, if there is one (it starts at or before `m`).
     let (lo, hi) = walk.cells(du);
-    if slides.run_free(bv as usize - (BAND - 1), lo, hi) {
+    if let Some(first) = (bv as usize).checked_sub(SLIDE - 1)
+        && slides.run_free(first, lo, hi)
+    {
         return true;
     }
     if !walk.lines_free(lines, m, bv) {
