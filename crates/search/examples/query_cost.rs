@@ -1,10 +1,12 @@
 //! What a short grid query costs after the map's one-time preparation, on a 512 x 512 and a
 //! 4096 x 4096 map of rooms: the preparation is paid once per map, a query what it touches
-//! (issue 31: a query that expands k nodes costs O(k), not O(map)). Jump point search, A*
-//! and Dijkstra, each on its own prepared search; then the same through the `Planner`
-//! trait (as `hyplan plan`, the registry and Python call them), after `Planner::prepare`
-//! has left the search with the map: the query from world point (10.5, 11.5) to (13.5,
-//! 12.5), its time the whole `plan` call (checks, search and path).
+//! (issue 31: a query that expands k nodes costs O(k), not O(map)). Jump point search, A*,
+//! Dijkstra and Lazy Theta*, each on its own prepared search (Lazy Theta*'s first query
+//! builds its lines of sight's bits and the map's stride table, so its first time is a
+//! preparation's); then jump point search, A* and Dijkstra through the `Planner` trait (as
+//! `hyplan plan`, the registry and Python call them), after `Planner::prepare` has left the
+//! search with the map: the query from world point (10.5, 11.5) to (13.5, 12.5), its time
+//! the whole `plan` call (checks, search and path).
 //!
 //! ```sh
 //! cargo run --release -p search --example query_cost
@@ -59,6 +61,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 "dijkstra",
                 grid_prepare,
                 time(|| grid.dijkstra(start, goal))?,
+            ),
+            // Its first query also builds what its lines of sight read: the bit lines and
+            // their slides, and the map's stride table.
+            (
+                "lazy-theta-star",
+                grid_prepare,
+                time(|| grid.lazy_theta_star(&map, start, goal))?,
             ),
         ];
         for (name, prepare, (first_us, best, path)) in rows {
