@@ -167,6 +167,19 @@ impl GridSearch {
     }
 }
 
+/// The directions whose bits are set in `bits` (bit `d` for [`DIRS`]`[d]`), lowest first.
+#[inline(always)]
+pub(super) fn directions(bits: u8) -> impl Iterator<Item = usize> {
+    let mut rest = bits;
+    std::iter::from_fn(move || {
+        (rest != 0).then(|| {
+            let d = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            d
+        })
+    })
+}
+
 /// The eight moves `(dx, dy, cost)`: E, W, N, S, then the diagonals NE, NW, SE, SW.
 pub(super) const DIRS: [(i32, i32, f64); 8] = [
     (1, 0, 1.0),

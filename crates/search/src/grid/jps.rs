@@ -12,7 +12,8 @@ use envmap::GridMap;
 
 use super::bits::{BitGrid, Lines, PAD};
 use super::{
-    CLOSED, Connectivity, DIRS, Fixed, GridKey, GridOptions, GridPath, GridSearchError, Limit, NONE,
+    CLOSED, Connectivity, DIRS, Fixed, GridKey, GridOptions, GridPath, GridSearchError, Limit,
+    NONE, directions,
 };
 use crate::SearchStats;
 use crate::heap::{QuadHeap, Upper};
@@ -378,10 +379,7 @@ impl JumpPointSearch {
             let toward = TOWARD[octant((x, y), t)];
             let mut goal_found = false;
             'jumps: for mask in [kept & toward, kept & !toward] {
-                let mut rest = mask;
-                while rest != 0 {
-                    let d = rest.trailing_zeros() as usize;
-                    rest &= rest - 1;
+                for d in directions(mask) {
                     let (dx, dy) = (DIRS[d].0 as isize, DIRS[d].1 as isize);
                     if dx == 0 || dy == 0 {
                         found.extend(self.bits.jump_straight((x, y), (dx, dy), t));

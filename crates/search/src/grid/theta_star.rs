@@ -197,11 +197,13 @@ impl GridSearch {
             // overlap it (it writes none of them).
             let mask = self.theta_moves(p);
             let mut stamps = [0; 8];
+            let mut shut = 0u8;
             for (d, &(dx, dy, _)) in DIRS.iter().enumerate() {
                 stamps[d] = self.theta_stamps[self.moved(p, (dx, dy)) as usize];
+                shut |= u8::from(stamps[d] == closed) << d;
             }
             if lazy {
-                self.lazy_set_parent(p, sight);
+                self.lazy_set_parent(p, mask & shut, sight);
             }
             let g = f64::from_bits(self.theta_g[p as usize]);
             if p == t0 {
@@ -216,7 +218,7 @@ impl GridSearch {
             stats.expansions += 1;
             self.theta_expand(
                 (p, g),
-                (mask, stamps),
+                (mask & !shut, stamps),
                 &mut stats,
                 (euclid, sight),
                 lazy,
@@ -228,25 +230,20 @@ impl GridSearch {
 
     /// Lazy Theta*'s check when `p` is expanded: if `p` does not see the parent it was
     /// given, its parent becomes the expanded grid neighbour through which it is cheapest
-    /// (one exists: the cell whose expansion reached `p`).
-    fn lazy_set_parent(&mut self, p: u32, sight: &[u8]) {
+    /// (one exists: the cell whose expansion reached `p`). `shut`: the legal moves from
+    /// `p` to expanded cells, one bit per direction of [`DIRS`].
+    fn lazy_set_parent(&mut self, p: u32, shut: u8, sight: &[u8]) {
         let pp = self.theta_parents[p as usize];
         if pp == NONE || self.line_of_sight(pp, p, sight) {
             return;
         }
-        let closed = self.theta_generation | CLOSED;
-        let mask = self.theta_moves(p);
         let mut best = (f64::INFINITY, NONE);
-        for (d, &(dx, dy, c)) in DIRS.iter().enumerate() {
-            if mask & (1 << d) == 0 {
-                continue;
-            }
+        for d in directions(shut) {
+            let (dx, dy, c) = DIRS[d];
             let q = self.moved(p, (dx, dy));
-            if self.theta_stamps[q as usize] == closed {
-                let via = f64::from_bits(self.theta_g[q as usize]) + c;
-                if via < best.0 {
-                    best = (via, q);
-                }
+            let via = f64::from_bits(self.theta_g[q as usize]) + c;
+            if via < best.0 {
+                best = (via, q);
             }
         }
         self.theta_g[p as usize] = best.0.to_bits();
@@ -297,13 +294,14 @@ impl GridSearch {
     /// Theta*'s expansion: for each legal grid move p -> q, take q's parent to be p's
     /// parent when it sees q (path 2 of the paper), else p (path 1). With `lazy`, p's
     /// parent is taken without the test, which q's own expansion makes
-    /// ([`lazy_set_parent`](Self::lazy_set_parent)). `g`: p's cost; `mask`: its legal
-    /// moves; `stamps`: its neighbours' stamps, one per direction of [`DIRS`] (read by the
-    /// caller). `taken`: the heap's root is `p`'s own entry, which the first push replaces.
+    /// ([`lazy_set_parent`](Self::lazy_set_parent)). `g`: p's cost; `live`: its legal
+    /// moves to cells not yet expanded, one bit per direction of [`DIRS`] (walked as set
+    /// bits: a test per direction was a branch taken at random); `stamps`: its neighbours'
+    /// stamps, one per direction (read by the caller). `taken`: the heap's root is `p`'s own entry, which the first push replaces.
     pub(super) fn theta_expand(
         &mut self,
         (p, g): (u32, f64),
-        (mask, stamps): (u8, [u32; 8]),
+        (live, stamps): (u8, [u32; 8]),
         stats: &mut SearchStats,
         (h, sight): (impl Fn(u32, u32) -> f64, &[u8]),
         lazy: bool,
@@ -335,17 +333,12 @@ impl GridSearch {
             );
             gpp + (ex * ex + ey * ey).sqrt()
         };
-        for (d, &(dx, dy, c)) in DIRS.iter().enumerate() {
-            if mask & (1 << d) == 0 {
-                continue;
-            }
+        for d in directions(live) {
+            let (dx, dy, c) = DIRS[d];
             let q = self.moved(p, (dx, dy));
             let (qx, qy) = (px.wrapping_add_signed(dx), py.wrapping_add_signed(dy));
             let qu = q as usize;
             let st = stamps[d];
-            if st == open | CLOSED {
-                continue;
-            }
             // Lazy: q would get p's parent at the cost it already has through it.
             if lazy && st == open && pp != NONE && self.theta_parents[qu] == pp {
                 continue;
