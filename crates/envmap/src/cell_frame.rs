@@ -82,8 +82,11 @@ impl CellFrame {
     #[inline]
     pub fn cell_of(&self, p: Point2) -> Option<(usize, usize)> {
         let (u, v) = self.coords(p);
-        (u >= 0.0 && v >= 0.0 && (u as usize) < self.width && (v as usize) < self.height)
-            .then_some((u as usize, v as usize))
+        // Bounded as floats, then truncated: for `u >= 0` the truncation is below a whole
+        // `width` exactly when `u` is, so these are the cells `(u as usize) < width` gave,
+        // without a saturating conversion to unsigned (a dozen instructions) per test.
+        let inside = (u >= 0.0) & (v >= 0.0) & (u < self.width as f64) & (v < self.height as f64);
+        inside.then_some((u as i64 as usize, v as i64 as usize))
     }
 
     /// The row-major index (rows from the bottom) of the cell holding `p`.
@@ -126,4 +129,52 @@ fn span(lo: f64, hi: f64, o: f64, res: f64, n: usize) -> Range<usize> {
     let a = ((lo - o) / res).floor().max(0.0) as usize;
     let b = (((hi - o) / res).floor().max(-1.0) + 1.0).min(n as f64) as usize;
     a..b.max(a)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The cell of `p` by floors: `(floor(u), floor(v))` when both are within the grid.
+    fn floored(frame: &CellFrame, p: Point2) -> Option<(usize, usize)> {
+        let (u, v) = frame.coords(p);
+        let (i, j) = (u.floor(), v.floor());
+        (i >= 0.0 && j >= 0.0 && i < frame.width as f64 && j < frame.height as f64)
+            .then_some((i as usize, j as usize))
+    }
+
+    proptest! {
+        /// Points anywhere, on cell edges and on the grid's own edges included (whole and
+        /// half cells from the origin, and a hair either side).
+        #[test]
+        fn cell_of_is_the_floor_within_the_grid(
+            (w, h) in (1usize..40, 1usize..40),
+            res in prop_oneof![Just(0.05), Just(0.5), Just(1.0), 0.01f64..2.0],
+            (ox, oy) in (-5.0f64..5.0, -5.0f64..5.0),
+            (a, b) in (-4i32..180, -4i32..180),
+            nudge in prop_oneof![Just(0.0), Just(-1e-12), Just(1e-12), -0.5f64..0.5],
+        ) {
+            let frame = CellFrame::new(Point2::new(ox, oy), res, w, h);
+            let p = Point2::new(
+                ox + (f64::from(a) / 4.0 + nudge) * res,
+                oy + (f64::from(b) / 4.0 - nudge) * res,
+            );
+            prop_assert_eq!(frame.cell_of(p), floored(&frame, p));
+        }
+    }
+
+    #[test]
+    fn cell_of_rejects_what_is_not_a_number_or_far_away() {
+        let frame = CellFrame::new(Point2::origin(), 0.5, 4, 2);
+        for p in [
+            Point2::new(f64::NAN, 0.2),
+            Point2::new(0.2, f64::INFINITY),
+            Point2::new(-0.0, 1e300),
+            Point2::new(-1e-300, 0.2),
+        ] {
+            assert_eq!(frame.cell_of(p), None, "{p:?}");
+        }
+        assert_eq!(frame.cell_of(Point2::new(-0.0, -0.0)), Some((0, 0)));
+    }
 }
