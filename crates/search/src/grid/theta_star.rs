@@ -194,7 +194,7 @@ impl GridSearch {
             }
             self.theta_stamps[p as usize] = closed;
             // The neighbours' stamps, read before the line of sight so that their loads
-            // overlap it (it writes none of them).
+            // overlap it (it writes none of them), and which of them are closed.
             let mask = self.theta_moves(p);
             let mut stamps = [0; 8];
             let mut shut = 0u8;
@@ -297,7 +297,8 @@ impl GridSearch {
     /// ([`lazy_set_parent`](Self::lazy_set_parent)). `g`: p's cost; `live`: its legal
     /// moves to cells not yet expanded, one bit per direction of [`DIRS`] (walked as set
     /// bits: a test per direction was a branch taken at random); `stamps`: its neighbours'
-    /// stamps, one per direction (read by the caller). `taken`: the heap's root is `p`'s own entry, which the first push replaces.
+    /// stamps, one per direction (read by the caller). `taken`: the heap's root is `p`'s
+    /// own entry, which the first push replaces.
     pub(super) fn theta_expand(
         &mut self,
         (p, g): (u32, f64),
