@@ -332,8 +332,10 @@ impl GridMap {
         if !(u >= 0.0 && v >= 0.0) {
             return None;
         }
-        // Truncation is the floor here (u and v are not negative), without libm's call.
-        let (i, j) = (u as usize, v as usize);
+        // Truncation is the floor here (u and v are not negative), without libm's call;
+        // through `i64` (a few instructions, where a conversion to unsigned is a dozen),
+        // which differs from `as usize` only past 2^63, far outside any map.
+        let (i, j) = (u as i64 as usize, v as i64 as usize);
         // A point on the upper or right border belongs to the last cell.
         let i = if i == self.width && u == self.width as f64 {
             i - 1

@@ -192,8 +192,16 @@ pub fn open_stretch(
     loop {
         // A point on the map's upper or right edge is in the last cell, whose stride
         // holds for its closed square.
-        let i = ((pu + eu * t) as usize).min(w - 1);
-        let j = ((pv + ev * t) as usize).min(h - 1);
+        // Through `i64` (a few instructions, where a conversion to unsigned is a dozen):
+        // below 0 and NaN give 0, as `as usize` does, and the rest the same once clamped.
+        let i = ((pu + eu * t) as i64)
+            .max(0)
+            .unsigned_abs()
+            .min(w as u64 - 1) as usize;
+        let j = ((pv + ev * t) as i64)
+            .max(0)
+            .unsigned_abs()
+            .min(h as u64 - 1) as usize;
         let stride = strides[j * w + i];
         if stride < 3 {
             return t;
@@ -304,8 +312,10 @@ impl GridMap {
         if !(u >= 0.0 && v >= 0.0 && u < self.width() as f64 && v < self.height() as f64) {
             return None;
         }
-        // Truncation is the floor here (u and v are not negative), without libm's call.
-        let (i, j) = (u as usize, v as usize);
+        // Truncation is the floor here (u and v are not negative), without libm's call;
+        // through `i64`, whose conversion is a few instructions where one to unsigned is a
+        // dozen (the same values: u and v are below the map's size).
+        let (i, j) = (u as i64 as usize, v as i64 as usize);
         let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && k as f64 + 1.0 - t > 1e-6;
         (inside(u, i) && inside(v, j)).then_some((i, j))
     }
