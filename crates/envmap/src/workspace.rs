@@ -192,16 +192,10 @@ pub fn open_stretch(
     loop {
         // A point on the map's upper or right edge is in the last cell, whose stride
         // holds for its closed square.
-        // Through `i64` (a few instructions, where a conversion to unsigned is a dozen):
-        // below 0 and NaN give 0, as `as usize` does, and the rest the same once clamped.
-        let i = ((pu + eu * t) as i64)
-            .max(0)
-            .unsigned_abs()
-            .min(w as u64 - 1) as usize;
-        let j = ((pv + ev * t) as i64)
-            .max(0)
-            .unsigned_abs()
-            .min(h as u64 - 1) as usize;
+        let (i, j) = (
+            floor_index(pu + eu * t, 0, w),
+            floor_index(pv + ev * t, 0, h),
+        );
         let stride = strides[j * w + i];
         if stride < 3 {
             return t;
