@@ -87,6 +87,7 @@ mod crowd;
 mod engine;
 mod explore;
 mod grid_cast;
+mod half_planes;
 mod kinematics;
 mod laser;
 mod map_crowd;

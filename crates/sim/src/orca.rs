@@ -1,9 +1,6 @@
 //! People who avoid each other by optimal reciprocal collision avoidance ([`Orca`]), the
-//! velocity-obstacle model of RVO2, solved by the `dodgy_2d` crate.
+//! velocity-obstacle model of RVO2.
 
-use std::borrow::Cow;
-
-use dodgy_2d::{Agent, AvoidanceOptions, Obstacle, Vec2};
 use envmap::GridMap;
 use hyplan_core::{Point2, Zone};
 use nalgebra::Vector2;
@@ -11,6 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::boxgrid::{self, BoxGrid, Marks};
 use crate::grid_cast::GridRays;
+use crate::half_planes::{self, Body, HalfPlane, agent_half_plane, edge_half_plane};
 use crate::people::{Stepped, Stepper, discs_ahead, on_stage};
 use crate::social_force::{KEEP_RIGHT, heading};
 use crate::world::{Disc, Person, Segment, StaticWorld, pt};
@@ -153,7 +151,7 @@ struct Walker {
 /// lie on, to find those a person sees.
 #[derive(Debug, Clone, Default)]
 struct Walls {
-    obstacles: Vec<Obstacle>,
+    obstacles: Vec<Wall>,
     /// The bounding box of each obstacle, (min, max).
     bounds: Vec<(Point2, Point2)>,
     /// The bounding box of each obstacle that is not a loaded map's cell edge, in buckets.
@@ -230,11 +228,58 @@ impl CellEdges {
     }
 }
 
-/// Vertices of the polygon standing in for a round obstacle.
-const DISC_SIDES: usize = 12;
+/// A wall as ORCA sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Wall {
+    /// An edge, solid on its left (from `a` to `b`) and open on its right.
+    Edge { a: Point2, b: Point2 },
+    /// A round obstacle.
+    Disc { center: Point2, radius: f64 },
+}
 
-fn vec2(p: Point2) -> Vec2 {
-    Vec2::new(p.x as f32, p.y as f32)
+impl Wall {
+    /// The bounding box, (min, max).
+    fn bounds(&self) -> (Point2, Point2) {
+        match *self {
+            Self::Edge { a, b } => (
+                Point2::new(a.x.min(b.x), a.y.min(b.y)),
+                Point2::new(a.x.max(b.x), a.y.max(b.y)),
+            ),
+            Self::Disc { center, radius } => (
+                center - Vector2::new(radius, radius),
+                center + Vector2::new(radius, radius),
+            ),
+        }
+    }
+
+    /// Whether this is an edge with `p` strictly on its solid side, for which ORCA draws no
+    /// half-plane (as RVO2 leaves such edges out of an agent's obstacle neighbours).
+    fn back_facing(&self, p: Point2) -> bool {
+        match *self {
+            Self::Edge { a, b } => (b - a).perp(&(p - a)) > 0.0,
+            Self::Disc { .. } => false,
+        }
+    }
+
+    /// The squared distance from `p` to the wall (non-negative, so its bits sort as the
+    /// value).
+    fn distance_sq(&self, p: Point2) -> f64 {
+        match *self {
+            Self::Edge { a, b } => {
+                let ab = b - a;
+                let t = if ab.norm_squared() > 0.0 {
+                    ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                (a + ab * t - p).norm_squared()
+            }
+            Self::Disc { center, radius } => {
+                let gap = ((p - center).norm() - radius).max(0.0);
+                gap * gap
+            }
+        }
+    }
 }
 
 impl Walls {
@@ -244,11 +289,8 @@ impl Walls {
     /// cells of about `cell` m.
     fn new(statics: &StaticWorld, cell: f64) -> Self {
         let mut obstacles = Vec::new();
-        // dodgy_2d's open polyline is solid on the left of its direction.
-        let open = |a: Point2, b: Point2| Obstacle::Open {
-            vertices: vec![vec2(a), vec2(b)],
-        };
-        let push_edge = |obstacles: &mut Vec<Obstacle>, s: &Segment, solid_left: Option<bool>| {
+        let open = |a: Point2, b: Point2| Wall::Edge { a, b };
+        let push_edge = |obstacles: &mut Vec<Wall>, s: &Segment, solid_left: Option<bool>| {
             if s.a == s.b {
                 return;
             }
@@ -281,17 +323,10 @@ impl Walls {
             cell_runs.push((s, first as u32, (obstacles.len() - first) as u32));
         }
         let cells_end = obstacles.len();
-        for d in &statics.discs {
-            // Counter-clockwise (solid inside), around the disc.
-            let out = d.radius / (std::f64::consts::PI / DISC_SIDES as f64).cos();
-            let vertices = (0..DISC_SIDES)
-                .map(|k| {
-                    let a = std::f64::consts::TAU * k as f64 / DISC_SIDES as f64;
-                    vec2(d.center + Vector2::new(a.cos(), a.sin()) * out)
-                })
-                .collect();
-            obstacles.push(Obstacle::Closed { vertices });
-        }
+        obstacles.extend(statics.discs.iter().map(|d| Wall::Disc {
+            center: d.center,
+            radius: d.radius,
+        }));
         let cell_edges = statics
             .grid
             .as_ref()
@@ -299,20 +334,7 @@ impl Walls {
             .unwrap_or_default();
         let (cell_boxed, boxed): (Vec<u32>, Vec<u32>) = (0..obstacles.len() as u32)
             .partition(|&k| (shapes_end..cells_end).contains(&(k as usize)));
-        let bounds: Vec<(Point2, Point2)> = obstacles
-            .iter()
-            .map(|o| {
-                let (Obstacle::Open { vertices } | Obstacle::Closed { vertices }) = o;
-                let mut lo = Point2::new(f64::INFINITY, f64::INFINITY);
-                let mut hi = Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-                for v in vertices {
-                    let (x, y) = (f64::from(v.x), f64::from(v.y));
-                    lo = Point2::new(lo.x.min(x), lo.y.min(y));
-                    hi = Point2::new(hi.x.max(x), hi.y.max(y));
-                }
-                (lo, hi)
-            })
-            .collect();
+        let bounds: Vec<(Point2, Point2)> = obstacles.iter().map(Wall::bounds).collect();
         let boxes = |of: &[u32]| of.iter().map(|&k| bounds[k as usize]).collect();
         Self {
             grid: BoxGrid::new(boxes(&boxed), cell),
@@ -326,7 +348,7 @@ impl Walls {
     }
 
     /// The obstacles near `p`, nearest first (ties to the lower index), into
-    /// `out.indices`, but for single edges that `p` is behind ([`back_facing`]): those
+    /// `out.indices`, but for edges that `p` is behind ([`Wall::back_facing`]): those
     /// whose bounding box comes within `reach`; of a loaded map's cell edges, those within
     /// [`CELL_EDGES_ALL_WITHIN`] and those of `seen` ([`Walls::seen`]) within `reach`.
     /// `nearby`: the candidates of the person at `p` (found again when they have moved
@@ -338,13 +360,12 @@ impl Walls {
         if nearby.stale(p, reach) {
             self.candidates(p, reach, nearby, out);
         }
-        let at = vec2(p);
         let (obstacles, keyed) = (&self.obstacles, &mut out.keyed);
-        let reach_sq = (reach * reach) as f32;
+        let reach_sq = reach * reach;
         let mut take = |k: u32| {
             let obstacle = &obstacles[k as usize];
-            if !back_facing(obstacle, at) {
-                keyed.push((distance_sq(obstacle, at).to_bits(), k));
+            if !obstacle.back_facing(p) {
+                keyed.push((obstacle.distance_sq(p).to_bits(), k));
             }
         };
         // The buckets' own test, on the same bounds: the same obstacles as a query of
@@ -361,8 +382,8 @@ impl Walls {
         }
         for &k in seen {
             let obstacle = &obstacles[k as usize];
-            let d = distance_sq(obstacle, at);
-            if d <= reach_sq && !back_facing(obstacle, at) {
+            let d = obstacle.distance_sq(p);
+            if d <= reach_sq && !obstacle.back_facing(p) {
                 keyed.push((d.to_bits(), k));
             }
         }
@@ -380,18 +401,13 @@ impl Walls {
     /// a point [`Nearby::MOVED`] from `p`.
     fn candidates(&self, p: Point2, reach: f64, nearby: &mut Nearby, out: &mut Near) {
         let slack = Nearby::SLACK;
-        let behind = |k: u32| match &self.obstacles[k as usize] {
-            Obstacle::Open { vertices } if vertices.len() == 2 => {
-                let (a, b) = (vertices[0], vertices[1]);
-                let (a, e) = (
-                    Point2::new(f64::from(a.x), f64::from(a.y)),
-                    Vector2::new(f64::from(b.x - a.x), f64::from(b.y - a.y)),
-                );
+        let behind = |k: u32| match self.obstacles[k as usize] {
+            Wall::Edge { a, b } => {
                 // On the solid (left) side of the edge's line, by more than the slack.
-                let left = e.perp(&(p - a));
-                left > slack * e.norm()
+                let e = b - a;
+                e.perp(&(p - a)) > slack * e.norm()
             }
-            _ => false,
+            Wall::Disc { .. } => false,
         };
         nearby.drawn.clear();
         nearby.cells.clear();
@@ -529,51 +545,12 @@ struct Near {
     /// The obstacles near the query point, nearest first.
     indices: Vec<u32>,
     /// (squared distance's bits, index) of each, before sorting.
-    keyed: Vec<(u32, u32)>,
+    keyed: Vec<(u64, u32)>,
     /// The bucket queries' own.
     marks: Marks,
     cell_marks: Marks,
     /// The rays' ranges to the loaded map's cells.
     ranges: Vec<f64>,
-}
-
-/// Whether `obstacle` is a single edge with `p` strictly on its solid side, for
-/// which dodgy_2d draws no half-plane: by its own test, in its own `f32` arithmetic, so
-/// that leaving the edge out changes nothing. RVO2 leaves such edges out of an agent's
-/// obstacle neighbours too.
-fn back_facing(obstacle: &Obstacle, p: Vec2) -> bool {
-    match obstacle {
-        Obstacle::Open { vertices } if vertices.len() == 2 => {
-            let (left, right) = (vertices[0], vertices[1]);
-            let from_left = -(left - p);
-            let edge = right - left;
-            from_left.x * edge.y - from_left.y * edge.x < 0.0
-        }
-        _ => false,
-    }
-}
-
-/// The squared distance from `p` to `obstacle`'s edges (non-negative, so its bits sort
-/// as the value).
-fn distance_sq(obstacle: &Obstacle, p: Vec2) -> f32 {
-    let (vertices, closed) = match obstacle {
-        Obstacle::Open { vertices } => (vertices, false),
-        Obstacle::Closed { vertices } => (vertices, true),
-    };
-    let n = vertices.len();
-    let edges = if closed { n } else { n.saturating_sub(1) };
-    (0..edges)
-        .map(|k| {
-            let (a, b) = (vertices[k], vertices[(k + 1) % n]);
-            let ab = b - a;
-            let t = if ab.length_squared() > 0.0 {
-                ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            (a + ab * t).distance_squared(p)
-        })
-        .fold(f32::INFINITY, f32::min)
 }
 
 /// People who avoid each other by optimal reciprocal collision avoidance, ORCA (J. van
@@ -689,6 +666,10 @@ pub struct Orca<'w> {
     next: Vec<Vector2<f64>>,
     /// The walls near the person being stepped (scratch).
     near: Near,
+    /// The half-planes of the person being stepped, and the linear program's own
+    /// (scratch).
+    planes: Vec<HalfPlane>,
+    lp_scratch: Vec<HalfPlane>,
     /// Each person's candidate walls.
     nearby: Vec<Nearby>,
     /// The loaded map's cell edges each person's rays hit at their last look
@@ -744,6 +725,8 @@ impl<'w> Orca<'w> {
             walkers: Vec::with_capacity(people.len()),
             next: vec![Vector2::zeros(); people.len()],
             near: Near::default(),
+            planes: Vec::new(),
+            lp_scratch: Vec::new(),
             nearby: vec![Nearby::default(); people.len()],
             order: Vec::new(),
             seen: vec![Vec::new(); people.len()],
@@ -771,28 +754,18 @@ impl<'w> Orca<'w> {
 }
 
 /// Neighbour `other` as agent `me` is to see it: moved by `shift` (the side preference),
-/// and, when their centres then coincide and they do not move apart (where dodgy_2d would
-/// draw a random direction), 1 mm further along x (`other_after`: the other has the
-/// higher index, so it is seen to the right; else to the left).
-fn seen<'a>(
-    me: &Agent,
-    other: &'a Agent,
-    shift: Vec2,
-    other_after: bool,
-    time_step: f32,
-) -> Cow<'a, Agent> {
-    let mut moved = other.clone();
+/// and, when their centres then coincide and they do not move apart (where no direction
+/// parts them), 1 mm further along x (`other_after`: the other has the higher index, so
+/// it is seen to the right; else to the left).
+fn seen(me: &Body, other: &Body, shift: Vector2<f64>, other_after: bool, time_step: f64) -> Body {
+    let mut moved = *other;
     moved.position += shift;
     let to_other = moved.position - me.position;
     let drift = (me.velocity - other.velocity) - to_other / time_step;
-    if to_other.length_squared() <= 1e-12 && drift.length_squared() <= 1e-12 {
+    if to_other.norm_squared() <= 1e-12 && drift.norm_squared() <= 1e-12 {
         moved.position.x += if other_after { 1e-3 } else { -1e-3 };
     }
-    if moved == *other {
-        Cow::Borrowed(other)
-    } else {
-        Cow::Owned(moved)
-    }
+    moved
 }
 
 impl Stepped for Orca<'_> {
@@ -830,40 +803,32 @@ impl Stepped for Orca<'_> {
             );
         }
         let n = self.walkers.len();
-        let mut agents: Vec<Agent> = self
+        let mut agents: Vec<Body> = self
             .walkers
             .iter()
             .zip(self.people)
-            .map(|(w, p)| Agent {
-                position: vec2(w.pos),
-                velocity: Vec2::new(w.vel.x as f32, w.vel.y as f32),
-                radius: (p.radius + self.params.safety_space) as f32,
-                avoidance_responsibility: 1.0,
+            .map(|(w, p)| Body {
+                position: w.pos.coords,
+                velocity: w.vel,
+                radius: p.radius + self.params.safety_space,
             })
             .collect();
         if self.params.sees_robot {
-            agents.push(Agent {
-                position: vec2(robot),
-                velocity: Vec2::new(robot_velocity.x as f32, robot_velocity.y as f32),
-                radius: (self.robot_radius + self.params.safety_space) as f32,
-                avoidance_responsibility: 0.0,
+            agents.push(Body {
+                position: robot.coords,
+                velocity: robot_velocity,
+                radius: self.robot_radius + self.params.safety_space,
             });
         }
-        // Each agent's position as the others measure it (from the `f32` it is handed
-        // to dodgy_2d as), and whether it is anyone's neighbour.
-        let sites: Vec<(f64, f64, bool)> = agents
-            .iter()
-            .enumerate()
-            .map(|(j, a)| {
-                let eligible = self.walkers.get(j).is_none_or(|w| w.on_stage);
-                (f64::from(a.position.x), f64::from(a.position.y), eligible)
-            })
+        // Whether each agent is anyone's neighbour.
+        let eligible: Vec<bool> = (0..agents.len())
+            .map(|j| self.walkers.get(j).is_none_or(|w| w.on_stage))
             .collect();
         // Nearest first, ties to the lower index: a squared distance is not negative, so
         // its bits order as it does, and (bits, index) packed in a `u128` order as both.
         let mut candidates: Vec<u128> = Vec::with_capacity(agents.len());
-        let mut neighbours: Vec<Cow<'_, Agent>> = Vec::with_capacity(agents.len());
-        let mut obstacles: Vec<Cow<'_, Obstacle>> = Vec::new();
+        let mut planes = std::mem::take(&mut self.planes);
+        let mut scratch = std::mem::take(&mut self.lp_scratch);
         let mut near = std::mem::take(&mut self.near);
         let cells = self.statics.grid_rays();
         let reach_sq = self.params.neighbour_distance * self.params.neighbour_distance;
@@ -891,13 +856,12 @@ impl Stepped for Orca<'_> {
                 self.next[k] = Vector2::zeros();
                 continue;
             }
-            let me = &agents[k];
+            let me = agents[k];
             let at = self.walkers[k].pos;
-            let left = Vec2::new(-facing.y as f32, facing.x as f32);
-            let keep_right = self.params.keep_right as f32;
+            let shift = Vector2::new(-facing.y, facing.x) * self.params.keep_right;
             // The nearest neighbours, ties to the lower index (the robot last): every agent
             // keyed, those out of reach past the others, in last step's order.
-            let m = sites.len();
+            let m = agents.len();
             let row = (m <= ORDER_CAP).then(|| {
                 if self.order.len() != n * m {
                     self.order = (0..n).flat_map(|_| 0..m as u32).collect();
@@ -905,9 +869,8 @@ impl Stepped for Orca<'_> {
                 &mut self.order[k * m..(k + 1) * m]
             });
             let key = |j: usize| {
-                let (x, y, eligible) = sites[j];
-                let d_sq = Vector2::new(x - at.x, y - at.y).norm_squared();
-                if j != k && eligible && d_sq <= reach_sq {
+                let d_sq = (agents[j].position - at.coords).norm_squared();
+                if j != k && eligible[j] && d_sq <= reach_sq {
                     u128::from(d_sq.to_bits()) << 64 | j as u128
                 } else {
                     OUT_OF_REACH | j as u128
@@ -927,15 +890,6 @@ impl Stepped for Orca<'_> {
                     candidates.sort_unstable();
                 }
             }
-            neighbours.clear();
-            neighbours.extend(
-                candidates
-                    .iter()
-                    .take_while(|&&c| c < OUT_OF_REACH)
-                    .take(self.params.max_neighbours)
-                    .map(|&key| key as u64 as usize)
-                    .map(|j| seen(me, &agents[j], left * keep_right, j > k, h as f32)),
-            );
             let reach = self.reach(k);
             if let Some(cells) = &cells
                 && (self.steps + k as u64).is_multiple_of(LOOK_EVERY)
@@ -945,31 +899,60 @@ impl Stepped for Orca<'_> {
             }
             self.walls
                 .near(at, reach, &self.seen[k], &mut self.nearby[k], &mut near);
-            obstacles.clear();
-            obstacles.extend(
-                near.indices
-                    .iter()
-                    .map(|&i| Cow::Borrowed(&self.walls.obstacles[i as usize])),
-            );
-            let options = AvoidanceOptions {
-                obstacle_margin: (p.radius + self.params.safety_space) as f32,
-                time_horizon: self.params.time_horizon as f32,
-                obstacle_time_horizon: self.params.obstacle_time_horizon as f32,
-            };
-            let v = me.compute_avoiding_velocity(
-                &neighbours,
-                &obstacles,
-                Vec2::new(preferred.x as f32, preferred.y as f32),
-                max_speed as f32,
-                h as f32,
-                &options,
-            );
-            self.next[k] = if v.is_finite() {
-                Vector2::new(f64::from(v.x), f64::from(v.y))
+            // The walls' half-planes first, nearest first (an edge deep past a nearer
+            // one's half-plane is left out), then the neighbours'.
+            let margin = p.radius + self.params.safety_space;
+            let horizon = self.params.obstacle_time_horizon;
+            planes.clear();
+            for &i in &near.indices {
+                let plane = match self.walls.obstacles[i as usize] {
+                    Wall::Edge { a, b } => edge_half_plane(
+                        me.position,
+                        me.velocity,
+                        margin,
+                        (a.coords, b.coords),
+                        horizon,
+                        &planes,
+                    ),
+                    Wall::Disc { center, radius } => {
+                        let disc = Body {
+                            position: center.coords,
+                            velocity: Vector2::zeros(),
+                            radius,
+                        };
+                        agent_half_plane(&me, &disc, 1.0, horizon, h)
+                    }
+                };
+                planes.extend(plane);
+            }
+            let hard = planes.len();
+            for &c in candidates
+                .iter()
+                .take_while(|&&c| c < OUT_OF_REACH)
+                .take(self.params.max_neighbours)
+            {
+                let j = c as u64 as usize;
+                let other = seen(&me, &agents[j], shift, j > k, h);
+                // People share the avoidance; of the robot, who does not run ORCA, they
+                // take it all.
+                let share = if j < n { 0.5 } else { 1.0 };
+                planes.extend(agent_half_plane(
+                    &me,
+                    &other,
+                    share,
+                    self.params.time_horizon,
+                    h,
+                ));
+            }
+            let v = half_planes::solve(&planes, hard, max_speed, preferred, &mut scratch);
+            self.next[k] = if v.iter().all(|c| c.is_finite()) {
+                v
             } else {
                 Vector2::zeros()
             };
         }
+        self.planes = planes;
+        self.lp_scratch = scratch;
         self.near = near;
         self.steps += 1;
         for (w, v) in self.walkers.iter_mut().zip(&self.next) {
@@ -1063,12 +1046,10 @@ mod tests {
         // 4 box edges, 2 sides of the loose edge, 4 cell edges.
         assert_eq!(walls.obstacles.len(), 10);
         let solid_left_at = |k: usize, inside: Point2| {
-            let Obstacle::Open { vertices } = &walls.obstacles[k] else {
+            let Wall::Edge { a, b } = walls.obstacles[k] else {
                 panic!("{:?}", walls.obstacles[k])
             };
-            let (a, b) = (vertices[0], vertices[1]);
-            let c = Vec2::new(inside.x as f32, inside.y as f32);
-            (b - a).perp_dot(c - a) > 0.0
+            (b - a).perp(&(inside - a)) > 0.0
         };
         for k in 0..4 {
             assert!(solid_left_at(k, Point2::new(6.0, 6.0)), "box edge {k}");
@@ -1092,10 +1073,10 @@ mod tests {
         // Below the box: its bottom edge; its sides are within reach but seen from behind.
         let below = near(Point2::new(6.0, 5.2), 0.6);
         assert_eq!(below.len(), 1);
-        let Obstacle::Open { vertices } = &walls.obstacles[below[0] as usize] else {
+        let Wall::Edge { a, b } = walls.obstacles[below[0] as usize] else {
             panic!()
         };
-        assert!(vertices.iter().all(|v| v.y == 5.5), "{vertices:?}");
+        assert!(a.y == 5.5 && b.y == 5.5, "{a} {b}");
         // One side of the loose edge, the one facing the point.
         let beside = near(Point2::new(20.5, 0.5), 0.6);
         assert_eq!(beside.len(), 1);
@@ -1225,17 +1206,16 @@ mod tests {
                 places += 1;
                 walls.seen(p, REACH, &rays, &mut ranges, &mut seen);
                 walls.near(p, REACH, &seen, &mut Nearby::default(), &mut near);
-                let at = vec2(p);
                 let mut last = 0.0;
                 for &k in &near.indices {
-                    let d = distance_sq(&walls.obstacles[k as usize], at);
+                    let d = walls.obstacles[k as usize].distance_sq(p);
                     assert!(d >= last, "nearest first");
                     last = d;
                 }
                 handed += near.indices.len();
                 for (k, o) in walls.obstacles.iter().enumerate() {
-                    let d = f64::from(distance_sq(o, at)).sqrt();
-                    if back_facing(o, at) || d > REACH {
+                    let d = o.distance_sq(p).sqrt();
+                    if o.back_facing(p) || d > REACH {
                         continue;
                     }
                     in_reach += 1;
