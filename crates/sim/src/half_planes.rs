@@ -38,7 +38,13 @@ impl HalfPlane {
     /// `centre`, tangent there, with `centre` outside: velocities beyond the circle's
     /// tangent at the point nearest `v` (`v` must not be `centre`; `None` when it is).
     fn tangent_facing(centre: V, radius: f64, v: V) -> Option<Self> {
-        let away = (v - centre).try_normalize(0.0)?;
+        let from = v - centre;
+        let length_sq = from.norm_squared();
+        if length_sq.is_nan() || length_sq <= 0.0 {
+            return None;
+        }
+        // One square root and one division (a step takes hundreds of these).
+        let away = from * (1.0 / length_sq.sqrt());
         Some(Self {
             point: centre + away * radius,
             direction: V::new(away.y, -away.x),
@@ -46,15 +52,14 @@ impl HalfPlane {
     }
 }
 
-/// The left and right legs (unit directions from the origin) of the cone of velocities
-/// that head into the disc of radius `r` around `x`, seen from the origin outside it.
-fn legs(x: V, r: f64) -> (V, V) {
+/// A leg (a unit direction from the origin) of the cone of velocities that head into the
+/// disc of radius `r` around `x`, seen from the origin outside it: the left one for
+/// `side` 1, the right one for -1 (`x` turned toward that side until tangent).
+fn leg(x: V, r: f64, side: f64) -> V {
     let d_sq = x.norm_squared();
-    let leg = (d_sq - r * r).max(0.0).sqrt();
-    (
-        V::new(x.x * leg - x.y * r, x.x * r + x.y * leg) / d_sq,
-        V::new(x.x * leg + x.y * r, -x.x * r + x.y * leg) / d_sq,
-    )
+    let along = (d_sq - r * r).max(0.0).sqrt();
+    let across = side * r;
+    V::new(x.x * along - x.y * across, x.x * across + x.y * along) * (1.0 / d_sq)
 }
 
 /// A body as ORCA sees it.
@@ -71,6 +76,7 @@ pub(crate) struct Body {
 /// the velocity obstacle, and the half-plane through `me.velocity + share u` square to
 /// it. Bodies already in contact are pushed apart within `step` seconds. `None` where
 /// no direction is defined (the relative velocity exactly on the obstacle's apex).
+#[inline]
 pub(crate) fn agent_half_plane(
     me: &Body,
     other: &Body,
@@ -84,21 +90,24 @@ pub(crate) fn agent_half_plane(
     let d_sq = p.norm_squared();
     let (direction, u) = if d_sq > r * r {
         // From the centre of the cut-off disc (the other's body, scaled by the horizon).
-        let w = v - p / horizon;
+        let scale = 1.0 / horizon;
+        let w = v - p * scale;
         let along = w.dot(&p);
         if along < 0.0 && along * along > r * r * w.norm_squared() {
             // Nearest the cut-off disc.
-            let edge = HalfPlane::tangent_facing(p / horizon, r / horizon, v)?;
+            let edge = HalfPlane::tangent_facing(p * scale, r * scale, v)?;
             (edge.direction, edge.point - v)
         } else {
-            // Nearest a leg of the cone.
-            let (left, right) = legs(p, r);
-            let direction = if cross(p, w) > 0.0 { left } else { -right };
+            // Nearest a leg of the cone: the left one when `w` is left of the centres'
+            // line, the right one (turned to keep the obstacle on the right) else.
+            let side = if cross(p, w) > 0.0 { 1.0 } else { -1.0 };
+            let direction = leg(p, r, side) * side;
             (direction, direction * v.dot(&direction) - v)
         }
     } else {
         // In contact: out of the other's body within one step.
-        let edge = HalfPlane::tangent_facing(p / step, r / step, v)?;
+        let scale = 1.0 / step;
+        let edge = HalfPlane::tangent_facing(p * scale, r * scale, v)?;
         (edge.direction, edge.point - v)
     };
     Some(HalfPlane {
@@ -162,8 +171,7 @@ pub(crate) fn edge_half_plane(
     } else {
         (a, b)
     };
-    let (left_leg, _) = legs(from_a, radius);
-    let (_, right_leg) = legs(to_b, radius);
+    let (left_leg, right_leg) = (leg(from_a, radius, 1.0), leg(to_b, radius, -1.0));
     let (left_cut, right_cut) = (from_a / horizon, to_b / horizon);
     let degenerate = from_a == to_b;
     let cut = right_cut - left_cut;
@@ -314,8 +322,7 @@ fn least_violating(
             scratch.push(HalfPlane { point, direction });
         }
         // Farthest into `h`; by construction feasible, so a failure (rounding) keeps `v`.
-        if let Ok(better) = incremental(scratch, speed, Goal::Farthest(left_of(h.direction)))
-        {
+        if let Ok(better) = incremental(scratch, speed, Goal::Farthest(left_of(h.direction))) {
             v = better;
         }
         worst = h.outside(v);
@@ -453,7 +460,10 @@ mod tests {
         }; // y >= 0.2
         for planes in [[right, left, person], [left, right, person]] {
             let v = solve_all(&planes, 2, 1.0, V::new(0.0, 1.0));
-            assert!(v.norm() <= 1.0 + 1e-12 && v.iter().all(|c| c.is_finite()), "{v}");
+            assert!(
+                v.norm() <= 1.0 + 1e-12 && v.iter().all(|c| c.is_finite()),
+                "{v}"
+            );
         }
     }
 

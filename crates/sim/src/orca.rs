@@ -1,5 +1,6 @@
 //! People who avoid each other by optimal reciprocal collision avoidance ([`Orca`]), the
-//! velocity-obstacle model of RVO2.
+//! velocity-obstacle model of RVO2, with its half-planes and linear program
+//! (`half_planes`).
 
 use envmap::GridMap;
 use hyplan_core::{Point2, Zone};
@@ -285,7 +286,7 @@ impl Wall {
 impl Walls {
     /// `statics` as ORCA obstacles: each outline edge one-sided (solid on its inward
     /// side), each loose edge two-sided, each edge of a loaded map's cells one-sided
-    /// (solid on its occupied cell's side), each disc a circumscribed polygon; bucketed in
+    /// (solid on its occupied cell's side), each disc a round obstacle; bucketed in
     /// cells of about `cell` m.
     fn new(statics: &StaticWorld, cell: f64) -> Self {
         let mut obstacles = Vec::new();
@@ -523,7 +524,7 @@ impl Nearby {
     /// single edge a person must be for it to be left out).
     const SLACK: f64 = 1.0;
     /// How far the person may move before the candidates are found again, m: half the
-    /// slack, so that the rounding of the tests never decides (an `f32` test of which
+    /// slack, so that the rounding of the tests never decides (a test of which
     /// side of an edge a point is on errs by far less than 0.5 m within 10^5 m of the
     /// origin).
     const MOVED: f64 = 0.5 * Self::SLACK;
@@ -570,8 +571,10 @@ struct Near {
 /// half-planes of their own, taken whole. The new velocity is the point of the
 /// intersection of the half-planes, within the speed cap, nearest to the preferred
 /// velocity (a 2-D linear program; when it is empty, the velocity that violates the
-/// people's half-planes least). The velocity obstacles, the half-planes and the linear
-/// program are `dodgy_2d`'s (`Agent::compute_avoiding_velocity`), a port of RVO2.
+/// people's half-planes least, keeping the walls'). The velocity obstacles, the
+/// half-planes and the linear program are computed as the paper and RVO2 do, in `f64`
+/// and in buffers kept between steps; a property test checks the velocities against
+/// `dodgy_2d`, an independent port of RVO2, on random people and walls.
 ///
 /// Each person walks their [`Person`] route: the way-points are successive goals, the
 /// preferred velocity is `speed` toward the next one (on a `Walk::Once` route,
@@ -589,27 +592,26 @@ struct Near {
 ///   [`crate::SocialForce`] does.
 /// - **Bodies.** Every radius is padded by `safety_space` (1 cm), as CrowdNav does: on
 ///   the edge of a velocity obstacle, unpadded bodies graze, a fraction of a millimetre
-///   inside each other after the `f32` arithmetic.
+///   inside each other after rounding.
 /// - **The robot.** When people see it, the robot is a neighbour of avoidance
 ///   responsibility 0: people take the whole avoidance (`u`, not `u / 2`), since the
 ///   robot does not run ORCA. When they do not see it, it is nobody's neighbour.
 /// - **Walls.** The static world's edges are one-sided open obstacles (solid on the side
 ///   of their outline's inside, or of a loaded map's occupied cell); loose edges are
-///   obstacles on both sides; discs are circumscribed 12-gons. Each person is given only
+///   obstacles on both sides; discs are standing round bodies (their own velocity
+///   obstacle, avoided whole, within the walls' horizon). Each person is given only
 ///   the obstacles within RVO2's obstacle range (`obstacle_time_horizon x max speed +
 ///   radius`), nearest first as in RVO2: drawn ones whose bounding box is in range,
 ///   found in a coarse grid built once; of a loaded map's cell edges, those within 1.5 m
 ///   and those one of 72 rays from the person (one every 5 degrees, cast on the map's
-///   cells every 0.2 s) hits in range. RVO2 leaves out an edge hidden behind a nearer one's
-///   half-plane; dodgy_2d does so only within one obstacle, and a real building's map
-///   puts hundreds of edges in range (about 400 front-facing within 7 m of a place of
-///   MIT building 31, `cell_edges_on_the_building_maps`), most behind other walls, each
-///   a half-plane of the linear program: the rays keep those a person sees (about 36).
-/// - **Numbers.** dodgy_2d computes in `f32`: positions are kept in `f64` and sent as
-///   `f32` (a few micrometres at 100 m from the origin). Two people whose centres
-///   coincide exactly (where dodgy_2d would draw a random direction) are seen 1 mm apart
-///   along x, the lower index on the left, so that positions stay a deterministic
-///   function of the scenario and of the robot's poses.
+///   cells every 0.2 s) hits in range. As in RVO2, an edge whose ends are both deep past
+///   a nearer wall's half-plane is left out; still, a real building's map puts hundreds
+///   of edges in range (about 400 front-facing within 7 m of a place of MIT building 31,
+///   `cell_edges_on_the_building_maps`), most behind other walls, each tested against
+///   the half-planes before it: the rays keep those a person sees (about 36).
+/// - **Ties.** Two people whose centres coincide exactly (where no direction parts
+///   them) are seen 1 mm apart along x, the lower index on the left, so that positions
+///   stay a deterministic function of the scenario and of the robot's poses.
 /// - **Local only.** Like RVO2, ORCA looks one time horizon ahead and knows no route. A
 ///   wall at a slant across a leg is slid along and walked around; a wall square across
 ///   it, wherever its ends, holds the person in front of it (its half-plane is square to
@@ -620,9 +622,9 @@ struct Near {
 ///
 /// One step with `n` people sorts each person's `n` candidate neighbours (O(n^2 log n))
 /// and solves `n` linear programs of `max_neighbours` + (nearby obstacle edges)
-/// half-planes (incremental, at most quadratic in the half-planes), with a few small
-/// allocations per person (dodgy_2d's half-plane lists), after sorting the obstacles in
-/// reach by distance, and on a loaded map 72 rays a person. Walls dominate where they
+/// half-planes (incremental, at most quadratic in the half-planes), without allocating,
+/// after sorting the obstacles in reach by distance, and on a loaded map 72 rays a
+/// person. Walls dominate where they
 /// are dense: measured with 20 people (`cost_of_twenty_people`, release), a call costs
 /// on average about 2 us a 5 ms tick in an open room (1.0-1.4x [`crate::SocialForce`])
 /// and about 24 us among a loaded map's 3,600 cell edges of pillars (about 2.2x; 83 us
@@ -761,8 +763,12 @@ fn seen(me: &Body, other: &Body, shift: Vector2<f64>, other_after: bool, time_st
     let mut moved = *other;
     moved.position += shift;
     let to_other = moved.position - me.position;
-    let drift = (me.velocity - other.velocity) - to_other / time_step;
-    if to_other.norm_squared() <= 1e-12 && drift.norm_squared() <= 1e-12 {
+    // (The drift only where it is needed: a division is dear in a loop this hot.)
+    let apart = |to_other: Vector2<f64>| {
+        let drift = (me.velocity - other.velocity) - to_other / time_step;
+        drift.norm_squared() > 1e-12
+    };
+    if to_other.norm_squared() <= 1e-12 && !apart(to_other) {
         moved.position.x += if other_after { 1e-3 } else { -1e-3 };
     }
     moved
