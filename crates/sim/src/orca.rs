@@ -624,11 +624,10 @@ struct Near {
 /// and solves `n` linear programs of `max_neighbours` + (nearby obstacle edges)
 /// half-planes (incremental, at most quadratic in the half-planes), without allocating,
 /// after sorting the obstacles in reach by distance, and on a loaded map 72 rays a
-/// person. Walls dominate where they
-/// are dense: measured with 20 people (`cost_of_twenty_people`, release), a call costs
-/// on average about 2 us a 5 ms tick in an open room (1.0-1.4x [`crate::SocialForce`])
-/// and about 24 us among a loaded map's 3,600 cell edges of pillars (about 2.2x; 83 us
-/// when every edge in reach was handed to the solver). The new velocities are chosen once per
+/// person. Walls dominate where they are dense: measured with 20 people
+/// (`cost_of_twenty_people`, release), a call costs on average about 1.3 us a 5 ms tick
+/// in an open room (0.6x [`crate::SocialForce`]) and about 11 us among a loaded map's
+/// 3,600 cell edges of pillars (1.2x). The new velocities are chosen once per
 /// [`OrcaParams::step`] of simulated time (25 Hz by default); a call between steps
 /// extrapolates the positions.
 ///
