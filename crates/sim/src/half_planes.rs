@@ -18,11 +18,6 @@ pub(crate) struct HalfPlane {
     pub direction: V,
 }
 
-/// `a x b`, the z of their cross product: positive when `b` is to the left of `a`.
-fn cross(a: V, b: V) -> f64 {
-    a.x * b.y - a.y * b.x
-}
-
 /// `v` turned a quarter to the left.
 fn left_of(v: V) -> V {
     V::new(-v.y, v.x)
@@ -31,7 +26,7 @@ fn left_of(v: V) -> V {
 impl HalfPlane {
     /// How far `v` lies outside (positive) or inside (negative) the half-plane.
     fn outside(&self, v: V) -> f64 {
-        cross(self.direction, self.point - v)
+        self.direction.perp(&(self.point - v))
     }
 
     /// The line through the point nearest `v` on the circle of radius `radius` around
@@ -100,7 +95,7 @@ pub(crate) fn agent_half_plane(
         } else {
             // Nearest a leg of the cone: the left one when `w` is left of the centres'
             // line, the right one (turned to keep the obstacle on the right) else.
-            let side = if cross(p, w) > 0.0 { 1.0 } else { -1.0 };
+            let side = if p.perp(&w) > 0.0 { 1.0 } else { -1.0 };
             let direction = leg(p, r, side) * side;
             (direction, direction * v.dot(&direction) - v)
         }
@@ -135,7 +130,7 @@ pub(crate) fn edge_half_plane(
 ) -> Option<HalfPlane> {
     let (a, b) = (a - position, b - position);
     let e = b - a;
-    if cross(e, -a) > 0.0 {
+    if e.perp(&(-a)) > 0.0 {
         return None;
     }
     let depth = radius / horizon;
@@ -236,8 +231,8 @@ fn on_line(planes: &[HalfPlane], i: usize, speed: f64, goal: Goal) -> Option<V> 
     let (mut lo, mut hi) = (-along - room, -along + room);
     for g in &planes[..i] {
         // Point `h.point + t h.direction` is inside `g` when `c + t k >= 0`.
-        let k = cross(g.direction, h.direction);
-        let c = cross(g.direction, h.point - g.point);
+        let k = g.direction.perp(&h.direction);
+        let c = g.direction.perp(&(h.point - g.point));
         if k.abs() <= PARALLEL {
             if c < 0.0 {
                 return None;
@@ -306,7 +301,7 @@ fn least_violating(
         scratch.extend_from_slice(&planes[..hard]);
         // (A wall's half-plane that failed keeps the walls alone.)
         for g in planes.get(hard..i).unwrap_or_default() {
-            let k = cross(h.direction, g.direction);
+            let k = h.direction.perp(&g.direction);
             let point = if k.abs() <= PARALLEL {
                 if h.direction.dot(&g.direction) > 0.0 {
                     // Same direction: `g` bounds nothing `h` does not.
@@ -314,7 +309,7 @@ fn least_violating(
                 }
                 (h.point + g.point) * 0.5
             } else {
-                h.point + h.direction * (cross(g.direction, h.point - g.point) / k)
+                h.point + h.direction * (g.direction.perp(&(h.point - g.point)) / k)
             };
             let Some(direction) = (g.direction - h.direction).try_normalize(0.0) else {
                 continue;
@@ -377,7 +372,7 @@ mod tests {
         assert!((va + vb).norm() < 1e-12, "{va} {vb}");
         // Exactly on the cone's edge: sin of the angle to the centre line = 0.6 / 4.
         let rel = va - vb;
-        let sin = cross(V::new(1.0, 0.0), rel).abs() / rel.norm();
+        let sin = V::new(1.0, 0.0).perp(&rel).abs() / rel.norm();
         assert!((sin - 0.15).abs() < 1e-9, "{sin}");
         assert!(va.norm() <= 1.0 + 1e-12);
     }
