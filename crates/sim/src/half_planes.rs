@@ -29,9 +29,9 @@ impl HalfPlane {
         self.direction.perp(&(self.point - v))
     }
 
-    /// The line through the point nearest `v` on the circle of radius `radius` around
-    /// `centre`, tangent there, with `centre` outside: velocities beyond the circle's
-    /// tangent at the point nearest `v` (`v` must not be `centre`; `None` when it is).
+    /// The half-plane bounded by the tangent to the circle of radius `radius` around
+    /// `centre` at its point nearest `v`, on the side away from `centre` (`None` when `v`
+    /// is `centre`, where no point is nearest).
     fn tangent_facing(centre: V, radius: f64, v: V) -> Option<Self> {
         let from = v - centre;
         let length_sq = from.norm_squared();
@@ -111,8 +111,8 @@ pub(crate) fn agent_half_plane(
     })
 }
 
-/// How deep past a half-plane both ends of an edge must be for the edge to be left out
-/// as covered (RVO2's epsilon).
+/// The tolerance of the test that leaves out an edge whose ends are both deep past a
+/// nearer wall's half-plane (RVO2's epsilon).
 const COVERED: f64 = 1e-5;
 
 /// The half-plane that keeps a body of radius `radius` at `position`, moving at
