@@ -76,3 +76,62 @@ pub fn building(model: PeopleModelKind) -> (Scenario, Scenario, sim::World) {
     crowd.people_model = model;
     (empty, crowd, world)
 }
+
+/// The cost of a crowd run against the empty run, per simulated second, from `pairs` runs
+/// of each in turn (one of each first, unmeasured): each run timed on its thread's CPU
+/// clock. The host's bursts of load and the first runs' cold caches fall on both sides,
+/// where separate rounds of each (as criterion's groups are) let them fall on one.
+///
+/// `empty` and `crowd` each run once and return their simulated time, s.
+///
+/// ```no_run
+/// # fn run() -> f64 { 36.2 }
+/// let paired = hyplan_benches::crowd::Paired::measure(9, run, run);
+/// println!("{:.2}x", paired.ratio);
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct Paired {
+    /// Median over the pairs of the crowd run's CPU per simulated second over the empty
+    /// run's.
+    pub ratio: f64,
+    /// Median CPU of the empty run, ms per simulated second.
+    pub empty_ms: f64,
+    /// Median CPU of the crowd run, ms per simulated second.
+    pub crowd_ms: f64,
+}
+
+impl Paired {
+    /// Times `pairs` (at least one) pairs of runs; see [`Paired`].
+    pub fn measure(
+        pairs: usize,
+        mut empty: impl FnMut() -> f64,
+        mut crowd: impl FnMut() -> f64,
+    ) -> Self {
+        let per_second = |run: &mut dyn FnMut() -> f64| {
+            let t = cpu_time::ThreadTime::now();
+            let simulated = std::hint::black_box(run());
+            t.elapsed().as_secs_f64() * 1e3 / simulated
+        };
+        per_second(&mut empty);
+        per_second(&mut crowd);
+        let (mut ratios, mut alone, mut among) = (Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..pairs.max(1) {
+            let a = per_second(&mut empty);
+            let c = per_second(&mut crowd);
+            ratios.push(c / a);
+            alone.push(a);
+            among.push(c);
+        }
+        Self {
+            ratio: median(ratios),
+            empty_ms: median(alone),
+            crowd_ms: median(among),
+        }
+    }
+}
+
+/// The middle value (the upper of the two middle ones).
+fn median(mut xs: Vec<f64>) -> f64 {
+    xs.sort_by(f64::total_cmp);
+    xs[xs.len() / 2]
+}

@@ -15,7 +15,10 @@
 //! the run without people. `crowd/mit_building_31`: the same three on a real floor's
 //! map, 20 people placed as `hyplan sim --crowd` places them. The runs
 //! differ in what the robot does too (it stops and re-plans for people), so each run's
-//! name carries its simulated time, and the costs compare per simulated second.
+//! name carries its simulated time, and the costs compare per simulated second. Before
+//! criterion's rounds, the group prints each crowd run's ratio to the empty run per
+//! simulated second on thread CPU time, the median over `SIM_BENCH_RUNS` pairs of runs
+//! taken in turn: the figure the host's load moves least.
 //!
 //! `laser-cast/explore-22m`: one full scan (720 beams, exact) from each of 400 poses on a
 //! grid over the free space of the 22 m exploration world, the hot path of every run;
@@ -101,14 +104,60 @@ fn crowd(c: &mut Criterion) {
     let file = hyplan_benches::crowd::hall_file();
     let social = sim::PeopleModelKind::SocialForce(sim::SocialForceParams::default());
     let (empty, crowd) = hyplan_benches::crowd::hall(social);
-    for (name, scenario) in three_runs(empty, crowd) {
-        let world = scenario.build_world(&file).expect("the hall builds");
-        crowd_run(c, "004-nav-3-person", name, &scenario, &world);
+    let runs: Vec<_> = three_runs(empty, crowd)
+        .into_iter()
+        .map(|(name, scenario)| {
+            let world = scenario.build_world(&file).expect("the hall builds");
+            (name, scenario, world)
+        })
+        .collect();
+    paired_ratios("004-nav-3-person", &runs);
+    for (name, scenario, world) in &runs {
+        crowd_run(c, "004-nav-3-person", name, scenario, world);
     }
-    let (empty, crowd, mut world) = hyplan_benches::crowd::building(social);
-    for (name, scenario) in three_runs(empty, crowd) {
-        world.people.clone_from(&scenario.people);
-        crowd_run(c, "mit_building_31", name, &scenario, &world);
+    let (empty, crowd, world) = hyplan_benches::crowd::building(social);
+    let runs: Vec<_> = three_runs(empty, crowd)
+        .into_iter()
+        .map(|(name, scenario)| {
+            let mut world = world.clone();
+            world.people.clone_from(&scenario.people);
+            (name, scenario, world)
+        })
+        .collect();
+    paired_ratios("mit_building_31", &runs);
+    for (name, scenario, world) in &runs {
+        crowd_run(c, "mit_building_31", name, scenario, world);
+    }
+}
+
+/// Each crowd run's cost per simulated second over the empty run's (the first of
+/// `runs`), on thread CPU time from `SIM_BENCH_RUNS` pairs of runs taken in turn
+/// (default 20): criterion times each run in a round of its own, so a burst of load on
+/// the host during one round moves the ratio of its medians; the pairs' ratio does not.
+fn paired_ratios(place: &str, runs: &[(&str, Scenario, sim::World)]) {
+    let pairs: usize = std::env::var("SIM_BENCH_RUNS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(20);
+    let once = |scenario: &Scenario, world: &sim::World| {
+        sim::run(scenario, world, 0, GlobalPlanner::Dijkstra)
+            .trace
+            .summary
+            .end_time
+    };
+    let Some(((_, empty, alone), crowds)) = runs.split_first() else {
+        return;
+    };
+    for (name, scenario, world) in crowds {
+        let paired = hyplan_benches::crowd::Paired::measure(
+            pairs,
+            || once(empty, alone),
+            || once(scenario, world),
+        );
+        eprintln!(
+            "crowd/{place}/{name} on thread CPU time, {pairs} pairs of runs in turn: {:.3} ms per simulated second against {:.3} with nobody, {:.2}x (median of the pairs' ratios)",
+            paired.crowd_ms, paired.empty_ms, paired.ratio
+        );
     }
 }
 
