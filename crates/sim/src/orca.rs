@@ -366,7 +366,7 @@ impl Walls {
         let mut take = |k: u32| {
             let obstacle = &obstacles[k as usize];
             if !obstacle.back_facing(p) {
-                keyed.push((obstacle.distance_sq(p).to_bits(), k));
+                keyed.push(u128::from(obstacle.distance_sq(p).to_bits()) << 32 | u128::from(k));
             }
         };
         // The buckets' own test, on the same bounds: the same obstacles as a query of
@@ -385,14 +385,14 @@ impl Walls {
             let obstacle = &obstacles[k as usize];
             let d = obstacle.distance_sq(p);
             if d <= reach_sq && !obstacle.back_facing(p) {
-                keyed.push((d.to_bits(), k));
+                keyed.push(u128::from(d.to_bits()) << 32 | u128::from(k));
             }
         }
         // Nearest first, as RVO2 orders obstacle neighbours: an edge hidden behind a
         // nearer one's half-plane is then skipped. An edge may be both near and seen.
-        out.keyed.sort_unstable();
-        out.keyed.dedup();
-        out.indices.extend(out.keyed.iter().map(|&(_, k)| k));
+        out.hint
+            .sort(&mut out.keyed, &mut nearby.order, self.obstacles.len());
+        out.indices.extend(out.keyed.iter().map(|&key| key as u32));
     }
 
     /// `nearby` found from `p`: the obstacles whose bounding box comes within `reach` +
@@ -517,6 +517,8 @@ struct Nearby {
     drawn: Vec<u32>,
     /// A loaded map's cell edges.
     cells: Vec<u32>,
+    /// The obstacles [`Walls::near`] gave last, in their order: the hint of its sort.
+    order: Vec<u32>,
 }
 
 impl Nearby {
@@ -545,8 +547,12 @@ impl Nearby {
 struct Near {
     /// The obstacles near the query point, nearest first.
     indices: Vec<u32>,
-    /// (squared distance's bits, index) of each, before sorting.
-    keyed: Vec<(u64, u32)>,
+    /// (squared distance's bits, index) of each, packed so that they order as the pair
+    /// (one comparison of integers, where a pair's takes a branch per field), before
+    /// sorting.
+    keyed: Vec<u128>,
+    /// Their sort's own.
+    hint: OrderHint,
     /// The bucket queries' own.
     marks: Marks,
     cell_marks: Marks,
@@ -704,6 +710,66 @@ fn sort_nearly_sorted(keys: &mut [u128]) {
             j -= 1;
         }
         keys[j] = key;
+    }
+}
+
+/// The sort of a person's obstacles, nearest first, from the order of the step before:
+/// people move a few centimetres a step, so the obstacles near them keep their order
+/// but for a few, and an insertion sort from the old order is nearly linear where
+/// `sort_unstable` sorts from scratch. The result does not depend on the hint.
+#[derive(Debug, Clone, Default)]
+struct OrderHint {
+    /// Per obstacle: the generation at which it was last among the keys, and where (or
+    /// [`OrderHint::TAKEN`] once placed).
+    slots: Vec<(u32, u32)>,
+    generation: u32,
+    /// The keys in the hint's order, then sorted.
+    sorted: Vec<u128>,
+}
+
+impl OrderHint {
+    /// A slot's position once its obstacle is placed.
+    const TAKEN: u32 = u32::MAX;
+
+    /// Sorts `keys` (each an obstacle's key: its squared distance's bits above its index
+    /// in the low 32 bits, so that the copies of one obstacle are equal) ascending and
+    /// without copies, starting from the obstacles of `last` in their order; then sets
+    /// `last` to the result's indices. `obstacles`: how many there are.
+    fn sort(&mut self, keys: &mut Vec<u128>, last: &mut Vec<u32>, obstacles: usize) {
+        if self.slots.len() < obstacles {
+            self.slots.resize(obstacles, (0, 0));
+        }
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.slots.fill((0, 0));
+            self.generation = 1;
+        }
+        let g = self.generation;
+        for (at, &key) in keys.iter().enumerate() {
+            let slot = &mut self.slots[key as u32 as usize];
+            if slot.0 != g {
+                *slot = (g, at as u32);
+            }
+        }
+        self.sorted.clear();
+        for &k in last.iter() {
+            let slot = &mut self.slots[k as usize];
+            if slot.0 == g && slot.1 != Self::TAKEN {
+                self.sorted.push(keys[slot.1 as usize]);
+                slot.1 = Self::TAKEN;
+            }
+        }
+        for (at, &key) in keys.iter().enumerate() {
+            let slot = &mut self.slots[key as u32 as usize];
+            if slot.1 == at as u32 {
+                self.sorted.push(key);
+                slot.1 = Self::TAKEN;
+            }
+        }
+        sort_nearly_sorted(&mut self.sorted);
+        std::mem::swap(keys, &mut self.sorted);
+        last.clear();
+        last.extend(keys.iter().map(|&key| key as u32));
     }
 }
 
@@ -1097,6 +1163,36 @@ mod tests {
             expected.sort_unstable();
             sort_nearly_sorted(&mut keys);
             proptest::prop_assert_eq!(keys, expected);
+        }
+
+        /// The obstacles' sort from the last order gives `sort_unstable` then `dedup`'s
+        /// keys, whatever that order holds (obstacles gone, new ones, copies), and leaves
+        /// their indices as the next hint; over three sorts with one scratch.
+        #[test]
+        fn hinted_sorts_sort_as_from_scratch(
+            rounds in proptest::collection::vec(
+                (
+                    proptest::collection::vec(0..60_u32, 0..50),
+                    proptest::collection::vec(0..60_u32, 0..30),
+                ),
+                1..4,
+            )
+        ) {
+            let mut hint = OrderHint::default();
+            for (picked, last) in rounds {
+                // One key per obstacle, from its index (so its copies are equal), in an
+                // order that is not the indices'.
+                let key = |k: u32| u128::from(u64::from(k * 7 % 5)) << 32 | u128::from(k);
+                let mut keys: Vec<u128> = picked.iter().map(|&k| key(k)).collect();
+                let mut expected = keys.clone();
+                expected.sort_unstable();
+                expected.dedup();
+                let mut order = last.clone();
+                hint.sort(&mut keys, &mut order, 60);
+                proptest::prop_assert_eq!(&keys, &expected);
+                let indices: Vec<u32> = expected.iter().map(|&k| k as u32).collect();
+                proptest::prop_assert_eq!(order, indices);
+            }
         }
 
         /// A person's candidate walls kept between steps change nothing: along a walk
