@@ -135,7 +135,9 @@ pub(crate) fn edge_half_plane(
     }
     let depth = radius / horizon;
     let past = |x: V, h: &HalfPlane| h.outside(x / horizon) >= depth - COVERED;
-    if hard.iter().any(|h| past(a, h) && past(b, h)) {
+    // Latest first: on a map's jagged walls the edge that covers another is mostly the
+    // one just before it, nearest first (the same answer in any order).
+    if hard.iter().rev().any(|h| past(a, h) && past(b, h)) {
         return None;
     }
     let e_sq = e.norm_squared();
