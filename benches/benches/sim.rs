@@ -45,10 +45,7 @@ fn scenario3(c: &mut Criterion) {
         "scenario 3 simulates {:.1} s: real-time factor = {:.1} / (time per run in s)",
         m.end_time, m.end_time
     );
-    let runs: usize = std::env::var("SIM_BENCH_RUNS")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(20);
+    let runs = bench_runs();
     let mut cpu: Vec<f64> = (0..runs.max(1))
         .map(|_| {
             let t0 = cpu_time::ThreadTime::now();
@@ -73,6 +70,14 @@ fn scenario3(c: &mut Criterion) {
             b.iter(|| sim::run(&scenario, &world, 0, GlobalPlanner::Dijkstra));
         },
     );
+}
+
+/// `SIM_BENCH_RUNS` (default 20): the runs (or pairs of runs) timed on thread CPU time.
+fn bench_runs() -> usize {
+    std::env::var("SIM_BENCH_RUNS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(20)
 }
 
 fn driven_step(c: &mut Criterion) {
@@ -135,10 +140,7 @@ fn crowd(c: &mut Criterion) {
 /// (default 20): criterion times each run in a round of its own, so a burst of load on
 /// the host during one round moves the ratio of its medians; the pairs' ratio does not.
 fn paired_ratios(place: &str, runs: &[(&str, Scenario, sim::World)]) {
-    let pairs: usize = std::env::var("SIM_BENCH_RUNS")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(20);
+    let pairs = bench_runs();
     let once = |scenario: &Scenario, world: &sim::World| {
         sim::run(scenario, world, 0, GlobalPlanner::Dijkstra)
             .trace

@@ -612,11 +612,11 @@ struct Near {
 ///   radius`), nearest first as in RVO2: drawn ones whose bounding box is in range,
 ///   found in a coarse grid built once; of a loaded map's cell edges, those within 1.5 m
 ///   and those one of 72 rays from the person (one every 5 degrees, cast on the map's
-///   cells every 0.2 s) hits in range. As in RVO2, an edge whose ends are both deep past
+///   cells every 0.4 s) hits in range. As in RVO2, an edge whose ends are both deep past
 ///   a nearer wall's half-plane is left out; still, a real building's map puts hundreds
 ///   of edges in range (about 400 front-facing within 7 m of a place of MIT building 31,
 ///   `cell_edges_on_the_building_maps`), most behind other walls, each tested against
-///   the half-planes before it: the rays keep those a person sees (about 36).
+///   the half-planes before it: the rays keep those a person sees (about 40).
 /// - **Ties.** Two people whose centres coincide exactly (where no direction parts
 ///   them) are seen 1 mm apart along x, the lower index on the left, so that positions
 ///   stay a deterministic function of the scenario and of the robot's poses.
@@ -634,8 +634,8 @@ struct Near {
 /// after sorting the obstacles in reach by distance, and on a loaded map 72 rays a
 /// person. Walls dominate where they are dense: measured with 20 people
 /// (`cost_of_twenty_people`, release), a call costs on average about 1.3 us a 5 ms tick
-/// in an open room (0.6x [`crate::SocialForce`]) and about 11 us among a loaded map's
-/// 3,600 cell edges of pillars (1.2x). The new velocities are chosen once per
+/// in an open room (0.6x [`crate::SocialForce`]) and about 10-13 us among a loaded map's
+/// 3,600 cell edges of pillars (0.8-1.0x). The new velocities are chosen once per
 /// [`OrcaParams::step`] of simulated time (25 Hz by default); a call between steps
 /// extrapolates the positions.
 ///
