@@ -69,7 +69,8 @@ impl GridMap {
     /// call it to prepare the map, or let the edge checks make it once they have swept as
     /// many columns as the map has cells), the open stretches at both ends of the segment are
     /// crossed in strides of up to 253 cells, and only the columns left between are
-    /// swept, with the same answer.
+    /// swept, with the same answer; a segment of 3 cells or less is checked by one look at
+    /// the stride of its start where that covers it.
     #[must_use]
     pub fn segment_free_cells(&self, a: Point2, b: Point2) -> bool {
         let bounds = self.bounds();
@@ -86,10 +87,18 @@ impl GridMap {
         let mut middle = (f64::NEG_INFINITY, f64::INFINITY);
         let (du, dv) = (ub - ua, vb - va);
         let len_sq = du * du + dv * dv;
-        // Segments within a few cells are swept at once: no stride would pay.
-        if len_sq > 9.0
-            && let Some(strides) = self.edge_strides(du.abs().max(dv.abs()))
+        let strides = self.edge_strides(du.abs().max(dv.abs()));
+        // A segment within a few cells is swept at once (no stride would pay), unless the
+        // stride at its start covers it whole: one look, which is the common case in open
+        // space.
+        if len_sq <= 9.0
+            && let Some(strides) = strides
         {
+            let run = f64::from(strides[floor_index(va, 0, h) * w + floor_index(ua, 0, w)]);
+            if run >= 3.0 && (run - 1.0) * (run - 1.0) >= len_sq {
+                return true;
+            }
+        } else if let Some(strides) = strides {
             let len = len_sq.sqrt();
             let (eu, ev) = (du / len, dv / len);
             let from_a = open_stretch(strides, (w, h), (ua, va), (eu, ev), len);

@@ -311,13 +311,20 @@ proptest! {
 
     /// With the stride table made, `segment_free` still answers exactly which closed
     /// cells the segment touches (corners and grid lines included: end points on a 1/8
-    /// grid), against the brute-force test of every cell.
+    /// grid), against the brute-force test of every cell; segments across the map and
+    /// within 3 cells (which one look at a stride may accept).
     #[test]
     fn strided_segment_free_matches_exact_cell_test(
-        ((mask, risk), segments, avoid) in open_map_strategy().prop_flat_map(|(m, r)| {
+        ((mask, risk), segments, short, avoid) in open_map_strategy().prop_flat_map(|(m, r)| {
             let (w, h) = (m.width(), m.height());
             let point = ((0..=w * 8).prop_map(|k| k as f64 / 8.0), (0..=h * 8).prop_map(|k| k as f64 / 8.0));
-            (Just((m, r)), proptest::collection::vec((point.clone(), point), 1..24), any::<bool>())
+            let offset = (-24..=24i32, -24..=24i32);
+            (
+                Just((m, r)),
+                proptest::collection::vec((point.clone(), point.clone()), 1..24),
+                proptest::collection::vec((point, offset), 1..24),
+                any::<bool>(),
+            )
         })
     ) {
         let mut map = zone_map(&mask, &risk);
@@ -325,7 +332,11 @@ proptest! {
             map = map.avoiding_risk();
         }
         prop_assert!(map.blocked_strides().is_some());
-        for (a, b) in segments {
+        let (w, h) = (map.width() as f64, map.height() as f64);
+        let short = short.into_iter().map(|(a, (du, dv))| {
+            (a, ((a.0 + f64::from(du) / 8.0).clamp(0.0, w), (a.1 + f64::from(dv) / 8.0).clamp(0.0, h)))
+        });
+        for (a, b) in segments.into_iter().chain(short) {
             let want = (0..map.height()).all(|j| {
                 (0..map.width()).all(|i| !segment_meets_cell(a, b, i, j) || map.cell_free(i, j))
             });

@@ -105,13 +105,7 @@ impl<const B: usize> Leaf<B> {
     fn nearest(&self, q: [f64; 2]) -> (f64, usize) {
         let mut min = [f64::INFINITY; LANES];
         let mut at = [0usize; LANES];
-        // Only the chunks that hold points (the rest are infinite).
-        let used = self.len.div_ceil(LANES);
-        let chunks = self.axes[0]
-            .chunks_exact(LANES)
-            .zip(self.axes[1].chunks_exact(LANES))
-            .take(used);
-        for (c, (xs, ys)) in chunks.enumerate() {
+        for (c, (xs, ys)) in self.chunks().enumerate() {
             for l in 0..LANES {
                 let (dx, dy) = (xs[l] - q[0], ys[l] - q[1]);
                 let d = dx * dx + dy * dy;
@@ -127,6 +121,14 @@ impl<const B: usize> Leaf<B> {
                 best
             }
         })
+    }
+
+    /// The chunks of [`LANES`] slots that hold points, x and y (the rest are infinite).
+    fn chunks(&self) -> impl Iterator<Item = (&[f64], &[f64])> {
+        self.axes[0]
+            .chunks_exact(LANES)
+            .zip(self.axes[1].chunks_exact(LANES))
+            .take(self.len.div_ceil(LANES))
     }
 
     /// Each point's item and squared distance from `q`.
@@ -162,9 +164,14 @@ impl<const B: usize> Default for KdTree<B> {
 impl<const B: usize> KdTree<B> {
     /// An empty tree with room for about `n` points (leaves half full) before reallocating.
     pub(crate) fn with_capacity(n: usize) -> Self {
-        let mut tree = Self::default();
-        tree.leaves.reserve(n / (B / 2).max(1));
-        tree.stems.reserve(n / (B / 2).max(1));
+        let leaves = (n / (B / 2).max(1)).max(1);
+        let mut tree = Self {
+            stems: Vec::with_capacity(leaves),
+            leaves: Vec::with_capacity(leaves),
+            root: LEAF,
+            len: 0,
+        };
+        tree.leaves.push(Leaf::empty());
         tree
     }
 
@@ -194,14 +201,12 @@ impl<const B: usize> KdTree<B> {
         }
         let at = (node & !LEAF) as usize;
         let leaf = &self.leaves[at];
-        // The whole leaf without an early exit (vector registers; the unused slots are
-        // infinite, never equal), then the slot only when there is one.
-        let equal = |(&x, &y): (&f64, &f64)| (x == p[0]) & (y == p[1]);
-        if leaf.axes[0]
-            .iter()
-            .zip(&leaf.axes[1])
-            .fold(false, |any, xy| any | equal(xy))
-            && let Some(k) = leaf.axes[0].iter().zip(&leaf.axes[1]).position(equal)
+        // The leaf's points without an early exit (vector registers; the unused slots of
+        // the last chunk are infinite, never equal), then the slot only when there is one.
+        let equal = |x: f64, y: f64| (x == p[0]) & (y == p[1]);
+        if leaf.chunks().fold(false, |any, (xs, ys)| {
+            (0..LANES).fold(any, |any, l| any | equal(xs[l], ys[l]))
+        }) && let Some(k) = (0..leaf.len).position(|k| equal(leaf.axes[0][k], leaf.axes[1][k]))
         {
             return Some(leaf.ids[k]);
         }

@@ -132,6 +132,11 @@ impl<const B: usize> NearestIndex<B> {
         &self.points
     }
 
+    /// Every point inserted, in id order, taken out of the index.
+    pub(crate) fn into_points(self) -> Vec<Point2> {
+        self.points
+    }
+
     /// Adds `p` and returns its id (the number of points inserted before it).
     pub fn insert(&mut self, p: Point2) -> usize {
         let id = self.points.len();

@@ -243,13 +243,17 @@ impl<'a, W: Workspace + ?Sized> CountingChecker<'a, W> {
 /// assert_eq!(sampling::branch(&points, &parent, 2), points.to_vec());
 /// ```
 pub fn branch(points: &[Point2], parent: &[Option<u32>], leaf: usize) -> Vec<Point2> {
-    let mut path = vec![points[leaf]];
-    let mut i = leaf;
-    while let Some(p) = parent[i] {
-        i = p as usize;
-        path.push(points[i]);
+    // Counted first: the path is filled from its end, in a vector of its size.
+    let ancestors = |mut i: usize| {
+        std::iter::from_fn(move || {
+            i = parent[i]? as usize;
+            Some(i)
+        })
+    };
+    let mut path = vec![points[leaf]; ancestors(leaf).count() + 1];
+    for (slot, i) in path.iter_mut().rev().skip(1).zip(ancestors(leaf)) {
+        *slot = points[i];
     }
-    path.reverse();
     path
 }
 

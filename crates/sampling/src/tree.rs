@@ -140,7 +140,12 @@ impl<const B: usize> GrowTree<B> {
     pub fn rooted_in_buckets(root: Point2) -> Self {
         Self {
             index: NearestIndex::rooted_in_buckets(root),
-            parent: vec![None],
+            // As much room as the index's.
+            parent: {
+                let mut parent = Vec::with_capacity(1024);
+                parent.push(None);
+                parent
+            },
             cost: Vec::new(),
             children: Vec::new(),
             goal: None,
@@ -480,11 +485,11 @@ impl<const B: usize> GrowTree<B> {
         }
     }
 
-    /// [`to_tree`](Self::to_tree) without the copy of the parent links.
+    /// [`to_tree`](Self::to_tree) without a copy.
     #[must_use]
     pub fn into_tree(self) -> hyplan_core::Tree {
         hyplan_core::Tree {
-            points: self.index.points().to_vec(),
+            points: self.index.into_points(),
             parent: self.parent,
         }
     }
