@@ -87,18 +87,17 @@ impl GridMap {
         let mut middle = (f64::NEG_INFINITY, f64::INFINITY);
         let (du, dv) = (ub - ua, vb - va);
         let len_sq = du * du + dv * dv;
-        let strides = self.edge_strides(du.abs().max(dv.abs()));
-        // A segment within a few cells is swept at once (no stride would pay), unless the
-        // stride at its start covers it whole: one look, which is the common case in open
-        // space.
-        if len_sq <= 9.0
-            && let Some(strides) = strides
-        {
-            let run = f64::from(strides[floor_index(va, 0, h) * w + floor_index(ua, 0, w)]);
-            if run >= 3.0 && (run - 1.0) * (run - 1.0) >= len_sq {
-                return true;
+        if len_sq <= 9.0 {
+            // A segment within a few cells is swept at once (no stride would pay), unless
+            // the stride at its start covers it whole: one look, which is the common case
+            // in open space.
+            if let Some(strides) = self.made_blocked_strides() {
+                let run = f64::from(strides[floor_index(va, 0, h) * w + floor_index(ua, 0, w)]);
+                if run >= 3.0 && (run - 1.0) * (run - 1.0) >= len_sq {
+                    return true;
+                }
             }
-        } else if let Some(strides) = strides {
+        } else if let Some(strides) = self.edge_strides(du.abs().max(dv.abs())) {
             let len = len_sq.sqrt();
             let (eu, ev) = (du / len, dv / len);
             let from_a = open_stretch(strides, (w, h), (ua, va), (eu, ev), len);

@@ -204,9 +204,14 @@ impl<const B: usize> KdTree<B> {
         // The leaf's points without an early exit (vector registers; the unused slots of
         // the last chunk are infinite, never equal), then the slot only when there is one.
         let equal = |x: f64, y: f64| (x == p[0]) & (y == p[1]);
-        if leaf.chunks().fold(false, |any, (xs, ys)| {
-            (0..LANES).fold(any, |any, l| any | equal(xs[l], ys[l]))
-        }) && let Some(k) = (0..leaf.len).position(|k| equal(leaf.axes[0][k], leaf.axes[1][k]))
+        let mut hit = [false; LANES];
+        for (xs, ys) in leaf.chunks() {
+            for l in 0..LANES {
+                hit[l] |= equal(xs[l], ys[l]);
+            }
+        }
+        if hit.contains(&true)
+            && let Some(k) = (0..leaf.len).position(|k| equal(leaf.axes[0][k], leaf.axes[1][k]))
         {
             return Some(leaf.ids[k]);
         }
