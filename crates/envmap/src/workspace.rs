@@ -70,7 +70,7 @@ impl GridMap {
     /// many columns as the map has cells), the open stretches at both ends of the segment are
     /// crossed in strides of up to 253 cells, and only the columns left between are
     /// swept, with the same answer; a segment of 3 cells or less is checked by one look at
-    /// the stride of its start where that covers it.
+    /// the stride of its middle where that covers both halves.
     #[must_use]
     pub fn segment_free_cells(&self, a: Point2, b: Point2) -> bool {
         let bounds = self.bounds();
@@ -89,11 +89,12 @@ impl GridMap {
         let len_sq = du * du + dv * dv;
         if len_sq <= 9.0 {
             // A segment within a few cells is swept at once (no stride would pay), unless
-            // the stride at its start covers it whole: one look, which is the common case
-            // in open space.
+            // the stride at its middle covers both halves: one look, which is the common
+            // case in open space.
             if let Some(strides) = self.made_blocked_strides() {
-                let run = f64::from(strides[floor_index(va, 0, h) * w + floor_index(ua, 0, w)]);
-                if run >= 3.0 && (run - 1.0) * (run - 1.0) >= len_sq {
+                let (um, vm) = (ua + du / 2.0, va + dv / 2.0);
+                let run = f64::from(strides[floor_index(vm, 0, h) * w + floor_index(um, 0, w)]);
+                if run >= 2.0 && 4.0 * (run - 1.0) * (run - 1.0) >= len_sq {
                     return true;
                 }
             }

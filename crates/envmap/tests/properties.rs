@@ -333,8 +333,12 @@ proptest! {
         }
         prop_assert!(map.blocked_strides().is_some());
         let (w, h) = (map.width() as f64, map.height() as f64);
-        let short = short.into_iter().map(|(a, (du, dv))| {
-            (a, ((a.0 + f64::from(du) / 8.0).clamp(0.0, w), (a.1 + f64::from(dv) / 8.0).clamp(0.0, h)))
+        // From `a` by the offset, and centred on `a` (half the offset each way).
+        let short = short.into_iter().flat_map(|(a, (du, dv))| {
+            let at = |p: (f64, f64), k: f64| {
+                ((p.0 + k * f64::from(du) / 8.0).clamp(0.0, w), (p.1 + k * f64::from(dv) / 8.0).clamp(0.0, h))
+            };
+            [(a, at(a, 1.0)), (at(a, -0.5), at(a, 0.5))]
         });
         for (a, b) in segments.into_iter().chain(short) {
             let want = (0..map.height()).all(|j| {
@@ -367,6 +371,41 @@ proptest! {
                 && plain.bounds().contains(b)
                 && plain.segment_cells(a, b, |i, j| plain.cell_free(i, j));
             prop_assert_eq!(strided.segment_free_cells(a, b), want, "{:?} -> {:?}", a, b);
+        }
+    }
+}
+
+/// Every segment of up to 3 cells centred on a 1/8 grid point about one obstacle (which
+/// one look at the stride table of its middle may accept) answers as the brute-force test
+/// of every cell, on all sides of the obstacle and at every distance from it.
+#[test]
+fn short_segments_about_an_obstacle_match_the_exact_cell_test() {
+    let mut mask = Mask::new(9, 9);
+    mask.set(6, 6, true);
+    let map = zone_map(&mask, &[false]);
+    assert!(map.blocked_strides().is_some());
+    let eighths = |from: i32, to: i32| (from..=to).map(|k| f64::from(k) / 8.0);
+    for mx in eighths(8, 52) {
+        for my in eighths(8, 52) {
+            for hx in eighths(-12, 12) {
+                for hy in eighths(-12, 12) {
+                    let (a, b) = ((mx - hx, my - hy), (mx + hx, my + hy));
+                    if [a.0, a.1, b.0, b.1]
+                        .iter()
+                        .any(|&c| !(0.0..=9.0).contains(&c))
+                    {
+                        continue;
+                    }
+                    let want = (0..9).all(|j| {
+                        (0..9).all(|i| !segment_meets_cell(a, b, i, j) || map.cell_free(i, j))
+                    });
+                    assert_eq!(
+                        map.segment_free(Point2::new(a.0, a.1), Point2::new(b.0, b.1)),
+                        want,
+                        "{a:?} -> {b:?}"
+                    );
+                }
+            }
         }
     }
 }
