@@ -1,6 +1,6 @@
 //! RRT or RRT-Connect alone on a case of `bench-peers`: the median time of `RUNS`
-//! seeded runs (seeds 1..=RUNS), and the runs' total nodes, iterations and edge checks,
-//! for comparing two builds on a noisy host (run their binaries alternately) or under
+//! seeded runs (seeds 1..=RUNS), and the runs' total nodes, iterations, edge checks and
+//! path length, for comparing two builds on a noisy host (run their binaries alternately) or under
 //! callgrind (no smoothing or metrics around the planner, as in `hyplan plan`).
 //!
 //! ```sh
@@ -76,7 +76,7 @@ fn main() {
     };
     let connect = RrtConnect { step, budget };
     let mut times = Vec::new();
-    let (mut nodes, mut iterations, mut checks) = (0, 0, 0);
+    let (mut nodes, mut iterations, mut checks, mut length) = (0, 0, 0, 0.0);
     for seed in 1..=runs {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let t = Instant::now();
@@ -90,10 +90,11 @@ fn main() {
         nodes += plan.stats.nodes;
         iterations += plan.stats.iterations;
         checks += plan.stats.collision_checks;
+        length += plan.cost;
     }
     times.sort_by(f64::total_cmp);
     println!(
-        "{case} {planner}: median {:.4} ms over {runs} runs; nodes {nodes} iterations {iterations} edge checks {checks}",
+        "{case} {planner}: median {:.4} ms over {runs} runs; nodes {nodes} iterations {iterations} edge checks {checks} length {length:.9}",
         times[times.len() / 2]
     );
 }

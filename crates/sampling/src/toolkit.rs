@@ -187,12 +187,17 @@ pub fn sample_goal_biased<W: Workspace + ?Sized, R: Rng + ?Sized>(
 /// ```
 #[inline]
 pub fn steer(from: Point2, to: Point2, step: f64) -> Point2 {
-    let d = to - from;
-    let len = d.norm();
+    steer_by(from, to, (to - from).norm(), step)
+}
+
+/// [`steer`] with the distance from `from` to `to` known, `len` (a nearest query's, which
+/// is the same float: a second square root would only wait for the same answer).
+#[inline]
+pub(crate) fn steer_by(from: Point2, to: Point2, len: f64, step: f64) -> Point2 {
     if len <= step {
         to
     } else {
-        from + d * (step / len)
+        from + (to - from) * (step / len)
     }
 }
 

@@ -349,12 +349,12 @@ impl<const B: usize> GrowTree<B> {
     /// target; `None` when no node can be reported ([`NearestIndex::nearest`]).
     #[must_use]
     pub fn step_towards(&self, target: Point2, step: f64) -> Option<Step> {
-        let (near, _) = self.index.nearest(target)?;
+        let (near, len) = self.index.nearest(target)?;
         let from = self.index.point(near);
         Some(Step {
             near,
             from,
-            to: toolkit::steer(from, target, step),
+            to: toolkit::steer_by(from, target, len, step),
         })
     }
 
