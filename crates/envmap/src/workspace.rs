@@ -251,16 +251,18 @@ fn sweep(
     // Closed strip [c, c+1] meets [lo, hi] iff ceil(lo) - 1 <= c <= floor(hi).
     let c_first = ceil_index(lo - tol, -1, np).max(floor_index(middle.0, -1, np));
     let c_last = floor_index(hi + tol, 0, np).min(floor_index(middle.1, 1, np));
+    // A column's q at its right edge is the next one's at its left (both p clamp the same
+    // line into [lo, hi]): computed once.
+    let mut qa = q_at(lo.max(c_first as f64).min(hi));
     for c in c_first..=c_last {
-        let s0 = lo.max(c as f64).min(hi);
-        let s1 = hi.min(c as f64 + 1.0).max(lo);
-        let (qa, qb) = (q_at(s0), q_at(s1));
+        let qb = q_at(hi.min(c as f64 + 1.0).max(lo));
         let (qlo, qhi) = (qa.min(qb) - tol, qa.max(qb) + tol);
         for r in ceil_index(qlo, -1, nq)..=floor_index(qhi, 0, nq) {
             if !visit(c, r) {
                 return false;
             }
         }
+        qa = qb;
     }
     true
 }
