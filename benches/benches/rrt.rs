@@ -4,23 +4,13 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_main};
-use envmap::{LoadOptions, load_map};
 use hyplan_core::{Budget, Goal, Plan, PlanError, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use sampling::{Rrt, RrtConnect};
 
 fn bench_rrt(c: &mut Criterion) {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../data/generated/rects100.pgm"
-    );
-    let opts = LoadOptions {
-        threshold: 128,
-        safety_radius: Some(0.0),
-        ..LoadOptions::default()
-    };
-    let loaded = load_map(path.as_ref(), &opts).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let loaded = hyplan_benches::load_as_peer("data/generated/rects100.pgm");
     let map = loaded.map;
     let query = Query::new(
         loaded.frame.to_world(5.5, 5.5),

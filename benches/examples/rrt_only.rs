@@ -9,7 +9,6 @@
 
 use std::time::Instant;
 
-use envmap::{LoadOptions, load_map};
 use hyplan_core::{Budget, Goal, Query};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -51,13 +50,7 @@ fn main() {
             0.0,
         ),
     };
-    let path = format!("{}/../{file}", env!("CARGO_MANIFEST_DIR"));
-    let opts = LoadOptions {
-        threshold: 128,
-        safety_radius: Some(0.0),
-        ..LoadOptions::default()
-    };
-    let loaded = load_map(path.as_ref(), &opts).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let loaded = hyplan_benches::load_as_peer(file);
     let map = loaded.map;
     // The one-time preparation bench-peers makes before its timed runs.
     let _ = map.blocked_strides();
