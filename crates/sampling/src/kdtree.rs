@@ -152,12 +152,7 @@ pub(crate) struct KdTree<const B: usize> {
 
 impl<const B: usize> Default for KdTree<B> {
     fn default() -> Self {
-        Self {
-            stems: Vec::new(),
-            leaves: vec![Leaf::empty()],
-            root: LEAF,
-            len: 0,
-        }
+        Self::with_capacity(0)
     }
 }
 
@@ -166,7 +161,7 @@ impl<const B: usize> KdTree<B> {
     pub(crate) fn with_capacity(n: usize) -> Self {
         let leaves = (n / (B / 2).max(1)).max(1);
         let mut tree = Self {
-            stems: Vec::with_capacity(leaves),
+            stems: Vec::with_capacity(leaves - 1),
             leaves: Vec::with_capacity(leaves),
             root: LEAF,
             len: 0,
