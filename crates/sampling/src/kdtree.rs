@@ -68,6 +68,14 @@ impl Bounds {
     }
 }
 
+/// The squared distance between `p` and `q` as the tree computes it, bit for bit (the
+/// leaf scans use this expression): a caller may compare its own distances with a query's.
+#[inline(always)]
+pub(crate) fn squared_distance(p: [f64; 2], q: [f64; 2]) -> f64 {
+    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+    dx * dx + dy * dy
+}
+
 /// Up to `B` points, by axis; the unused slots hold infinite coordinates, whose distance to
 /// any query is infinite, so that a scan reads whole leaves.
 #[derive(Debug, Clone)]
@@ -107,8 +115,7 @@ impl<const B: usize> Leaf<B> {
         let mut at = [0usize; LANES];
         for (c, (xs, ys)) in self.chunks().enumerate() {
             for l in 0..LANES {
-                let (dx, dy) = (xs[l] - q[0], ys[l] - q[1]);
-                let d = dx * dx + dy * dy;
+                let d = squared_distance([xs[l], ys[l]], q);
                 let nearer = d < min[l];
                 min[l] = if nearer { d } else { min[l] };
                 at[l] = if nearer { c * LANES + l } else { at[l] };
@@ -134,8 +141,8 @@ impl<const B: usize> Leaf<B> {
     /// Each point's item and squared distance from `q`.
     fn squared_distances(&self, q: [f64; 2]) -> impl Iterator<Item = (u64, f64)> + '_ {
         (0..self.len).map(move |k| {
-            let (dx, dy) = (self.axes[0][k] - q[0], self.axes[1][k] - q[1]);
-            (self.ids[k], dx * dx + dy * dy)
+            let p = [self.axes[0][k], self.axes[1][k]];
+            (self.ids[k], squared_distance(p, q))
         })
     }
 }
@@ -179,23 +186,8 @@ impl<const B: usize> KdTree<B> {
     /// -0.0 and 0.0 are one) is in the tree already: then nothing is added and that point's
     /// item is returned.
     pub(crate) fn add(&mut self, p: [f64; 2], id: u64) -> Option<u64> {
-        const {
-            assert!(
-                B >= 2 && B.is_multiple_of(LANES),
-                "a leaf splits into two, and scans in lanes"
-            )
-        };
-        // Down to the leaf, remembering the link to it.
-        let mut parent: Option<(usize, bool)> = None;
-        let mut node = self.root;
-        while node & LEAF == 0 {
-            let stem = self.stems[node as usize];
-            let above = p[stem.axis] >= stem.split;
-            parent = Some((node as usize, above));
-            node = if above { stem.above } else { stem.below };
-        }
-        let at = (node & !LEAF) as usize;
-        let leaf = &self.leaves[at];
+        let (node, parent) = self.descend(p);
+        let leaf = &self.leaves[(node & !LEAF) as usize];
         // The leaf's points without an early exit (vector registers; the unused slots of
         // the last chunk are infinite, never equal), then the slot only when there is one.
         let equal = |x: f64, y: f64| (x == p[0]) & (y == p[1]);
@@ -210,10 +202,54 @@ impl<const B: usize> KdTree<B> {
         {
             return Some(leaf.ids[k]);
         }
+        self.put(p, id, node, parent);
+        None
+    }
+
+    /// Adds `p` (finite) with item `id`, known to equal no point of the tree: [`add`](Self::add)
+    /// without its search of the leaf for an equal point. A caller knows it when `p` is
+    /// nearer to some query than the tree's nearest point, in the distances
+    /// [`squared_distance`] computes (as the tree does): an equal point would be as near.
+    pub(crate) fn add_new(&mut self, p: [f64; 2], id: u64) {
+        let (node, parent) = self.descend(p);
+        debug_assert!(
+            self.leaves[(node & !LEAF) as usize]
+                .squared_distances(p)
+                .all(|(_, d)| d > 0.0),
+            "{p:?} is in the tree"
+        );
+        self.put(p, id, node, parent);
+    }
+
+    /// The leaf `p` belongs in, and the link to it (its stem, and whether it is that stem's
+    /// `above` side; `None` for the root).
+    fn descend(&self, p: [f64; 2]) -> (NodeRef, Option<(usize, bool)>) {
+        let mut parent: Option<(usize, bool)> = None;
+        let mut node = self.root;
+        while node & LEAF == 0 {
+            let stem = self.stems[node as usize];
+            let above = p[stem.axis] >= stem.split;
+            parent = Some((node as usize, above));
+            node = if above { stem.above } else { stem.below };
+        }
+        (node, parent)
+    }
+
+    /// Puts `p`, equal to no point of the tree, in leaf `node` (linked from `parent`),
+    /// splitting the leaf when it is full.
+    fn put(&mut self, p: [f64; 2], id: u64, node: NodeRef, parent: Option<(usize, bool)>) {
+        const {
+            assert!(
+                B >= 2 && B.is_multiple_of(LANES),
+                "a leaf splits into two, and scans in lanes"
+            )
+        };
+        let at = (node & !LEAF) as usize;
+        let leaf = &self.leaves[at];
         self.len += 1;
         if leaf.len < B {
             self.leaves[at].push(p, id);
-            return None;
+            return;
         }
         // A full leaf: split its points and `p` at the middle of their wider axis. Both
         // sides get at least one (the points differ on that axis), so neither overflows.
@@ -278,7 +314,6 @@ impl<const B: usize> KdTree<B> {
             Some((s, true)) => self.stems[s].above = stem,
             Some((s, false)) => self.stems[s].below = stem,
         }
-        None
     }
 
     /// The item nearest `q` and its squared distance (`None` when empty). Ties go to any

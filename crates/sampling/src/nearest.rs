@@ -150,6 +150,17 @@ impl<const B: usize> NearestIndex<B> {
         id
     }
 
+    /// [`insert`](Self::insert) of a finite `p` known to be new: nearer to some point
+    /// than the index's nearest point, in the distances the index computes
+    /// ([`squared_distance`](crate::kdtree::squared_distance)), so that an equal point would have been as near. Skips the search for
+    /// an equal point.
+    pub(crate) fn insert_new(&mut self, p: Point2) -> usize {
+        let id = self.points.len();
+        self.points.push(p);
+        self.tree.add_new([p.x, p.y], id as u64);
+        id
+    }
+
     /// The id of a point nearest to `p` and its distance (world units); `None` when the
     /// index holds no finite point or `p` is not finite. Ties go to any of the nearest.
     #[must_use]

@@ -6,6 +6,7 @@ use hyplan_core::{Budget, Plan, PlanError, Point2, Workspace};
 
 use crate::common;
 use crate::toolkit::CountingChecker;
+use crate::tree::Lead;
 use crate::{GrowTree, Search};
 
 /// The outcome of one extension step.
@@ -69,15 +70,17 @@ impl Default for RrtConnect {
     }
 }
 
-/// One step of `tree` from its node nearest to `target` towards it.
+/// One step of `tree` from its node nearest to `target` towards it: `lead`'s node when it
+/// leads there (the last step's new node), replaced by the new node's lead.
 fn extend<W: Workspace + ?Sized>(
     tree: &mut GrowTree,
     target: Point2,
     step: f64,
     checker: &mut CountingChecker<'_, W>,
+    lead: &mut Option<Lead>,
 ) -> ExtendStatus {
     // Nearest and steer: at most one step from the nearest node towards the target.
-    let Some(s) = tree.step_towards(target, step) else {
+    let Some(s) = tree.step_led(target, step, lead.take()) else {
         return ExtendStatus::Trapped;
     };
     if s.from == target {
@@ -87,7 +90,8 @@ fn extend<W: Workspace + ?Sized>(
     if !checker.segment_free(s.from, s.to) {
         return ExtendStatus::Trapped;
     }
-    let new = tree.add(s.to, s.near);
+    let new;
+    (new, *lead) = tree.add_step(&s, target);
     if s.to == target {
         ExtendStatus::Reached(new)
     } else {
@@ -106,6 +110,7 @@ impl RrtConnect {
                 turn.sample,
                 self.step,
                 turn.checker,
+                &mut None,
             ) {
                 ExtendStatus::Trapped => return None,
                 ExtendStatus::Reached(n) | ExtendStatus::Advanced(n) => n,
@@ -116,9 +121,16 @@ impl RrtConnect {
                 return Some((new, None));
             }
             // Connect: the other tree steps towards the new node until it reaches it or is
-            // blocked.
+            // blocked; each step from the last one's new node, which is the nearest.
+            let mut lead = None;
             loop {
-                match extend(&mut turn.trees[other], target, self.step, turn.checker) {
+                match extend(
+                    &mut turn.trees[other],
+                    target,
+                    self.step,
+                    turn.checker,
+                    &mut lead,
+                ) {
                     ExtendStatus::Advanced(m) => {
                         if turn.ends_in_goal(other, turn.trees[other].point(m)) {
                             return Some((m, None));

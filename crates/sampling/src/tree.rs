@@ -5,6 +5,7 @@
 use hyplan_core::{Goal, Plan, PlanError, PlanStats, Point2, Workspace};
 
 use crate::NearestIndex;
+use crate::kdtree::squared_distance;
 use crate::toolkit::{self, CountingChecker};
 
 /// A tree grown from a root: its nodes in a [`NearestIndex`] (ids are insertion order,
@@ -77,6 +78,18 @@ impl GoalWatch {
             self.tied = true;
         }
     }
+}
+
+/// A node nearer to a target than every other node of its tree, with its squared distance
+/// to the target as the tree's index computes it ([`squared_distance`]): the next step
+/// towards that target may start from it without a nearest query, which would report the
+/// same node at the same distance (RRT-Connect's connect, [`GrowTree::step_led`]). Holds
+/// until the tree gets another node.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Lead {
+    target: Point2,
+    node: usize,
+    d2: f64,
 }
 
 /// What one [`GrowTree::extend`] did.
@@ -291,8 +304,18 @@ impl<const B: usize> GrowTree<B> {
     ///
     /// If `parent` is not a node of the tree.
     pub fn add_with_cost(&mut self, p: Point2, parent: usize, cost: f64) -> usize {
+        self.attach(p, parent, cost, false)
+    }
+
+    /// [`add_with_cost`](Self::add_with_cost); `new` when `p` is known to equal no node
+    /// ([`NearestIndex::insert_new`]).
+    fn attach(&mut self, p: Point2, parent: usize, cost: f64, new: bool) -> usize {
         assert!(parent < self.parent.len(), "parent {parent} is not a node");
-        let id = self.index.insert(p);
+        let id = if new {
+            self.index.insert_new(p)
+        } else {
+            self.index.insert(p)
+        };
         if let Some(watch) = &mut self.goal {
             watch.saw(p);
         }
@@ -358,6 +381,44 @@ impl<const B: usize> GrowTree<B> {
         })
     }
 
+    /// [`step_towards`](Self::step_towards), from `lead`'s node when it leads towards
+    /// `target` (it must be this tree's, with no node added since [`add_step`](Self::add_step)
+    /// made it).
+    pub(crate) fn step_led(&self, target: Point2, step: f64, lead: Option<Lead>) -> Option<Step> {
+        let Some(lead) = lead.filter(|l| l.target == target) else {
+            return self.step_towards(target, step);
+        };
+        let from = self.index.point(lead.node);
+        Some(Step {
+            near: lead.node,
+            from,
+            to: toolkit::steer_by(from, target, lead.d2.sqrt(), step),
+        })
+    }
+
+    /// Adds step `s` towards `target` (from [`step_led`](Self::step_led), its edge
+    /// checked): its point under its node, as [`add`](Self::add). Returns the new node and,
+    /// when it is nearer to `target` than the step's node, its [`Lead`].
+    pub(crate) fn add_step(&mut self, s: &Step, target: Point2) -> (usize, Option<Lead>) {
+        let t = [target.x, target.y];
+        let d2 = squared_distance([s.to.x, s.to.y], t);
+        // The step's node is the nearest to the target: a node equal to the new point would
+        // be nearer still.
+        let new = d2 < squared_distance([s.from.x, s.from.y], t);
+        let cost = if self.cost.is_empty() {
+            0.0
+        } else {
+            self.cost[s.near] + (s.to - s.from).norm()
+        };
+        let id = self.attach(s.to, s.near, cost, new);
+        let lead = new.then_some(Lead {
+            target,
+            node: id,
+            d2,
+        });
+        (id, lead)
+    }
+
     /// RRT's extension: [`step_towards`](Self::step_towards) the target, then, unless the
     /// step goes nowhere, the counted exact edge check, then [`add`](Self::add). Towards a
     /// watched goal ([`watch_goal`](Self::watch_goal)) a repeat of a refused extension is
@@ -383,7 +444,7 @@ impl<const B: usize> GrowTree<B> {
         }
         Extension::Added {
             near: s.near,
-            new: self.add(s.to, s.near),
+            new: self.add_step(&s, target).0,
         }
     }
 
@@ -544,6 +605,39 @@ mod tests {
             proptest::prop_assert_eq!(plain.points(), watched.points());
             proptest::prop_assert_eq!(plain.parents(), watched.parents());
             proptest::prop_assert!(b.checks <= a.checks);
+        }
+
+        /// Steps towards a target from the last step's lead are the steps a nearest query
+        /// gives, and the points they add (without the search for an equal point) are the
+        /// points plain adds give: on trees of small leaves with repeated points (half
+        /// steps on a coarse lattice) and equidistant nodes.
+        #[test]
+        fn a_lead_steps_as_the_nearest_query(
+            nodes in proptest::collection::vec((0..40_u8, 0..40_u8), 1..200),
+            chases in proptest::collection::vec(((0..40_u8, 0..40_u8), 1..30_usize), 1..20),
+            step in proptest::sample::select(vec![0.5, 1.0, 1.5, 2.0, 3.7]),
+        ) {
+            let at = |(x, y): (u8, u8)| p(f64::from(x) / 2.0, f64::from(y) / 2.0);
+            let mut led = GrowTree::<8>::rooted_in_buckets(p(0.0, 0.0));
+            for (k, &n) in nodes.iter().enumerate() {
+                led.add(at(n), k / 2);
+            }
+            let mut plain = led.clone();
+            for (target, steps) in chases {
+                let target = at(target);
+                let mut lead = None;
+                for _ in 0..steps {
+                    let s = led.step_led(target, step, lead).unwrap();
+                    proptest::prop_assert_eq!(Some(s), plain.step_towards(target, step));
+                    if s.from == target {
+                        break;
+                    }
+                    lead = led.add_step(&s, target).1;
+                    plain.add(s.to, s.near);
+                }
+            }
+            proptest::prop_assert_eq!(led.points(), plain.points());
+            proptest::prop_assert_eq!(led.nearest_k(p(7.3, 9.1), 50), plain.nearest_k(p(7.3, 9.1), 50));
         }
     }
 
