@@ -168,7 +168,8 @@ impl<const B: usize> KdTree<B> {
     pub(crate) fn with_capacity(n: usize) -> Self {
         let leaves = (n / (B / 2).max(1)).max(1);
         let mut tree = Self {
-            stems: Vec::with_capacity(leaves - 1),
+            // Reserved at the first split (below): most of RRT-Connect's trees never split.
+            stems: Vec::new(),
             leaves: Vec::with_capacity(leaves),
             root: LEAF,
             len: 0,
@@ -299,6 +300,10 @@ impl<const B: usize> KdTree<B> {
             above.push(p, id);
         } else {
             leaf.push(p, id);
+        }
+        if self.stems.capacity() == 0 {
+            // As many as the leaves reserved need.
+            self.stems.reserve(self.leaves.capacity() - 1);
         }
         let new_leaf = self.leaves.len() as NodeRef | LEAF;
         self.leaves.push(above);
