@@ -109,21 +109,25 @@ impl<const B: usize> Leaf<B> {
     /// The scan keeps [`LANES`] running minima, one per slot modulo `LANES`, which are
     /// independent and so fill vector registers; one minimum would be a chain of dependent
     /// comparisons, one slot after another.
+    ///
+    /// `S` is how the lanes carry slot numbers ([`Slot`]).
     #[inline(always)]
-    fn nearest(&self, q: [f64; 2]) -> (f64, usize) {
+    fn nearest<S: Slot>(&self, q: [f64; 2]) -> (f64, usize) {
         let mut min = [f64::INFINITY; LANES];
-        let mut at = [0usize; LANES];
-        for (c, (xs, ys)) in self.chunks().enumerate() {
+        let mut at = [S::of(0); LANES];
+        let mut slot: [S; LANES] = std::array::from_fn(S::of);
+        for (xs, ys) in self.chunks() {
             for l in 0..LANES {
                 let d = squared_distance([xs[l], ys[l]], q);
                 let nearer = d < min[l];
                 min[l] = if nearer { d } else { min[l] };
-                at[l] = if nearer { c * LANES + l } else { at[l] };
+                at[l] = if nearer { slot[l] } else { at[l] };
+                slot[l] = slot[l].after_chunk();
             }
         }
         (0..LANES).fold((f64::INFINITY, 0), |best, l| {
             if min[l] < best.0 {
-                (min[l], at[l])
+                (min[l], at[l].index())
             } else {
                 best
             }
@@ -147,6 +151,92 @@ impl<const B: usize> Leaf<B> {
     }
 }
 
+/// A slot number as a leaf scan's lanes carry it: `usize` in the baseline x86-64 build,
+/// `f64` in the AVX2 build ([`Wide`]), whose blends LLVM makes on `f64` lanes (`usize`
+/// slots it moved one lane at a time there; `f64` ones are slower with SSE2's three-step
+/// blends). Both give the same slot.
+trait Slot: Copy {
+    fn of(k: usize) -> Self;
+    /// The same lane's slot in the next chunk.
+    fn after_chunk(self) -> Self;
+    fn index(self) -> usize;
+}
+
+impl Slot for usize {
+    #[inline(always)]
+    fn of(k: usize) -> Self {
+        k
+    }
+    #[inline(always)]
+    fn after_chunk(self) -> Self {
+        self + LANES
+    }
+    #[inline(always)]
+    fn index(self) -> usize {
+        self
+    }
+}
+
+impl Slot for f64 {
+    #[inline(always)]
+    fn of(k: usize) -> Self {
+        k as f64
+    }
+    #[inline(always)]
+    fn after_chunk(self) -> Self {
+        self + LANES as f64
+    }
+    #[inline(always)]
+    fn index(self) -> usize {
+        // Slots are below a leaf's size: whole and exact.
+        self as usize
+    }
+}
+
+/// Whether this CPU runs the leaf scan compiled for AVX2 (x86-64-v3), found when a tree is
+/// made. The scan is the same arithmetic in the same lanes either way, so it finds the same
+/// point (ties included); AVX2 does four lanes an instruction where the baseline build's
+/// SSE2 does two.
+#[derive(Debug, Clone, Copy)]
+struct Wide(#[cfg(target_arch = "x86_64")] Option<pulp::x86::V3>);
+
+impl Wide {
+    fn detect() -> Self {
+        Self(
+            #[cfg(target_arch = "x86_64")]
+            pulp::x86::V3::try_new(),
+        )
+    }
+
+    /// [`Leaf::nearest`], in the AVX2 build where the CPU has it.
+    #[inline(always)]
+    fn nearest<const B: usize>(self, leaf: &Leaf<B>, q: [f64; 2]) -> (f64, usize) {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(v3) = self.0 {
+            return v3.vectorize(WideScan { leaf, q });
+        }
+        leaf.nearest::<usize>(q)
+    }
+}
+
+/// [`Leaf::nearest`] handed to [`pulp`], which compiles it for AVX2 only when it is inlined
+/// into pulp's entry (a closure was not).
+#[cfg(target_arch = "x86_64")]
+struct WideScan<'a, const B: usize> {
+    leaf: &'a Leaf<B>,
+    q: [f64; 2],
+}
+
+#[cfg(target_arch = "x86_64")]
+impl<const B: usize> pulp::NullaryFnOnce for WideScan<'_, B> {
+    type Output = (f64, usize);
+
+    #[inline(always)]
+    fn call(self) -> Self::Output {
+        self.leaf.nearest::<f64>(self.q)
+    }
+}
+
 /// A 2-D k-d tree over finite, pairwise distinct points, each with a `u64` item; distances
 /// are squared Euclidean.
 #[derive(Debug, Clone)]
@@ -155,6 +245,7 @@ pub(crate) struct KdTree<const B: usize> {
     leaves: Vec<Leaf<B>>,
     root: NodeRef,
     len: usize,
+    wide: Wide,
 }
 
 impl<const B: usize> Default for KdTree<B> {
@@ -173,6 +264,7 @@ impl<const B: usize> KdTree<B> {
             leaves: Vec::with_capacity(leaves),
             root: LEAF,
             len: 0,
+            wide: Wide::detect(),
         };
         tree.leaves.push(Leaf::empty());
         tree
@@ -327,9 +419,12 @@ impl<const B: usize> KdTree<B> {
         if self.len == 0 {
             return None;
         }
-        let mut nearest = Nearest(None);
+        let mut nearest = Nearest {
+            best: None,
+            wide: self.wide,
+        };
         self.search(self.root, q, [0.0; 2], 0.0, &mut nearest);
-        nearest.0
+        nearest.best
     }
 
     /// Every item within squared distance `r2` of `q`, with its squared distance, in no
@@ -400,18 +495,21 @@ trait Visit<const B: usize> {
 
 /// The nearest item and its squared distance so far (`None` before the first point: a
 /// squared distance may overflow to infinity, and a point must still be found).
-struct Nearest(Option<(u64, f64)>);
+struct Nearest {
+    best: Option<(u64, f64)>,
+    wide: Wide,
+}
 
 impl<const B: usize> Visit<B> for Nearest {
     fn bound(&self) -> f64 {
-        self.0.map_or(f64::INFINITY, |b| b.1)
+        self.best.map_or(f64::INFINITY, |b| b.1)
     }
 
     #[inline(always)]
     fn leaf(&mut self, leaf: &Leaf<B>, q: [f64; 2]) {
-        let (min, k) = leaf.nearest(q);
-        if leaf.len > 0 && self.0.is_none_or(|b| min < b.1) {
-            self.0 = Some((leaf.ids[k], min));
+        let (min, k) = self.wide.nearest(leaf, q);
+        if leaf.len > 0 && self.best.is_none_or(|b| min < b.1) {
+            self.best = Some((leaf.ids[k], min));
         }
     }
 }
@@ -458,6 +556,35 @@ impl<const B: usize> Visit<B> for NearestN {
                 self.found.insert(at, (item, d));
                 self.found.truncate(self.k);
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    proptest::proptest! {
+        /// The scan finds the same slot whichever way its lanes carry slots, and in the
+        /// AVX2 build where this CPU has one: on leaves of lattice points (ties, equal
+        /// distances across lanes) and of points far from the query.
+        #[test]
+        fn every_scan_finds_the_same_slot(
+            points in proptest::collection::vec((-6..6_i32, -6..6_i32), 1..=64),
+            q in (-8..8_i32, -8..8_i32),
+            scale in proptest::sample::select(vec![0.5, 1.0, 3.0e150]),
+        ) {
+            let mut leaf = Leaf::<64>::empty();
+            for (id, &(x, y)) in points.iter().enumerate() {
+                leaf.push([f64::from(x) * scale, f64::from(y) * scale], id as u64);
+            }
+            let q = [f64::from(q.0) * scale, f64::from(q.1) * scale];
+            let baseline = leaf.nearest::<usize>(q);
+            proptest::prop_assert_eq!(baseline, leaf.nearest::<f64>(q));
+            proptest::prop_assert_eq!(baseline, Wide::detect().nearest(&leaf, q));
+            // The slot is a nearest one.
+            let least = leaf.squared_distances(q).map(|(_, d)| d).fold(f64::INFINITY, f64::min);
+            proptest::prop_assert!(baseline.0 == least || (least.is_infinite() && baseline.0.is_infinite()));
         }
     }
 }
