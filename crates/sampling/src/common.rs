@@ -11,10 +11,12 @@ use crate::{GrowTree, Run, Search};
 /// goal tree): root of the start tree to `a`, then `b` back to the goal root, without
 /// the repeated meeting point.
 fn joined_path(start: &GrowTree, a: usize, goal: &GrowTree, b: usize) -> Vec<Point2> {
-    let mut path = start.branch(a);
-    let mut back = goal.branch(b);
-    back.reverse();
-    path.extend(back);
+    // In one vector of the joined length: `a` up to the start, turned round, then `b` up
+    // to the goal.
+    let mut path = Vec::with_capacity(start.climb(a).count() + goal.climb(b).count());
+    path.extend(start.climb(a));
+    path.reverse();
+    path.extend(goal.climb(b));
     path.dedup_by(|a, b| a == b);
     path
 }

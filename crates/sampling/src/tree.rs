@@ -528,6 +528,16 @@ impl<const B: usize> GrowTree<B> {
         toolkit::branch(self.index.points(), &self.parent, leaf)
     }
 
+    /// The points from node `leaf` up to the root, `leaf`'s first.
+    pub(crate) fn climb(&self, leaf: usize) -> impl Iterator<Item = Point2> + '_ {
+        let mut at = Some(leaf);
+        std::iter::from_fn(move || {
+            let i = at?;
+            at = self.parent[i].map(|p| p as usize);
+            Some(self.index.point(i))
+        })
+    }
+
     /// Every edge as (parent point, child point), in child id order.
     pub fn edges(&self) -> impl Iterator<Item = (Point2, Point2)> + '_ {
         let points = self.index.points();
