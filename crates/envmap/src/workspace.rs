@@ -312,6 +312,23 @@ impl GridMap {
     /// coordinates), or `None`: the point test that needs no sweep.
     #[inline]
     fn interior_cell(&self, p: Point2) -> Option<(usize, usize)> {
+        let (i, j, inside) = self.cell_of(p)?;
+        inside().then_some((i, j))
+    }
+
+    /// Whether `p` lies in a blocked cell's [`interior_cell`](Self::interior_cell) square:
+    /// the cell is read first, and the margins only for a blocked one (most points tested
+    /// are in free cells).
+    #[inline]
+    fn in_blocked_interior(&self, p: Point2) -> bool {
+        self.cell_of(p)
+            .is_some_and(|(i, j, inside)| !self.cell_free(i, j) && inside())
+    }
+
+    /// The cell whose half-open square holds `p` (`None` outside the map or for NaN), and
+    /// whether `p` is more than 1e-6 cells from each of its edges.
+    #[inline(always)]
+    fn cell_of(&self, p: Point2) -> Option<(usize, usize, impl FnOnce() -> bool)> {
         let (r, o) = (self.resolution(), self.origin());
         let (u, v) = ((p.x - o.x) / r, (p.y - o.y) / r);
         if !(u >= 0.0 && v >= 0.0 && u < self.width() as f64 && v < self.height() as f64) {
@@ -322,7 +339,7 @@ impl GridMap {
         // dozen (the same values: u and v are below the map's size).
         let (i, j) = (u as i64 as usize, v as i64 as usize);
         let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && k as f64 + 1.0 - t > 1e-6;
-        (inside(u, i) && inside(v, j)).then_some((i, j))
+        Some((i, j, move || inside(u, i) && inside(v, j)))
     }
 }
 
@@ -480,12 +497,7 @@ impl Workspace for GridMap {
     /// sweep would meet that cell); any other goes through it.
     #[inline]
     fn segment_free(&self, a: Point2, b: Point2) -> bool {
-        if let Some((i, j)) = self.interior_cell(b)
-            && !self.cell_free(i, j)
-        {
-            return false;
-        }
-        self.segment_free_cells(a, b)
+        !self.in_blocked_interior(b) && self.segment_free_cells(a, b)
     }
 
     fn zone(&self, p: Point2) -> Zone {
