@@ -152,8 +152,8 @@ impl<const B: usize> NearestIndex<B> {
 
     /// [`insert`](Self::insert) of a finite `p` known to be new: nearer to some point
     /// than the index's nearest point, in the distances the index computes
-    /// ([`squared_distance`](crate::kdtree::squared_distance)), so that an equal point would have been as near. Skips the search for
-    /// an equal point.
+    /// ([`squared_distance`](crate::kdtree::squared_distance)), so that an equal point
+    /// would have been as near. Skips the search for an equal point.
     pub(crate) fn insert_new(&mut self, p: Point2) -> usize {
         let id = self.points.len();
         self.points.push(p);
