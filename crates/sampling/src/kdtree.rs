@@ -316,6 +316,7 @@ impl<const B: usize> KdTree<B> {
 
     /// The leaf `p` belongs in, and the link to it (its stem, and whether it is that stem's
     /// `above` side; `None` for the root).
+    #[inline]
     fn descend(&self, p: [f64; 2]) -> (NodeRef, Option<(usize, bool)>) {
         let mut parent: Option<(usize, bool)> = None;
         let mut node = self.root;
@@ -330,6 +331,7 @@ impl<const B: usize> KdTree<B> {
 
     /// Puts `p`, equal to no point of the tree, in leaf `node` (linked from `parent`),
     /// splitting the leaf when it is full.
+    #[inline]
     fn put(&mut self, p: [f64; 2], id: u64, node: NodeRef, parent: Option<(usize, bool)>) {
         const {
             assert!(
