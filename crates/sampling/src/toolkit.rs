@@ -248,18 +248,26 @@ impl<'a, W: Workspace + ?Sized> CountingChecker<'a, W> {
 /// assert_eq!(sampling::branch(&points, &parent, 2), points.to_vec());
 /// ```
 pub fn branch(points: &[Point2], parent: &[Option<u32>], leaf: usize) -> Vec<Point2> {
-    // Counted first: the path is filled from its end, in a vector of its size.
-    let ancestors = |mut i: usize| {
-        std::iter::from_fn(move || {
-            i = parent[i]? as usize;
-            Some(i)
-        })
-    };
-    let mut path = vec![points[leaf]; ancestors(leaf).count() + 1];
-    for (slot, i) in path.iter_mut().rev().skip(1).zip(ancestors(leaf)) {
-        *slot = points[i];
-    }
+    // Counted first: the path is climbed into a vector of its size, then turned round.
+    let mut path = Vec::with_capacity(climb(points, parent, leaf).count());
+    path.extend(climb(points, parent, leaf));
+    path.reverse();
     path
+}
+
+/// The points of a parent-linked tree from `leaf` up to its root, `leaf`'s first (as
+/// [`branch`], backwards).
+pub(crate) fn climb<'a>(
+    points: &'a [Point2],
+    parent: &'a [Option<u32>],
+    leaf: usize,
+) -> impl Iterator<Item = Point2> + 'a {
+    let mut at = Some(leaf);
+    std::iter::from_fn(move || {
+        let i = at?;
+        at = parent[i].map(|p| p as usize);
+        Some(points[i])
+    })
 }
 
 /// A plan whose path is `path`: its cost is the path's length, with `trees` and `stats`

@@ -250,12 +250,17 @@ impl<const B: usize> GrowTree<B> {
     ///
     /// If `parent` is not a node of the tree.
     pub fn add(&mut self, p: Point2, parent: usize) -> usize {
-        let cost = if self.cost.is_empty() {
+        self.attach(p, parent, self.cost_via(p, parent), false)
+    }
+
+    /// The cost-to-come of a node at `p` under `parent` (0 in a plain tree).
+    #[inline]
+    fn cost_via(&self, p: Point2, parent: usize) -> f64 {
+        if self.cost.is_empty() {
             0.0
         } else {
             self.cost[parent] + (p - self.index.point(parent)).norm()
-        };
-        self.add_with_cost(p, parent, cost)
+        }
     }
 
     /// Follows `goal`, a target that [`extend`](Self::extend) is handed again and again
@@ -399,18 +404,14 @@ impl<const B: usize> GrowTree<B> {
     /// Adds step `s` towards `target` (from [`step_led`](Self::step_led), its edge
     /// checked): its point under its node, as [`add`](Self::add). Returns the new node and,
     /// when it is nearer to `target` than the step's node, its [`Lead`].
+    #[inline]
     pub(crate) fn add_step(&mut self, s: &Step, target: Point2) -> (usize, Option<Lead>) {
         let t = [target.x, target.y];
         let d2 = squared_distance([s.to.x, s.to.y], t);
         // The step's node is the nearest to the target: a node equal to the new point would
         // be nearer still.
         let new = d2 < squared_distance([s.from.x, s.from.y], t);
-        let cost = if self.cost.is_empty() {
-            0.0
-        } else {
-            self.cost[s.near] + (s.to - s.from).norm()
-        };
-        let id = self.attach(s.to, s.near, cost, new);
+        let id = self.attach(s.to, s.near, self.cost_via(s.to, s.near), new);
         let lead = new.then_some(Lead {
             target,
             node: id,
@@ -530,12 +531,7 @@ impl<const B: usize> GrowTree<B> {
 
     /// The points from node `leaf` up to the root, `leaf`'s first.
     pub(crate) fn climb(&self, leaf: usize) -> impl Iterator<Item = Point2> + '_ {
-        let mut at = Some(leaf);
-        std::iter::from_fn(move || {
-            let i = at?;
-            at = self.parent[i].map(|p| p as usize);
-            Some(self.index.point(i))
-        })
+        toolkit::climb(self.index.points(), &self.parent, leaf)
     }
 
     /// Every edge as (parent point, child point), in child id order.
