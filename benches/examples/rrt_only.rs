@@ -9,7 +9,7 @@
 
 use std::time::Instant;
 
-use hyplan_core::{Budget, Goal, Query};
+use hyplan_core::Budget;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use sampling::{Rrt, RrtConnect};
@@ -19,52 +19,24 @@ fn main() {
     let runs: u64 = args.first().and_then(|a| a.parse().ok()).unwrap_or(500);
     let case = args.get(1).map_or("rects100", String::as_str);
     let planner = args.get(2).map_or("rrt", String::as_str);
-    // bench-peers' cases: map, start, goal, step, goal radius.
-    let (file, start, goal, step, radius) = match case {
-        "maze101" => (
-            "data/generated/maze.pgm",
-            (2.5, 2.5),
-            (98.5, 98.5),
-            3.0,
-            0.0,
-        ),
-        "room" => (
-            "scenarios/maps/room_960x640.pgm",
-            (20.0, 320.0),
-            (900.0, 520.0),
-            40.0,
-            20.0,
-        ),
-        "arena" => (
-            "data/movingai/arena.map",
-            (1.5, 45.5),
-            (47.5, 9.5),
-            3.0,
-            0.0,
-        ),
-        _ => (
-            "data/generated/rects100.pgm",
-            (5.5, 5.5),
-            (94.5, 94.5),
-            5.0,
-            0.0,
-        ),
+    // bench-peers' case (by the start of its name), read and prepared as bench-peers does
+    // before its timed runs.
+    let Some(peer) = hyplan_benches::PEER_CASES
+        .iter()
+        .find(|c| c.name.starts_with(case))
+    else {
+        eprintln!("no bench-peers case named {case}");
+        std::process::exit(2);
     };
-    let loaded = hyplan_benches::load_as_peer(file);
+    let loaded = hyplan_benches::load_as_peer(peer.map);
     let map = loaded.map;
-    // The one-time preparation bench-peers makes before its timed runs.
     let _ = map.blocked_strides();
-    let center = loaded.frame.to_world(goal.0, goal.1);
-    let goal = if radius > 0.0 {
-        Goal::disc(center, radius)
-    } else {
-        Goal::Point(center)
-    };
-    let query = Query::new(loaded.frame.to_world(start.0, start.1), goal);
+    let query = peer.query(&loaded.frame);
+    let step = peer.step;
     let budget = Budget::iterations(2_000_000);
     let rrt = Rrt {
         step,
-        goal_bias: 0.05,
+        goal_bias: peer.goal_bias,
         budget,
     };
     let connect = RrtConnect { step, budget };

@@ -36,11 +36,12 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, bail};
-use envmap::{GridMap, LoadOptions, load_map};
+use envmap::{GridMap, load_map};
 use harness::Scoring;
 use harness::bench::{self, BenchRun, ExperimentInfo, RunId};
 use harness::stats::median;
-use hyplan_core::{Budget, Goal, Query, Workspace};
+use hyplan_benches::PeerCase as Case;
+use hyplan_core::{Budget, Query, Workspace};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use registry::{PlannerConfig, PlannerKind};
@@ -75,50 +76,10 @@ pub struct Args {
     pub db: Option<PathBuf>,
 }
 
-/// One comparison setting.
-struct Case {
-    name: &'static str,
-    /// Path relative to the workspace root.
-    map: &'static str,
-    start: (f64, f64),
-    goal: (f64, f64),
-    step: f64,
-    goal_bias: f64,
-    goal_radius: f64,
-}
-
-impl Case {
-    /// A case with OMPL's default goal bias, 0.05.
-    const fn new(
-        name: &'static str,
-        map: &'static str,
-        start: (f64, f64),
-        goal: (f64, f64),
-        step: f64,
-        goal_radius: f64,
-    ) -> Self {
-        Case {
-            name,
-            map,
-            start,
-            goal,
-            step,
-            goal_bias: 0.05,
-            goal_radius,
-        }
-    }
-}
-
-/// One case a row. The room is converted to binary P5 under target/peers/maps (the peer
-/// reads P2/P3/P5/P6 only).
-#[rustfmt::skip]
-const CASES: &[Case] = &[
-    //         name           map                                start           goal            step  goal radius
-    Case::new("rects100",    "data/generated/rects100.pgm",     (5.5, 5.5),     (94.5, 94.5),   5.0,  0.0),
-    Case::new("maze101",     "data/generated/maze.pgm",         (2.5, 2.5),     (98.5, 98.5),   3.0,  0.0),
-    Case::new("room960x640", "scenarios/maps/room_960x640.pgm", (20.0, 320.0),  (900.0, 520.0), 40.0, 20.0),
-    Case::new("arena.map",   "data/movingai/arena.map",         (1.5, 45.5),    (47.5, 9.5),    3.0,  0.0),
-];
+/// One case a row (the table is `hyplan_benches`'s, which the examples that time one case
+/// share). The room is converted to binary P5 under target/peers/maps (the peer reads
+/// P2/P3/P5/P6 only).
+const CASES: &[Case] = hyplan_benches::PEER_CASES;
 
 /// (our planner, OMPL's name or None when OMPL has no such planner).
 const PLANNERS: &[(PlannerKind, Option<&str>)] = &[
@@ -441,22 +402,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 continue;
             }
         };
-        // The peer's reading of pictures: gray < 128 is an obstacle, no safety band.
-        let opts = LoadOptions {
-            threshold: 128,
-            safety_radius: Some(0.0),
-            ..LoadOptions::default()
-        };
-        let loaded = load_map(&map_path, &opts)
+        let loaded = load_map(&map_path, &hyplan_benches::peer_load_options())
             .with_context(|| format!("loading {}", map_path.display()))?;
-        let start = loaded.frame.to_world(case.start.0, case.start.1);
-        let center = loaded.frame.to_world(case.goal.0, case.goal.1);
-        let goal = if case.goal_radius > 0.0 {
-            Goal::disc(center, case.goal_radius)
-        } else {
-            Goal::Point(center)
-        };
-        let query = Query::new(start, goal);
+        let query = case.query(&loaded.frame);
         query
             .validate(&loaded.map)
             .with_context(|| format!("case {}", case.name))?;
