@@ -1,6 +1,8 @@
 //! `CellBits`: a binary grid packed 64 cells a word, by rows and by columns, for scans
 //! along a row or a column a word at a time.
 
+use std::ops::RangeInclusive;
+
 use crate::Mask;
 
 /// A binary grid packed one bit a cell twice: by rows (row `j` holds cells `(0, j)` to
@@ -92,6 +94,41 @@ impl CellBits {
         (i < self.width).then(|| last_set(self.column(i), from, to))?
     }
 
+    /// Whether no cell `(i, j)` with `i` in `columns` and `j` in `rows` is set (cells
+    /// outside the grid are clear): the packed rows a word at a time, for a box of a few
+    /// cells a few words in all.
+    ///
+    /// ```
+    /// use envmap::{CellBits, Mask};
+    /// let mut mask = Mask::new(100, 4);
+    /// mask.set(70, 2, true);
+    /// let bits = CellBits::from_mask(&mask);
+    /// assert!(!bits.box_clear(60..=80, 0..=3));
+    /// assert!(bits.box_clear(60..=69, 0..=3));
+    /// assert!(bits.box_clear(60..=80, 3..=9));
+    /// ```
+    #[must_use]
+    pub fn box_clear(&self, columns: RangeInclusive<usize>, rows: RangeInclusive<usize>) -> bool {
+        let (from, to) = (*columns.start(), *columns.end());
+        let to = to.min((self.row_words * 64).wrapping_sub(1));
+        if self.row_words == 0 || self.height == 0 || from > to {
+            return true;
+        }
+        let (first, last) = (from / 64, to / 64);
+        let (lo, hi) = (u64::MAX << (from % 64), u64::MAX >> (63 - to % 64));
+        let rows = *rows.start()..=(*rows.end()).min(self.height.wrapping_sub(1));
+        rows.into_iter().all(|j| {
+            let row = self.row(j);
+            if first == last {
+                row[first] & lo & hi == 0
+            } else {
+                row[first] & lo == 0
+                    && row[first + 1..last].iter().all(|&w| w == 0)
+                    && row[last] & hi == 0
+            }
+        })
+    }
+
     fn row(&self, j: usize) -> &[u64] {
         &self.rows[j * self.row_words..(j + 1) * self.row_words]
     }
@@ -169,7 +206,12 @@ mod tests {
             prop_assert_eq!(bits.first_in_row(line, from, to), range.clone().find(|&i| set(i, line)));
             prop_assert_eq!(bits.last_in_row(line, from, to), range.clone().rev().find(|&i| set(i, line)));
             prop_assert_eq!(bits.first_in_column(line, from, to), range.clone().find(|&j| set(line, j)));
-            prop_assert_eq!(bits.last_in_column(line, from, to), range.rev().find(|&j| set(line, j)));
+            prop_assert_eq!(bits.last_in_column(line, from, to), range.clone().rev().find(|&j| set(line, j)));
+            let rows = line.min(from)..=line.max(to);
+            prop_assert_eq!(
+                bits.box_clear(range.clone(), rows.clone()),
+                !rows.clone().any(|j| range.clone().any(|i| set(i, j)))
+            );
             for j in 0..h {
                 for i in 0..w {
                     prop_assert_eq!(bits.get(i, j), mask.get(i, j));

@@ -514,11 +514,22 @@ impl GridMap {
             .map(Vec::as_slice)
     }
 
+    /// [`bits_from`](Self::bits_from) the cells that block motion under the current
+    /// [`blocked_from`](GridMap::blocked_from) (`None` when nothing blocks).
+    #[must_use]
+    pub fn blocked_bits(&self) -> Option<&CellBits> {
+        self.bits_from(self.blocked_from)
+    }
+
     /// [`strides_from`](Self::strides_from) the cells that block motion under the current
-    /// [`blocked_from`](GridMap::blocked_from).
+    /// [`blocked_from`](GridMap::blocked_from), made with their
+    /// [`blocked_bits`](Self::blocked_bits) (a pass over the cells, where the strides need a
+    /// distance transform): the edge checks' preparation.
     #[must_use]
     pub fn blocked_strides(&self) -> Option<&[u8]> {
-        self.strides_from(self.blocked_from)
+        let strides = self.strides_from(self.blocked_from)?;
+        let _ = self.blocked_bits();
+        Some(strides)
     }
 
     /// A lower bound on the distance, world units, from `p` to the nearest cell that
