@@ -67,8 +67,9 @@ impl NearestIndex {
         Self::with_bucket_capacity(n)
     }
 
-    /// An index holding only `root` (id 0), with room for a growing tree's first 1024
-    /// nodes.
+    /// An index holding only `root` (id 0), with room for a leaf of points (64): it grows
+    /// with the tree, as a run's trees are mostly small (see
+    /// [`rooted_in_buckets`](NearestIndex::rooted_in_buckets)).
     #[must_use]
     pub fn rooted_at(root: Point2) -> Self {
         Self::rooted_in_buckets(root)
@@ -95,10 +96,17 @@ impl<const B: usize> NearestIndex<B> {
         }
     }
 
-    /// [`rooted_at`](NearestIndex::rooted_at) with leaves of `B` points.
+    /// [`rooted_at`](NearestIndex::rooted_at) with leaves of `B` points, and room for one
+    /// leaf's.
+    ///
+    /// The room grows with the tree, not ahead of it: RRT-Connect's trees hold a few dozen
+    /// nodes on open maps, and a run that reserved for a thousand (about 70 kB a tree)
+    /// freed enough at its end for the C allocator to give the memory back to the system
+    /// and fault it in again on the next run (`cargo xtask bench-peers` ran its arena
+    /// RRT-Connect at twice the time of a run in a loop).
     #[must_use]
     pub fn rooted_in_buckets(root: Point2) -> Self {
-        let mut index = Self::with_bucket_capacity(1024);
+        let mut index = Self::with_bucket_capacity(B);
         index.insert(root);
         index
     }

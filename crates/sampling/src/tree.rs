@@ -155,7 +155,7 @@ impl<const B: usize> GrowTree<B> {
             index: NearestIndex::rooted_in_buckets(root),
             // As much room as the index's.
             parent: {
-                let mut parent = Vec::with_capacity(1024);
+                let mut parent = Vec::with_capacity(B);
                 parent.push(None);
                 parent
             },
