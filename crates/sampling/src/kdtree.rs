@@ -245,6 +245,8 @@ pub(crate) struct KdTree<const B: usize> {
     leaves: Vec<Leaf<B>>,
     root: NodeRef,
     len: usize,
+    /// The leaves reserved at the first split.
+    room: usize,
     wide: Wide,
 }
 
@@ -255,19 +257,18 @@ impl<const B: usize> Default for KdTree<B> {
 }
 
 impl<const B: usize> KdTree<B> {
-    /// An empty tree with room for about `n` points (leaves half full) before reallocating.
+    /// An empty tree with room for about `n` points (leaves half full) before reallocating,
+    /// reserved at its first split: until then it holds one leaf (most of RRT-Connect's
+    /// trees never split, and a leaf is 1.5 kB).
     pub(crate) fn with_capacity(n: usize) -> Self {
-        let leaves = (n / (B / 2).max(1)).max(1);
-        let mut tree = Self {
-            // Reserved at the first split (below): most of RRT-Connect's trees never split.
+        Self {
             stems: Vec::new(),
-            leaves: Vec::with_capacity(leaves),
+            leaves: vec![Leaf::empty()],
             root: LEAF,
             len: 0,
+            room: (n / (B / 2).max(1)).max(1),
             wide: Wide::detect(),
-        };
-        tree.leaves.push(Leaf::empty());
-        tree
+        }
     }
 
     /// How many points the tree holds.
@@ -396,7 +397,8 @@ impl<const B: usize> KdTree<B> {
             leaf.push(p, id);
         }
         if self.stems.capacity() == 0 {
-            // As many as the leaves reserved need.
+            // The room promised, and as many stems as those leaves need.
+            self.leaves.reserve(self.room.saturating_sub(self.leaves.len()));
             self.stems.reserve(self.leaves.capacity() - 1);
         }
         let new_leaf = self.leaves.len() as NodeRef | LEAF;

@@ -10,6 +10,10 @@ use rustc_hash::FxHashMap as HashMap;
 
 use crate::kdtree::KdTree;
 
+/// The points a tree's leaves are reserved for at its first split
+/// ([`NearestIndex::rooted_in_buckets`]).
+const GROWN_ROOM: usize = 512;
+
 /// A growing set of 2-D points with nearest and within-radius queries, in plain (not
 /// squared) world-unit distances, in a k-d tree whose leaves hold `B` points.
 ///
@@ -96,17 +100,22 @@ impl<const B: usize> NearestIndex<B> {
         }
     }
 
-    /// [`rooted_at`](NearestIndex::rooted_at) with leaves of `B` points, and room for one
-    /// leaf's.
+    /// [`rooted_at`](NearestIndex::rooted_at) with leaves of `B` points: room for one leaf's
+    /// points, and leaves for about 512 points once the first leaf splits.
     ///
-    /// The room grows with the tree, not ahead of it: RRT-Connect's trees hold a few dozen
-    /// nodes on open maps, and a run that reserved for a thousand (about 70 kB a tree)
-    /// freed enough at its end for the C allocator to give the memory back to the system
-    /// and fault it in again on the next run (`cargo xtask bench-peers` ran its arena
-    /// RRT-Connect at twice the time of a run in a loop).
+    /// The room follows the tree: RRT-Connect's trees hold a few dozen nodes on open maps,
+    /// and a run that reserved for a thousand at once (about 70 kB a tree) freed enough at
+    /// its end for the C allocator to give the memory back to the system and fault it in
+    /// again on the next run (`cargo xtask bench-peers` ran its arena RRT-Connect at twice
+    /// the time of a run in a loop). A tree that splits is growing, and gets its leaves for
+    /// hundreds at once: doubling from one leaf copied leaves of 1.5 kB again and again.
     #[must_use]
     pub fn rooted_in_buckets(root: Point2) -> Self {
-        let mut index = Self::with_bucket_capacity(B);
+        let mut index = Self {
+            tree: KdTree::with_capacity(GROWN_ROOM),
+            points: Vec::with_capacity(B),
+            twins: HashMap::default(),
+        };
         index.insert(root);
         index
     }
