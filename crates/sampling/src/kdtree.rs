@@ -398,7 +398,8 @@ impl<const B: usize> KdTree<B> {
         }
         if self.stems.capacity() == 0 {
             // The room promised, and as many stems as those leaves need.
-            self.leaves.reserve(self.room.saturating_sub(self.leaves.len()));
+            self.leaves
+                .reserve(self.room.saturating_sub(self.leaves.len()));
             self.stems.reserve(self.leaves.capacity() - 1);
         }
         let new_leaf = self.leaves.len() as NodeRef | LEAF;
