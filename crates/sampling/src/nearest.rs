@@ -65,7 +65,8 @@ impl NearestIndex {
         Self::default()
     }
 
-    /// An empty index with room for `n` points before reallocating.
+    /// An empty index with room for `n` points (its k-d tree's leaves reserved at their
+    /// first split).
     #[must_use]
     pub fn with_capacity(n: usize) -> Self {
         Self::with_bucket_capacity(n)
@@ -81,8 +82,8 @@ impl NearestIndex {
 }
 
 impl<const B: usize> NearestIndex<B> {
-    /// An empty index of leaves of `B` points, with room for `n` points before
-    /// reallocating.
+    /// An empty index of leaves of `B` points, with room for `n` points (the leaves for
+    /// them reserved at the first split).
     ///
     /// ```
     /// use hyplan_core::Point2;
