@@ -5,7 +5,8 @@
 //! goal, step = OMPL's `--range`, goal bias, goal radius) runs the peer with `--runs N` and
 //! ours in-process for the same number of seeded runs, timing only the `plan` call (the
 //! peer's `time_s` is `SimpleSetup::solve`). Prints a Markdown table of medians, ratios,
-//! success rates and lengths.
+//! success rates and lengths. With `--rounds R` it does that R times per row, the two sides
+//! in turn, and the medians are over all rounds' runs.
 //!
 //! With `--db FILE`, both sides' runs are also written as OMPL benchmark logs (the peer
 //! through `ompl::tools::Benchmark`, `--ompl-log`; ours through `harness::bench`) under
@@ -52,6 +53,13 @@ pub struct Args {
     /// Runs (seeds) per planner and case, for us and for OMPL.
     #[arg(long, default_value_t = 30)]
     pub runs: u32,
+    /// Rounds of those runs per planner and case, ours and OMPL's in turn (who goes first
+    /// alternates), each OMPL round a new process: the medians are then over every round's
+    /// runs, and the table adds the range of the rounds' own ratios. On a noisy host one
+    /// process's median moves by a third between runs; rounds spread both sides over the
+    /// same stretch of time and over several of OMPL's processes.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub rounds: u32,
     /// Time limit per run, seconds (both sides).
     #[arg(long, default_value_t = 20.0)]
     pub time_limit: f64,
@@ -124,16 +132,37 @@ fn our_config(kind: PlannerKind, case: &Case, budget: Budget) -> PlannerConfig {
         .with_budget(budget)
 }
 
-/// Medians and counts of one side of one row.
-#[derive(Default, Clone, Copy)]
+/// Times, medians and counts of one side of one row.
+#[derive(Default, Clone)]
 struct Summary {
     runs: usize,
     solved: usize,
-    median_time_s: f64,
+    /// Every run's time, seconds.
+    times: Vec<f64>,
     median_length: Option<f64>,
     /// Solved paths that cross a blocked cell (OMPL's `--check-exact`; ours are checked
     /// here with `segment_free` and must be 0).
     cut: usize,
+}
+
+impl Summary {
+    /// Adds another round of the same runs: its times and counts (the rounds repeat the
+    /// same seeds, so the lengths are the first round's). `first`: this is that round.
+    fn merge(&mut self, round: Self, first: bool) {
+        if first {
+            *self = round;
+            return;
+        }
+        self.runs += round.runs;
+        self.solved += round.solved;
+        self.cut += round.cut;
+        self.times.extend(round.times);
+    }
+}
+
+/// The median of a side's run times, seconds (NaN without runs).
+fn time_median(s: &Summary) -> f64 {
+    median(s.times.iter().copied()).unwrap_or(f64::NAN)
 }
 
 fn root() -> PathBuf {
@@ -290,7 +319,7 @@ fn run_ompl(
     Ok(Summary {
         runs: times.len(),
         solved,
-        median_time_s: median(times).unwrap_or(f64::NAN),
+        times,
         median_length: median(lengths),
         cut,
     })
@@ -359,7 +388,7 @@ fn run_ours(
     Ok(Summary {
         runs: times.len(),
         solved: lengths.len(),
-        median_time_s: median(times).unwrap_or(f64::NAN),
+        times,
         median_length: median(lengths),
         cut,
     })
@@ -385,10 +414,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .with_context(|| format!("creating {}", log_dir.display()))?;
     }
     let mut logs: Vec<PathBuf> = Vec::new();
+    let (rounds_head, rounds_rule) = if args.rounds > 1 {
+        (" rounds' ratios |", "---:|")
+    } else {
+        ("", "")
+    };
     println!(
-        "| case | planner | step | runs | ours median ms | OMPL median ms | ours/OMPL | ours solved | OMPL exact | ours median length | OMPL median length | OMPL cut |"
+        "| case | planner | step | runs | ours median ms | OMPL median ms | ours/OMPL | ours solved | OMPL exact | ours median length | OMPL median length | OMPL cut |{rounds_head}"
     );
-    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|{rounds_rule}");
     let mut worst_ratio: f64 = 0.0;
     let mut success_ok = true;
     for case in CASES {
@@ -421,33 +455,69 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             if args.planners.as_ref().is_some_and(|ps| !ps.contains(&ours)) {
                 continue;
             }
-            let mut records = args.db.as_ref().map(|_| Vec::new());
-            let started = Instant::now();
-            let o = run_ours(&loaded.map, &query, case, ours, args, records.as_mut())?;
-            if let Some(records) = &records {
-                let log = log_dir.join(format!("hyplan-{}-{ours}.log", case.name));
-                write_our_log(&log, case, &map_path, ours, args, records, started)?;
-                logs.push(log);
-            }
-            let p = match ompl {
-                Some(name) => {
+            let mut o = Summary::default();
+            let mut p: Option<Summary> = None;
+            let mut round_ratios = Vec::new();
+            for round in 0..args.rounds {
+                // The logs are of the first round (the rounds repeat the same runs).
+                let first = round == 0;
+                let ours_round = |logs: &mut Vec<PathBuf>| -> anyhow::Result<Summary> {
+                    let mut records = args.db.as_ref().filter(|_| first).map(|_| Vec::new());
+                    let started = Instant::now();
+                    let o = run_ours(&loaded.map, &query, case, ours, args, records.as_mut())?;
+                    if let Some(records) = &records {
+                        let log = log_dir.join(format!("hyplan-{}-{ours}.log", case.name));
+                        write_our_log(&log, case, &map_path, ours, args, records, started)?;
+                        logs.push(log);
+                    }
+                    Ok(o)
+                };
+                let peer_round = |logs: &mut Vec<PathBuf>| -> anyhow::Result<Option<Summary>> {
+                    let Some(name) = ompl else {
+                        return Ok(None);
+                    };
                     let log = args
                         .db
                         .as_ref()
+                        .filter(|_| first)
                         .map(|_| log_dir.join(format!("ompl-{}-{name}.log", case.name)));
                     let summary = run_ompl(&bin, &map_path, case, name, args, log.as_deref())?;
                     logs.extend(log);
-                    Some(summary)
+                    Ok(Some(summary))
+                };
+                // Who goes first alternates, so that a drift of the host's speed falls on
+                // both sides alike.
+                let (o_r, p_r) = if round % 2 == 0 {
+                    let o_r = ours_round(&mut logs)?;
+                    (o_r, peer_round(&mut logs)?)
+                } else {
+                    let p_r = peer_round(&mut logs)?;
+                    (ours_round(&mut logs)?, p_r)
+                };
+                if o_r.cut > 0 {
+                    bail!(
+                        "{ours} on {}: {} paths failed the exact check",
+                        case.name,
+                        o_r.cut
+                    );
                 }
-                None => None,
-            };
-            let (ompl_ms, ratio, ompl_exact, ompl_len, ompl_cut) = match p {
+                if let Some(p_r) = &p_r {
+                    round_ratios.push(time_median(&o_r) / time_median(p_r));
+                }
+                o.merge(o_r, first);
+                match (&mut p, p_r) {
+                    (Some(p), Some(p_r)) => p.merge(p_r, false),
+                    (p, p_r) => *p = p_r,
+                }
+            }
+            let o_ms = time_median(&o) * 1e3;
+            let (ompl_ms, ratio, ompl_exact, ompl_len, ompl_cut) = match &p {
                 Some(p) => {
-                    let ratio = o.median_time_s / p.median_time_s;
+                    let ratio = time_median(&o) / time_median(p);
                     worst_ratio = worst_ratio.max(ratio);
                     success_ok &= o.solved >= p.solved;
                     (
-                        format!("{:.3}", p.median_time_s * 1e3),
+                        format!("{:.3}", time_median(p) * 1e3),
                         format!("{ratio:.3}"),
                         format!("{}/{}", p.solved, p.runs),
                         fmt_len(p.median_length),
@@ -456,13 +526,27 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 None => ("-".into(), "-".into(), "-".into(), "-".into(), "-".into()),
             };
+            let range = if args.rounds > 1 {
+                let lo = round_ratios.iter().copied().fold(f64::INFINITY, f64::min);
+                let hi = round_ratios
+                    .iter()
+                    .copied()
+                    .fold(f64::NEG_INFINITY, f64::max);
+                if round_ratios.is_empty() {
+                    " - |".to_string()
+                } else {
+                    format!(" {lo:.3}-{hi:.3} |")
+                }
+            } else {
+                String::new()
+            };
             println!(
-                "| {} | {} | {} | {} | {:.3} | {} | {} | {}/{} | {} | {} | {} | {} |",
+                "| {} | {} | {} | {} | {:.3} | {} | {} | {}/{} | {} | {} | {} | {} |{range}",
                 case.name,
                 ours,
                 case.step,
                 o.runs,
-                o.median_time_s * 1e3,
+                o_ms,
                 ompl_ms,
                 ratio,
                 o.solved,
@@ -472,13 +556,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 ompl_len,
                 ompl_cut
             );
-            if o.cut > 0 {
-                bail!(
-                    "{ours} on {}: {} paths failed the exact check",
-                    case.name,
-                    o.cut
-                );
-            }
         }
     }
     if let Some(db) = &args.db {
@@ -607,5 +684,25 @@ mod tests {
         assert!(grid.contains("grid_jps_rounds"), "{grid}");
         assert!(compared_planner("astar").is_err());
         assert!(compared_planner("nope").is_err());
+    }
+
+    /// A second round's runs join the first's: the median is over both, the counts add up,
+    /// and the lengths stay the first round's (the same seeds).
+    #[test]
+    fn rounds_pool_their_runs() {
+        let round = |times: &[f64], length| Summary {
+            runs: times.len(),
+            solved: times.len() - 1,
+            times: times.to_vec(),
+            median_length: Some(length),
+            cut: 0,
+        };
+        let mut side = Summary::default();
+        side.merge(round(&[1.0, 2.0, 3.0], 5.0), true);
+        assert_eq!(time_median(&side), 2.0);
+        side.merge(round(&[10.0, 20.0, 30.0], 6.0), false);
+        assert_eq!((side.runs, side.solved), (6, 4));
+        assert_eq!(time_median(&side), 6.5);
+        assert_eq!(side.median_length, Some(5.0));
     }
 }

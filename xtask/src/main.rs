@@ -2,8 +2,8 @@
 //!
 //! - `cargo xtask reproduce [--quick] [--only NAME] [--runs N] [--out DIR]`: replays the
 //!   seed papers' experiments and writes a report.
-//! - `cargo xtask bench-peers [--runs N] [--only CASE] [--planners LIST]`: our sampling
-//!   planners against OMPL 1.5, table of median-time ratios.
+//! - `cargo xtask bench-peers [--runs N] [--rounds R] [--only CASE] [--planners LIST]`: our
+//!   sampling planners against OMPL 1.5, table of median-time ratios.
 //! - `cargo xtask soak [--minutes N] [--seed S]`: every planner and smoothing method on
 //!   seeded generated maps, each path checked by an exact segment-versus-cell test;
 //!   prints plans checked, colliding and panics per planner; `--maps M --shard K/N
