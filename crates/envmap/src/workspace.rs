@@ -93,7 +93,9 @@ impl GridMap {
             // A segment within a few cells is swept at once (no stride would pay), unless
             // the stride at its middle covers both halves: one look, which is the common
             // case in open space.
-            if let Some(strides) = self.made_blocked_strides() {
+            // Counted toward making the table as the longer segments are: a map whose checks
+            // are all short gets its table too.
+            if let Some(strides) = self.edge_strides(du.abs().max(dv.abs())) {
                 let (um, vm) = (ua + du / 2.0, va + dv / 2.0);
                 let run = f64::from(strides[floor_index(vm, 0, h) * w + floor_index(um, 0, w)]);
                 if run >= 2.0 && 4.0 * (run - 1.0) * (run - 1.0) >= len_sq {
@@ -148,9 +150,18 @@ impl GridMap {
     /// when it is not made.
     #[inline]
     fn edge_strides(&self, cells: f64) -> Option<&[u8]> {
-        if let Some(t) = self.made_blocked_strides() {
-            return Some(t);
+        match self.made_blocked_strides() {
+            Some(t) => Some(t),
+            None => self.count_edge_work(cells),
         }
+    }
+
+    /// [`edge_strides`](Self::edge_strides) before the table is made: counts the work, and
+    /// makes the table when it is due. Out of line: once the table is made, the checks only
+    /// look it up.
+    #[cold]
+    #[inline(never)]
+    fn count_edge_work(&self, cells: f64) -> Option<&[u8]> {
         // A relaxed load and store, not an atomic add: a count lost to a race between
         // threads only delays the table.
         let work = self.edge_work.0.load(Ordering::Relaxed) + cells as u64 + 1;
@@ -752,6 +763,27 @@ mod tests {
         // A point on the corner of the blocked cell is not free; just off it, it is.
         assert!(!shifted.is_free(to_world(Point2::new(1.0, 1.0))));
         assert!(shifted.is_free(to_world(Point2::new(1.01, 0.99))));
+    }
+
+    /// Edge checks make the stride table once they have swept as many columns as the map
+    /// has cells, whether their segments are short or long.
+    #[test]
+    fn short_checks_make_the_stride_table_too() {
+        for len in [3.0, 5.0, 12.0] {
+            let map = GridMap::from_ascii(
+                "....................\n....#...............\n....................\n....................",
+            )
+            .unwrap();
+            let (a, b) = (Point2::new(0.5, 3.5), Point2::new(0.5 + len, 3.5));
+            let mut checks = 0;
+            while map.made_blocked_strides().is_none() && checks < 100 {
+                assert!(map.segment_free(a, b));
+                checks += 1;
+            }
+            // 80 cells, and a check counts its columns and one more.
+            assert!(map.made_blocked_strides().is_some(), "{len} cells");
+            assert!(checks <= 21, "{len} cells: {checks} checks");
+        }
     }
 
     #[test]
