@@ -1,6 +1,7 @@
 //! RRT or RRT-Connect alone on a case of `bench-peers`: the median time of `RUNS`
-//! seeded runs (seeds 1..=RUNS), and the runs' total nodes, iterations, edge checks and
-//! path length, for comparing two builds on a noisy host (run their binaries alternately) or under
+//! seeded runs (seeds 1..=RUNS), the runs' total nodes, iterations, edge checks and path
+//! length, and how many of the trees' full-step edges come out longer than the step by
+//! rounding; for comparing two builds on a noisy host (run their binaries alternately) or under
 //! callgrind (no smoothing or metrics around the planner, as in `hyplan plan`).
 //!
 //! ```sh
@@ -42,6 +43,7 @@ fn main() {
     let connect = RrtConnect { step, budget };
     let mut times = Vec::new();
     let (mut nodes, mut iterations, mut checks, mut length) = (0, 0, 0, 0.0);
+    let (mut full_steps, mut rounded_over) = (0u64, 0u64);
     for seed in 1..=runs {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let t = Instant::now();
@@ -52,6 +54,19 @@ fn main() {
         }
         .expect("a path");
         times.push(t.elapsed().as_secs_f64() * 1e3);
+        // The full steps among the trees' edges, and those whose squared length comes out
+        // above the step's square by rounding (the edge checks' bound for short segments
+        // must allow for them).
+        for tree in &plan.trees {
+            for (&child, parent) in tree.points.iter().zip(&tree.parent) {
+                let Some(parent) = parent else { continue };
+                let len_sq = (child - tree.points[*parent as usize]).norm_squared();
+                if len_sq >= step * step * (1.0 - 1e-12) {
+                    full_steps += 1;
+                    rounded_over += u64::from(len_sq > step * step);
+                }
+            }
+        }
         nodes += plan.stats.nodes;
         iterations += plan.stats.iterations;
         checks += plan.stats.collision_checks;
@@ -61,5 +76,8 @@ fn main() {
     println!(
         "{case} {planner}: median {:.4} ms over {runs} runs; nodes {nodes} iterations {iterations} edge checks {checks} length {length:.9}",
         times[times.len() / 2]
+    );
+    println!(
+        "tree edges of a full step: {full_steps}, of which {rounded_over} longer than the step by rounding"
     );
 }

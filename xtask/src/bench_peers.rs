@@ -132,8 +132,8 @@ fn our_config(kind: PlannerKind, case: &Case, budget: Budget) -> PlannerConfig {
         .with_budget(budget)
 }
 
-/// Times, medians and counts of one side of one row.
-#[derive(Default, Clone)]
+/// One side of one row: every run's time, the counts and the median length.
+#[derive(Debug)]
 struct Summary {
     runs: usize,
     solved: usize,
@@ -146,17 +146,19 @@ struct Summary {
 }
 
 impl Summary {
-    /// Adds another round of the same runs: its times and counts (the rounds repeat the
-    /// same seeds, so the lengths are the first round's). `first`: this is that round.
-    fn merge(&mut self, round: Self, first: bool) {
-        if first {
-            *self = round;
-            return;
+    /// Adds a round of the same runs to the rounds so far (`None` before the first): its
+    /// times and counts. The rounds repeat the same seeds, so the lengths stay the first
+    /// round's.
+    fn pool(so_far: &mut Option<Self>, round: Self) {
+        match so_far {
+            None => *so_far = Some(round),
+            Some(s) => {
+                s.runs += round.runs;
+                s.solved += round.solved;
+                s.cut += round.cut;
+                s.times.extend(round.times);
+            }
         }
-        self.runs += round.runs;
-        self.solved += round.solved;
-        self.cut += round.cut;
-        self.times.extend(round.times);
     }
 }
 
@@ -455,8 +457,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             if args.planners.as_ref().is_some_and(|ps| !ps.contains(&ours)) {
                 continue;
             }
-            let mut o = Summary::default();
-            let mut p: Option<Summary> = None;
+            let (mut o, mut p) = (None, None);
             let mut round_ratios = Vec::new();
             for round in 0..args.rounds {
                 // The logs are of the first round (the rounds repeat the same runs).
@@ -504,12 +505,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 if let Some(p_r) = &p_r {
                     round_ratios.push(time_median(&o_r) / time_median(p_r));
                 }
-                o.merge(o_r, first);
-                match (&mut p, p_r) {
-                    (Some(p), Some(p_r)) => p.merge(p_r, false),
-                    (p, p_r) => *p = p_r,
+                Summary::pool(&mut o, o_r);
+                if let Some(p_r) = p_r {
+                    Summary::pool(&mut p, p_r);
                 }
             }
+            let o = o.expect("at least one round (`--rounds` is 1 or more)");
             let o_ms = time_median(&o) * 1e3;
             let (ompl_ms, ratio, ompl_exact, ompl_len, ompl_cut) = match &p {
                 Some(p) => {
@@ -526,19 +527,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
                 }
                 None => ("-".into(), "-".into(), "-".into(), "-".into(), "-".into()),
             };
-            let range = if args.rounds > 1 {
-                let lo = round_ratios.iter().copied().fold(f64::INFINITY, f64::min);
-                let hi = round_ratios
-                    .iter()
-                    .copied()
-                    .fold(f64::NEG_INFINITY, f64::max);
-                if round_ratios.is_empty() {
-                    " - |".to_string()
-                } else {
-                    format!(" {lo:.3}-{hi:.3} |")
-                }
-            } else {
-                String::new()
+            let lo = round_ratios.iter().copied().reduce(f64::min);
+            let hi = round_ratios.iter().copied().reduce(f64::max);
+            let range = match (lo, hi) {
+                _ if args.rounds == 1 => String::new(),
+                (Some(lo), Some(hi)) => format!(" {lo:.3}-{hi:.3} |"),
+                _ => " - |".to_string(),
             };
             println!(
                 "| {} | {} | {} | {} | {:.3} | {} | {} | {}/{} | {} | {} | {} | {} |{range}",
@@ -697,10 +691,11 @@ mod tests {
             median_length: Some(length),
             cut: 0,
         };
-        let mut side = Summary::default();
-        side.merge(round(&[1.0, 2.0, 3.0], 5.0), true);
-        assert_eq!(time_median(&side), 2.0);
-        side.merge(round(&[10.0, 20.0, 30.0], 6.0), false);
+        let mut side = None;
+        Summary::pool(&mut side, round(&[1.0, 2.0, 3.0], 5.0));
+        assert_eq!(time_median(side.as_ref().unwrap()), 2.0);
+        Summary::pool(&mut side, round(&[10.0, 20.0, 30.0], 6.0));
+        let side = side.unwrap();
         assert_eq!((side.runs, side.solved), (6, 4));
         assert_eq!(time_median(&side), 6.5);
         assert_eq!(side.median_length, Some(5.0));

@@ -108,8 +108,9 @@ impl<const B: usize> NearestIndex<B> {
     /// and a run that reserved for a thousand at once (about 70 kB a tree) freed enough at
     /// its end that the C allocator could give the memory back to the system and fault it in
     /// again on the next run (it did in `cargo xtask bench-peers`, which ran its arena
-    /// RRT-Connect at twice the time of a run in a loop). A tree that splits is growing, and gets its leaves for
-    /// hundreds at once: doubling from one leaf copied leaves of 1.5 kB again and again.
+    /// RRT-Connect at twice the time of a run in a loop). A tree that splits is growing,
+    /// and gets its leaves for hundreds at once: doubling from one leaf copied leaves of
+    /// 1.5 kB again and again.
     #[must_use]
     pub fn rooted_in_buckets(root: Point2) -> Self {
         let mut index = Self {
