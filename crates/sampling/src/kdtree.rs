@@ -177,10 +177,14 @@ impl Slot for usize {
     }
 }
 
+/// Slot `k` as the `f64` `2^52 + k`, whose bits are `2^52`'s plus `k`: an index again by a
+/// subtraction of bits. `k as f64` back to `usize` took a saturating conversion of a dozen
+/// instructions for each of the eight lanes at the end of every scan, about a third of a
+/// 48-point leaf's scan.
 impl Slot for f64 {
     #[inline(always)]
     fn of(k: usize) -> Self {
-        k as f64
+        SLOT_BASE + k as f64
     }
     #[inline(always)]
     fn after_chunk(self) -> Self {
@@ -188,10 +192,14 @@ impl Slot for f64 {
     }
     #[inline(always)]
     fn index(self) -> usize {
-        // Slots are below a leaf's size: whole and exact.
-        self as usize
+        // Slots are below a leaf's size, far below 2^52: every one is exact, with the
+        // exponent of 2^52, and its low mantissa bits are the slot.
+        (self.to_bits() - SLOT_BASE.to_bits()) as usize
     }
 }
+
+/// 2^52, where consecutive `f64` are whole numbers one apart.
+const SLOT_BASE: f64 = 4_503_599_627_370_496.0;
 
 /// Whether this CPU runs the leaf scan compiled for AVX2 (x86-64-v3), found when a tree is
 /// made. The scan is the same arithmetic in the same lanes either way, so it finds the same
