@@ -349,14 +349,23 @@ impl<const B: usize> KdTree<B> {
             )
         };
         let at = (node & !LEAF) as usize;
-        let leaf = &self.leaves[at];
         self.len += 1;
-        if leaf.len < B {
+        if self.leaves[at].len < B {
             self.leaves[at].push(p, id);
             return;
         }
-        // A full leaf: split its points and `p` at the middle of their wider axis. Both
-        // sides get at least one (the points differ on that axis), so neither overflows.
+        self.split(p, id, node, parent);
+    }
+
+    /// [`put`](Self::put) into a full leaf: its points and `p` split at the middle of their
+    /// wider axis. Both sides get at least one (the points differ on that axis), so
+    /// neither overflows. Out of line: one insertion in `B / 2` or more splits, and the
+    /// others, kept apart, save and restore fewer registers.
+    #[cold]
+    #[inline(never)]
+    fn split(&mut self, p: [f64; 2], id: u64, node: NodeRef, parent: Option<(usize, bool)>) {
+        let at = (node & !LEAF) as usize;
+        let leaf = &self.leaves[at];
         let spread = |axis: usize| {
             // In lanes, as the scans (a single running minimum is a chain of dependent
             // comparisons).
@@ -431,6 +440,13 @@ impl<const B: usize> KdTree<B> {
     pub(crate) fn nearest_one(&self, q: [f64; 2]) -> Option<(u64, f64)> {
         if self.len == 0 {
             return None;
+        }
+        if self.root & LEAF != 0 {
+            // One leaf (a run's first `B` points): scanned without the recursive search's
+            // frame and box test. It holds a point: `len` is not 0.
+            let leaf = &self.leaves[(self.root & !LEAF) as usize];
+            let (min, k) = self.wide.nearest(leaf, q);
+            return Some((leaf.ids[k], min));
         }
         let mut nearest = Nearest {
             best: None,
