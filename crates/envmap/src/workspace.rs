@@ -314,6 +314,12 @@ fn sweep(
 /// instruction, so `f64::floor` is a libm call, and the sweep makes several a cell.
 #[inline]
 fn floor_index(x: f64, k: i64, n: usize) -> usize {
+    if k == 0 {
+        // The truncation differs from the floor only for a negative `x`, where both clamp
+        // to 0 (NaN too: `as` makes it 0): a few instructions instead of a score (the
+        // short edge checks take two of these).
+        return clamp_cell(x as i64, n);
+    }
     if x.is_nan() {
         return 0;
     }
