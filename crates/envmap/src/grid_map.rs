@@ -47,6 +47,9 @@ pub struct GridMap {
     height: usize,
     resolution: f64,
     origin: Point2,
+    /// The upper-right corner, `origin` plus the size times `resolution`, kept with the
+    /// frame: [`bounds`](GridMap::bounds) is asked at every edge check and sample.
+    corner: Point2,
     zones: Vec<Zone>,
     /// Cells whose zone is at least this one block motion (default [`Zone::Forbidden`]).
     pub blocked_from: Zone,
@@ -150,6 +153,7 @@ impl GridMap {
             height,
             resolution: 1.0,
             origin: Point2::origin(),
+            corner: Point2::new(width as f64, height as f64),
             zones: vec![zone; n],
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
@@ -190,6 +194,7 @@ impl GridMap {
             height,
             resolution: 1.0,
             origin: Point2::origin(),
+            corner: Point2::origin(),
             zones,
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
@@ -216,6 +221,10 @@ impl GridMap {
         }
         self.resolution = resolution;
         self.origin = origin;
+        self.corner = Point2::new(
+            origin.x + self.width as f64 * resolution,
+            origin.y + self.height as f64 * resolution,
+        );
         Ok(self)
     }
 
@@ -369,14 +378,9 @@ impl GridMap {
 
     /// The world box the map covers.
     #[must_use]
-    pub fn bounds(&self) -> Bounds {
-        Bounds::new(
-            self.origin,
-            Point2::new(
-                self.origin.x + self.width as f64 * self.resolution,
-                self.origin.y + self.height as f64 * self.resolution,
-            ),
-        )
+    #[inline]
+    pub const fn bounds(&self) -> Bounds {
+        Bounds::new(self.origin, self.corner)
     }
 
     /// The same map with the high-risk band blocking motion too (`blocked_from = Risk`).
