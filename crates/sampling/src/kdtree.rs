@@ -593,10 +593,23 @@ impl<const B: usize> Visit<B> for NearestN {
 mod tests {
     use super::*;
 
+    /// The slot [`Leaf::nearest`] must find: the least (exact squared distance, lane,
+    /// slot) over every point.
+    fn reference<const B: usize>(leaf: &Leaf<B>, q: [f64; 2]) -> (f64, usize) {
+        (0..leaf.len)
+            .map(|k| {
+                let d = squared_distance([leaf.axes[0][k], leaf.axes[1][k]], q);
+                (d, k % LANES, k)
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)))
+            .map_or((f64::INFINITY, 0), |(d, _, k)| (d, k))
+    }
+
     proptest::proptest! {
         /// The scan finds the same slot whichever way its lanes carry slots, and in the
-        /// AVX2 build where this CPU has one: on leaves of lattice points (ties, equal
-        /// distances across lanes) and of points far from the query.
+        /// AVX2 build where this CPU has one, and it is the reference's: on leaves of
+        /// lattice points (ties, equal distances across lanes) and of points far from the
+        /// query.
         #[test]
         fn every_scan_finds_the_same_slot(
             points in proptest::collection::vec((-6..6_i32, -6..6_i32), 1..=64),
@@ -611,9 +624,32 @@ mod tests {
             let baseline = leaf.nearest::<usize>(q);
             proptest::prop_assert_eq!(baseline, leaf.nearest::<f64>(q));
             proptest::prop_assert_eq!(baseline, Wide::detect().nearest(&leaf, q));
-            // The slot is a nearest one.
-            let least = leaf.squared_distances(q).map(|(_, d)| d).fold(f64::INFINITY, f64::min);
-            proptest::prop_assert!(baseline.0 == least || (least.is_infinite() && baseline.0.is_infinite()));
+            proptest::prop_assert_eq!(baseline, reference(&leaf, q));
+        }
+
+        /// A tree's nearest point is the nearest of all its points, through splits and
+        /// queries that read several leaves, at scales from millimetres to far beyond a map.
+        #[test]
+        fn tree_nearest_is_the_least_distance(
+            points in proptest::collection::vec((-1000..1000_i32, -1000..1000_i32), 1..400),
+            queries in proptest::collection::vec((-1200..1200_i32, -1200..1200_i32), 1..20),
+            scale in proptest::sample::select(vec![1.0e-3, 0.05, 1.0, 7.0e9]),
+        ) {
+            let mut tree = KdTree::<16>::with_capacity(0);
+            let mut kept = Vec::new();
+            for (id, &(x, y)) in points.iter().enumerate() {
+                let p = [f64::from(x) * scale, f64::from(y) * scale];
+                if tree.add(p, id as u64).is_none() {
+                    kept.push(p);
+                }
+            }
+            for &(x, y) in &queries {
+                let q = [f64::from(x) * scale * 1.01, f64::from(y) * scale * 0.99];
+                let least = kept.iter().map(|&p| squared_distance(p, q)).fold(f64::INFINITY, f64::min);
+                let (item, d) = tree.nearest_one(q).unwrap();
+                proptest::prop_assert_eq!(d, least);
+                proptest::prop_assert_eq!(squared_distance([f64::from(points[item as usize].0) * scale, f64::from(points[item as usize].1) * scale], q), least);
+            }
         }
     }
 }
