@@ -50,6 +50,9 @@ pub struct GridMap {
     /// The upper-right corner, `origin` plus the size times `resolution`, kept with the
     /// frame: [`bounds`](GridMap::bounds) is asked at every edge check and sample.
     corner: Point2,
+    /// `1 / resolution` where that is a power of two, whose products are the quotients
+    /// bit for bit ([`cell_units`](GridMap::cell_units)); `None` otherwise.
+    inverse: Option<f64>,
     zones: Vec<Zone>,
     /// Cells whose zone is at least this one block motion (default [`Zone::Forbidden`]).
     pub blocked_from: Zone,
@@ -154,6 +157,7 @@ impl GridMap {
             resolution: 1.0,
             origin: Point2::origin(),
             corner: Point2::new(width as f64, height as f64),
+            inverse: Some(1.0),
             zones: vec![zone; n],
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
@@ -195,6 +199,7 @@ impl GridMap {
             resolution: 1.0,
             origin: Point2::origin(),
             corner: Point2::origin(),
+            inverse: None,
             zones,
             blocked_from: Zone::Forbidden,
             clearance_fields: Default::default(),
@@ -225,6 +230,7 @@ impl GridMap {
             origin.x + self.width as f64 * resolution,
             origin.y + self.height as f64 * resolution,
         );
+        self.inverse = exact_inverse(resolution);
         Ok(self)
     }
 
@@ -336,8 +342,7 @@ impl GridMap {
     /// The cell containing world point `p`, or `None` outside the map (or NaN).
     #[must_use]
     pub fn world_to_cell(&self, p: Point2) -> Option<(usize, usize)> {
-        let u = (p.x - self.origin.x) / self.resolution;
-        let v = (p.y - self.origin.y) / self.resolution;
+        let (u, v) = self.cell_units(p);
         if !(u >= 0.0 && v >= 0.0) {
             return None;
         }
@@ -381,6 +386,18 @@ impl GridMap {
     #[inline]
     pub const fn bounds(&self) -> Bounds {
         Bounds::new(self.origin, self.corner)
+    }
+
+    /// `p` in cells from the origin, `(p - origin) / resolution` on each axis, bit for
+    /// bit: by a product where the resolution is a power of two (a division waits about
+    /// four times as long, and the edge checks make two or three).
+    #[inline]
+    pub(crate) fn cell_units(&self, p: Point2) -> (f64, f64) {
+        let (dx, dy) = (p.x - self.origin.x, p.y - self.origin.y);
+        match self.inverse {
+            Some(k) => (dx * k, dy * k),
+            None => (dx / self.resolution, dy / self.resolution),
+        }
     }
 
     /// The same map with the high-risk band blocking motion too (`blocked_from = Risk`).
@@ -628,5 +645,52 @@ const fn cache_slot(zone: Zone) -> Option<usize> {
         Zone::Free => None,
         Zone::Risk => Some(0),
         Zone::Forbidden => Some(1),
+    }
+}
+
+/// `1 / r` when `r` is a power of two whose inverse is a normal number, else `None`. Then
+/// `x * (1 / r)` equals `x / r` for every `x`: both are the same real number, rounded
+/// once.
+fn exact_inverse(r: f64) -> Option<f64> {
+    const MANTISSA: u64 = (1 << 52) - 1;
+    let inverse = 1.0 / r;
+    (r.is_normal() && r.to_bits() & MANTISSA == 0 && inverse.is_normal()).then_some(inverse)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_powers_of_two_have_an_exact_inverse() {
+        for r in [1.0, 0.5, 0.25, 0.125, 2.0, 1024.0, 2f64.powi(-40)] {
+            assert_eq!(exact_inverse(r), Some(1.0 / r), "{r}");
+        }
+        for r in [0.05, 0.1, 3.0, 0.3, f64::MIN_POSITIVE / 4.0, f64::MAX] {
+            assert_eq!(exact_inverse(r), None, "{r}");
+        }
+    }
+
+    proptest::proptest! {
+        /// Cell units by the product are the quotients, bit for bit, at every power-of-two
+        /// resolution and any point.
+        #[test]
+        fn cell_units_are_the_quotients(
+            k in -20..20_i32,
+            origin in (-1.0e6..1.0e6_f64, -1.0e6..1.0e6_f64),
+            p in (-1.0e7..1.0e7_f64, -1.0e7..1.0e7_f64),
+        ) {
+            let r = 2f64.powi(k);
+            let map = GridMap::filled(3, 3, Zone::Free)
+                .unwrap()
+                .with_frame(r, Point2::new(origin.0, origin.1))
+                .unwrap();
+            proptest::prop_assert!(map.inverse.is_some());
+            let p = Point2::new(p.0, p.1);
+            let quotients = ((p.x - origin.0) / r, (p.y - origin.1) / r);
+            let (u, v) = map.cell_units(p);
+            proptest::prop_assert_eq!(u.to_bits(), quotients.0.to_bits());
+            proptest::prop_assert_eq!(v.to_bits(), quotients.1.to_bits());
+        }
     }
 }

@@ -29,12 +29,11 @@ impl GridMap {
         b: Point2,
         mut visit: impl FnMut(usize, usize) -> bool,
     ) -> bool {
-        // Division, not multiplication by 1/resolution: an edge given in world units
-        // (origin + k * resolution) then lands on k whenever that is representable.
-        let r = self.resolution();
-        let o = self.origin();
-        let (ua, va) = ((a.x - o.x) / r, (a.y - o.y) / r);
-        let (ub, vb) = ((b.x - o.x) / r, (b.y - o.y) / r);
+        // The quotient by the resolution, not a product by a rounded 1/resolution: an edge
+        // given in world units (origin + k * resolution) then lands on k whenever that is
+        // representable.
+        let (ua, va) = self.cell_units(a);
+        let (ub, vb) = self.cell_units(b);
         let (w, h) = (self.width(), self.height());
         let all = (f64::NEG_INFINITY, f64::INFINITY);
         if (ub - ua).abs() >= (vb - va).abs() {
@@ -79,10 +78,8 @@ impl GridMap {
         if !(bounds.contains(a) && bounds.contains(b)) {
             return false;
         }
-        let r = self.resolution();
-        let o = self.origin();
-        let (ua, va) = ((a.x - o.x) / r, (a.y - o.y) / r);
-        let (ub, vb) = ((b.x - o.x) / r, (b.y - o.y) / r);
+        let (ua, va) = self.cell_units(a);
+        let (ub, vb) = self.cell_units(b);
         let (w, h) = (self.width(), self.height());
         let major_u = (ub - ua).abs() >= (vb - va).abs();
         // Where along the major axis the columns that need a sweep lie.
@@ -377,8 +374,7 @@ impl GridMap {
     /// whether `p` is more than 1e-6 cells from each of its edges.
     #[inline(always)]
     fn cell_of(&self, p: Point2) -> Option<(usize, usize, impl FnOnce() -> bool)> {
-        let (r, o) = (self.resolution(), self.origin());
-        let (u, v) = ((p.x - o.x) / r, (p.y - o.y) / r);
+        let (u, v) = self.cell_units(p);
         if !(u >= 0.0 && v >= 0.0 && u < self.width() as f64 && v < self.height() as f64) {
             return None;
         }
