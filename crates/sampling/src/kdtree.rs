@@ -47,11 +47,12 @@ impl Bounds {
         hi: [f64::NEG_INFINITY; 2],
     };
 
+    /// Grown to hold `p` (finite: plain comparisons, without `f64::min`'s rule for NaN).
     #[inline(always)]
     fn grow(&mut self, p: [f64; 2]) {
         for ((lo, hi), x) in self.lo.iter_mut().zip(&mut self.hi).zip(p) {
-            *lo = lo.min(x);
-            *hi = hi.max(x);
+            *lo = if x < *lo { x } else { *lo };
+            *hi = if x > *hi { x } else { *hi };
         }
     }
 
@@ -428,11 +429,18 @@ impl<const B: usize> KdTree<B> {
         // The points above the split move to a new leaf; the others close up in place.
         let mut above = Leaf::empty();
         let leaf = &mut self.leaves[at];
+        // Both sides' counts and boxes in locals (a push per point kept the new leaf's
+        // count in memory, and a split costs a few per cent of a short RRT run).
         let (mut kept, mut bounds) = (0, Bounds::EMPTY);
+        let (mut moved, mut moved_bounds) = (0, Bounds::EMPTY);
         for k in 0..B {
             let (q, item) = ([leaf.axes[0][k], leaf.axes[1][k]], leaf.ids[k]);
             if q[axis] >= split {
-                above.push(q, item);
+                above.axes[0][moved] = q[0];
+                above.axes[1][moved] = q[1];
+                above.ids[moved] = item;
+                moved_bounds.grow(q);
+                moved += 1;
             } else {
                 leaf.axes[0][kept] = q[0];
                 leaf.axes[1][kept] = q[1];
@@ -441,6 +449,7 @@ impl<const B: usize> KdTree<B> {
                 kept += 1;
             }
         }
+        (above.len, above.bounds) = (moved, moved_bounds);
         leaf.axes[0][kept..].fill(f64::INFINITY);
         leaf.axes[1][kept..].fill(f64::INFINITY);
         (leaf.len, leaf.bounds) = (kept, bounds);
