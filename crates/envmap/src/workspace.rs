@@ -375,13 +375,19 @@ impl GridMap {
     #[inline(always)]
     fn cell_of(&self, p: Point2) -> Option<(usize, usize, impl FnOnce() -> bool)> {
         let (u, v) = self.cell_units(p);
-        if !(u >= 0.0 && v >= 0.0 && u < self.width() as f64 && v < self.height() as f64) {
+        if !(u >= 0.0 && v >= 0.0) {
             return None;
         }
         // Truncation is the floor here (u and v are not negative), without libm's call;
         // through `i64`, whose conversion is a few instructions where one to unsigned is a
-        // dozen (the same values: u and v are below the map's size).
-        let (i, j) = (u as i64 as usize, v as i64 as usize);
+        // dozen. Compared with the size as integers (a `usize` made `f64` is half a dozen
+        // instructions): a point at or beyond the far edge truncates (or saturates) to at
+        // least the size, as `u < width` would refuse it.
+        let (i, j) = (u as i64, v as i64);
+        if i >= self.width() as i64 || j >= self.height() as i64 {
+            return None;
+        }
+        let (i, j) = (i as usize, j as usize);
         let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && k as f64 + 1.0 - t > 1e-6;
         Some((i, j, move || inside(u, i) && inside(v, j)))
     }
