@@ -98,10 +98,13 @@ impl<const B: usize> Leaf<B> {
     }
 
     fn push(&mut self, p: [f64; 2], id: u64) {
-        self.axes[0][self.len] = p[0];
-        self.axes[1][self.len] = p[1];
-        self.ids[self.len] = id;
-        self.len += 1;
+        // The count read once: through `self.len` at each store, it was read (and
+        // checked) again after every one.
+        let k = self.len;
+        self.axes[0][k] = p[0];
+        self.axes[1][k] = p[1];
+        self.ids[k] = id;
+        self.len = k + 1;
         self.bounds.grow(p);
     }
 
