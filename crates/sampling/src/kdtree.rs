@@ -292,7 +292,7 @@ impl Wide {
         if let Some(v3) = self.0 {
             return v3.vectorize(WideFlat { v3, tree, q });
         }
-        tree.nearest_flat(q, BaselineScan)
+        baseline_flat(tree, q)
     }
 
     /// [`Leaf::nearest`], in the AVX2 build where the CPU has it.
@@ -302,8 +302,21 @@ impl Wide {
         if let Some(v3) = self.0 {
             return v3.vectorize(WideScan { v3, leaf, q });
         }
-        leaf.nearest::<usize>(q)
+        baseline_nearest(leaf, q)
     }
+}
+
+/// [`Leaf::nearest`] in the baseline build, out of line: inlined, it gave every caller of
+/// [`Wide::nearest`] (the AVX2 build's among them) its registers and frame to save.
+#[inline(never)]
+fn baseline_nearest<const B: usize>(leaf: &Leaf<B>, q: [f64; 2]) -> (f64, usize) {
+    leaf.nearest::<usize>(q)
+}
+
+/// [`KdTree::nearest_flat`] in the baseline build, out of line as [`baseline_nearest`].
+#[inline(never)]
+fn baseline_flat<const B: usize>(tree: &KdTree<B>, q: [f64; 2]) -> (u64, f64) {
+    tree.nearest_flat(q, BaselineScan)
 }
 
 /// [`Leaf::nearest`] handed to [`pulp`], which compiles it for AVX2 only when it is inlined
@@ -629,6 +642,11 @@ impl<const B: usize> KdTree<B> {
 
     /// The item nearest `q` and its squared distance (`None` when empty). Ties go to any
     /// of the nearest.
+    ///
+    /// Inlined into its callers, with what a small tree's query takes in the AVX2 build:
+    /// that and the call into pulp's entry. A function of its own saved and restored six
+    /// registers for a query of a few hundred instructions.
+    #[inline]
     pub(crate) fn nearest_one(&self, q: [f64; 2]) -> Option<(u64, f64)> {
         if self.len == 0 {
             return None;
@@ -647,6 +665,7 @@ impl<const B: usize> KdTree<B> {
     }
 
     /// [`nearest_one`](Self::nearest_one) down the stems.
+    #[inline(never)]
     fn nearest_by_search(&self, q: [f64; 2]) -> Option<(u64, f64)> {
         let mut nearest = Nearest {
             best: None,

@@ -120,6 +120,7 @@ impl Run {
 
     /// Begins the next iteration if the budget allows it (counts it and returns `true`).
     /// The time limit is read every 32 iterations, from the first one on.
+    #[inline]
     pub fn next_iteration(&mut self) -> bool {
         if self.budget.iterations_spent(self.iterations)
             || (self.iterations.is_multiple_of(CLOCK_EVERY) && self.budget.time_spent(self.started))

@@ -70,6 +70,7 @@ struct GoalWatch {
 
 impl GoalWatch {
     /// Takes in a node at `p`.
+    #[inline]
     fn saw(&mut self, p: Point2) {
         let d2 = (p - self.at).norm_squared();
         if d2 < self.best {
@@ -452,6 +453,7 @@ impl<const B: usize> GrowTree<B> {
     /// RRT's join of an exact goal: when the goal is a point (or a disc of radius 0)
     /// within `step` of node `node` (and not on it) and the edge to it is free, adds the
     /// goal under `node` and returns its id.
+    #[inline]
     pub fn join_goal<W: Workspace + ?Sized>(
         &mut self,
         node: usize,
@@ -463,8 +465,25 @@ impl<const B: usize> GrowTree<B> {
             return None;
         }
         let (p, g) = (self.point(node), goal.center());
-        ((g - p).norm_squared() <= step * step && g != p && checker.segment_free(p, g))
-            .then(|| self.add(g, node))
+        // The distance inline (RRT asks at every new node, and most are far from the goal);
+        // the edge check and the join apart.
+        if (g - p).norm_squared() <= step * step && g != p {
+            self.join_point(node, g, checker)
+        } else {
+            None
+        }
+    }
+
+    /// [`join_goal`](Self::join_goal)'s edge check and join.
+    #[inline(never)]
+    fn join_point<W: Workspace + ?Sized>(
+        &mut self,
+        node: usize,
+        g: Point2,
+        checker: &mut CountingChecker<'_, W>,
+    ) -> Option<usize> {
+        let p = self.point(node);
+        checker.segment_free(p, g).then(|| self.add(g, node))
     }
 
     /// RRT*'s choose-parent for a new point `p`: the cheapest cost-to-come among the
