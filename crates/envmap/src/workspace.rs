@@ -380,14 +380,15 @@ impl GridMap {
         }
         // Truncation is the floor here (u and v are not negative), without libm's call;
         // through `i64`, whose conversion is a few instructions where one to unsigned is a
-        // dozen. Compared with the size as integers (a `usize` made `f64` is half a dozen
-        // instructions): a point at or beyond the far edge truncates (or saturates) to at
-        // least the size, as `u < width` would refuse it.
-        let (i, j) = (u as i64, v as i64);
-        if i >= self.width() as i64 || j >= self.height() as i64 {
+        // dozen (not negative, it keeps its value as `usize`). Compared with the size as
+        // integers (a `usize` made `f64` is half a dozen instructions): a point at or beyond
+        // the far edge truncates (or saturates) to at least the size, as `u < width` would
+        // refuse it. Unsigned, as the cell's own lookup compares, which then needs no test
+        // of its own.
+        let (i, j) = (u as i64 as usize, v as i64 as usize);
+        if i >= self.width() || j >= self.height() {
             return None;
         }
-        let (i, j) = (i as usize, j as usize);
         let inside = |t: f64, k: usize| t - k as f64 > 1e-6 && k as f64 + 1.0 - t > 1e-6;
         Some((i, j, move || inside(u, i) && inside(v, j)))
     }

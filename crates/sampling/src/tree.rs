@@ -315,6 +315,7 @@ impl<const B: usize> GrowTree<B> {
 
     /// [`add_with_cost`](Self::add_with_cost); `new` when `p` is known to equal no node
     /// ([`NearestIndex::insert_new`]).
+    #[inline]
     fn attach(&mut self, p: Point2, parent: usize, cost: f64, new: bool) -> usize {
         assert!(parent < self.parent.len(), "parent {parent} is not a node");
         let id = if new {
