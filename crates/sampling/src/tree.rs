@@ -426,6 +426,7 @@ impl<const B: usize> GrowTree<B> {
     /// step goes nowhere, the counted exact edge check, then [`add`](Self::add). Towards a
     /// watched goal ([`watch_goal`](Self::watch_goal)) a repeat of a refused extension is
     /// refused without either.
+    #[inline]
     pub fn extend<W: Workspace + ?Sized>(
         &mut self,
         target: Point2,
