@@ -173,6 +173,7 @@ impl<const B: usize> NearestIndex<B> {
     /// than the index's nearest point, in the distances the index computes
     /// ([`squared_distance`](crate::kdtree::squared_distance)), so that an equal point
     /// would have been as near. Skips the search for an equal point.
+    #[inline]
     pub(crate) fn insert_new(&mut self, p: Point2) -> usize {
         let id = self.points.len();
         self.points.push(p);
@@ -183,6 +184,7 @@ impl<const B: usize> NearestIndex<B> {
     /// The id of a point nearest to `p` and its distance (world units); `None` when the
     /// index holds no finite point or `p` is not finite. Ties go to any of the nearest.
     #[must_use]
+    #[inline]
     pub fn nearest(&self, p: Point2) -> Option<(usize, f64)> {
         if self.tree.len() == 0 || !(p.x.is_finite() && p.y.is_finite()) {
             return None;
