@@ -290,7 +290,7 @@ impl Wide {
     fn nearest_flat<const B: usize>(self, tree: &KdTree<B>, q: [f64; 2]) -> (u64, f64) {
         #[cfg(target_arch = "x86_64")]
         if let Some(v3) = self.0 {
-            return v3.vectorize(WideFlat { v3, tree, q });
+            return v3.vectorize(InV3 { v3, of: tree, q });
         }
         baseline_flat(tree, q)
     }
@@ -300,7 +300,7 @@ impl Wide {
     fn nearest<const B: usize>(self, leaf: &Leaf<B>, q: [f64; 2]) -> (f64, usize) {
         #[cfg(target_arch = "x86_64")]
         if let Some(v3) = self.0 {
-            return v3.vectorize(WideScan { v3, leaf, q });
+            return v3.vectorize(InV3 { v3, of: leaf, q });
         }
         baseline_nearest(leaf, q)
     }
@@ -319,41 +319,33 @@ fn baseline_flat<const B: usize>(tree: &KdTree<B>, q: [f64; 2]) -> (u64, f64) {
     tree.nearest_flat(q, BaselineScan)
 }
 
-/// [`Leaf::nearest`] handed to [`pulp`], which compiles it for AVX2 only when it is inlined
-/// into pulp's entry (a closure was not).
+/// A query of a leaf ([`Leaf::nearest`]) or of a small tree ([`KdTree::nearest_flat`])
+/// handed to [`pulp`], which compiles it for AVX2 only when it is inlined into pulp's entry
+/// (a closure was not).
 #[cfg(target_arch = "x86_64")]
-struct WideScan<'a, const B: usize> {
+struct InV3<'a, T> {
     v3: pulp::x86::V3,
-    leaf: &'a Leaf<B>,
+    of: &'a T,
     q: [f64; 2],
 }
 
 #[cfg(target_arch = "x86_64")]
-impl<const B: usize> pulp::NullaryFnOnce for WideScan<'_, B> {
+impl<const B: usize> pulp::NullaryFnOnce for InV3<'_, Leaf<B>> {
     type Output = (f64, usize);
 
     #[inline(always)]
     fn call(self) -> Self::Output {
-        let (min, at) = self.leaf.lanes::<f64>(self.q);
-        first_least(self.v3, min, at)
+        V3Scan(self.v3).nearest(self.of, self.q)
     }
 }
 
-/// [`KdTree::nearest_flat`] handed to [`pulp`], as [`WideScan`].
 #[cfg(target_arch = "x86_64")]
-struct WideFlat<'a, const B: usize> {
-    v3: pulp::x86::V3,
-    tree: &'a KdTree<B>,
-    q: [f64; 2],
-}
-
-#[cfg(target_arch = "x86_64")]
-impl<const B: usize> pulp::NullaryFnOnce for WideFlat<'_, B> {
+impl<const B: usize> pulp::NullaryFnOnce for InV3<'_, KdTree<B>> {
     type Output = (u64, f64);
 
     #[inline(always)]
     fn call(self) -> Self::Output {
-        self.tree.nearest_flat(self.q, V3Scan(self.v3))
+        self.of.nearest_flat(self.q, V3Scan(self.v3))
     }
 }
 
