@@ -57,14 +57,21 @@ impl Bounds {
         hi: [f64::NEG_INFINITY; 2],
     };
 
-    /// Grown to hold `p` (finite: plain comparisons, without `f64::min`'s rule for NaN).
+    /// Grown to hold `p` (finite).
     #[inline(always)]
     fn grow(&mut self, p: [f64; 2]) {
         for ((lo, hi), x) in self.lo.iter_mut().zip(&mut self.hi).zip(p) {
-            *lo = if x < *lo { x } else { *lo };
-            *hi = if x > *hi { x } else { *hi };
+            widen(lo, hi, x);
         }
     }
+}
+
+/// `[lo, hi]` widened to hold `x` (finite: plain comparisons, without `f64::min`'s rule for
+/// NaN): a leaf's box, or a split's spread.
+#[inline(always)]
+fn widen(lo: &mut f64, hi: &mut f64, x: f64) {
+    *lo = if x < *lo { x } else { *lo };
+    *hi = if x > *hi { x } else { *hi };
 }
 
 /// The squared distance from `q` to the box from `lo` to `hi` (infinite when empty: `lo`
@@ -109,9 +116,7 @@ impl BoxChunk {
     #[inline(always)]
     fn grow(&mut self, lane: usize, p: [f64; 2]) {
         for (axis, x) in p.into_iter().enumerate() {
-            let (lo, hi) = (&mut self.lo[axis][lane], &mut self.hi[axis][lane]);
-            *lo = if x < *lo { x } else { *lo };
-            *hi = if x > *hi { x } else { *hi };
+            widen(&mut self.lo[axis][lane], &mut self.hi[axis][lane], x);
         }
     }
 
@@ -544,8 +549,7 @@ impl<const B: usize> KdTree<B> {
             let (mut lo, mut hi) = ([p[axis]; LANES], [p[axis]; LANES]);
             for c in leaf.axes[axis].chunks_exact(LANES) {
                 for l in 0..LANES {
-                    lo[l] = if c[l] < lo[l] { c[l] } else { lo[l] };
-                    hi[l] = if c[l] > hi[l] { c[l] } else { hi[l] };
+                    widen(&mut lo[l], &mut hi[l], c[l]);
                 }
             }
             let lo = lo.iter().fold(p[axis], |m, &x| if x < m { x } else { m });

@@ -470,7 +470,7 @@ impl<const B: usize> GrowTree<B> {
         // The distance inline (RRT asks at every new node, and most are far from the goal);
         // the edge check and the join apart.
         if (g - p).norm_squared() <= step * step && g != p {
-            self.join_point(node, g, checker)
+            self.join_point((node, p), g, checker)
         } else {
             None
         }
@@ -480,11 +480,10 @@ impl<const B: usize> GrowTree<B> {
     #[inline(never)]
     fn join_point<W: Workspace + ?Sized>(
         &mut self,
-        node: usize,
+        (node, p): (usize, Point2),
         g: Point2,
         checker: &mut CountingChecker<'_, W>,
     ) -> Option<usize> {
-        let p = self.point(node);
         checker.segment_free(p, g).then(|| self.add(g, node))
     }
 
