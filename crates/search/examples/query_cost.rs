@@ -1,12 +1,11 @@
 //! What a short grid query costs after the map's one-time preparation, on a 512 x 512 and a
 //! 4096 x 4096 map of rooms: the preparation is paid once per map, a query what it touches
 //! (issue 31: a query that expands k nodes costs O(k), not O(map)). Jump point search, A*,
-//! Dijkstra and Lazy Theta*, each on its own prepared search (Lazy Theta*'s first query
-//! builds its lines of sight's bits and the map's stride table, so its first time is a
-//! preparation's); then jump point search, A* and Dijkstra through the `Planner` trait (as
-//! `hyplan plan`, the registry and Python call them), after `Planner::prepare` has left the
-//! search with the map: the query from world point (10.5, 11.5) to (13.5, 12.5), its time
-//! the whole `plan` call (checks, search and path).
+//! Dijkstra and Lazy Theta*, each on its own prepared search (Lazy Theta*'s preparation
+//! adds what its lines of sight read: `GridSearch::prepare_lines_of_sight`); then the same
+//! four through the `Planner` trait (as `hyplan plan`, the registry and Python call them),
+//! after `Planner::prepare` has left the search with the map: the query from world point
+//! (10.5, 11.5) to (13.5, 12.5), its time the whole `plan` call (checks, search and path).
 //!
 //! ```sh
 //! cargo run --release -p search --example query_cost
@@ -16,7 +15,9 @@ use std::time::Instant;
 
 use envmap::GridMap;
 use hyplan_core::{Goal, Planner, Point2, Query, Zone};
-use search::{GridAstar, GridDijkstra, GridOptions, GridSearch, Jps, JumpPointSearch};
+use search::{
+    GridAstar, GridDijkstra, GridOptions, GridSearch, Jps, JumpPointSearch, LazyThetaStar,
+};
 
 /// The first call's time and the fastest of 1,000 more, microseconds, and the first
 /// answer.
@@ -54,6 +55,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let t = Instant::now();
         let mut grid = GridSearch::new(&map, GridOptions::default())?;
         let grid_prepare = t.elapsed();
+        let mut sight = GridSearch::new(&map, GridOptions::default())?;
+        let t = Instant::now();
+        sight.prepare_lines_of_sight(&map);
+        let sight_prepare = grid_prepare + t.elapsed();
         let rows = [
             ("jps", jps_prepare, time(|| jps.search(start, goal))?),
             ("astar", grid_prepare, time(|| grid.astar(start, goal))?),
@@ -62,12 +67,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 grid_prepare,
                 time(|| grid.dijkstra(start, goal))?,
             ),
-            // Its first query also builds what its lines of sight read: the bit lines and
-            // their slides, and the map's stride table.
             (
                 "lazy-theta-star",
-                grid_prepare,
-                time(|| grid.lazy_theta_star(&map, start, goal))?,
+                sight_prepare,
+                time(|| sight.lazy_theta_star(&map, start, goal))?,
             ),
         ];
         for (name, prepare, (first_us, best, path)) in rows {
@@ -82,10 +85,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             Point2::new(10.5, 11.5),
             Goal::Point(Point2::new(13.5, 12.5)),
         );
-        let planners: [(&str, &dyn Planner); 3] = [
+        let planners: [(&str, &dyn Planner); 4] = [
             ("jps (Planner)", &Jps::default()),
             ("astar (Planner)", &GridAstar::default()),
             ("dijkstra (Planner)", &GridDijkstra::default()),
+            ("lazy-theta-star (Planner)", &LazyThetaStar::default()),
         ];
         let mut rng = rand::rng();
         for (name, planner) in planners {

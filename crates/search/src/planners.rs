@@ -501,13 +501,17 @@ fn search_cells(
 /// [`GridMap::keep`]), so that the next plan on it does not.
 fn prepare_grid(map: &GridMap, options: GridOptions, algo: Algo) -> Result<(), PlanError> {
     envmap::prepare_disconnection(map, moves(algo, options));
-    if matches!(algo, Algo::ThetaStar | Algo::LazyThetaStar(_)) {
-        // Theta*'s lines of sight cross the open stretches of this table; a plan with a
-        // deadline does not make it (`GridSearch::sight`).
-        let _ = map.blocked_strides();
-    }
     let kept = match algo {
         Algo::Jps => with_kept(map, options, || JumpPointSearch::new(map, options), |_| ()),
+        // What Theta*'s lines of sight read, made here so that its first plan costs what
+        // it expands (a plan with a deadline would not make the map's stride table:
+        // `GridSearch::sight`).
+        Algo::ThetaStar | Algo::LazyThetaStar(_) => with_kept(
+            map,
+            options,
+            || Ok(GridSearch::new(map, options)?),
+            |search: &mut GridSearch| search.prepare_lines_of_sight(map),
+        ),
         _ => with_kept(map, options, || Ok(GridSearch::new(map, options)?), |_| ()),
     };
     kept.map_err(|e| PlanError::InvalidParameter {
