@@ -491,6 +491,10 @@ impl GridSearch {
             for (cell, &zone) in self.passable[base..base + row.len()].iter_mut().zip(row) {
                 *cell = zone < blocked;
             }
+            // Written here once (any value is a valid hint), so that a query does not wait
+            // on the system for the first touch of each of its pages: on a 4096 x 4096 map
+            // that was most of a short query's first run.
+            self.slot[base..base + row.len()].fill(0);
             self.reach.refresh(
                 &self.passable,
                 self.pw,
