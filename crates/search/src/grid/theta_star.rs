@@ -121,11 +121,11 @@ impl GridSearch {
     /// cells as bit lines (rows and columns, and their slides) that the lines of sight
     /// read, `map`'s stride table (kept with the map: [`GridMap::blocked_strides`]) and
     /// the searches' per-cell state (16 bytes a cell, written here). After it, their first
-    /// query costs what it expands, as later ones do, instead of a pass over the map (2.8 ms for a 500-cell query on
-    /// MIT building 31's map, 0.05 ms after). Calling it is optional: a query makes what
-    /// is missing. [`update`](GridSearch::update) and
-    /// [`update_window`](GridSearch::update_window) drop the bit lines, so call it again
-    /// after them. `map` is the map this search was built from.
+    /// query costs what it expands, as later ones do, instead of a pass over the map.
+    /// Calling it is optional: a query makes what is missing.
+    /// [`update`](GridSearch::update) and [`update_window`](GridSearch::update_window)
+    /// drop the bit lines, so call it again after them. `map` is the map this search was
+    /// built from.
     ///
     /// ```
     /// use envmap::GridMap;
