@@ -326,7 +326,9 @@ pub struct MetricTest {
     /// to be smaller).
     pub cliffs_delta: f64,
     /// [`Verdict::Held`]: the first is significantly smaller; [`Verdict::NotHeld`]: the
-    /// second is; otherwise not significant or no data.
+    /// second is; otherwise not significant or no data. Two-sided at the comparison's
+    /// level (each one-sided test at half of it), so a verdict goes with `p_value` below
+    /// the level.
     pub verdict: Verdict,
 }
 
@@ -346,7 +348,9 @@ pub struct Comparison {
 }
 
 fn metric_test(x: &[f64], y: &[f64], alpha: f64) -> MetricTest {
-    let d = decide_less(x, y, alpha);
+    // Neither order is claimed beforehand, so both one-sided tests share the level: each
+    // at alpha / 2 is the two-sided test at alpha whose p the report prints.
+    let d = decide_less(x, y, alpha / 2.0);
     let two = mann_whitney_u(x, y, Alternative::TwoSided);
     MetricTest {
         p_value: two.map_or(f64::NAN, |t| t.p_value),
@@ -589,6 +593,35 @@ pub fn utc_date_time(secs: u64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_verdict_goes_with_a_two_sided_p_below_alpha() {
+        // Pairs of small samples whose two-sided p falls on both sides of alpha (and
+        // between alpha and 2 alpha, where one-sided tests at alpha would still decide).
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut between = 0;
+        for case in 0..2_000 {
+            let shift = 0.5 * next();
+            let x: Vec<f64> = (0..6).map(|_| next()).collect();
+            let y: Vec<f64> = (0..7).map(|_| next() + shift).collect();
+            let t = metric_test(&x, &y, 0.05);
+            between += usize::from((0.05..0.1).contains(&t.p_value));
+            assert_eq!(
+                t.verdict != Verdict::NotSignificant,
+                t.p_value < 0.05,
+                "case {case}: p {} verdict {:?}",
+                t.p_value,
+                t.verdict
+            );
+        }
+        assert!(between > 20, "{between} cases between alpha and 2 alpha");
+    }
 
     #[test]
     fn dates_are_civil() {
