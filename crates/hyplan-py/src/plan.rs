@@ -29,7 +29,8 @@ pub(crate) struct PlanResult {
     path: Py<PyArray2<f64>>,
     /// Path length, input units (`nan` when unsolved).
     length: f64,
-    /// Wall time of the planner call, s.
+    /// Wall time of the planner call, s (the map's one-time preparation made before it,
+    /// as `hyplan plan` makes it).
     time_s: f64,
     /// Nodes in the tree(s).
     nodes: u64,
@@ -253,8 +254,19 @@ pub(crate) fn plan(
     let grid = Arc::clone(&map.map);
     let built = config.build();
     let budget_used = config.budget_on(&*map.map);
+    let checks_segments = config.capabilities().checks_segments;
     // The planner runs without the GIL; post-processing too.
     let (outcome, time_s, post) = py.detach(move || {
+        // The map's one-time preparation (the edge checks' table, a grid search's tables),
+        // kept with the map and not timed, as `hyplan plan` makes it: the first call on a
+        // map reports what later ones do.
+        if checks_segments {
+            let _ = grid.blocked_strides();
+        }
+        if built.info().grid_only {
+            // A refusal here is the plan's to report, in its own words.
+            let _ = built.prepare(&*grid);
+        }
         let mut rng = ChaCha8Rng::seed_from_u64(run_seed);
         let started = Instant::now();
         let outcome = built.plan(&*grid, &query, &mut rng);

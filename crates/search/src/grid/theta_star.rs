@@ -120,9 +120,10 @@ impl GridSearch {
     /// Makes now what Theta*'s and Lazy Theta*'s first query would make: the passable
     /// cells as bit lines (rows and columns, and their slides) that the lines of sight
     /// read, `map`'s stride table (kept with the map: [`GridMap::blocked_strides`]) and
-    /// the searches' per-cell state (16 bytes a cell, written here). After it, their first
-    /// query costs what it expands, as later ones do, instead of a pass over the map.
-    /// Calling it is optional: a query makes what is missing.
+    /// the searches' per-cell state (16 bytes a cell, written here when it is allocated
+    /// here). After it, their first query costs what it expands, as later ones do,
+    /// instead of a pass over the map. Calling it is optional (a query makes what is
+    /// missing), and calling it again costs nothing.
     /// [`update`](GridSearch::update) and [`update_window`](GridSearch::update_window)
     /// drop the bit lines, so call it again after them. `map` is the map this search was
     /// built from.
@@ -148,18 +149,20 @@ impl GridSearch {
         if self.theta_bits.is_none() {
             self.theta_bits = Some(SightBits::new(self.bit_grid()));
         }
-        self.theta_state();
-        // Written once here, so that a query does not wait on the system for the first
-        // touch of each page of them (the allocation is zeroed but not yet mapped): 16
-        // bytes a cell.
-        self.theta_stamps.fill(0);
-        self.theta_parents.fill(0);
-        self.theta_g.fill(0);
+        if self.theta_state() {
+            // Written once here, so that a query does not wait on the system for the
+            // first touch of each page of them (the allocation is zeroed but not yet
+            // mapped): 16 bytes a cell.
+            self.theta_stamps.fill(0);
+            self.theta_parents.fill(0);
+            self.theta_g.fill(0);
+        }
     }
 
-    /// Theta*'s per-cell state, allocated once per search.
-    fn theta_state(&mut self) {
-        if self.theta_stamps.len() != self.words.len() {
+    /// Theta*'s per-cell state, allocated once per search; whether it was allocated now.
+    fn theta_state(&mut self) -> bool {
+        let new = self.theta_stamps.len() != self.words.len();
+        if new {
             // Zeroed, so the allocator hands out untouched pages: a first query on a large
             // map does not write every cell's state (8 ms on 2,000 x 2,000 cells).
             self.theta_stamps = vec![0; self.words.len()];
@@ -167,12 +170,13 @@ impl GridSearch {
             self.theta_g = vec![0; self.words.len()];
             self.theta_generation = 0;
         }
+        new
     }
 
     /// Starts a Theta* query from `s` on its own nodes (allocated by the first query),
     /// with g = 0.
     pub(super) fn begin_theta(&mut self, s: u32, stats: &mut SearchStats) {
-        self.theta_state();
+        let _ = self.theta_state();
         self.theta_generation += 1;
         if self.theta_generation >= CLOSED {
             self.theta_stamps.fill(0);
