@@ -595,13 +595,37 @@ fn run_all(
         )
         .expect("a valid template"),
     );
+    // Each worker thread plans on its own copy of each map, made when it first needs it:
+    // a map lends a prepared search to one run at a time (`GridMap::take_kept`), so a
+    // second thread would make its own inside a timed run.
+    let copies: Vec<Vec<std::sync::OnceLock<GridMap>>> = (0..pool.current_num_threads())
+        .map(|_| {
+            problems
+                .iter()
+                .map(|_| std::sync::OnceLock::new())
+                .collect()
+        })
+        .collect();
     let runs: Vec<BenchRun> = pool.install(|| {
         use rayon::prelude::*;
         jobs.par_iter()
             .map(|&(p, i, k)| {
                 let prob = &problems[p];
                 let (spec, planner) = &prob.planners[i];
+                let thread = rayon::current_thread_index().unwrap_or(0) % copies.len();
+                let map = copies[thread][p].get_or_init(|| prob.map.clone());
+                // The map's one-time preparation, not timed, as `hyplan plan` makes it: the
+                // edge checks' table, a grid search's tables (kept with the copy; made
+                // again only if the copy let them go for another planner's).
+                if spec.planner.capabilities().checks_segments {
+                    let _ = map.blocked_strides();
+                }
+                if planner.info().grid_only {
+                    // A refusal here is the run's to report, in its own words.
+                    let _ = planner.prepare(map);
+                }
                 let scoring = Scoring {
+                    ws: map,
                     // Graph searches count expansions, the others their nodes.
                     explored_by_expansions: spec.planner.explored() == Explored::Expansions,
                     ..scorings[p]
