@@ -595,16 +595,12 @@ fn run_all(
         )
         .expect("a valid template"),
     );
-    // Each worker thread plans on its own copy of each map, made when it first needs it:
-    // a map lends a prepared search to one run at a time (`GridMap::take_kept`), so a
-    // second thread would make its own inside a timed run.
-    let copies: Vec<Vec<std::sync::OnceLock<GridMap>>> = (0..pool.current_num_threads())
-        .map(|_| {
-            problems
-                .iter()
-                .map(|_| std::sync::OnceLock::new())
-                .collect()
-        })
+    // Each worker thread plans on its own copy of the map of the problem it is on: a map
+    // lends a prepared search to one run at a time (`GridMap::take_kept`), so a second
+    // thread would make its own inside a timed run. One copy a thread, replaced when the
+    // thread moves to another problem, so that memory grows with the threads only.
+    let copies: Vec<std::sync::Mutex<Option<(usize, GridMap)>>> = (0..pool.current_num_threads())
+        .map(|_| std::sync::Mutex::new(None))
         .collect();
     let runs: Vec<BenchRun> = pool.install(|| {
         use rayon::prelude::*;
@@ -613,7 +609,15 @@ fn run_all(
                 let prob = &problems[p];
                 let (spec, planner) = &prob.planners[i];
                 let thread = rayon::current_thread_index().unwrap_or(0) % copies.len();
-                let map = copies[thread][p].get_or_init(|| prob.map.clone());
+                // Only this thread takes this lock; a poisoned one still holds a whole map.
+                let mut copy = copies[thread]
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner);
+                if copy.as_ref().is_some_and(|(q, _)| *q != p) {
+                    *copy = None;
+                }
+                let (_, map) = copy.get_or_insert_with(|| (p, prob.map.clone()));
+                let map: &GridMap = map;
                 // The map's one-time preparation, not timed, as `hyplan plan` makes it: the
                 // edge checks' table, a grid search's tables (kept with the copy; made
                 // again only if the copy let them go for another planner's).
