@@ -60,7 +60,7 @@ pub use postproc::Limits;
 /// The planner registry (crate `registry`): one typed configuration per planner, by name.
 pub use registry::{Explored, PlannerConfig, RegistryError, ron_options};
 pub use room::{Furniture, draw_room};
-pub use runner::{run_planner, run_seed};
+pub use runner::{prepare_map, run_planner, run_seed};
 pub use scenario::{
     Claim, ClaimKind, MAX_RUNS, MapSpec, PlannerSpec, Published, Scenario, ScenarioError, Source,
     World,

@@ -4,7 +4,7 @@ use postproc::Smoothing;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::{Explored, PlannerSpec, RunMetrics, Scenario, Scoring, World, measure};
+use crate::{Explored, PlannerConfig, PlannerSpec, RunMetrics, Scenario, Scoring, World, measure};
 
 /// The seed of run `run` for base seed `base`: output number `run + 1` of a SplitMix64
 /// generator started at `base`, i.e. `mix(base + (run + 1) * 0x9E3779B97F4A7C15)` with
@@ -23,6 +23,29 @@ pub fn run_seed(base: u64, run: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
+}
+
+/// Makes `map`'s one-time preparation for `planner` (built from `config`), which its
+/// timed runs should not pay: the edge checks' stride table for a planner that tests
+/// segments, the grid search's tables (kept with the map) for a grid planner. Whether
+/// there was any; a grid planner's refusal is left for its runs to report, in their own
+/// words. `hyplan plan`, `hyplan bench` and the Python `plan` call it before timing.
+///
+/// ```
+/// use envmap::GridMap;
+/// let map = GridMap::from_ascii("....\n.#..\n....")?;
+/// let config: harness::PlannerConfig = "astar".parse()?;
+/// assert!(harness::prepare_map(&config, &*config.build(), &map));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn prepare_map(
+    config: &PlannerConfig,
+    planner: &dyn hyplan_core::Planner,
+    map: &envmap::GridMap,
+) -> bool {
+    let strides = config.capabilities().checks_segments && map.blocked_strides().is_some();
+    let searches = planner.info().grid_only && planner.prepare(map).is_ok();
+    strides || searches
 }
 
 /// Runs one planner of a scenario `runs` times and scores each run.

@@ -254,19 +254,12 @@ pub(crate) fn plan(
     let grid = Arc::clone(&map.map);
     let built = config.build();
     let budget_used = config.budget_on(&*map.map);
-    let checks_segments = config.capabilities().checks_segments;
+    let prepare_config = config.clone();
     // The planner runs without the GIL; post-processing too.
     let (outcome, time_s, post) = py.detach(move || {
-        // The map's one-time preparation (the edge checks' table, a grid search's tables),
-        // kept with the map and not timed, as `hyplan plan` makes it: the first call on a
-        // map reports what later ones do.
-        if checks_segments {
-            let _ = grid.blocked_strides();
-        }
-        if built.info().grid_only {
-            // A refusal here is the plan's to report, in its own words.
-            let _ = built.prepare(&*grid);
-        }
+        // The map's one-time preparation, kept with the map and not timed, as `hyplan
+        // plan` makes it: the first call on a map reports what later ones do.
+        harness::prepare_map(&prepare_config, &*built, &grid);
         let mut rng = ChaCha8Rng::seed_from_u64(run_seed);
         let started = Instant::now();
         let outcome = built.plan(&*grid, &query, &mut rng);

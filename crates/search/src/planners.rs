@@ -503,16 +503,19 @@ fn prepare_grid(map: &GridMap, options: GridOptions, algo: Algo) -> Result<(), P
     envmap::prepare_disconnection(map, moves(algo, options));
     let kept = match algo {
         Algo::Jps => with_kept(map, options, || JumpPointSearch::new(map, options), |_| ()),
-        // What Theta*'s lines of sight read, made here so that its first plan costs what
-        // it expands (a plan with a deadline would not make the map's stride table:
-        // `GridSearch::sight`).
-        Algo::ThetaStar | Algo::LazyThetaStar(_) => with_kept(
+        _ => with_kept(
             map,
             options,
             || Ok(GridSearch::new(map, options)?),
-            |search: &mut GridSearch| search.prepare_lines_of_sight(map),
+            |search: &mut GridSearch| {
+                // What Theta*'s lines of sight read, made here so that its first plan
+                // costs what it expands (a plan with a deadline would not make the map's
+                // stride table: `GridSearch::sight`).
+                if matches!(algo, Algo::ThetaStar | Algo::LazyThetaStar(_)) {
+                    search.prepare_lines_of_sight(map);
+                }
+            },
         ),
-        _ => with_kept(map, options, || Ok(GridSearch::new(map, options)?), |_| ()),
     };
     kept.map_err(|e| PlanError::InvalidParameter {
         name: "workspace",

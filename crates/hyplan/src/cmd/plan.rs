@@ -323,10 +323,7 @@ fn check_args(args: &Args) -> anyhow::Result<Setup> {
     // The map's one-time preparation (the edge checks' table, a grid search's tables,
     // kept with the map), timed apart from the runs.
     let prepared = Instant::now();
-    let strides = config.capabilities().checks_segments && map.blocked_strides().is_some();
-    // A refusal here is the runs' to report, in their own words.
-    let searches = planner.info().grid_only && planner.prepare(&map).is_ok();
-    let preparation = (strides || searches).then(|| prepared.elapsed());
+    let preparation = harness::prepare_map(&config, &*planner, &map).then(|| prepared.elapsed());
     Ok(Setup {
         map,
         preparation,

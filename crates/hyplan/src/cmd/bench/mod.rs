@@ -618,16 +618,10 @@ fn run_all(
                 }
                 let (_, map) = copy.get_or_insert_with(|| (p, prob.map.clone()));
                 let map: &GridMap = map;
-                // The map's one-time preparation, not timed, as `hyplan plan` makes it: the
-                // edge checks' table, a grid search's tables (kept with the copy; made
-                // again only if the copy let them go for another planner's).
-                if spec.planner.capabilities().checks_segments {
-                    let _ = map.blocked_strides();
-                }
-                if planner.info().grid_only {
-                    // A refusal here is the run's to report, in its own words.
-                    let _ = planner.prepare(map);
-                }
+                // The map's one-time preparation, not timed, as `hyplan plan` makes it (kept
+                // with the copy; made again only if the copy let it go for another
+                // planner's).
+                harness::prepare_map(&spec.planner, planner.as_ref(), map);
                 let scoring = Scoring {
                     ws: map,
                     // Graph searches count expansions, the others their nodes.
