@@ -25,9 +25,6 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use search::{GridOptions, GridPath, GridSearch};
 
-/// A cell `(i, j)`.
-type Cell = (usize, usize);
-
 fn main() {
     let rounds: usize = std::env::args()
         .nth(1)
@@ -63,23 +60,26 @@ fn main() {
             check(&s.map, &eager);
             lengths.push(lazy.cost / eager.cost);
         }
-        let mut best = |f: &mut dyn FnMut(&mut GridSearch, Cell, Cell) -> f64| {
-            let mut t = f64::MAX;
-            for _ in 0..rounds {
+        // The three searches' rounds alternate (A*, lazy, eager, then again), so that a
+        // slow stretch of the host falls on all three alike, not on one planner's rounds.
+        let mut best = [f64::MAX; 3];
+        for _ in 0..rounds {
+            for (k, t) in best.iter_mut().enumerate() {
                 let started = Instant::now();
                 for &(a, b, _) in &s.queries {
-                    black_box(f(&mut search, a, b));
+                    let cost = match k {
+                        0 => search.astar(a, b).map_or(0.0, |p| p.cost),
+                        1 => search
+                            .lazy_theta_star_weighted(&s.map, a, b, weight)
+                            .map_or(0.0, |p| p.cost),
+                        _ => search.theta_star(&s.map, a, b).map_or(0.0, |p| p.cost),
+                    };
+                    black_box(cost);
                 }
-                t = t.min(started.elapsed().as_secs_f64() * 1e3);
+                *t = t.min(started.elapsed().as_secs_f64() * 1e3);
             }
-            t
-        };
-        let astar = best(&mut |g, a, b| g.astar(a, b).map_or(0.0, |p| p.cost));
-        let lazy = best(&mut |g, a, b| {
-            g.lazy_theta_star_weighted(&s.map, a, b, weight)
-                .map_or(0.0, |p| p.cost)
-        });
-        let theta = best(&mut |g, a, b| g.theta_star(&s.map, a, b).map_or(0.0, |p| p.cost));
+        }
+        let [astar, lazy, theta] = best;
         let length = median(lengths).unwrap_or(f64::NAN);
         println!(
             "{},{},{:.2},{:.3},{:.3},{:.3},{:.3},{:.3},{:.5},{},{}",

@@ -53,7 +53,7 @@ def without_clocks(out):
         for p in r.get("progress", []):
             p.pop("time_s")
         runs.append(r)
-    summary = [{k: v for k, v in s.items() if k != "time_s"} for s in j["summary"]]
+    summary = [{k: v for k, v in s.items() if k not in CLOCKS} for s in j["summary"]]
     rows = list(csv.DictReader(io.StringIO((out / "runs.csv").read_text())))
     rows = [{k: v for k, v in row.items() if k not in CLOCKS} for row in rows]
     return runs, summary, rows

@@ -149,7 +149,10 @@ fn json_without_times(text: &str) -> String {
         }
     }
     for row in o["summary"].as_array_mut().unwrap() {
-        row.as_object_mut().unwrap().remove("time_s").unwrap();
+        let row = row.as_object_mut().unwrap();
+        for key in ["time_s", "planning_time_s"] {
+            row.remove(key).unwrap();
+        }
     }
     for c in o["comparisons"].as_array_mut().unwrap() {
         c.as_object_mut().unwrap().remove("time").unwrap();
