@@ -732,7 +732,7 @@ mod tests {
     #[test]
     fn the_summary_and_the_tests_time_the_planning_call() {
         // A plans in 1 ms but its long path takes 9 ms more to check; B plans in 5 ms and
-        // its path takes 1 ms. The planners differ in the first times only.
+        // its path takes 1 ms. A is the faster planner, B the faster in total.
         let runs: Vec<BenchRun> = (0..10)
             .flat_map(|k| {
                 let jitter = f64::from(k) * 1e-5;
