@@ -155,6 +155,12 @@ fn results_do_not_depend_on_the_thread_count() {
     assert_eq!(without_times(&a["runs"]), without_times(&b["runs"]));
     assert_eq!(a["threads"], 1);
     assert_eq!(b["threads"], 3);
+    // With `--smooth`, the summary gives the smoothing's cost beside the planning call's.
+    let md = std::fs::read_to_string(one.join("summary.md")).unwrap();
+    assert!(
+        md.contains("| time median (ms) | time IQR (ms) | with smoothing median (ms) |"),
+        "{md}"
+    );
 }
 
 #[test]
@@ -187,6 +193,7 @@ fn experiment_file_runs_several_problems() {
     }
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     assert!(md.contains("| astar | 3 | 100% |"), "{md}");
+    assert!(!md.contains("with smoothing"), "{md}");
     let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
     assert_eq!(csv.lines().count(), 13);
 }
