@@ -254,12 +254,12 @@ pub(crate) fn plan(
     let grid = Arc::clone(&map.map);
     let built = config.build();
     let budget_used = config.budget_on(&*map.map);
-    let prepare_config = config.clone();
+    let name = config.name().to_string();
     // The planner runs without the GIL; post-processing too.
     let (outcome, time_s, post) = py.detach(move || {
         // The map's one-time preparation, kept with the map and not timed, as `hyplan
         // plan` makes it: the first call on a map reports what later ones do.
-        harness::prepare_map(&prepare_config, &*built, &grid);
+        harness::prepare_map(&config, &*built, &grid);
         let mut rng = ChaCha8Rng::seed_from_u64(run_seed);
         let started = Instant::now();
         let outcome = built.plan(&*grid, &query, &mut rng);
@@ -275,7 +275,6 @@ pub(crate) fn plan(
         });
         (outcome, time_s, post)
     });
-    let name = config.name().to_string();
     match outcome {
         Ok(p) => {
             let post = post

@@ -180,7 +180,7 @@ fn markdown_without_times(text: &str) -> String {
             clocks = (0..cells.len())
                 .filter(|&c| cells[c].contains("(ms)"))
                 .collect();
-            assert!(clocks.len() == 3, "{line}");
+            assert_eq!(clocks.len(), 3, "{line}");
         } else if line.contains("time p") {
             clocks = vec![3, 4, 5];
         }
